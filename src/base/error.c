@@ -1,0 +1,116 @@
+/*
+ * base/error.c -- error records, fatal(), and outputs written under a temporary name.
+ *
+ * Invariant: outputs[] holds every stream opened by output_open() that has not yet been
+ * committed or abandoned, with the final name; fatal() removes their temporaries.
+ */
+#include "error.h"
+
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_OPEN_OUTPUTS 8 /* a render writes at most image, display copy, variance, report */
+#define OUTPUT_NAME_MAX 1024
+
+struct open_output {
+    FILE *stream;
+    char name[OUTPUT_NAME_MAX];     /* final name */
+    char tmp_name[OUTPUT_NAME_MAX]; /* name + ".tmp", where the bytes go until commit */
+};
+
+static struct open_output outputs[MAX_OPEN_OUTPUTS];
+
+int error_set(struct error *err, const char *file, int line, const char *format, ...)
+{
+    if (err == NULL)
+        return -1;
+    va_list args;
+    va_start(args, format);
+    vsnprintf(err->message, sizeof err->message, format, args);
+    va_end(args);
+    snprintf(err->file, sizeof err->file, "%s", file != NULL ? file : "");
+    err->line = line;
+    return -1;
+}
+
+void error_print(const struct error *err)
+{
+    if (err->file[0] == '\0')
+        fprintf(stderr, "photon: %s\n", err->message);
+    else if (err->line > 0)
+        fprintf(stderr, "%s:%d: %s\n", err->file, err->line, err->message);
+    else
+        fprintf(stderr, "%s: %s\n", err->file, err->message);
+}
+
+static struct open_output *find_output(FILE *f)
+{
+    for (int i = 0; i < MAX_OPEN_OUTPUTS; i++)
+        if (outputs[i].stream == f && f != NULL)
+            return &outputs[i];
+    return NULL;
+}
+
+void fatal(const char *format, ...)
+{
+    for (int i = 0; i < MAX_OPEN_OUTPUTS; i++)
+        if (outputs[i].stream != NULL)
+            output_abandon(outputs[i].stream);
+    va_list args;
+    va_start(args, format);
+    fputs("photon: ", stderr);
+    vfprintf(stderr, format, args);
+    fputc('\n', stderr);
+    va_end(args);
+    exit(1);
+}
+
+FILE *output_open(const char *name, struct error *err)
+{
+    struct open_output *slot = find_output(NULL);
+    for (int i = 0; slot == NULL && i < MAX_OPEN_OUTPUTS; i++)
+        if (outputs[i].stream == NULL)
+            slot = &outputs[i];
+    if (slot == NULL) {
+        error_set(err, name, 0, "too many outputs open at once");
+        return NULL;
+    }
+    if (strlen(name) + 5 > OUTPUT_NAME_MAX) {
+        error_set(err, name, 0, "output file name is too long");
+        return NULL;
+    }
+    snprintf(slot->name, sizeof slot->name, "%s", name);
+    snprintf(slot->tmp_name, sizeof slot->tmp_name, "%s.tmp", name);
+    slot->stream = fopen(slot->tmp_name, "wb");
+    if (slot->stream == NULL) {
+        error_set(err, name, 0, "cannot create output file");
+        return NULL;
+    }
+    return slot->stream;
+}
+
+int output_commit(FILE *f, struct error *err)
+{
+    struct open_output *slot = find_output(f);
+    if (slot == NULL)
+        return error_set(err, "", 0, "output_commit: stream was not opened by output_open");
+    int failed = ferror(f) != 0;
+    failed |= fclose(f) != 0;
+    slot->stream = NULL;
+    if (failed || rename(slot->tmp_name, slot->name) != 0) {
+        remove(slot->tmp_name);
+        return error_set(err, slot->name, 0, "cannot write output file");
+    }
+    return 0;
+}
+
+void output_abandon(FILE *f)
+{
+    struct open_output *slot = find_output(f);
+    if (slot == NULL)
+        return;
+    fclose(f);
+    remove(slot->tmp_name);
+    slot->stream = NULL;
+}

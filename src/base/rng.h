@@ -1,0 +1,41 @@
+/*
+ * base/rng.h -- deterministic, counter-based random streams.
+ *
+ * Every random number in photon comes from a stream named by its purpose and its place
+ * in the work: rng_stream(seed, STREAM_CAMERA, pixel, sample) or
+ * rng_stream(seed, STREAM_PHOTON, pass, photon). A stream's numbers depend on those four
+ * keys only, never on what was drawn before elsewhere, so the order in which pixels or
+ * photons are processed cannot change a result, and a crop renders bit-identically to
+ * the same window of the whole image.
+ *
+ * The key is hashed with the SplitMix64 finaliser (Steele, Lea, Flood 2014), and the
+ * stream then steps as SplitMix64: a 64-bit counter advanced by the golden-ratio constant.
+ */
+#ifndef PHOTON_RNG_H
+#define PHOTON_RNG_H
+
+#include <stdint.h>
+
+/* The purposes of streams; each value keys a family of streams disjoint from the others. */
+enum stream {
+    STREAM_CAMERA = 1,   /* index = pixel y * width + x of the whole image, sub = sample  */
+    STREAM_PHOTON = 2,   /* index = pass, sub = photon number within the pass            */
+    STREAM_CACHE = 3,    /* index = record or pixel, sub = sample: irradiance-cache work */
+    STREAM_TEST = 4,     /* tests and benches                                            */
+    STREAM_SCENE = 5     /* procedural geometry (noise permutations)                      */
+};
+
+struct rng {
+    uint64_t state; /* SplitMix64 counter */
+};
+
+struct rng rng_stream(uint64_t seed, enum stream purpose, uint64_t index, uint64_t sub);
+uint64_t rng_next(struct rng *r);
+
+/* Uniform double in [0, 1) with 53 random bits: never 1, so 1 - u is never 0. */
+static inline double rng_uniform(struct rng *r)
+{
+    return (double)(rng_next(r) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+#endif

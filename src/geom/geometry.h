@@ -1,0 +1,69 @@
+/*
+ * geom/geometry.h -- the scene's primitives and the BVH over them.
+ *
+ * A struct geometry owns every primitive (spheres, triangles, quads, and procedural
+ * shapes behind struct shape_ops) and, after geometry_build(), a BVH over them.
+ * Primitives are added first, then geometry_build() is called once, then the geometry
+ * is only read: geometry_intersect() and geometry_occluded() are safe to call from
+ * anywhere afterwards and never allocate.
+ *
+ * Geometry knows nothing of materials, lights or photons: a primitive carries a material
+ * index that it hands back in struct hit, and an id (returned when it was added) that the
+ * scene uses to find, say, the light an emitter belongs to.
+ */
+#ifndef PHOTON_GEOMETRY_H
+#define PHOTON_GEOMETRY_H
+
+#include <stddef.h>
+
+#include "ray.h"
+
+/* Documented limit on primitives in one scene: 2^28 keeps ids in an int and bounds memory
+ * (each primitive costs well under 200 bytes). Beyond it geometry_add_*() returns -1. */
+#define MAX_PRIMITIVES (1 << 28)
+
+/* A procedural shape (sphere flake, heightfield, ...): one BVH leaf with its own internal
+ * acceleration. The shape fills every field of struct hit except prim, which geometry sets. */
+struct shape_ops {
+    const char *name;
+    struct aabb (*bounds)(const void *shape);
+    /* Closest hit with t in (0, tmax): returns 1 and fills *hit, else returns 0. */
+    int (*intersect)(const void *shape, struct ray ray, double tmax, struct hit *hit);
+    /* Whether any hit has t in (0, tmax). */
+    int (*occluded)(const void *shape, struct ray ray, double tmax);
+    size_t (*bytes)(const void *shape);  /* memory the shape holds, for --stats */
+    void (*free)(void *shape);
+};
+
+struct geometry;
+
+struct geometry *geometry_create(void);
+void geometry_free(struct geometry *g); /* NULL is a no-op */
+
+/* Each add returns the new primitive's id (0, 1, 2, ... in the order of adding), or -1
+ * when MAX_PRIMITIVES would be exceeded. The caller has checked the inputs are finite. */
+int geometry_add_sphere(struct geometry *g, struct vec3 centre, double radius, int material);
+/* v[3] counter-clockwise seen from the front; normals NULL or three unit vertex normals. */
+int geometry_add_triangle(struct geometry *g, const struct vec3 v[3], const struct vec3 *normals,
+                          int material);
+/* The parallelogram p0 + s e1 + t e2, s, t in [0, 1]; front side along e1 x e2; uv = (s, t). */
+int geometry_add_quad(struct geometry *g, struct vec3 p0, struct vec3 e1, struct vec3 e2,
+                      int material);
+/* Takes ownership of shape (freed with ops->free by geometry_free). */
+int geometry_add_shape(struct geometry *g, const struct shape_ops *ops, void *shape, int material);
+
+/* Builds the BVH over everything added so far (binned SAH). Call once, after the adds. */
+void geometry_build(struct geometry *g);
+
+/* Closest hit with t in (0, tmax) (tmax may be INFINITY): 1 and *hit filled, or 0. */
+int geometry_intersect(const struct geometry *g, struct ray ray, double tmax, struct hit *hit);
+/* Whether anything is hit with t in (0, tmax): the any-hit query for shadow rays. */
+int geometry_occluded(const struct geometry *g, struct ray ray, double tmax);
+
+/* For --stats and benches. */
+size_t geometry_primitive_count(const struct geometry *g);
+size_t geometry_bvh_nodes(const struct geometry *g);
+size_t geometry_bytes(const struct geometry *g); /* primitives + BVH + shapes' own bytes */
+struct aabb geometry_bounds(const struct geometry *g);
+
+#endif

@@ -1,0 +1,50 @@
+/*
+ * tests/bench/bench.c -- runs the benchmark workloads: all, or the one named by argv[1].
+ */
+#include "bench.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+double bench_seconds(void)
+{
+    return (double)clock() / CLOCKS_PER_SEC;
+}
+
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+double bench_median(double *values, int count)
+{
+    qsort(values, (size_t)count, sizeof *values, compare_doubles);
+    return values[count / 2];
+}
+
+struct workload {
+    const char *name;
+    void (*run)(void);
+};
+
+int main(int argc, char **argv)
+{
+    static const struct workload workloads[] = {
+        {"rays", bench_rays}, {"knn", bench_knn}, {"shapes", bench_shapes}};
+    const char *only = argc > 1 && argv[1][0] != '\0' ? argv[1] : NULL;
+    int ran = 0;
+    for (size_t i = 0; i < sizeof workloads / sizeof workloads[0]; i++) {
+        if (only != NULL && strcmp(only, workloads[i].name) != 0)
+            continue;
+        workloads[i].run();
+        ran++;
+    }
+    if (ran == 0) {
+        fprintf(stderr, "bench: unknown workload '%s' (rays, knn, shapes)\n", only);
+        return 2;
+    }
+    return 0;
+}

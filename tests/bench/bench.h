@@ -1,0 +1,20 @@
+/*
+ * tests/bench/bench.h -- `make bench`: figures, never verdicts (../shared/BENCH.md).
+ *
+ * Each workload prints "name=value" lines, medians of BENCH_REPEATS runs, with the
+ * checksums that show the work was the same. Times are CPU seconds from clock(): the
+ * program is single-threaded, and figures mean something only as ratios within one run.
+ */
+#ifndef PHOTON_BENCH_H
+#define PHOTON_BENCH_H
+
+#define BENCH_REPEATS 3 /* BENCH.md: the median of at least 3 repetitions */
+
+double bench_seconds(void);                       /* CPU seconds since start */
+double bench_median(double *values, int count);   /* sorts values in place   */
+
+void bench_rays(void);   /* bench_rays.c: BENCH.md Sec. 1 on generated and shipped scenes */
+void bench_knn(void);    /* bench_knn.c: BENCH.md Sec. 2, Cornell-wall k-nearest          */
+void bench_shapes(void); /* bench_shapes.c: procedural objects against their expansions   */
+
+#endif

@@ -1,0 +1,18 @@
+/*
+ * tests/tests.h -- one entry point per room's test file (tests/test_<room>.c).
+ */
+#ifndef PHOTON_TESTS_H
+#define PHOTON_TESTS_H
+
+#include "check.h"
+
+void test_base(struct check *t);   /* test_base.c: rng, allocation, errors       */
+void test_image(struct check *t);  /* test_image.c: PFM/PPM, compare metrics      */
+void test_geom(struct check *t);   /* test_geom.c: primitives, BVH, robustness    */
+void test_scene(struct check *t);  /* test_scene.c: parser, camera, lights        */
+void test_shapes(struct check *t); /* test_shapes.c: sphere flake, heightfield    */
+void test_photon(struct check *t); /* test_photon.c: photon record, kd-tree       */
+void test_render(struct check *t); /* test_render.c: direct mode, crops, scaling  */
+void test_cli(struct check *t);    /* test_cli.c: the command line, exit statuses */
+
+#endif
