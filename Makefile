@@ -57,7 +57,7 @@ test: $(BIN) $(BUILD)/run_tests
 check:
 	$(MAKE) --no-print-directory BUILD=build/gcc BIN=build/gcc/photon CC=gcc EXTRA=-Werror test
 	$(MAKE) --no-print-directory BUILD=build/clang BIN=build/clang/photon CC=clang EXTRA=-Werror test
-	$(MAKE) --no-print-directory BUILD=build/tcc BIN=build/tcc/photon CC=tcc FPFLAGS= WARN=-Wall test
+	$(MAKE) --no-print-directory BUILD=build/tcc BIN=build/tcc/photon CC=tcc test
 	$(MAKE) --no-print-directory BUILD=build/asan BIN=build/asan/photon CC=gcc OPT="-O1 -g" \
 	    EXTRA="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" test
 

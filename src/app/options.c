@@ -1,0 +1,227 @@
+/*
+ * app/options.c -- parsing the render command's options (options.h).
+ */
+#include "options.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../image/image.h"
+#include "../modes/render.h"
+
+enum option_kind { OPT_FLAG, OPT_INT, OPT_SEED, OPT_REAL, OPT_MODE, OPT_PATH, OPT_CROP };
+
+struct option_spec {
+    const char *name;
+    enum option_kind kind;
+    size_t offset;    /* of the field in struct options */
+    double min, max;  /* limits for numbers             */
+    const char *args; /* what follows the name in --help */
+    const char *help;
+};
+
+#define FIELD(f) offsetof(struct options, f)
+
+static const struct option_spec specs[] = {
+    {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME", "rendering mode: direct (default direct)"},
+    {"-o", OPT_PATH, FIELD(output), 0, 0, "FILE.pfm",
+     "output image; FILE.ppm is written beside it (default: SCENE's name, .pfm)"},
+    {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)"},
+    {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N", "camera samples per pixel (default 16)"},
+    {"--width", OPT_INT, FIELD(width), 1, MAX_IMAGE_SIDE, "N", "image width (default: scene's)"},
+    {"--height", OPT_INT, FIELD(height), 1, MAX_IMAGE_SIDE, "N",
+     "image height (default: scene's)"},
+    {"--crop", OPT_CROP, FIELD(crop), 0, MAX_IMAGE_SIDE, "X0 Y0 X1 Y1",
+     "render only pixels X0 <= x < X1, Y0 <= y < Y1 of the whole image (0,0 = top left)"},
+    {"--max-depth", OPT_INT, FIELD(max_depth), 0, MAX_DEPTH_LIMIT, "N",
+     "longest chain of bounces followed (default 16)"},
+    {"--exposure", OPT_REAL, FIELD(exposure), 0, 1e30, "E",
+     "PPM only: multiply radiance by E before sRGB encoding (default 1)"},
+    {"--stats", OPT_FLAG, FIELD(stats), 0, 0, "", "print key=value statistics on stderr"},
+    {"--progress", OPT_FLAG, FIELD(progress), 0, 0, "", "show a progress line on stderr"},
+    {"--no-progress", OPT_FLAG, FIELD(progress), 0, 0, "", "never show the progress line"},
+};
+
+const char *mode_name(enum mode mode)
+{
+    switch (mode) {
+    case MODE_DIRECT:
+        return "direct";
+    }
+    return "?";
+}
+
+static void print_help(void)
+{
+    printf("usage: photon [options] SCENE       render SCENE (see README: Scene files)\n"
+           "       photon compare A.pfm B.pfm [--diff OUT.ppm]\n\noptions:\n");
+    for (size_t i = 0; i < sizeof specs / sizeof specs[0]; i++) {
+        char left[40];
+        snprintf(left, sizeof left, "%s %s", specs[i].name, specs[i].args);
+        printf("  %-26s %s\n", left, specs[i].help);
+    }
+    printf("  %-26s %s\n  %-26s %s\n", "--help", "print this and exit", "--version",
+           "print the version and exit");
+}
+
+static void set_defaults(struct options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->mode = MODE_DIRECT;
+    o->seed = 1;
+    o->spp = 16;
+    o->max_depth = 16;
+    o->progress = -1;
+    o->exposure = 1.0;
+}
+
+/* A number from text: whole (integer != 0) or real, within [min, max]. */
+static int read_number(const char *name, const char *text, double min, double max,
+                       int integer, double *value, struct error *err)
+{
+    char *end = NULL;
+    *value = text != NULL ? strtod(text, &end) : 0;
+    int ok = text != NULL && end != text && *end == '\0' && *value >= min && *value <= max &&
+             (!integer || *value == floor(*value));
+    if (!ok)
+        return error_set(err, "", 0, "%s: expected %s from %g to %g, got '%s'", name,
+                         integer ? "a whole number" : "a number", min, max,
+                         text != NULL ? text : "nothing");
+    return 0;
+}
+
+static int read_seed(const char *text, uint64_t *seed, struct error *err)
+{
+    char *end = NULL;
+    if (text != NULL && text[0] >= '0' && text[0] <= '9') {
+        errno = 0;
+        unsigned long long v = strtoull(text, &end, 10);
+        if (*end == '\0' && errno == 0 && v <= UINT64_MAX) {
+            *seed = (uint64_t)v;
+            return 0;
+        }
+    }
+    return error_set(err, "", 0, "--seed: expected a whole number from 0 to 2^64-1, got '%s'",
+                     text != NULL ? text : "nothing");
+}
+
+static int read_mode(const char *text, enum mode *mode, struct error *err)
+{
+    if (text != NULL && strcmp(text, "direct") == 0) {
+        *mode = MODE_DIRECT;
+        return 0;
+    }
+    return error_set(err, "", 0, "--mode: unknown mode '%s' (available: direct)",
+                     text != NULL ? text : "nothing");
+}
+
+static int read_output(const char *text, char *output, struct error *err)
+{
+    size_t n = text != NULL ? strlen(text) : 0;
+    if (n < 5 || strcmp(text + n - 4, ".pfm") != 0)
+        return error_set(err, "", 0, "-o: the output must be a file name ending in .pfm");
+    if (n >= OUTPUT_PATH_MAX)
+        return error_set(err, "", 0, "-o: the file name is too long");
+    strcpy(output, text);
+    return 0;
+}
+
+/* Applies option spec to the value words at argv[*i + 1 ...], advancing *i past them. */
+static int apply_option(const struct option_spec *spec, char **argv, int argc, int *i,
+                        struct options *o, struct error *err)
+{
+    char *field = (char *)o + spec->offset;
+    const char *value = *i + 1 < argc ? argv[*i + 1] : NULL;
+    double v;
+    switch (spec->kind) {
+    case OPT_FLAG:
+        *(int *)field = strncmp(spec->name, "--no-", 5) != 0;
+        return 0;
+    case OPT_INT:
+    case OPT_REAL:
+        (*i)++;
+        if (read_number(spec->name, value, spec->min, spec->max, spec->kind == OPT_INT, &v,
+                        err) < 0)
+            return -1;
+        if (spec->kind == OPT_INT)
+            *(int *)field = (int)v;
+        else
+            *(double *)field = v;
+        return 0;
+    case OPT_SEED:
+        (*i)++;
+        return read_seed(value, (uint64_t *)field, err);
+    case OPT_MODE:
+        (*i)++;
+        return read_mode(value, (enum mode *)field, err);
+    case OPT_PATH:
+        (*i)++;
+        return read_output(value, field, err);
+    case OPT_CROP:
+        for (int k = 0; k < 4; k++) {
+            (*i)++;
+            value = *i < argc ? argv[*i] : NULL;
+            if (read_number(spec->name, value, spec->min, spec->max, 1, &v, err) < 0)
+                return -1;
+            ((int *)field)[k] = (int)v;
+        }
+        return 0;
+    }
+    return -1;
+}
+
+/* The default output: the scene file's name without directory and extension, + ".pfm". */
+static void default_output(const char *scene_path, char *output)
+{
+    const char *base = strrchr(scene_path, '/');
+    base = base != NULL ? base + 1 : scene_path;
+    const char *dot = strrchr(base, '.');
+    int n = dot != NULL && dot != base ? (int)(dot - base) : (int)strlen(base);
+    if (n > OUTPUT_PATH_MAX - 5)
+        n = OUTPUT_PATH_MAX - 5;
+    sprintf(output, "%.*s.pfm", n, base);
+}
+
+static const struct option_spec *find_spec(const char *name)
+{
+    for (size_t i = 0; i < sizeof specs / sizeof specs[0]; i++)
+        if (strcmp(specs[i].name, name) == 0)
+            return &specs[i];
+    return NULL;
+}
+
+int parse_options(int argc, char **argv, struct options *o, struct error *err)
+{
+    set_defaults(o);
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            print_help();
+            return 1;
+        }
+        if (strcmp(argv[i], "--version") == 0) {
+            printf("photon %s\n", PHOTON_VERSION);
+            return 1;
+        }
+        const struct option_spec *spec = find_spec(argv[i]);
+        if (spec != NULL) {
+            if (apply_option(spec, argv, argc, &i, o, err) < 0)
+                return -1;
+        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+            return error_set(err, "", 0, "unknown option '%s' (see photon --help)", argv[i]);
+        } else if (o->scene_path != NULL) {
+            return error_set(err, "", 0, "more than one scene file: '%s' and '%s'",
+                             o->scene_path, argv[i]);
+        } else {
+            o->scene_path = argv[i];
+        }
+    }
+    if (o->scene_path == NULL)
+        return error_set(err, "", 0, "no scene file given (see photon --help)");
+    if (o->output[0] == '\0')
+        default_output(o->scene_path, o->output);
+    return 0;
+}

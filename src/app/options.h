@@ -1,0 +1,39 @@
+/*
+ * app/options.h -- the render command's options: `photon [options] SCENE`.
+ *
+ * One table in options.c lists every option with its limits, default and help text;
+ * --help prints that table, so the help and the parser cannot disagree.
+ */
+#ifndef PHOTON_OPTIONS_H
+#define PHOTON_OPTIONS_H
+
+#include <stdint.h>
+
+#include "../base/error.h"
+
+#define PHOTON_VERSION "0.1.0"
+#define OUTPUT_PATH_MAX 1024
+
+enum mode { MODE_DIRECT };
+
+struct options {
+    const char *scene_path;       /* the scene file (borrowed from argv)           */
+    char output[OUTPUT_PATH_MAX]; /* the PFM to write; the PPM goes beside it      */
+    enum mode mode;
+    uint64_t seed;
+    int spp;                      /* samples per pixel                             */
+    int max_depth;                /* longest specular chain followed               */
+    int width, height;            /* 0 = the scene's own size                      */
+    int crop[4];                  /* x0 y0 x1 y1; crop[2] == 0 means no crop       */
+    int stats;                    /* print key=value statistics on stderr          */
+    int progress;                 /* 1 on, 0 off, -1 decided from the environment  */
+    double exposure;              /* multiplier applied before the PPM's sRGB curve */
+};
+
+/* Parses argv into *o. Returns 0 to render, 1 when --help or --version was printed
+ * (exit 0), -1 with *err filled for bad options (exit 2). */
+int parse_options(int argc, char **argv, struct options *o, struct error *err);
+
+const char *mode_name(enum mode mode);
+
+#endif

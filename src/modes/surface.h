@@ -1,0 +1,44 @@
+/*
+ * modes/surface.h -- a hit as a mode sees it: normals turned towards the viewer.
+ *
+ * Geometry reports normals on the primitive's front side; which side a ray came from is
+ * a rendering question, answered here once for every mode. Surfaces reflect on both sides
+ * (a wall is lit from whichever side the light is on); emitters emit from the front only.
+ */
+#ifndef PHOTON_SURFACE_H
+#define PHOTON_SURFACE_H
+
+#include "../scene/scene.h"
+
+struct surface {
+    struct vec3 p;                    /* hit position                                  */
+    struct vec3 ng;                   /* unit geometric normal on the side of wo       */
+    struct vec3 ns;                   /* unit shading normal on the side of wo         */
+    struct vec3 wo;                   /* unit direction back along the incoming ray    */
+    int front;                        /* whether wo is on the primitive's front side   */
+    const struct material *material;  /* borrowed from the scene                       */
+    int prim;                         /* the primitive hit                             */
+};
+
+/* The surface at hit as seen along unit direction wo (pointing away from the surface). */
+static inline struct surface surface_at(const struct scene *scene, const struct hit *hit,
+                                        struct vec3 wo)
+{
+    struct surface s;
+    s.p = hit->p;
+    s.wo = wo;
+    s.front = vec3_dot(wo, hit->ng) > 0;
+    s.ng = s.front ? hit->ng : vec3_neg(hit->ng);
+    s.ns = s.front ? hit->ns : vec3_neg(hit->ns);
+    s.material = &scene->materials[hit->material];
+    s.prim = hit->prim;
+    return s;
+}
+
+/* Radiance the surface emits towards wo: Le on the front side of an emitter, else zero. */
+static inline struct vec3 surface_emission(const struct surface *s)
+{
+    return s->front ? s->material->emission : vec3_zero();
+}
+
+#endif

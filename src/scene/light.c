@@ -1,0 +1,94 @@
+/*
+ * scene/light.c -- sampling lights for direct lighting (light.h).
+ */
+#include "light.h"
+
+/* A sphere of radius r seen from distance d > r subtends a cone of half-angle theta_max,
+ * sin^2 theta_max = (r / d)^2. Directions are sampled uniformly in that cone, so the pdf is
+ * 1 / (2 pi (1 - cos theta_max)); 1 - cos is computed as sin^2 / (1 + cos) to keep its
+ * digits when the sphere is small or far. */
+static int sample_sphere(const struct light *l, struct vec3 p, double u1, double u2,
+                         struct light_sample *s)
+{
+    struct vec3 to_centre = vec3_sub(l->position, p);
+    double d2 = vec3_length2(to_centre);
+    double r2 = l->radius * l->radius;
+    if (!(d2 > r2))
+        return 0; /* inside or on the sphere: its outside is not visible from p */
+    double d = sqrt(d2);
+    double sin2_max = r2 / d2;
+    double cos_max = sqrt(fmax(0.0, 1.0 - sin2_max));
+    double one_minus_cos_max = sin2_max / (1.0 + cos_max);
+    if (!(one_minus_cos_max > 0))
+        return 0; /* the cone is narrower than double precision can sample */
+    double one_minus_cos = u1 * one_minus_cos_max;
+    double cos_theta = 1.0 - one_minus_cos;
+    double sin_theta = sqrt(fmax(0.0, one_minus_cos * (2.0 - one_minus_cos)));
+    double phi = 2.0 * PI * u2;
+    struct vec3 w = vec3_scale(to_centre, 1.0 / d), t, b;
+    vec3_frame(w, &t, &b);
+    s->wi = vec3_add(vec3_scale(w, cos_theta),
+                     vec3_add(vec3_scale(t, sin_theta * cos(phi)),
+                              vec3_scale(b, sin_theta * sin(phi))));
+    /* Nearer intersection of the ray p + s wi with the sphere; at the cone's rim the root
+     * is a tangent and rounding may push its radicand below zero. */
+    double radicand = r2 - d2 * sin_theta * sin_theta;
+    s->distance = d * cos_theta - sqrt(fmax(0.0, radicand));
+    s->li = l->radiance;
+    s->pdf = 1.0 / (2.0 * PI * one_minus_cos_max);
+    return s->distance > 0;
+}
+
+/* A point q on a planar emitter of area A with unnormalised normal n (|n| = A for a quad,
+ * 2A for a triangle) sampled with pdf 1/A by area: in solid angle pdf = d^2 / (A cos_l). */
+static int sample_planar(const struct light *l, struct vec3 p, struct vec3 q, double area,
+                         struct light_sample *s)
+{
+    struct vec3 n = vec3_normalize(vec3_cross(l->e1, l->e2));
+    struct vec3 to_light = vec3_sub(q, p);
+    double d2 = vec3_length2(to_light);
+    if (!(d2 > 0) || !(area > 0))
+        return 0;
+    double d = sqrt(d2);
+    s->wi = vec3_scale(to_light, 1.0 / d);
+    double cos_light = -vec3_dot(s->wi, n);
+    if (!(cos_light > 0))
+        return 0; /* p is behind the one-sided emitter or in its plane */
+    s->distance = d;
+    s->li = l->radiance;
+    s->pdf = d2 / (area * cos_light);
+    return 1;
+}
+
+int light_sample(const struct light *l, struct vec3 p, double u1, double u2,
+                 struct light_sample *s)
+{
+    switch (l->kind) {
+    case LIGHT_POINT: {
+        struct vec3 to_light = vec3_sub(l->position, p);
+        double d2 = vec3_length2(to_light);
+        if (!(d2 > 0))
+            return 0; /* shading point at the light itself */
+        s->distance = sqrt(d2);
+        s->wi = vec3_scale(to_light, 1.0 / s->distance);
+        s->li = vec3_scale(l->power, 1.0 / (4.0 * PI * d2)); /* I / d^2, I = Phi / (4 pi) */
+        s->pdf = 1.0;
+        return 1;
+    }
+    case LIGHT_SPHERE:
+        return sample_sphere(l, p, u1, u2, s);
+    case LIGHT_QUAD: {
+        struct vec3 q = vec3_add(l->position, vec3_add(vec3_scale(l->e1, u1),
+                                                       vec3_scale(l->e2, u2)));
+        return sample_planar(l, p, q, vec3_length(vec3_cross(l->e1, l->e2)), s);
+    }
+    case LIGHT_TRIANGLE: {
+        /* Uniform by area: v0 + sqrt(u1) ((1 - u2) e1 + u2 e2) (Turk 1990). */
+        double su = sqrt(u1);
+        struct vec3 q = vec3_add(l->position, vec3_add(vec3_scale(l->e1, su * (1.0 - u2)),
+                                                       vec3_scale(l->e2, u2 * su)));
+        return sample_planar(l, p, q, 0.5 * vec3_length(vec3_cross(l->e1, l->e2)), s);
+    }
+    }
+    return 0;
+}

@@ -1,0 +1,160 @@
+/*
+ * scene/scene.c -- building a scene: materials, primitives, the lights they make.
+ *
+ * Invariant: n_prims equals the number of primitives in geometry, and light_of_prim has
+ * one entry per primitive (grown with them), so an emitter's id finds its light.
+ */
+#include "scene.h"
+
+#include <assert.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../base/alloc.h"
+
+/* Relative pull-in of a shadow ray's far end: rounding in a hit distance is a few ulps
+ * (1e-15) times the conditioning of the intersection, which is large only at grazing
+ * angles; 1e-7 clears it, while anything nearer the light than 1e-7 of the distance
+ * touches the light and may be counted as not blocking. */
+#define SHADOW_EPSILON 1e-7
+
+struct scene *scene_create(void)
+{
+    struct scene *scene = xcalloc(1, sizeof *scene, "scene");
+    scene->width = 256;
+    scene->height = 256;
+    scene->background = vec3_zero();
+    scene->geometry = geometry_create();
+    return scene;
+}
+
+void scene_free(struct scene *scene)
+{
+    if (scene == NULL)
+        return;
+    geometry_free(scene->geometry);
+    free(scene->light_of_prim);
+    free(scene->lights);
+    free(scene->materials);
+    free(scene);
+}
+
+int scene_add_material(struct scene *scene, const struct material *m)
+{
+    if (scene->n_materials >= MAX_MATERIALS)
+        return -1;
+    scene->materials = xrealloc(scene->materials, scene->n_materials + 1,
+                                sizeof *scene->materials, "materials");
+    scene->materials[scene->n_materials] = *m;
+    return (int)scene->n_materials++;
+}
+
+int scene_find_material(const struct scene *scene, const char *name)
+{
+    for (size_t i = 0; i < scene->n_materials; i++)
+        if (strcmp(scene->materials[i].name, name) == 0)
+            return (int)i;
+    return -1;
+}
+
+static int add_light(struct scene *scene, const struct light *l)
+{
+    if (scene->n_lights >= MAX_LIGHTS)
+        return -1;
+    scene->lights = xrealloc(scene->lights, scene->n_lights + 1, sizeof *scene->lights,
+                             "lights");
+    scene->lights[scene->n_lights] = *l;
+    return (int)scene->n_lights++;
+}
+
+/* Records primitive id (just added, or -1 for failure) and, if its material emits, the
+ * area light described by l. Returns id, or -1 when either limit is reached. */
+static int register_prim(struct scene *scene, int id, int material, struct light *l)
+{
+    if (id < 0)
+        return -1;
+    assert((size_t)id == scene->n_prims);
+    scene->light_of_prim = xrealloc(scene->light_of_prim, scene->n_prims + 1,
+                                    sizeof *scene->light_of_prim, "light table");
+    scene->light_of_prim[scene->n_prims++] = -1;
+    const struct material *m = &scene->materials[material];
+    if (l == NULL || !material_emits(m))
+        return id;
+    l->radiance = m->emission;
+    l->prim = id;
+    int light = add_light(scene, l);
+    if (light < 0)
+        return -1;
+    scene->light_of_prim[id] = light;
+    return id;
+}
+
+static struct light area_light(enum light_kind kind, struct vec3 position, struct vec3 e1,
+                               struct vec3 e2, double radius)
+{
+    struct light l;
+    memset(&l, 0, sizeof l);
+    l.kind = kind;
+    l.position = position;
+    l.e1 = e1;
+    l.e2 = e2;
+    l.radius = radius;
+    return l;
+}
+
+int scene_add_sphere(struct scene *scene, struct vec3 centre, double radius, int material)
+{
+    struct light l = area_light(LIGHT_SPHERE, centre, vec3_zero(), vec3_zero(), radius);
+    int id = geometry_add_sphere(scene->geometry, centre, radius, material);
+    return register_prim(scene, id, material, &l);
+}
+
+int scene_add_triangle(struct scene *scene, const struct vec3 v[3], const struct vec3 *normals,
+                       int material)
+{
+    struct light l = area_light(LIGHT_TRIANGLE, v[0], vec3_sub(v[1], v[0]),
+                                vec3_sub(v[2], v[0]), 0.0);
+    int id = geometry_add_triangle(scene->geometry, v, normals, material);
+    return register_prim(scene, id, material, &l);
+}
+
+int scene_add_quad(struct scene *scene, struct vec3 p0, struct vec3 e1, struct vec3 e2,
+                   int material)
+{
+    struct light l = area_light(LIGHT_QUAD, p0, e1, e2, 0.0);
+    int id = geometry_add_quad(scene->geometry, p0, e1, e2, material);
+    return register_prim(scene, id, material, &l);
+}
+
+int scene_add_shape(struct scene *scene, const struct shape_ops *ops, void *shape, int material)
+{
+    assert(!material_emits(&scene->materials[material]));
+    int id = geometry_add_shape(scene->geometry, ops, shape, material);
+    return register_prim(scene, id, material, NULL);
+}
+
+int scene_add_point_light(struct scene *scene, struct vec3 position, struct vec3 power)
+{
+    struct light l;
+    memset(&l, 0, sizeof l);
+    l.kind = LIGHT_POINT;
+    l.position = position;
+    l.power = power;
+    l.prim = -1;
+    return add_light(scene, &l);
+}
+
+void scene_finish(struct scene *scene, int width, int height)
+{
+    scene->width = width;
+    scene->height = height;
+    camera_setup(&scene->camera, width, height);
+    geometry_build(scene->geometry);
+}
+
+int scene_occluded(const struct scene *scene, struct vec3 origin, struct vec3 dir,
+                   double distance)
+{
+    return geometry_occluded(scene->geometry, make_ray(origin, dir),
+                             distance * (1.0 - SHADOW_EPSILON));
+}

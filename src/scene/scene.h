@@ -1,0 +1,78 @@
+/*
+ * scene/scene.h -- everything a render reads: image size, camera, background, materials,
+ * lights and geometry.
+ *
+ * Life cycle: scene_create(), then the scene_add_*() calls (made by the parser or an
+ * importer), then scene_finish() once, which builds the BVH; afterwards the scene is only
+ * read. A struct scene owns its materials, lights and geometry; scene_free() releases all.
+ *
+ * Every primitive whose material emits becomes an area light too (spheres, triangles and
+ * quads; emitters on other shapes are refused by the parser), so that a ray that hits an
+ * emitter can find its light through light_of_prim.
+ */
+#ifndef PHOTON_SCENE_H
+#define PHOTON_SCENE_H
+
+#include <stddef.h>
+
+#include "../base/error.h"
+#include "../geom/geometry.h"
+#include "camera.h"
+#include "light.h"
+#include "material.h"
+
+#define MAX_MATERIALS 65536 /* documented limit: far beyond any real scene, bounds memory */
+#define MAX_LIGHTS 65536    /* likewise; direct lighting samples every light at each hit */
+
+struct scene {
+    int width, height;           /* image size given by the file (options may override) */
+    struct camera camera;        /* set up for width x height by scene_finish()         */
+    int has_camera;              /* whether the file gave a camera                      */
+    struct vec3 background;      /* radiance of rays that leave the scene               */
+    struct material *materials;  /* owned; n_materials of them                          */
+    size_t n_materials;
+    struct light *lights;        /* owned; n_lights of them                             */
+    size_t n_lights;
+    int *light_of_prim;          /* owned; for each primitive id, its light or -1       */
+    size_t n_prims;              /* primitives added so far (= entries of light_of_prim) */
+    struct geometry *geometry;   /* owned                                               */
+};
+
+struct scene *scene_create(void);
+void scene_free(struct scene *scene); /* NULL is a no-op */
+
+/* Adds a material (copied); returns its index, or -1 beyond MAX_MATERIALS. */
+int scene_add_material(struct scene *scene, const struct material *m);
+/* Index of the material named name, or -1. */
+int scene_find_material(const struct scene *scene, const char *name);
+
+/* Add primitives; each returns the primitive id or -1 beyond a limit (MAX_PRIMITIVES,
+ * MAX_LIGHTS). An emitting material makes the primitive an area light as well. */
+int scene_add_sphere(struct scene *scene, struct vec3 centre, double radius, int material);
+int scene_add_triangle(struct scene *scene, const struct vec3 v[3], const struct vec3 *normals,
+                       int material);
+int scene_add_quad(struct scene *scene, struct vec3 p0, struct vec3 e1, struct vec3 e2,
+                   int material);
+/* Procedural shape (ownership passes to the scene); its material must not emit. */
+int scene_add_shape(struct scene *scene, const struct shape_ops *ops, void *shape, int material);
+/* A point light of power Phi (W per channel); returns its light index or -1. */
+int scene_add_point_light(struct scene *scene, struct vec3 position, struct vec3 power);
+
+/* Sets the image size, sets up the camera and builds the BVH. Call once, after the adds. */
+void scene_finish(struct scene *scene, int width, int height);
+
+static inline int scene_intersect(const struct scene *scene, struct ray ray, double tmax,
+                                  struct hit *hit)
+{
+    return geometry_intersect(scene->geometry, ray, tmax, hit);
+}
+
+/* Whether the segment from origin along unit dir is blocked before distance. The far end
+ * is pulled in by a relative SHADOW_EPSILON so the light's own surface does not block it. */
+int scene_occluded(const struct scene *scene, struct vec3 origin, struct vec3 dir,
+                   double distance);
+
+/* Loads a scene file (parse.c). NULL with *err filled on bad input. */
+struct scene *scene_load(const char *path, struct error *err);
+
+#endif

@@ -1,0 +1,107 @@
+/*
+ * tests/test_base.c -- the base room: keyed random streams, errors, atomic outputs.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "../src/base/error.h"
+#include "../src/base/rng.h"
+#include "tests.h"
+
+/* truth: the definition of a keyed stream (rng.h): the same key gives the same numbers,
+ *   any key field changed gives different ones.
+ * tolerance: none.
+ * catches: a key field left out of the hash (crops and photon passes would repeat noise),
+ *   state shared between streams. */
+static void test_streams_are_keyed(struct check *t)
+{
+    struct rng a = rng_stream(7, STREAM_CAMERA, 123, 4);
+    struct rng b = rng_stream(7, STREAM_CAMERA, 123, 4);
+    for (int i = 0; i < 100; i++)
+        CHECK(t, rng_next(&a) == rng_next(&b));
+    struct rng base = rng_stream(7, STREAM_CAMERA, 123, 4);
+    uint64_t first = rng_next(&base);
+    struct rng others[] = {
+        rng_stream(8, STREAM_CAMERA, 123, 4), rng_stream(7, STREAM_PHOTON, 123, 4),
+        rng_stream(7, STREAM_CAMERA, 124, 4), rng_stream(7, STREAM_CAMERA, 123, 5)};
+    for (int k = 0; k < 4; k++)
+        CHECK(t, rng_next(&others[k]) != first);
+}
+
+/* truth: a uniform variable on [0, 1) has mean 1/2 and variance 1/12; consecutive streams
+ *   (index i, i + 1) are uncorrelated.
+ * tolerance: 5 standard errors of the sample mean, sqrt(1/12 / n), and of the correlation,
+ *   1 / sqrt(n): fixed seeds, so the test is deterministic; 5 SE makes a false alarm
+ *   negligible.
+ * catches: a biased conversion to double (e.g. dividing by 2^53 - 1), values reaching 1,
+ *   a hash that maps neighbouring keys to correlated starts. */
+static void test_uniform_numbers(struct check *t)
+{
+    const int n = 200000;
+    double sum = 0, product = 0;
+    int in_range = 1;
+    for (int i = 0; i < n; i++) {
+        struct rng r = rng_stream(1, STREAM_TEST, (uint64_t)i, 0);
+        struct rng s = rng_stream(1, STREAM_TEST, (uint64_t)i + 1, 0);
+        double u = rng_uniform(&r), v = rng_uniform(&s);
+        in_range &= u >= 0 && u < 1;
+        sum += u;
+        product += (u - 0.5) * (v - 0.5);
+    }
+    CHECK(t, in_range);
+    CHECK_CLOSE(t, sum / n, 0.5, 5 * sqrt(1.0 / 12 / n));
+    CHECK_CLOSE(t, product / n * 12.0, 0.0, 5.0 / sqrt((double)n));
+}
+
+/* truth: error.h's contract: the message is formatted, file and line kept, -1 returned.
+ * catches: a truncated or missing message, a lost line number. */
+static void test_error_set(struct check *t)
+{
+    struct error err;
+    CHECK(t, error_set(&err, "a.scene", 12, "expected %d numbers", 4) == -1);
+    CHECK(t, strcmp(err.file, "a.scene") == 0);
+    CHECK(t, err.line == 12);
+    CHECK(t, strcmp(err.message, "expected 4 numbers") == 0);
+    CHECK(t, error_set(NULL, "x", 1, "no record") == -1);
+}
+
+static int file_exists(const char *name)
+{
+    FILE *f = fopen(name, "rb");
+    if (f != NULL)
+        fclose(f);
+    return f != NULL;
+}
+
+/* truth: outputs are whole or absent (DESIGN.md): before commit only NAME.tmp exists;
+ *   after commit only NAME; after abandon neither.
+ * catches: writing the final name directly, leaving temporaries behind. */
+static void test_outputs_are_atomic(struct check *t)
+{
+    const char *name = "build/test_base_output.txt";
+    struct error err;
+    remove(name);
+    FILE *f = output_open(name, &err);
+    CHECK(t, f != NULL);
+    if (f == NULL)
+        return;
+    fputs("data\n", f);
+    CHECK(t, !file_exists(name) && file_exists("build/test_base_output.txt.tmp"));
+    CHECK(t, output_commit(f, &err) == 0);
+    CHECK(t, file_exists(name) && !file_exists("build/test_base_output.txt.tmp"));
+    remove(name);
+    f = output_open(name, &err);
+    CHECK(t, f != NULL);
+    output_abandon(f);
+    CHECK(t, !file_exists(name) && !file_exists("build/test_base_output.txt.tmp"));
+    CHECK(t, output_open("build/no/such/directory/x.pfm", &err) == NULL);
+}
+
+void test_base(struct check *t)
+{
+    RUN_TEST(t, test_streams_are_keyed);
+    RUN_TEST(t, test_uniform_numbers);
+    RUN_TEST(t, test_error_set);
+    RUN_TEST(t, test_outputs_are_atomic);
+}

@@ -1,0 +1,161 @@
+/*
+ * tests/test_cli.c -- the photon command as a user runs it: exit statuses, messages,
+ * outputs that are whole or absent, determinism of the written file.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../src/image/image.h"
+#include "tests.h"
+
+#define COMMAND_MAX 1024
+#define OUT "build/test_cli"
+
+/* Runs "PHOTON args" with stdout and stderr captured in OUT.log; returns the exit status. */
+static int photon(const char *args)
+{
+    char command[2 * COMMAND_MAX];
+    if (snprintf(command, sizeof command, "%s %s >" OUT ".log 2>&1", photon_binary(), args)
+        >= (int)sizeof command)
+        return -1;
+    return run_command(command);
+}
+
+/* Whether the captured output contains text. */
+static int log_contains(const char *text)
+{
+    char buffer[8192];
+    FILE *f = fopen(OUT ".log", "rb");
+    if (f == NULL)
+        return 0;
+    size_t n = fread(buffer, 1, sizeof buffer - 1, f);
+    fclose(f);
+    buffer[n] = '\0';
+    return strstr(buffer, text) != NULL;
+}
+
+static int file_exists(const char *name)
+{
+    FILE *f = fopen(name, "rb");
+    if (f != NULL)
+        fclose(f);
+    return f != NULL;
+}
+
+static void write_file(const char *name, const char *text)
+{
+    FILE *f = fopen(name, "wb");
+    if (f == NULL)
+        return;
+    fputs(text, f);
+    fclose(f);
+}
+
+/* truth: the command-line contract (DESIGN.md): --help and --version exit 0; any bad
+ *   option exits 2 with a one-line message.
+ * catches: a bad value accepted (spp 0, a negative size), an unknown option ignored. */
+static void test_options(struct check *t)
+{
+    CHECK(t, photon("--help") == 0 && log_contains("--crop") && log_contains("--spp"));
+    CHECK(t, photon("--version") == 0 && log_contains("photon "));
+    CHECK(t, photon("--frobnicate scenes/cornell.scene") == 2 && log_contains("unknown option"));
+    CHECK(t, photon("--spp 0 scenes/cornell.scene") == 2 && log_contains("--spp"));
+    CHECK(t, photon("--spp 1.5 scenes/cornell.scene") == 2);
+    CHECK(t, photon("--width -3 scenes/cornell.scene") == 2);
+    CHECK(t, photon("--width 100000 scenes/cornell.scene") == 2);
+    CHECK(t, photon("--seed -1 scenes/cornell.scene") == 2);
+    CHECK(t, photon("--seed 99999999999999999999999 scenes/cornell.scene") == 2);
+    CHECK(t, photon("--mode nosuch scenes/cornell.scene") == 2 && log_contains("--mode"));
+    CHECK(t, photon("-o out.png scenes/cornell.scene") == 2 && log_contains(".pfm"));
+    CHECK(t, photon("--crop 0 0 300 10 scenes/cornell.scene") == 2 && log_contains("--crop"));
+    CHECK(t, photon("--crop 5 5 5 10 scenes/cornell.scene") == 2);
+    CHECK(t, photon("--crop 1 2 3 scenes/cornell.scene") == 2);
+    CHECK(t, photon("") == 2 && log_contains("no scene"));
+    CHECK(t, photon("a.scene b.scene") == 2 && log_contains("more than one"));
+}
+
+/* truth: bad input gets "file:line: message", exit status 2, and no output file: not
+ *   created when absent, not truncated when present.
+ * catches: an output opened before the scene is read, a partial file left behind. */
+static void test_bad_scene_leaves_no_output(struct check *t)
+{
+    write_file(OUT "_bad.scene", "camera 0 0 0 0 0 1 0 1 0 40\nsphere 0 0 5 1 nosuch\n");
+    remove(OUT "_new.pfm");
+    CHECK(t, photon("-o " OUT "_new.pfm " OUT "_bad.scene") == 2);
+    CHECK(t, log_contains(OUT "_bad.scene:2: sphere: undefined material 'nosuch'"));
+    CHECK(t, !file_exists(OUT "_new.pfm") && !file_exists(OUT "_new.pfm.tmp"));
+    CHECK(t, !file_exists(OUT "_new.ppm"));
+    write_file(OUT "_old.pfm", "precious");
+    CHECK(t, photon("-o " OUT "_old.pfm " OUT "_bad.scene") == 2);
+    FILE *f = fopen(OUT "_old.pfm", "rb");
+    char buffer[16] = {0};
+    if (f != NULL) {
+        CHECK(t, fread(buffer, 1, sizeof buffer - 1, f) == 8);
+        fclose(f);
+    }
+    CHECK(t, strcmp(buffer, "precious") == 0);
+    CHECK(t, photon("-o " OUT "_new.pfm build/no_such.scene") == 2 &&
+             log_contains("build/no_such.scene: cannot open"));
+    CHECK(t, photon("-o " OUT "_new.pfm scenes") == 2 && log_contains("scenes: "));
+    CHECK(t, photon("-o build/no/such/dir/x.pfm --width 4 --height 4 scenes/cornell.scene")
+                 == 2);
+    remove(OUT "_bad.scene");
+    remove(OUT "_old.pfm");
+}
+
+static int same_bytes(const char *a, const char *b)
+{
+    FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
+    int same = fa != NULL && fb != NULL;
+    while (same) {
+        int ca = fgetc(fa), cb = fgetc(fb);
+        same = ca == cb;
+        if (ca == EOF || cb == EOF)
+            break;
+    }
+    if (fa != NULL)
+        fclose(fa);
+    if (fb != NULL)
+        fclose(fb);
+    return same;
+}
+
+/* truth: same scene and seed give a bit-identical PFM (DESIGN.md, Determinism); the
+ *   written files are a valid PFM and PPM of the requested size; --stats prints the keys
+ *   the issue names; compare of a file with itself is all zeros.
+ * catches: time- or address-dependent results, a missing PPM, stats keys renamed. */
+static void test_render_writes_deterministic_files(struct check *t)
+{
+    const char *args = "--width 24 --height 16 --spp 2 --stats scenes/cornell.scene";
+    char command[COMMAND_MAX];
+    snprintf(command, sizeof command, "-o " OUT "_a.pfm %s", args);
+    CHECK(t, photon(command) == 0);
+    static const char *keys[] = {"mode=direct", "seconds_total=", "seconds_build=", "rays=",
+                                 "objects=13", "bvh_nodes=", "bytes_geometry=", "width=24",
+                                 "height=16", "spp=2", "seed=1"};
+    for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
+        CHECK(t, log_contains(keys[i]));
+    snprintf(command, sizeof command, "-o " OUT "_b.pfm %s", args);
+    CHECK(t, photon(command) == 0);
+    CHECK(t, same_bytes(OUT "_a.pfm", OUT "_b.pfm"));
+    struct error err;
+    struct image *img = pfm_read(OUT "_a.pfm", &err);
+    CHECK(t, img != NULL && img->width == 24 && img->height == 16);
+    image_free(img);
+    CHECK(t, file_exists(OUT "_a.ppm"));
+    CHECK(t, photon("compare " OUT "_a.pfm " OUT "_b.pfm") == 0 && log_contains("rmse=0 "));
+    CHECK(t, photon("compare " OUT "_a.pfm scenes/cornell.scene") == 2);
+    remove(OUT "_a.pfm");
+    remove(OUT "_b.pfm");
+    remove(OUT "_a.ppm");
+    remove(OUT "_b.ppm");
+    remove(OUT ".log");
+}
+
+void test_cli(struct check *t)
+{
+    RUN_TEST(t, test_options);
+    RUN_TEST(t, test_bad_scene_leaves_no_output);
+    RUN_TEST(t, test_render_writes_deterministic_files);
+}

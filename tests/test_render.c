@@ -1,0 +1,134 @@
+/*
+ * tests/test_render.c -- rendering with --mode direct: closed forms, crops, determinism,
+ * and robustness to the scale of the scene.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "../src/image/compare.h"
+#include "../src/modes/direct.h"
+#include "tests.h"
+
+static struct scene *load(const char *path, int width, int height)
+{
+    struct error err;
+    struct scene *scene = scene_load(path, &err);
+    if (scene == NULL) {
+        error_print(&err);
+        return NULL;
+    }
+    scene_finish(scene, width > 0 ? width : scene->width, height > 0 ? height : scene->height);
+    return scene;
+}
+
+static struct render_settings whole_image(const struct scene *scene, int spp)
+{
+    struct render_settings rs;
+    memset(&rs, 0, sizeof rs);
+    rs.seed = 1;
+    rs.spp = spp;
+    rs.max_depth = 16;
+    rs.x1 = scene->width;
+    rs.y1 = scene->height;
+    return rs;
+}
+
+static struct image *render(const struct scene *scene, const struct render_settings *rs)
+{
+    struct render_counters counters = {0, 0};
+    struct image *img = render_direct(scene, rs, &counters);
+    return img;
+}
+
+/* Closed form of scenes/analytic/point-over-plane.scene at image point (px, py). */
+static double plane_radiance(const struct scene *scene, double px, double py)
+{
+    struct ray r = camera_ray(&scene->camera, px, py);
+    struct vec3 x = ray_at(r, -r.origin.y / r.dir.y); /* where the ray meets y = 0 */
+    double d = vec3_length(vec3_sub(x, vec3(0, 1, 0)));
+    return 0.5 * 1000 * 1.0 / (4 * PI * PI * d * d * d);
+}
+
+/* truth: the closed form L(x) = rho Phi h / (4 pi^2 d^3) for a point light over a plane.
+ *   A pixel is the mean of L over its square, so it must lie between the least and the
+ *   greatest L on that square (taken on a 9 x 9 grid that includes the corners; L is
+ *   smooth and varies monotonically across a pixel this size, so the grid finds them).
+ * tolerance: that interval, widened by 1e-12 relative for rounding.
+ * catches: a missing cos, 1/(4 pi) or 1/pi; the inverse-square law wrong; the light's
+ *   power read as intensity; a shadow ray blocked by the plane itself (acne). */
+static void test_point_light_over_plane(struct check *t)
+{
+    struct scene *scene = load("scenes/analytic/point-over-plane.scene", 0, 0);
+    CHECK(t, scene != NULL);
+    if (scene == NULL)
+        return;
+    struct render_settings rs = whole_image(scene, 4);
+    struct image *img = render(scene, &rs);
+    for (int y = 0; y < img->height; y++)
+        for (int x = 0; x < img->width; x++) {
+            double lo = INFINITY, hi = 0;
+            for (int j = 0; j <= 8; j++)
+                for (int i = 0; i <= 8; i++) {
+                    double l = plane_radiance(scene, x + i / 8.0, y + j / 8.0);
+                    lo = fmin(lo, l);
+                    hi = fmax(hi, l);
+                }
+            double v = image_get(img, x, y).y;
+            CHECK(t, v >= lo * (1 - 1e-12) && v <= hi * (1 + 1e-12));
+        }
+    image_free(img);
+    scene_free(scene);
+}
+
+/* truth: the light quad emits its radiance (17, 12, 4) and reflects nothing, so a pixel
+ *   wholly inside its image is exactly that (pixel (128, 36) is: the light spans rows
+ *   32-40 and columns 107-149 at 256 x 256).
+ * tolerance: none: every sample returns Le exactly.
+ * catches: the light reflecting light, emission from its back, emission lost. */
+static void test_light_seen_directly(struct check *t)
+{
+    struct scene *scene = load("scenes/cornell.scene", 0, 0);
+    CHECK(t, scene != NULL);
+    if (scene == NULL)
+        return;
+    struct render_settings rs = whole_image(scene, 4);
+    rs.x0 = 128;
+    rs.y0 = 36;
+    rs.x1 = 129;
+    rs.y1 = 37;
+    struct image *img = render(scene, &rs);
+    struct vec3 v = image_get(img, 0, 0);
+    CHECK(t, v.x == 17 && v.y == 12 && v.z == 4);
+    image_free(img);
+    scene_free(scene);
+}
+
+/* truth: render.h's promise: a crop is the same window of the whole image, bit for bit,
+ *   and two renders with the same seed are identical.
+ * catches: random streams keyed by the crop's own pixel numbers, state carried between
+ *   pixels (a shared rng), uninitialised pixels. */
+static void test_crop_matches_whole_image(struct check *t)
+{
+    struct scene *scene = load("scenes/cornell.scene", 40, 30);
+    CHECK(t, scene != NULL);
+    if (scene == NULL)
+        return;
+    struct render_settings rs = whole_image(scene, 2);
+    struct image *whole = render(scene, &rs);
+    struct image *again = render(scene, &rs);
+    CHECK(t, memcmp(whole->pixels, again->pixels, 40 * 30 * sizeof *whole->pixels) == 0);
+    rs.x0 = 7;
+    rs.y0 = 3;
+    rs.x1 = 31;
+    rs.y1 = 29;
+    struct image *crop = render(scene, &rs);
+    for (int y = 0; y < crop->height; y++)
+        for (int x = 0; x < crop->width; x++) {
+            struct vec3 a = image_get(crop, x, y), b = image_get(whole, x + 7, y + 3);
+            CHECK(t, a.x == b.x && a.y == b.y && a.z == b.z);
+        }
+    image_free(crop);
+    image_free(again);
+    image_free(whole);
+    scene_free(scene);
+}
