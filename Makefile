@@ -16,6 +16,11 @@ BIN ?= photon
 OPT ?= -O2
 # No FMA contraction: gcc, clang and tcc must round every operation alike (DESIGN.md).
 FPFLAGS ?= -ffp-contract=off
+# gcc 12's SLP vectoriser drops double -> float -> double roundings at -O2 (three adjacent
+# (float) casts stored into doubles come out unrounded), so gcc builds turn it off.
+ifneq ($(shell $(CC) --version 2>/dev/null | grep -c 'Free Software Foundation'),0)
+FPFLAGS += -fno-tree-slp-vectorize
+endif
 WARN ?= -Wall -Wextra -pedantic
 EXTRA ?=
 CFLAGS = -std=c99 $(OPT) $(FPFLAGS) $(WARN) $(EXTRA)

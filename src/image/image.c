@@ -1,0 +1,35 @@
+/*
+ * image/image.c -- the image buffer: creation and release (see image.h).
+ *
+ * An image owns its pixel array; image_free() releases both. Sizes are the caller's to
+ * check against MAX_IMAGE_SIDE first (readers refuse larger ones as bad input), so here
+ * they are asserted, not reported. Files live elsewhere: pfm.c, ppm.c.
+ */
+#include "image.h"
+
+#include <assert.h>
+#include <stdlib.h>
+
+#include "../base/alloc.h"
+
+struct image *image_create(int width, int height)
+{
+    assert(width >= 1 && width <= MAX_IMAGE_SIDE);
+    assert(height >= 1 && height <= MAX_IMAGE_SIDE);
+    size_t n_pixels = (size_t)width * (size_t)height;
+    struct image *img = xmalloc(1, sizeof *img, "image");
+    img->width = width;
+    img->height = height;
+    img->pixels = xmalloc(n_pixels, sizeof *img->pixels, "image pixels");
+    for (size_t i = 0; i < n_pixels; i++)
+        img->pixels[i] = vec3_zero();
+    return img;
+}
+
+void image_free(struct image *img)
+{
+    if (img == NULL)
+        return;
+    free(img->pixels);
+    free(img);
+}
