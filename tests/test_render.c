@@ -132,3 +132,43 @@ static void test_crop_matches_whole_image(struct check *t)
     image_free(whole);
     scene_free(scene);
 }
+
+/* truth: radiance is invariant under scaling the whole scene (solid angles and the light's
+ *   radiance do not change), and the random numbers are the same, so the Cornell box in
+ *   metres (x 1e-3) and in micrometres (x 1e3) must give the millimetre image.
+ * tolerance: relmse 1e-6 against the unscaled image. Rounding differs between the scales
+ *   (1e-3 is not a binary fraction), which can move a sample that grazes an edge; acne
+ *   (surfaces shadowing themselves) or light leaking past the walls changes thousands
+ *   of samples and gives a relmse above 1e-3.
+ * catches: a fixed ray-offset epsilon (acne at 1e3, leaks at 1e-3), a fixed t_min, a
+ *   shadow-ray end pulled in by an absolute amount. */
+static void test_scale_invariance(struct check *t)
+{
+    static const char *scaled[] = {"scenes/cornell-1e-3.scene", "scenes/cornell-1e3.scene"};
+    struct scene *scene = load("scenes/cornell.scene", 64, 64);
+    CHECK(t, scene != NULL);
+    if (scene == NULL)
+        return;
+    struct render_settings rs = whole_image(scene, 4);
+    struct image *reference = render(scene, &rs);
+    scene_free(scene);
+    for (int i = 0; i < 2; i++) {
+        scene = load(scaled[i], 64, 64);
+        CHECK(t, scene != NULL);
+        if (scene == NULL)
+            break;
+        struct image *img = render(scene, &rs);
+        CHECK(t, image_compare(img, reference).relmse <= 1e-6);
+        image_free(img);
+        scene_free(scene);
+    }
+    image_free(reference);
+}
+
+void test_render(struct check *t)
+{
+    RUN_TEST(t, test_point_light_over_plane);
+    RUN_TEST(t, test_light_seen_directly);
+    RUN_TEST(t, test_crop_matches_whole_image);
+    RUN_TEST(t, test_scale_invariance);
+}

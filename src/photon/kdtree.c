@@ -1,0 +1,396 @@
+/*
+ * photon/kdtree.c -- the balanced kd-tree photon map (Jensen 1996, Sec. 3).
+ *
+ * The photons sit in one array in heap order: node i (1-based) has children 2i and
+ * 2i + 1, so the tree needs no pointers and a node is just a struct photon (20 bytes per
+ * photon, the paper's figure). balance_kdtree() orders the array so that, with
+ * a = node i's plane,
+ *   (1) photons in i's left subtree have pos[a] <= i's pos[a]; in its right, >=;
+ *   (2) every level is full except the last, which fills from the left.
+ * (2) is what makes the pointer-free layout possible: a tree with n nodes fills array
+ * slots 1..n exactly, so child 2i exists iff 2i <= n, and 2i + 1 iff 2i + 1 <= n. It also
+ * bounds the depth by floor(log2 n) + 1, so locating k photons costs O(k log n) however
+ * the photons are spread: balanced is what the paper buys, since photons crowd where
+ * light is bright and an unbalanced tree would be deepest exactly where it is searched.
+ * kdtree_check() verifies (1); (2) holds by construction of the layout.
+ *
+ * Balancing (as Jensen's photonmap.cc, which splits a cell's box where ours takes the
+ * photons' own box): for the photons of a subtree, split on the axis of largest extent
+ * of their bounding box, at the median that leaves exactly as many photons on the left
+ * as a complete tree of that size holds in its left subtree; quickselect puts that
+ * photon in place with the smaller ones before it. Each level costs O(n) expected, so
+ * the build is O(n log n).
+ *
+ * Owns photons[]: taken from the caller by balance_kdtree(), released by kdtree_free().
+ * Elsewhere: photon.c packs the records; the radiance estimates read the search results.
+ */
+#include "kdtree.h"
+
+#include <assert.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#include "../base/alloc.h"
+
+/* A tree of fewer than 2^63 nodes has at most 63 levels, so a search defers at most 63
+ * nodes. balance_kdtree() asserts the bound (the array could not be allocated anyway). */
+#define KDTREE_MAX_DEPTH 64
+
+/* ---- balancing ---- */
+
+/* The axis along which photons[0..m-1] spread most; ties go to the lower axis. */
+static int widest_axis(const struct photon *photons, size_t m)
+{
+    float lo[3] = {photons[0].pos[0], photons[0].pos[1], photons[0].pos[2]};
+    float hi[3] = {lo[0], lo[1], lo[2]};
+    for (size_t i = 1; i < m; i++) {
+        for (int a = 0; a < 3; a++) {
+            float v = photons[i].pos[a];
+            lo[a] = v < lo[a] ? v : lo[a];
+            hi[a] = v > hi[a] ? v : hi[a];
+        }
+    }
+    double extent[3];
+    for (int a = 0; a < 3; a++)
+        extent[a] = (double)hi[a] - lo[a];
+    if (extent[1] > extent[0] && extent[1] >= extent[2])
+        return 1;
+    return extent[2] > extent[0] && extent[2] > extent[1] ? 2 : 0;
+}
+
+/* How many of m >= 1 nodes a complete tree puts in the root's left subtree: with
+ * P = the largest power of two <= m + 1, the full levels hold P - 1 nodes, half of them
+ * less the root on the left, and the last level's m + 1 - P nodes fill the left half
+ * (P / 2 nodes) first. */
+static size_t left_subtree_size(size_t m)
+{
+    size_t p = 1;
+    while (p <= (m + 1) / 2)
+        p *= 2;
+    size_t last = m + 1 - p;
+    return p / 2 - 1 + (last < p / 2 ? last : p / 2);
+}
+
+static float median_of_three(float a, float b, float c)
+{
+    if (a > b) {
+        float t = a;
+        a = b;
+        b = t;
+    }
+    return c < a ? a : c > b ? b : c; /* a <= b: clamp c to [a, b] */
+}
+
+/* Quickselect (Hoare's FIND, in Wirth's form): reorders photons[0..m-1] so that
+ * photons[nth] has the value it would have after sorting on pos[axis], those before it
+ * are <=, those after >=. Both scans stop on keys equal to the pivot and swap them, so
+ * runs of equal keys are split evenly and all-equal input takes O(m), not O(m^2). The
+ * pivot is the median of three keys, which is deterministic; it is always the key of
+ * a photon in the range, so each scan stops inside it. */
+static void select_nth(struct photon *photons, size_t m, size_t nth, int axis)
+{
+    ptrdiff_t lo = 0, hi = (ptrdiff_t)m - 1, k = (ptrdiff_t)nth;
+    while (lo < hi) {
+        float pivot = median_of_three(photons[lo].pos[axis], photons[k].pos[axis],
+                                      photons[hi].pos[axis]);
+        ptrdiff_t i = lo, j = hi;
+        do {
+            while (photons[i].pos[axis] < pivot)
+                i++;
+            while (pivot < photons[j].pos[axis])
+                j--;
+            if (i <= j) {
+                struct photon t = photons[i];
+                photons[i++] = photons[j];
+                photons[j--] = t;
+            }
+        } while (i <= j);
+        /* now [lo, j] <= pivot <= [i, hi], and any photons between equal the pivot */
+        if (j < k)
+            lo = i;
+        if (k < i)
+            hi = j;
+    }
+}
+
+/* Places photons[0..m-1] (m >= 1), reordered as scratch, as the subtree rooted at
+ * heap[node]. Recursion depth is the tree's depth, at most KDTREE_MAX_DEPTH. */
+static void balance_subtree(struct photon *photons, size_t m, struct photon *heap,
+                            size_t node)
+{
+    int axis = widest_axis(photons, m);
+    size_t n_left = left_subtree_size(m);
+    select_nth(photons, m, n_left, axis);
+    heap[node] = photons[n_left];
+    heap[node].plane = (unsigned char)axis;
+    if (n_left > 0)
+        balance_subtree(photons, n_left, heap, 2 * node);
+    if (m - n_left > 1)
+        balance_subtree(photons + n_left + 1, m - n_left - 1, heap, 2 * node + 1);
+}
+
+struct kdtree *balance_kdtree(struct photon *photons, size_t n)
+{
+    assert(n < SIZE_MAX / 2 && (n == 0 || photons != NULL));
+    struct kdtree *map = xmalloc(1, sizeof *map, "photon map");
+    map->photons = xmalloc(n + 1, sizeof *map->photons, "photon map");
+    map->n_photons = n;
+    if (n > 0)
+        balance_subtree(photons, n, map->photons, 1);
+    free(photons);
+    return map;
+}
+
+void kdtree_free(struct kdtree *map)
+{
+    if (map == NULL)
+        return;
+    free(map->photons);
+    free(map);
+}
+
+size_t kdtree_bytes(const struct kdtree *map)
+{
+    return sizeof *map + (map->n_photons + 1) * sizeof *map->photons;
+}
+
+/* Invariant (1) between node j and its ancestor i, whose subtree holds it on the side
+ * of i's child c (left when c is even). */
+static int on_correct_side(const struct photon *heap, size_t i, size_t c, size_t j)
+{
+    int a = heap[i].plane;
+    if (c % 2 == 0)
+        return heap[j].pos[a] <= heap[i].pos[a];
+    return heap[j].pos[a] >= heap[i].pos[a];
+}
+
+int kdtree_check(const struct kdtree *map)
+{
+    if (map == NULL || map->photons == NULL)
+        return 0;
+    const struct photon *heap = map->photons;
+    for (size_t j = 1; j <= map->n_photons; j++) {
+        if (heap[j].plane > 2)
+            return 0;
+        for (size_t c = j; c > 1; c /= 2) {
+            if (!on_correct_side(heap, c / 2, c, j))
+                return 0;
+        }
+    }
+    return 1;
+}
+
+/* ---- the k-nearest search ---- */
+
+struct nearest *nearest_create(size_t k_max)
+{
+    assert(k_max >= 1);
+    struct nearest *nn = xmalloc(1, sizeof *nn, "nearest photons");
+    nn->k_max = k_max;
+    nn->found = 0;
+    nn->photon = xmalloc(k_max, sizeof *nn->photon, "nearest photons");
+    nn->d2 = xmalloc(k_max, sizeof *nn->d2, "nearest photons");
+    nn->r2 = 0;
+    return nn;
+}
+
+void nearest_free(struct nearest *nn)
+{
+    if (nn == NULL)
+        return;
+    free(nn->photon);
+    free(nn->d2);
+    free(nn);
+}
+
+/* Restores the max-heap on d2[] (with photon[] alongside) below slot i, 0-based:
+ * children of i are 2i + 1 and 2i + 2. */
+static void sift_down(struct nearest *nn, size_t i, size_t count)
+{
+    const struct photon *p = nn->photon[i];
+    double d2 = nn->d2[i];
+    for (size_t c = 2 * i + 1; c < count; c = 2 * i + 1) {
+        if (c + 1 < count && nn->d2[c + 1] > nn->d2[c])
+            c++;
+        if (!(nn->d2[c] > d2))
+            break;
+        nn->photon[i] = nn->photon[c];
+        nn->d2[i] = nn->d2[c];
+        i = c;
+    }
+    nn->photon[i] = p;
+    nn->d2[i] = d2;
+}
+
+/* What a search looks for; the bound on d2 changes as it goes, so it is passed apart. */
+struct search {
+    double x[3];                /* the query point                            */
+    double normal[3];           /* disc filter's plane normal                 */
+    double max_plane_distance;  /* 0: no disc filter                          */
+    size_t k;                   /* photons wanted                             */
+    struct nearest *nn;         /* results so far                             */
+};
+
+static double squared_distance(const double x[3], const struct photon *p, double delta[3])
+{
+    for (int a = 0; a < 3; a++)
+        delta[a] = (double)p->pos[a] - x[a];
+    return delta[0] * delta[0] + delta[1] * delta[1] + delta[2] * delta[2];
+}
+
+static int inside_disc(const struct search *s, const double delta[3])
+{
+    double h = delta[0] * s->normal[0] + delta[1] * s->normal[1] + delta[2] * s->normal[2];
+    return s->max_plane_distance == 0 || fabs(h) <= s->max_plane_distance;
+}
+
+/* Offers photon p to the search. bound is exclusive: p is wanted iff d2 < bound. Until
+ * k photons are found they are appended; at the k-th, d2[] becomes a max-heap and the
+ * bound the heap's top, which a nearer photon then replaces. Returns the new bound. */
+static double offer_photon(const struct search *s, const struct photon *p, double bound)
+{
+    double delta[3];
+    double d2 = squared_distance(s->x, p, delta);
+    if (!(d2 < bound) || !inside_disc(s, delta))
+        return bound;
+    struct nearest *nn = s->nn;
+    if (nn->found < s->k) {
+        nn->photon[nn->found] = p;
+        nn->d2[nn->found++] = d2;
+        if (nn->found < s->k)
+            return bound;
+        for (size_t i = s->k / 2; i-- > 0;)
+            sift_down(nn, i, s->k);
+        return nn->d2[0];
+    }
+    nn->photon[0] = p;
+    nn->d2[0] = d2;
+    sift_down(nn, 0, s->k);
+    return nn->d2[0];
+}
+
+/* A node whose near child is being searched; its own photon and its far child wait. */
+struct deferred {
+    size_t far;    /* the far child (may be n + 1, absent); the node is far / 2 */
+    double delta2; /* squared distance from x to the node's splitting plane     */
+};
+
+/* Depth-first search, near child first, iterative with an explicit stack (a photon map
+ * is searched millions of times per image). A node's photon and its far subtree lie at
+ * least sqrt(delta2) from x along the plane's axis, so both are skipped once
+ * delta2 >= bound; floating-point rounding is monotone, so the skip is exact. Returns
+ * the final bound. */
+static double search_tree(const struct kdtree *map, const struct search *s, double bound)
+{
+    const struct photon *heap = map->photons;
+    size_t n = map->n_photons;
+    struct deferred stack[KDTREE_MAX_DEPTH];
+    size_t top = 0, node = n > 0 ? 1 : 0;
+    while (node != 0) {
+        while (2 * node <= n) { /* descend near children to a leaf, deferring the rest */
+            int a = heap[node].plane;
+            double delta = s->x[a] - heap[node].pos[a];
+            size_t near = 2 * node + (delta > 0);
+            stack[top].far = near ^ 1;
+            stack[top++].delta2 = delta * delta;
+            node = near;
+        }
+        if (node <= n) /* else the near child was a missing right child */
+            bound = offer_photon(s, &heap[node], bound);
+        node = 0;
+        while (top > 0 && node == 0) { /* back up to a deferred node within reach */
+            const struct deferred *d = &stack[--top];
+            if (!(d->delta2 < bound))
+                continue;
+            bound = offer_photon(s, &heap[d->far / 2], bound);
+            node = d->far <= n ? d->far : 0;
+        }
+    }
+    return bound;
+}
+
+/* The largest of nn->d2[0..found-1], 0 when nothing was found. */
+static double largest_d2(const struct nearest *nn)
+{
+    double r2 = 0;
+    for (size_t i = 0; i < nn->found; i++)
+        r2 = nn->d2[i] > r2 ? nn->d2[i] : r2;
+    return r2;
+}
+
+void locate_photons_in_disc(const struct kdtree *map, const struct photon_query *q,
+                            struct nearest *nn)
+{
+    assert(q->k >= 1 && q->k <= nn->k_max);
+    assert(q->max_r2 >= 0 && q->max_plane_distance >= 0); /* also refuse NaN */
+    struct search s;
+    s.x[0] = q->x.x;
+    s.x[1] = q->x.y;
+    s.x[2] = q->x.z;
+    s.normal[0] = q->normal.x;
+    s.normal[1] = q->normal.y;
+    s.normal[2] = q->normal.z;
+    s.max_plane_distance = q->max_plane_distance;
+    s.k = q->k;
+    s.nn = nn;
+    nn->found = 0;
+    /* d2 <= max_r2 is d2 < the next double above max_r2: one strict test throughout */
+    search_tree(map, &s, nextafter(q->max_r2, HUGE_VAL));
+    if (nn->found == q->k || q->max_r2 == HUGE_VAL)
+        nn->r2 = largest_d2(nn); /* found == k: the heap's top, d2[0] */
+    else
+        nn->r2 = q->max_r2;
+}
+
+void locate_photons(const struct kdtree *map, struct vec3 x, double max_r2, size_t k,
+                    struct nearest *nn)
+{
+    struct photon_query q;
+    q.x = x;
+    q.max_r2 = max_r2;
+    q.k = k;
+    q.normal = vec3_zero();
+    q.max_plane_distance = 0;
+    locate_photons_in_disc(map, &q, nn);
+}
+
+/* ---- the fixed-radius search ---- */
+
+/* Visits the subtree at node (which exists) with the same skips as search_tree();
+ * recursion depth is the tree's depth. The bound never shrinks here, so the plain
+ * recursive form is kept. */
+static size_t visit_within(const struct kdtree *map, size_t node, const double x[3],
+                           double bound, void (*visit)(void *, const struct photon *, double),
+                           void *context)
+{
+    const struct photon *p = &map->photons[node];
+    size_t n = map->n_photons, count = 0;
+    double delta = x[p->plane] - p->pos[p->plane];
+    if (2 * node <= n) {
+        size_t near = 2 * node + (delta > 0), far = near ^ 1;
+        if (near <= n)
+            count += visit_within(map, near, x, bound, visit, context);
+        if (far <= n && delta * delta < bound)
+            count += visit_within(map, far, x, bound, visit, context);
+    }
+    double offsets[3];
+    double d2 = squared_distance(x, p, offsets);
+    if (d2 < bound) {
+        visit(context, p, d2);
+        count++;
+    }
+    return count;
+}
+
+size_t for_each_photon_within(const struct kdtree *map, struct vec3 x, double r2,
+                              void (*visit)(void *context, const struct photon *p,
+                                            double d2),
+                              void *context)
+{
+    assert(r2 >= 0); /* also refuses NaN */
+    if (map->n_photons == 0)
+        return 0;
+    double xs[3] = {x.x, x.y, x.z};
+    /* d2 <= r2 is d2 < the next double above r2, as in locate_photons_in_disc() */
+    return visit_within(map, 1, xs, nextafter(r2, HUGE_VAL), visit, context);
+}

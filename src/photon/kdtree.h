@@ -1,0 +1,89 @@
+/*
+ * photon/kdtree.h -- the photon map: a balanced, pointer-free kd-tree of photons
+ * (Jensen 1996, Sec. 3), and the searches the radiance estimates make in it.
+ *
+ * Life of a map: the photon tracer fills an array of photons, balance_kdtree() takes it
+ * and returns the map, estimates call locate_photons() (the k nearest) or
+ * for_each_photon_within() (a fixed radius) any number of times with a struct nearest
+ * made once per render, and kdtree_free() releases the map. A built map is only read.
+ * The tree's layout and invariants are described at the top of kdtree.c.
+ */
+#ifndef PHOTON_KDTREE_H
+#define PHOTON_KDTREE_H
+
+#include <stddef.h>
+
+#include "photon.h"
+
+struct kdtree {
+    struct photon *photons; /* owned; n_photons + 1 records, photons[1..n_photons] in
+                               heap order (node i has children 2i, 2i + 1), [0] unused */
+    size_t n_photons;       /* N, the number of photons in the map (may be 0) */
+};
+
+/* Builds the map from photons[0..n-1], taking ownership of the array (it is freed; the
+ * map keeps its own copy in heap order; NULL is allowed when n = 0). O(n log n) time.
+ * Sets every photon's plane. Never fails (out of memory is fatal()). */
+struct kdtree *balance_kdtree(struct photon *photons, size_t n);
+void kdtree_free(struct kdtree *map); /* NULL is a no-op */
+
+/* 1 when the map satisfies the invariants stated in kdtree.c, else 0. O(n log n). */
+int kdtree_check(const struct kdtree *map);
+
+/* Bytes the map occupies (records and header), for the stats' bytes per photon. */
+size_t kdtree_bytes(const struct kdtree *map);
+
+/* The result of a k-nearest search, and the scratch for it: made once per render (or
+ * per thread of work) with room for k_max photons, reused by every locate_photons(). */
+struct nearest {
+    size_t k_max;                 /* capacity of photon[] and d2[], >= 1            */
+    size_t found;                 /* photons found by the last search, <= its k     */
+    const struct photon **photon; /* owned array; [0..found-1] borrowed from the map,
+                                     in no particular order                         */
+    double *d2;                   /* owned array; d2[i] = |photon i - x|^2          */
+    double r2;                    /* r^2, the squared radius of the found set:
+                                     found == k: the largest d2[] (the k-th nearest);
+                                     found < k, max_r2 finite: max_r2, the radius that
+                                       was searched completely (Jensen's photonmap.cc);
+                                     found < k, max_r2 = HUGE_VAL: the largest d2[]
+                                       (the map holds fewer than k photons), 0 if none */
+};
+
+struct nearest *nearest_create(size_t k_max); /* k_max >= 1 */
+void nearest_free(struct nearest *nn);        /* NULL is a no-op */
+
+/* A k-nearest search with every option. The disc filter (Jensen 2001, Realistic Image
+ * Synthesis Using Photon Mapping: the search sphere compressed to a disc) keeps only
+ * photons within max_plane_distance of the plane through x with the given unit normal,
+ * so that photons on a nearby surface behind x do not join an estimate at an edge or
+ * corner, or on a thin wall. It selects photons; the search itself is unchanged. */
+struct photon_query {
+    struct vec3 x;             /* the query point                                    */
+    double max_r2;             /* photons with |p - x|^2 <= max_r2 qualify; HUGE_VAL
+                                  for no maximum radius; >= 0, not NaN               */
+    size_t k;                  /* photons wanted, 1 <= k <= the scratch's k_max      */
+    struct vec3 normal;        /* unit normal of the disc's plane (filter on only)   */
+    double max_plane_distance; /* keep |(p - x) . normal| <= this; 0 turns it off    */
+};
+
+/* Finds the k photons nearest to x with |p - x|^2 <= max_r2 (all of those if fewer),
+ * and fills nn->found, nn->photon[], nn->d2[], nn->r2 as documented on struct nearest.
+ * Distances are computed in double from the records' floats; among photons at the
+ * same distance, which are kept depends (deterministically) on the tree. O(k log n)
+ * for well-spread photons. Allocates nothing. */
+void locate_photons(const struct kdtree *map, struct vec3 x, double max_r2, size_t k,
+                    struct nearest *nn);
+
+/* locate_photons() with the disc filter of q (off when q->max_plane_distance is 0). */
+void locate_photons_in_disc(const struct kdtree *map, const struct photon_query *q,
+                            struct nearest *nn);
+
+/* Calls visit(context, p, d2) for every photon p with d2 = |p - x|^2 <= r2 (r2 >= 0),
+ * in the tree's order (deterministic for a given map), and returns how many it visited.
+ * For fixed-radius gathering (progressive photon mapping). Allocates nothing. */
+size_t for_each_photon_within(const struct kdtree *map, struct vec3 x, double r2,
+                              void (*visit)(void *context, const struct photon *p,
+                                            double d2),
+                              void *context);
+
+#endif

@@ -1,0 +1,56 @@
+/*
+ * photon/photon.h -- the photon record: 20 bytes, as Jensen 1996 (Sec. 3) stores it.
+ *
+ * A photon is a position, a power and the direction it arrived from. The paper keeps
+ * each in as few bytes as will do: the position as three floats, the power in Ward's
+ * RGBE shared-exponent format (4 bytes), the direction as two angles of 256 steps each,
+ * plus one byte for the kd-tree's split axis and one for flags. Only photon.c packs
+ * and unpacks these bytes; everything else calls photon_pack() and the three getters,
+ * which compute in double.
+ *
+ * Accuracy of the round trip photon_pack() -> getters:
+ *   position:  each coordinate rounded to the nearest float (relative error <= 2^-24);
+ *   power:     each channel within max(R, G, B) / 255.5 of its value (rounded RGBE), for
+ *              max(R, G, B) >= 2^-128; below that the error is at most 2^-136 watts;
+ *   direction: within pi/510 + pi/256 radians (1.06 degrees) of the given direction.
+ * The kd-tree that orders photons lives in kdtree.h.
+ */
+#ifndef PHOTON_PHOTON_H
+#define PHOTON_PHOTON_H
+
+#include "../base/vec3.h"
+
+/* Flags: what kind of photon this is (Jensen 1996, Sec. 3 and Fig. 1). The tracer that
+ * stores photons decides which bits it sets; shadow photons (Jensen and Christensen 1995)
+ * only mark where a light is blocked, so that shadow rays are cast only where the
+ * nearest photons disagree. */
+#define PHOTON_DIRECT 1u   /* "D": first hit of a path straight from a light             */
+#define PHOTON_CAUSTIC 2u  /* stored on a diffuse surface after specular bounces only    */
+#define PHOTON_INDIRECT 4u /* "I": stored after at least one diffuse bounce              */
+#define PHOTON_SHADOW 8u   /* "S": a later hit along a light ray, in the light's shadow  */
+
+/* The paper's 20 bytes per photon; photon.c alone packs and unpacks them. */
+struct photon {
+    float pos[3];             /* bytes 0-11: position (float only here; DESIGN.md)         */
+    unsigned char power[4];   /* 12-15: RGB power, Ward's RGBE: mantissas R, G, B, exponent */
+    unsigned char theta, phi; /* 16-17: direction wi (see photon_pack), 256 steps each      */
+    unsigned char plane;      /* 18: split axis 0..2 of this kd-tree node, set by
+                                 balance_kdtree(); 0 until then                            */
+    unsigned char flags;      /* 19: PHOTON_DIRECT | PHOTON_CAUSTIC | ... bits              */
+};
+extern char photon_is_20_bytes[sizeof(struct photon) == 20 ? 1 : -1];
+
+/* Packs a photon. position: where it is stored (finite). power: its flux in watts per
+ * channel, each channel in [0, 2^127), about 1.7e38 W (asserted). direction: wi, pointing
+ * AWAY from the surface, back towards where the photon came from (the opposite of the
+ * direction it travelled), so that it goes to a BRDF beside wo as it is; finite and
+ * non-zero, of any length. flags: PHOTON_* bits, at most 255. plane is set to 0. */
+struct photon photon_pack(struct vec3 position, struct vec3 power, struct vec3 direction,
+                          unsigned flags);
+
+struct vec3 photon_position(const struct photon *p); /* pos[] converted to double      */
+struct vec3 photon_power(const struct photon *p);    /* watts per channel, >= 0         */
+/* Unit wi, away from the surface. The first call fills photon.c's sin/cos tables. */
+struct vec3 photon_direction(const struct photon *p);
+
+#endif
