@@ -1,6 +1,7 @@
 /*
- * image/compare.h -- error metrics between a test image and a reference, and the
- * `photon compare` command built on them.
+ * image/compare.h -- error metrics between a test image and a reference, a per-pixel
+ * statistical test of their agreement given variance images, and the `photon compare`
+ * command built on them.
  */
 #ifndef PHOTON_COMPARE_H
 #define PHOTON_COMPARE_H
@@ -18,7 +19,38 @@ struct image_error {
 /* Metrics of test image a against reference b (same size, checked by the caller). */
 struct image_error image_compare(const struct image *a, const struct image *b);
 
-/* `photon compare A.pfm B.pfm [--diff OUT.ppm]`: argv[0] is "compare". Returns the exit
+/* The per-pixel test of image_consistency(); definitions in compare.c. */
+struct consistency {
+    double alpha;         /* family-wise level asked for, 0 < alpha < 1                    */
+    double alpha_channel; /* Sidak level of one channel's test: 1 - (1 - alpha)^(1/(3 n))  */
+    double z_critical;    /* two-sided critical |z| at alpha_channel                       */
+    size_t n_pixels;      /* n = width * height                                            */
+    size_t n_failed;      /* pixels with some channel's |z| >= z_critical                  */
+    double pass_fraction; /* (n_pixels - n_failed) / n_pixels                              */
+    int consistent;       /* 1 when n_failed == 0: a test of "same means" at level alpha   */
+    size_t worst_pixel;   /* index y * width + x of the largest |z| (0 when all z are 0)   */
+    double worst_z;       /* that |z|; +Inf for a difference where both variances are 0    */
+};
+
+/* Two-sided standard normal critical value: the z >= 0 with P(|Z| >= z) = p, that is
+ * erfc(z / sqrt(2)) = p, for 0 < p <= 1 (z < 38.5 for every double p; accuracy in
+ * compare.c: ~1e-15 for z < 7, 1.4e-14 at z = 37). */
+double normal_critical_two_sided(double p);
+
+/* Tests, per pixel and channel, whether test image a and reference b have the same mean
+ * given the variances of their estimates: z = (a - b) / sqrt(var_a + var_b). var_a or
+ * var_b may be NULL (an exact image, variance 0). Caller guarantees: same sizes, finite
+ * values, variances >= 0 (variance_read checks files), 0 < alpha < 1. */
+struct consistency image_consistency(const struct image *a, const struct image *b,
+                                     const struct image *var_a, const struct image *var_b,
+                                     double alpha);
+
+/* Reads a variance image for comparison with image like: a PFM of like's size whose
+ * values are all >= 0 (pfm_read refuses non-finite ones). NULL with *err filled. */
+struct image *variance_read(const char *name, const struct image *like, struct error *err);
+
+/* `photon compare A.pfm B.pfm [--diff OUT.ppm] [--ref-variance VB.pfm]
+ * [--test-variance VA.pfm] [--alpha ALPHA]`: argv[0] is "compare". Returns the exit
  * status: 0, or 2 for bad input (messages on stderr). */
 int compare_command(int argc, char **argv);
 

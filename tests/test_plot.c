@@ -1,0 +1,395 @@
+/*
+ * tests/test_plot.c -- `photon plot`: the log axes' decades, where points land in the
+ * SVG, the legend, CSV input that must be refused (with file:line, and nothing written),
+ * and the command line on the built binary.
+ *
+ * Files go to /tmp under names unique to the run (temp_name) and are removed by the test
+ * that made them. The SVG is checked as text: the frame rectangle (id="frame") and the
+ * polylines' points are read back with sscanf.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "../src/base/rng.h"
+#include "../src/image/plot.h"
+#include "check.h"
+#include "tests.h"
+
+#define NAME_MAX_BYTES 256
+#define TEXT_MAX_BYTES (1 << 20) /* larger than any SVG these tests make */
+#define COMMAND_MAX 1024
+#define HEADER "seconds,work,rmse,relmse\n"
+#define POINT_TOLERANCE 0.006 /* the SVG prints coordinates with two decimals */
+
+/* A file name under /tmp unique to this run and to what (as in test_image.c). */
+static void temp_name(char *out, size_t size, const char *what)
+{
+    static uint64_t run = 0;
+    if (run == 0) {
+        int on_stack = 0;
+        uint64_t key = (uint64_t)time(NULL) ^ (uint64_t)clock()
+                       ^ (uint64_t)(uintptr_t)(void *)&on_stack;
+        struct rng r = rng_stream(key, STREAM_TEST, 1, 0);
+        run = rng_next(&r) | 1;
+    }
+    snprintf(out, size, "/tmp/photon_test_plot_%016llx_%s", (unsigned long long)run, what);
+}
+
+static void write_text(const char *name, const char *text)
+{
+    FILE *f = fopen(name, "wb");
+    if (f == NULL)
+        return; /* the read that follows fails and says so */
+    fputs(text, f);
+    fclose(f);
+}
+
+/* The whole file as a string (malloc'd, caller frees), or NULL when unreadable. */
+static char *read_text(const char *name)
+{
+    FILE *f = fopen(name, "rb");
+    if (f == NULL)
+        return NULL;
+    char *text = malloc(TEXT_MAX_BYTES + 1);
+    size_t n = text != NULL ? fread(text, 1, TEXT_MAX_BYTES, f) : 0;
+    fclose(f);
+    if (text != NULL)
+        text[n] = '\0';
+    return text;
+}
+
+static int file_exists(const char *name)
+{
+    FILE *f = fopen(name, "rb");
+    if (f != NULL)
+        fclose(f);
+    return f != NULL;
+}
+
+static int count_of(const char *text, const char *word)
+{
+    int n = 0;
+    for (const char *p = strstr(text, word); p != NULL; p = strstr(p + 1, word))
+        n++;
+    return n;
+}
+
+/* truth: the definition in plot.h worked by hand: floor(log10 lo) .. ceil(log10 hi), a
+ *   range of one power of ten padded a decade each way; values exactly on decades
+ *   (1e-3, 1, 10, 1e-9 .. 1e3) must not grow an empty decade.
+ * tolerance: none; whole numbers.
+ * catches: floor and ceil swapped, rounding of log10 adding an empty decade at 1e-3,
+ *   a one-point plot with a zero-width axis (a division by zero in the mapping), the far
+ *   ends of the double range (subnormal 4.9e-324, 1.7e308) overflowing an int or pow. */
+static void test_log_axis_fit(struct check *t)
+{
+    static const struct {
+        double lo, hi;
+        int k_lo, k_hi;
+    } cases[] = {
+        {0.05, 0.05, -2, -1}, {1e-3, 1e-3, -4, -2}, {1, 1, -1, 1}, {2.5, 2.5, 0, 1},
+        {1e-9, 1e3, -9, 3}, {0.1, 0.2, -1, 0}, {1, 10, 0, 1}, {0.011, 0.099, -2, -1},
+        {0.3, 30, -1, 2}, {4.9e-324, 1.7e308, -324, 309}, {1e300, 1e300, 299, 301},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        struct log_axis a = log_axis_fit(cases[i].lo, cases[i].hi);
+        CHECK(t, a.k_lo == cases[i].k_lo && a.k_hi == cases[i].k_hi);
+        if (a.k_lo != cases[i].k_lo || a.k_hi != cases[i].k_hi)
+            fprintf(stderr, "  [%g, %g]: got 10^%d .. 10^%d\n", cases[i].lo, cases[i].hi,
+                    a.k_lo, a.k_hi);
+    }
+}
+
+/* The frame rectangle of an SVG written by plot.c; 0 when it is not there. */
+static int read_frame(const char *svg, double *x, double *y, double *w, double *h)
+{
+    const char *p = strstr(svg, "<rect id=\"frame\"");
+    return p != NULL && sscanf(p, "<rect id=\"frame\" x=\"%lf\" y=\"%lf\" width=\"%lf\" "
+                                  "height=\"%lf\"", x, y, w, h) == 4;
+}
+
+/* The points of the n-th polyline (0-based) into xy[2 * max]; returns how many. */
+static int read_polyline(const char *svg, int n, double *xy, int max)
+{
+    const char *p = svg;
+    for (int i = 0; i <= n && p != NULL; i++)
+        p = strstr(i == 0 ? p : p + 1, "<polyline");
+    p = p != NULL ? strstr(p, "points=\"") : NULL;
+    if (p == NULL)
+        return 0;
+    p += strlen("points=\"");
+    int count = 0, used = 0;
+    while (count < max && sscanf(p, "%lf,%lf%n", &xy[2 * count], &xy[2 * count + 1], &used)
+           == 2) {
+        count++;
+        p += used;
+    }
+    return count;
+}
+
+/* Writes csv_text to a CSV, plots it alone, returns the SVG text (caller frees) or NULL. */
+static char *plot_one(const char *csv_text)
+{
+    char csv[NAME_MAX_BYTES], svg[NAME_MAX_BYTES];
+    temp_name(csv, sizeof csv, "one.csv");
+    temp_name(svg, sizeof svg, "one.svg");
+    write_text(csv, csv_text);
+    const char *files[1] = {csv};
+    struct error err;
+    char *text = plot_files(files, 1, svg, &err) == 0 ? read_text(svg) : NULL;
+    remove(csv);
+    remove(svg);
+    return text;
+}
+
+/* Checks that point i of xy is at (x, y). */
+static void check_point(struct check *t, const double *xy, int i, double x, double y)
+{
+    CHECK_CLOSE(t, xy[2 * i], x, POINT_TOLERANCE);
+    CHECK_CLOSE(t, xy[2 * i + 1], y, POINT_TOLERANCE);
+}
+
+/* truth: closed form; points on decades land on the frame's corners and centre: with
+ *   (seconds, relmse) = (1, 1), (10, 0.1), (100, 0.01) the axes are 10^0..10^2 and
+ *   10^-2..10^0, so the line runs from the top left corner through the centre to the
+ *   bottom right; a single point (2.5, 0.03) sits on axes padded to whole decades at
+ *   x = log10(2.5) and y = 1 - (log10(0.03) + 2) of the frame.
+ * tolerance: 0.006 units; coordinates are printed with two decimals.
+ * catches: y growing downwards uncorrected, no log10, axes off by a decade, points out
+ *   of order, extra columns or reordered columns read by position, CR LF or spaces or
+ *   a missing last newline refused, a marker per point missing. */
+static void test_points_land_on_decades(struct check *t)
+{
+    static const char *forms[] = {
+        HEADER "1,5,0.5,1\n10,50,0.2,0.1\n100,500,0.1,0.01\n",
+        "relmse , extra,seconds\r\n1,7,1\r\n\r\n 0.1 ,7, 10\r\n0.01,7,100\r\n\r\n",
+        HEADER "\n1,5,0.5,1\n10,50,0.2,0.1\n\n100,500,0.1,0.01",
+    };
+    double xy[2 * 8], x, y, w, h;
+    for (size_t i = 0; i < sizeof forms / sizeof forms[0]; i++) {
+        char *svg = plot_one(forms[i]);
+        CHECK(t, svg != NULL);
+        if (svg == NULL)
+            continue;
+        CHECK(t, read_frame(svg, &x, &y, &w, &h) && w > 0 && h > 0);
+        CHECK(t, read_polyline(svg, 0, xy, 8) == 3);
+        check_point(t, xy, 0, x, y);
+        check_point(t, xy, 1, x + 0.5 * w, y + 0.5 * h);
+        check_point(t, xy, 2, x + w, y + h);
+        CHECK(t, count_of(svg, "<use xlink:href=\"#marker0\"") == 3 + 1); /* + legend */
+        free(svg);
+    }
+    char *svg = plot_one(HEADER "2.5,1,1,0.03\n");
+    CHECK(t, svg != NULL && read_frame(svg, &x, &y, &w, &h));
+    CHECK(t, svg != NULL && read_polyline(svg, 0, xy, 8) == 1);
+    check_point(t, xy, 0, x + log10(2.5) * w, y + (1.0 - (log10(0.03) + 2.0)) * h);
+    free(svg);
+}
+
+/* truth: the legend rules in plot.c: each run is labelled with its file's base name
+ *   without ".csv", XML-escaped; rows with seconds or relmse 0 are left out and counted
+ *   in the legend; the document is one SVG 1.1 element with a viewBox, white behind.
+ * tolerance: none; text.
+ * catches: a raw '&' or '<' making the file invalid XML, the directory left in the label,
+ *   zero rows drawn (log10(0) = -Inf in the points) or silently dropped, a run missing. */
+static void test_legend_and_skipped_rows(struct check *t)
+{
+    char a[NAME_MAX_BYTES], b[NAME_MAX_BYTES], svg_name[NAME_MAX_BYTES];
+    temp_name(a, sizeof a, "x&y<z>.csv");
+    temp_name(b, sizeof b, "zeros.csv");
+    temp_name(svg_name, sizeof svg_name, "legend.svg");
+    write_text(a, HEADER "1,1,1,0.5\n2,1,1,0.2\n");
+    write_text(b, HEADER "0,1,1,0.5\n1,1,1,0.1\n2,1,1,0\n4,1,1,0.05\n");
+    const char *files[2] = {a, b};
+    struct error err;
+    CHECK(t, plot_files(files, 2, svg_name, &err) == 0);
+    char *svg = read_text(svg_name);
+    CHECK(t, svg != NULL);
+    if (svg != NULL) {
+        double xy[2 * 8];
+        CHECK(t, strncmp(svg, "<?xml version=\"1.0\"", 19) == 0);
+        CHECK(t, strstr(svg, "viewBox=\"0 0 ") != NULL && strstr(svg, "version=\"1.1\""));
+        CHECK(t, strcmp(svg + strlen(svg) - 7, "</svg>\n") == 0);
+        CHECK(t, count_of(svg, "<polyline") == 2 && read_polyline(svg, 1, xy, 8) == 2);
+        CHECK(t, strstr(svg, "_x&amp;y&lt;z&gt;</text>") != NULL && !strstr(svg, "x&y"));
+        CHECK(t, strstr(svg, "_zeros (2 rows at 0 not shown)</text>") != NULL);
+        CHECK(t, strstr(svg, "/tmp/") == NULL && strstr(svg, ".csv") == NULL);
+        CHECK(t, strstr(svg, "nan") == NULL && strstr(svg, "inf") == NULL);
+        CHECK(t, strstr(svg, ">seconds (CPU)</text>") && strstr(svg, ">relative MSE</text>"));
+    }
+    free(svg);
+    remove(a);
+    remove(b);
+    remove(svg_name);
+}
+
+/* One CSV that plot_files must refuse. */
+struct bad_csv {
+    const char *text;
+    int line;            /* the line the error names, 0 for the file as a whole */
+    const char *keyword; /* a word the message must contain */
+};
+
+/* Checks that plotting csv_name (holding text) fails naming file and line, writes
+ * nothing, and leaves an existing output untouched. */
+static void check_refused(struct check *t, const char *csv_name, const struct bad_csv *c)
+{
+    char svg[NAME_MAX_BYTES], tmp[NAME_MAX_BYTES + 8];
+    temp_name(svg, sizeof svg, "refused.svg");
+    snprintf(tmp, sizeof tmp, "%s.tmp", svg);
+    write_text(svg, "precious");
+    const char *files[1] = {csv_name};
+    struct error err;
+    err.message[0] = '\0';
+    int ok = plot_files(files, 1, svg, &err) == -1 && strcmp(err.file, csv_name) == 0
+             && err.line == c->line && strstr(err.message, c->keyword) != NULL;
+    CHECK(t, ok);
+    if (!ok)
+        fprintf(stderr, "  expected line %d '%s', got %s:%d: %s\n", c->line, c->keyword,
+                err.file, err.line, err.message);
+    char *left = read_text(svg);
+    CHECK(t, left != NULL && strcmp(left, "precious") == 0 && !file_exists(tmp));
+    free(left);
+    remove(svg);
+}
+
+/* truth: the input rules in plot.c; each file breaks one.
+ * tolerance: none; each must be refused with the file's name, the line, the reason.
+ * catches: strtod's partial parses ("0.5x", "") and its nan, inf and overflow taken as
+ *   numbers, a short or long row read anyway, negative times or errors plotted, a header
+ *   missing, blank lines or CR LF miscounting lines, an overlong line split in two, an
+ *   empty or header-only file drawn as an empty plot, a directory read as empty. */
+static void test_plot_refuses_bad_csv(struct check *t)
+{
+    static const struct bad_csv cases[] = {
+        {"", 0, "empty"}, {"\n \n\t\n", 0, "empty"}, {HEADER, 1, "no rows"},
+        {HEADER "\n\n", 1, "no rows"}, {"time,error\n1,2\n", 1, "header"},
+        {"1,2,3,4\n", 1, "header"}, {HEADER "1,2,3\n", 2, "expected 4 fields"},
+        {HEADER "1,2,3,4,5\n", 2, "found 5"}, {HEADER "1,2,3,x\n", 2, "finite number"},
+        {HEADER "1,2,3,nan\n", 2, "finite"}, {HEADER "1,2,3,inf\n", 2, "finite"},
+        {HEADER "1,2,3,1e999\n", 2, "finite"}, {HEADER "1,2,3,0.5x\n", 2, "'0.5x'"},
+        {HEADER "1,2,3,\n", 2, "field 4 ''"}, {HEADER "1,2,3,0.1\n-1,2,3,0.1\n", 3, "seconds"},
+        {HEADER "1,2,3,-0.1\n", 2, "relmse must be >= 0"},
+        {HEADER "\n\n1,2,3,0.1\n2,2,3,x\n", 5, "finite"},
+        {"seconds,work,rmse,relmse\r\n1,2,3,0.1\r\n2,2,3,x\r\n", 3, "finite"},
+        {"a,b,c,d,e,f,g,h,i,j,k,l,m,n,o,p,seconds,relmse\n", 1, "more than 16 columns"},
+    };
+    char name[NAME_MAX_BYTES];
+    temp_name(name, sizeof name, "bad.csv");
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        write_text(name, cases[i].text);
+        check_refused(t, name, &cases[i]);
+    }
+    char *long_line = malloc(4096);
+    if (long_line != NULL) {
+        snprintf(long_line, 4096, HEADER "1,2,3,0.%02000d1\n", 0); /* 2010 bytes */
+        write_text(name, long_line);
+        struct bad_csv c = {NULL, 2, "longer than"};
+        check_refused(t, name, &c);
+        free(long_line);
+    }
+    remove(name);
+    struct bad_csv missing = {NULL, 0, "cannot open"}, directory = {NULL, 0, "directory"};
+    check_refused(t, name, &missing);
+    check_refused(t, "/tmp", &directory);
+}
+
+/* truth: the rules across files in plot.c: 1 to PLOT_MAX_SERIES runs, and at least one
+ *   point a log-log plot can show.
+ * tolerance: none.
+ * catches: a ninth run indexing past the style table, an all-zero input drawn with a
+ *   degenerate axis, no runs at all accepted. */
+static void test_plot_refuses_bad_sets(struct check *t)
+{
+    char csv[NAME_MAX_BYTES], svg[NAME_MAX_BYTES];
+    temp_name(csv, sizeof csv, "set.csv");
+    temp_name(svg, sizeof svg, "set.svg");
+    const char *files[PLOT_MAX_SERIES + 1];
+    for (int i = 0; i <= PLOT_MAX_SERIES; i++)
+        files[i] = csv;
+    struct error err;
+    write_text(csv, HEADER "1,1,1,0.5\n");
+    CHECK(t, plot_files(files, PLOT_MAX_SERIES, svg, &err) == 0);
+    remove(svg);
+    CHECK(t, plot_files(files, PLOT_MAX_SERIES + 1, svg, &err) == -1);
+    CHECK(t, strstr(err.message, "1 to 8") != NULL && !file_exists(svg));
+    CHECK(t, plot_files(files, 0, svg, &err) == -1 && !file_exists(svg));
+    write_text(csv, HEADER "0,1,1,0.5\n1,1,1,0\n");
+    CHECK(t, plot_files(files, 2, svg, &err) == -1);
+    CHECK(t, strstr(err.message, "nothing to plot") != NULL && !file_exists(svg));
+    remove(csv);
+}
+
+/* Runs "PHOTON plot args" with its output in log; the exit status. */
+static int photon_plot(const char *args, const char *log)
+{
+    char command[2 * COMMAND_MAX];
+    if (snprintf(command, sizeof command, "%s plot %s >%s 2>&1", photon_binary(), args, log)
+        >= (int)sizeof command)
+        return -1;
+    return run_command(command);
+}
+
+static int log_contains(const char *log, const char *text)
+{
+    char *s = read_text(log);
+    int found = s != NULL && strstr(s, text) != NULL;
+    free(s);
+    return found;
+}
+
+/* truth: the command-line contract (DESIGN.md): bad input exits 2 with "file:line:
+ *   message" or "photon: message", and writes nothing; good input exits 0 silently and
+ *   writes the SVG.
+ * tolerance: none.
+ * catches: -o missing or not .svg accepted, an unknown option taken as a file, a
+ *   malformed file reported without its line, a success status with no file. */
+static void test_plot_command_line(struct check *t)
+{
+    char log[NAME_MAX_BYTES], csv[NAME_MAX_BYTES], svg[NAME_MAX_BYTES];
+    char args[COMMAND_MAX], message[COMMAND_MAX];
+    temp_name(log, sizeof log, "plot.log");
+    temp_name(csv, sizeof csv, "cli.csv");
+    temp_name(svg, sizeof svg, "cli.svg");
+    write_text(csv, HEADER "1,1,1,0.5\n2,1,1,0.25\n");
+    CHECK(t, photon_plot("", log) == 2 && log_contains(log, "photon: plot: no output"));
+    snprintf(args, sizeof args, "%s", csv);
+    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, "-o PLOT.svg"));
+    snprintf(args, sizeof args, "%s -o %s.png", csv, svg);
+    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, ".svg file"));
+    snprintf(args, sizeof args, "-o %s", svg);
+    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, "no CSV files"));
+    snprintf(args, sizeof args, "%s -o", csv);
+    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, "-o needs"));
+    snprintf(args, sizeof args, "--log %s -o %s", csv, svg);
+    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, "unknown option '--log'"));
+    snprintf(args, sizeof args, "%s.missing -o %s", csv, svg);
+    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, ".missing: cannot open"));
+    CHECK(t, !file_exists(svg));
+    snprintf(args, sizeof args, "%s -o %s", csv, svg);
+    CHECK(t, photon_plot(args, log) == 0 && file_exists(svg));
+    char *text = read_text(log);
+    CHECK(t, text != NULL && text[0] == '\0');
+    free(text);
+    remove(svg);
+    write_text(csv, HEADER "1,1,1,0.5\n2,1,1,0.25,9\n");
+    snprintf(args, sizeof args, "%s -o %s", csv, svg);
+    snprintf(message, sizeof message, "%s:3: expected 4 fields", csv);
+    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, message) && !file_exists(svg));
+    remove(csv);
+    remove(log);
+}
+
+void test_plot(struct check *t)
+{
+    RUN_TEST(t, test_log_axis_fit);
+    RUN_TEST(t, test_points_land_on_decades);
+    RUN_TEST(t, test_legend_and_skipped_rows);
+    RUN_TEST(t, test_plot_refuses_bad_csv);
+    RUN_TEST(t, test_plot_refuses_bad_sets);
+    RUN_TEST(t, test_plot_command_line);
+}
