@@ -10,8 +10,24 @@
 #include <time.h>
 
 #include "app/options.h"
+#include "app/report.h"
 #include "image/compare.h"
+#include "image/plot.h"
 #include "modes/direct.h"
+#include "modes/pt.h"
+
+/* What one render command holds; released by finish_run() whatever happened. */
+struct run {
+    struct options o;
+    struct scene *scene;       /* owned */
+    struct image *reference;   /* owned, or NULL without --reference */
+    struct report report;      /* open when reference != NULL */
+    struct render_settings rs;
+    struct render_counters counters;
+    struct render_result result;
+    clock_t start;
+    double seconds_build;
+};
 
 static double seconds_since(clock_t start)
 {
@@ -22,21 +38,16 @@ static double seconds_since(clock_t start)
 static int choose_window(const struct options *o, int width, int height,
                          struct render_settings *rs, struct error *err)
 {
-    rs->x0 = 0;
-    rs->y0 = 0;
-    rs->x1 = width;
-    rs->y1 = height;
-    if (o->crop[2] == 0)
-        return 0;
-    if (!(o->crop[0] < o->crop[2] && o->crop[2] <= width && o->crop[1] < o->crop[3] &&
-          o->crop[3] <= height))
+    int whole[4] = {0, 0, width, height};
+    const int *w = o->crop[2] == 0 ? whole : o->crop;
+    if (!(w[0] < w[2] && w[2] <= width && w[1] < w[3] && w[3] <= height))
         return error_set(err, "", 0,
                          "--crop %d %d %d %d: need X0 < X1 <= %d and Y0 < Y1 <= %d (the image)",
-                         o->crop[0], o->crop[1], o->crop[2], o->crop[3], width, height);
-    rs->x0 = o->crop[0];
-    rs->y0 = o->crop[1];
-    rs->x1 = o->crop[2];
-    rs->y1 = o->crop[3];
+                         w[0], w[1], w[2], w[3], width, height);
+    rs->x0 = w[0];
+    rs->y0 = w[1];
+    rs->x1 = w[2];
+    rs->y1 = w[3];
     return 0;
 }
 
@@ -50,73 +61,121 @@ static int show_progress(int requested)
     return term != NULL && strcmp(term, "dumb") != 0 && getenv("CI") == NULL;
 }
 
-static int write_outputs(const struct options *o, const struct image *img, struct error *err)
+/* Reads the scene and the reference, fixes the settings and builds the BVH. */
+static int prepare_run(struct run *run, struct error *err)
 {
+    const struct options *o = &run->o;
+    run->scene = scene_load(o->scene_path, err);
+    if (run->scene == NULL)
+        return -1;
+    int width = o->width > 0 ? o->width : run->scene->width;
+    int height = o->height > 0 ? o->height : run->scene->height;
+    run->rs.seed = o->seed;
+    run->rs.spp = o->spp;
+    run->rs.time_limit = o->time_limit;
+    run->rs.max_depth = o->max_depth >= 0 ? o->max_depth
+                        : o->mode == MODE_DIRECT ? DIRECT_MAX_DEPTH
+                                                 : MAX_DEPTH_LIMIT;
+    run->rs.progress = show_progress(o->progress);
+    if (choose_window(o, width, height, &run->rs, err) < 0)
+        return -1;
+    if (o->reference != NULL) {
+        run->reference = pfm_read(o->reference, err);
+        if (run->reference == NULL ||
+            report_open(&run->report, o->report, run->reference, width, height, &run->rs,
+                        err) < 0)
+            return -1;
+    }
+    scene_finish(run->scene, width, height);
+    run->seconds_build = seconds_since(run->start);
+    return 0;
+}
+
+static int write_outputs(const struct run *run, struct error *err)
+{
+    const struct options *o = &run->o;
     char ppm[OUTPUT_PATH_MAX];
     strcpy(ppm, o->output);
     strcpy(ppm + strlen(ppm) - 4, ".ppm"); /* the name ends in .pfm (parse_options) */
-    if (pfm_write(o->output, img, err) < 0 || ppm_write(ppm, img, o->exposure, err) < 0)
+    if (pfm_write(o->output, run->result.image, err) < 0 ||
+        ppm_write(ppm, run->result.image, o->exposure, err) < 0)
+        return -1;
+    if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
         return -1;
     return 0;
 }
 
-static void print_stats(const struct options *o, const struct scene *scene,
-                        const struct render_counters *c, double seconds_build,
-                        double seconds_total)
+static void print_stats(const struct run *run)
 {
-    fprintf(stderr, "mode=%s\nseconds_total=%.3f\nseconds_build=%.3f\n", mode_name(o->mode),
-            seconds_total, seconds_build);
+    const struct scene *scene = run->scene;
+    const struct render_counters *c = &run->counters;
+    fprintf(stderr, "mode=%s\nseconds_total=%.3f\nseconds_build=%.3f\nseconds_render=%.3f\n",
+            mode_name(run->o.mode), seconds_since(run->start), run->seconds_build,
+            run->result.seconds);
     fprintf(stderr, "rays=%llu\nnonfinite_samples=%llu\n", c->rays, c->nonfinite_samples);
     fprintf(stderr, "objects=%zu\nlights=%zu\nbvh_nodes=%zu\nbytes_geometry=%zu\n",
             geometry_primitive_count(scene->geometry), scene->n_lights,
             geometry_bvh_nodes(scene->geometry), geometry_bytes(scene->geometry));
     fprintf(stderr, "width=%d\nheight=%d\nspp=%d\nseed=%llu\n", scene->width, scene->height,
-            o->spp, (unsigned long long)o->seed);
+            c->passes, (unsigned long long)run->o.seed);
 }
 
-static int render_command(const struct options *o, struct error *err)
+static struct render_result render_mode(struct run *run)
 {
-    clock_t start = clock();
-    struct scene *scene = scene_load(o->scene_path, err);
-    if (scene == NULL)
+    struct checkpoint report = {report_checkpoint, &run->report};
+    const struct checkpoint *checkpoint = run->reference != NULL ? &report : NULL;
+    int want_variance = run->o.variance != NULL;
+    if (run->o.mode == MODE_PT)
+        return render_pt(run->scene, &run->rs, want_variance, checkpoint, &run->counters);
+    return render_direct(run->scene, &run->rs, want_variance, checkpoint, &run->counters);
+}
+
+static int render_command(struct run *run, struct error *err)
+{
+    if (prepare_run(run, err) < 0)
         return 2;
-    int width = o->width > 0 ? o->width : scene->width;
-    int height = o->height > 0 ? o->height : scene->height;
-    struct render_settings rs;
-    rs.seed = o->seed;
-    rs.spp = o->spp;
-    rs.max_depth = o->max_depth;
-    rs.progress = show_progress(o->progress);
-    if (choose_window(o, width, height, &rs, err) < 0) {
-        scene_free(scene);
+    run->result = render_mode(run);
+    if (write_outputs(run, err) < 0)
         return 2;
-    }
-    scene_finish(scene, width, height);
-    double seconds_build = seconds_since(start);
-    struct render_counters counters = {0, 0};
-    struct image *img = render_direct(scene, &rs, &counters);
-    int status = write_outputs(o, img, err) < 0 ? 2 : 0;
-    if (status == 0 && o->stats)
-        print_stats(o, scene, &counters, seconds_build, seconds_since(start));
-    image_free(img);
-    scene_free(scene);
-    return status;
+    if (run->reference != NULL && report_close(&run->report, err) < 0)
+        return 2;
+    if (run->o.stats)
+        print_stats(run);
+    return 0;
+}
+
+static void finish_run(struct run *run)
+{
+    if (run->reference != NULL)
+        report_abandon(&run->report); /* a no-op once closed */
+    render_result_free(&run->result);
+    image_free(run->reference);
+    scene_free(run->scene);
 }
 
 int main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "compare") == 0)
         return compare_command(argc - 1, argv + 1);
-    struct options o;
+    if (argc > 1 && strcmp(argv[1], "plot") == 0)
+        return plot_command(argc - 1, argv + 1);
+    struct run run;
     struct error err;
-    int parsed = parse_options(argc, argv, &o, &err);
+    memset(&run, 0, sizeof run);
+    run.scene = NULL;
+    run.reference = NULL;
+    run.result.image = NULL;
+    run.result.variance = NULL;
+    run.start = clock();
+    int parsed = parse_options(argc, argv, &run.o, &err);
     if (parsed != 0) {
         if (parsed < 0)
             error_print(&err);
         return parsed < 0 ? 2 : 0;
     }
-    int status = render_command(&o, &err);
+    int status = render_command(&run, &err);
     if (status != 0)
         error_print(&err);
+    finish_run(&run);
     return status;
 }

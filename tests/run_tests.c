@@ -11,11 +11,15 @@ int main(void)
     struct check t = {0, 0, 0, 0};
     test_base(&t);
     test_image(&t);
+    test_compare(&t);
+    test_plot(&t);
     test_geom(&t);
     test_scene(&t);
+    test_brdf(&t);
     test_shapes(&t);
     test_photon(&t);
     test_render(&t);
+    test_pt(&t);
     test_cli(&t);
     printf("%d passed, %d failed\n", t.passed, t.failed);
     return t.failed == 0 ? 0 : 1;

@@ -35,9 +35,8 @@ static struct render_settings whole_image(const struct scene *scene, int spp)
 
 static struct image *render(const struct scene *scene, const struct render_settings *rs)
 {
-    struct render_counters counters = {0, 0};
-    struct image *img = render_direct(scene, rs, &counters);
-    return img;
+    struct render_counters counters = {0, 0, 0};
+    return render_direct(scene, rs, 0, NULL, &counters).image;
 }
 
 /* Closed form of scenes/analytic/point-over-plane.scene at image point (px, py). */

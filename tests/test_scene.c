@@ -204,8 +204,8 @@ static void test_light_sampling_irradiance(struct check *t)
     double e = estimated_irradiance(&sphere, vec3_zero(), n_tilted, n, &se);
     CHECK(t, fabs(e - exact) <= 0.005 * exact && fabs(e - exact) <= 5 * se + 1e-12 * exact);
 
-    struct vec3 corners[4] = {{-1, 3, -2}, {-1, 3, 1}, {2, 3, 1}, {2, 3, -2}};
-    struct light quad = {LIGHT_QUAD, {-1, 3, -2}, {0, 0, 3}, {3, 0, 0}, 0, {0, 0, 0},
+    struct vec3 corners[4] = {{-1, 3, -2}, {2, 3, -2}, {2, 3, 1}, {-1, 3, 1}};
+    struct light quad = {LIGHT_QUAD, {-1, 3, -2}, {3, 0, 0}, {0, 0, 3}, 0, {0, 0, 0},
                          {5, 5, 5}, 0};
     struct vec3 p = vec3(0.5, 0, 0.2), n_up = vec3(0.2, 1, 0.1);
     n_up = vec3_normalize(n_up);
@@ -213,9 +213,9 @@ static void test_light_sampling_irradiance(struct check *t)
     e = estimated_irradiance(&quad, p, n_up, n, &se);
     CHECK(t, fabs(e - exact) <= 0.005 * exact && fabs(e - exact) <= 5 * se);
 
-    struct light triangle = {LIGHT_TRIANGLE, {-1, 3, -2}, {0, 0, 3}, {3, 0, 0}, 0, {0, 0, 0},
+    struct light triangle = {LIGHT_TRIANGLE, {-1, 3, -2}, {3, 0, 0}, {0, 0, 3}, 0, {0, 0, 0},
                              {5, 5, 5}, 0};
-    struct vec3 tri[3] = {{-1, 3, -2}, {-1, 3, 1}, {2, 3, -2}};
+    struct vec3 tri[3] = {{-1, 3, -2}, {2, 3, -2}, {-1, 3, 1}};
     exact = polygon_irradiance(tri, 3, p, n_up, 5);
     e = estimated_irradiance(&triangle, p, n_up, n, &se);
     CHECK(t, fabs(e - exact) <= 0.005 * exact && fabs(e - exact) <= 5 * se);
@@ -231,7 +231,7 @@ static void test_light_sampling_irradiance(struct check *t)
  *   light (both emit from the front only). */
 static void test_light_sides(struct check *t)
 {
-    struct light quad = {LIGHT_QUAD, {-1, 3, -2}, {0, 0, 3}, {3, 0, 0}, 0, {0, 0, 0},
+    struct light quad = {LIGHT_QUAD, {-1, 3, -2}, {3, 0, 0}, {0, 0, 3}, 0, {0, 0, 0},
                          {5, 5, 5}, 0};
     struct light sphere = {LIGHT_SPHERE, {0, 10, 0}, {0, 0, 0}, {0, 0, 0}, 2.0, {0, 0, 0},
                            {3, 3, 3}, 0};

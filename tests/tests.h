@@ -8,11 +8,15 @@
 
 void test_base(struct check *t);   /* test_base.c: rng, allocation, errors       */
 void test_image(struct check *t);  /* test_image.c: PFM/PPM, compare metrics      */
+void test_compare(struct check *t); /* test_compare.c: per-pixel statistical test */
+void test_plot(struct check *t);   /* test_plot.c: CSV reading, SVG plots         */
 void test_geom(struct check *t);   /* test_geom.c: primitives, BVH, robustness    */
 void test_scene(struct check *t);  /* test_scene.c: parser, camera, lights        */
+void test_brdf(struct check *t);   /* test_brdf.c: the material models            */
 void test_shapes(struct check *t); /* test_shapes.c: sphere flake, heightfield    */
 void test_photon(struct check *t); /* test_photon.c: photon record, kd-tree       */
 void test_render(struct check *t); /* test_render.c: direct mode, crops, scaling  */
+void test_pt(struct check *t);     /* test_pt.c: the path tracer, closed forms    */
 void test_cli(struct check *t);    /* test_cli.c: the command line, exit statuses */
 
 #endif

@@ -13,7 +13,7 @@
 #include "../image/image.h"
 #include "../modes/render.h"
 
-enum option_kind { OPT_FLAG, OPT_INT, OPT_SEED, OPT_REAL, OPT_MODE, OPT_PATH, OPT_CROP };
+enum option_kind { OPT_FLAG, OPT_INT, OPT_SEED, OPT_REAL, OPT_MODE, OPT_OUTPUT, OPT_FILE, OPT_CROP };
 
 struct option_spec {
     const char *name;
@@ -27,8 +27,8 @@ struct option_spec {
 #define FIELD(f) offsetof(struct options, f)
 
 static const struct option_spec specs[] = {
-    {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME", "rendering mode: direct (default direct)"},
-    {"-o", OPT_PATH, FIELD(output), 0, 0, "FILE.pfm",
+    {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME", "rendering mode: direct or pt (default direct)"},
+    {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm",
      "output image; FILE.ppm is written beside it (default: SCENE's name, .pfm)"},
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)"},
     {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N", "camera samples per pixel (default 16)"},
@@ -38,7 +38,15 @@ static const struct option_spec specs[] = {
     {"--crop", OPT_CROP, FIELD(crop), 0, MAX_IMAGE_SIDE, "X0 Y0 X1 Y1",
      "render only pixels X0 <= x < X1, Y0 <= y < Y1 of the whole image (0,0 = top left)"},
     {"--max-depth", OPT_INT, FIELD(max_depth), 0, MAX_DEPTH_LIMIT, "N",
-     "longest chain of bounces followed (default 16)"},
+     "longest chain of bounces followed (default: direct 16, pt 1000)"},
+    {"--time-limit", OPT_REAL, FIELD(time_limit), 0, 1e9, "SECONDS",
+     "stop after the sample pass that crosses this many CPU seconds (default: none)"},
+    {"--reference", OPT_FILE, FIELD(reference), 0, 0, "REF.pfm",
+     "with --report: the converged image to measure error against (whole-image size)"},
+    {"--report", OPT_FILE, FIELD(report), 0, 0, "FILE.csv",
+     "write seconds,work,rmse,relmse at work 1, 2, 4, ... and at the end"},
+    {"--variance", OPT_FILE, FIELD(variance), 0, 0, "FILE.pfm",
+     "also write each pixel's variance of the mean (needs --spp >= 2)"},
     {"--exposure", OPT_REAL, FIELD(exposure), 0, 1e30, "E",
      "PPM only: multiply radiance by E before sRGB encoding (default 1)"},
     {"--stats", OPT_FLAG, FIELD(stats), 0, 0, "", "print key=value statistics on stderr"},
@@ -51,6 +59,8 @@ const char *mode_name(enum mode mode)
     switch (mode) {
     case MODE_DIRECT:
         return "direct";
+    case MODE_PT:
+        return "pt";
     }
     return "?";
 }
@@ -58,7 +68,9 @@ const char *mode_name(enum mode mode)
 static void print_help(void)
 {
     printf("usage: photon [options] SCENE       render SCENE (see README: Scene files)\n"
-           "       photon compare A.pfm B.pfm [--diff OUT.ppm]\n\noptions:\n");
+           "       photon compare A.pfm B.pfm [--diff OUT.ppm] [--ref-variance VB.pfm]\n"
+           "                      [--test-variance VA.pfm] [--alpha ALPHA]\n"
+           "       photon plot A.csv [B.csv ...] -o PLOT.svg\n\noptions:\n");
     for (size_t i = 0; i < sizeof specs / sizeof specs[0]; i++) {
         char left[40];
         snprintf(left, sizeof left, "%s %s", specs[i].name, specs[i].args);
@@ -74,7 +86,7 @@ static void set_defaults(struct options *o)
     o->mode = MODE_DIRECT;
     o->seed = 1;
     o->spp = 16;
-    o->max_depth = 16;
+    o->max_depth = -1;
     o->progress = -1;
     o->exposure = 1.0;
 }
@@ -111,11 +123,13 @@ static int read_seed(const char *text, uint64_t *seed, struct error *err)
 
 static int read_mode(const char *text, enum mode *mode, struct error *err)
 {
-    if (text != NULL && strcmp(text, "direct") == 0) {
-        *mode = MODE_DIRECT;
-        return 0;
-    }
-    return error_set(err, "", 0, "--mode: unknown mode '%s' (available: direct)",
+    static const enum mode modes[] = {MODE_DIRECT, MODE_PT};
+    for (size_t i = 0; text != NULL && i < sizeof modes / sizeof modes[0]; i++)
+        if (strcmp(text, mode_name(modes[i])) == 0) {
+            *mode = modes[i];
+            return 0;
+        }
+    return error_set(err, "", 0, "--mode: unknown mode '%s' (available: direct, pt)",
                      text != NULL ? text : "nothing");
 }
 
@@ -158,9 +172,15 @@ static int apply_option(const struct option_spec *spec, char **argv, int argc, i
     case OPT_MODE:
         (*i)++;
         return read_mode(value, (enum mode *)field, err);
-    case OPT_PATH:
+    case OPT_OUTPUT:
         (*i)++;
         return read_output(value, field, err);
+    case OPT_FILE:
+        (*i)++;
+        if (value == NULL)
+            return error_set(err, "", 0, "%s: expected a file name", spec->name);
+        *(const char **)field = value;
+        return 0;
     case OPT_CROP:
         for (int k = 0; k < 4; k++) {
             (*i)++;
@@ -223,5 +243,7 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         return error_set(err, "", 0, "no scene file given (see photon --help)");
     if (o->output[0] == '\0')
         default_output(o->scene_path, o->output);
+    if ((o->reference == NULL) != (o->report == NULL))
+        return error_set(err, "", 0, "--reference and --report go together");
     return 0;
 }

@@ -14,7 +14,7 @@
 #define PHOTON_VERSION "0.1.0"
 #define OUTPUT_PATH_MAX 1024
 
-enum mode { MODE_DIRECT };
+enum mode { MODE_DIRECT, MODE_PT };
 
 struct options {
     const char *scene_path;       /* the scene file (borrowed from argv)           */
@@ -22,12 +22,16 @@ struct options {
     enum mode mode;
     uint64_t seed;
     int spp;                      /* samples per pixel                             */
-    int max_depth;                /* longest specular chain followed               */
+    int max_depth;                /* longest path followed; -1 = the mode's default */
     int width, height;            /* 0 = the scene's own size                      */
     int crop[4];                  /* x0 y0 x1 y1; crop[2] == 0 means no crop       */
     int stats;                    /* print key=value statistics on stderr          */
     int progress;                 /* 1 on, 0 off, -1 decided from the environment  */
     double exposure;              /* multiplier applied before the PPM's sRGB curve */
+    double time_limit;            /* CPU seconds, 0 = none                          */
+    const char *reference;        /* --reference REF.pfm, or NULL (borrowed)        */
+    const char *report;           /* --report FILE.csv, or NULL (borrowed)          */
+    const char *variance;         /* --variance FILE.pfm, or NULL (borrowed)        */
 };
 
 /* Parses argv into *o. Returns 0 to render, 1 when --help or --version was printed

@@ -1,10 +1,11 @@
 /*
  * modes/direct.c -- `--mode direct`: direct lighting plus ideal specular paths.
  *
- * Whitted's ray tracer (1980) with area lights: at a Lambertian surface, one shadow-tested
- * sample of every light (Eq. L = Le + sum_lights f_r Li cos / pdf); at a mirror, the
- * reflected ray; at glass, one of the reflected or refracted rays chosen with the exact
- * Fresnel probability, which keeps the estimate unbiased without tracing both. Light that
+ * Whitted's ray tracer (1980) with area lights: where the BRDF has a non-delta part, one
+ * shadow-tested sample of every light (L = Le + sum over lights of f_r Li cos / pdf);
+ * where it has a delta lobe, the ideal specular ray: at a mirror the reflected one, at
+ * glass the reflected or the refracted one chosen with the exact Fresnel probability,
+ * which keeps the estimate unbiased without tracing both. Light that
  * reaches a diffuse surface by way of other diffuse surfaces or of specular ones
  * (indirect light, caustics) is absent by design: that is what the other modes add.
  *
@@ -13,7 +14,7 @@
  */
 #include "direct.h"
 
-#include "../scene/optics.h"
+#include "../scene/brdf.h"
 #include "surface.h"
 
 struct direct_mode {
@@ -21,9 +22,10 @@ struct direct_mode {
     int max_depth;
 };
 
-/* Reflected radiance at a Lambertian surface from one sample of each light. */
+/* Reflected radiance through the BRDF's non-delta part from one sample of each light. */
 static struct vec3 direct_lighting(const struct scene *scene, const struct surface *s,
-                                   struct rng *rng, struct render_counters *counters)
+                                   const struct shading_frame *frame, struct rng *rng,
+                                   struct render_counters *counters)
 {
     struct vec3 sum = vec3_zero();
     for (size_t i = 0; i < scene->n_lights; i++) {
@@ -34,47 +36,51 @@ static struct vec3 direct_lighting(const struct scene *scene, const struct surfa
         double cos_theta = vec3_dot(s->ns, ls.wi);
         if (cos_theta <= 0 || vec3_dot(s->ng, ls.wi) <= 0)
             continue; /* the light is behind the surface */
+        struct vec3 fr = brdf_eval(s->material, frame, s->wo, ls.wi);
+        if (vec3_max_component(fr) <= 0)
+            continue;
         counters->rays++;
         if (scene_occluded(scene, offset_origin(s->p, s->ng), ls.wi, ls.distance))
             continue;
-        sum = vec3_add(sum, vec3_scale(ls.li, cos_theta / ls.pdf)); /* pdf > 0 when sampled */
+        /* pdf > 0 when sampled */
+        sum = vec3_add(sum, vec3_scale(vec3_mul(fr, ls.li), cos_theta / ls.pdf));
     }
-    return vec3_scale(vec3_mul(s->material->rho, sum), 1.0 / PI); /* f_r = rho / pi */
+    return sum;
 }
 
 static struct vec3 trace(const struct direct_mode *dm, struct ray ray, int depth,
                          struct rng *rng, struct render_counters *counters);
 
-/* The ray leaving a glass surface, reflected or refracted with the Fresnel probability,
- * and its weight: 1 for reflection, 1 / eta^2 for refraction (radiance is compressed as
- * it enters a denser medium and spreads as it leaves). */
-static struct ray glass_ray(const struct surface *s, struct rng *rng, double *weight)
+/* Whitted's specular ray: one lobe sampled from the BRDF; if it is a delta lobe (mirror
+ * reflection, refraction), its ray is traced and weighted by reflectance / probability,
+ * so mixtures of lobes stay unbiased. A non-delta lobe adds nothing here: light arriving
+ * through it is what direct_lighting() estimates, or what this mode leaves out. */
+static struct vec3 specular_ray(const struct direct_mode *dm, const struct surface *s,
+                                const struct shading_frame *frame, int depth, struct rng *rng,
+                                struct render_counters *counters)
 {
-    double eta = s->front ? s->material->ior : 1.0 / s->material->ior; /* n_t / n_i */
-    double reflectance = fresnel_dielectric(vec3_dot(s->wo, s->ns), eta);
-    struct vec3 wi;
-    *weight = 1.0;
-    if (rng_uniform(rng) < reflectance || !refract(s->wo, s->ns, eta, &wi))
-        return make_ray(offset_origin(s->p, s->ng), reflect(s->wo, s->ns));
-    *weight = 1.0 / (eta * eta);
-    return make_ray(offset_origin(s->p, vec3_neg(s->ng)), wi);
+    double u[3];
+    for (int k = 0; k < 3; k++)
+        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+    struct brdf_sample bs;
+    if (!brdf_sample(s->material, frame, s->wo, u, &bs) || !bs.delta)
+        return vec3_zero();
+    struct vec3 side = bs.transmitted ? vec3_neg(s->ng) : s->ng;
+    struct ray r = make_ray(offset_origin(s->p, side), bs.wi);
+    return vec3_mul(bs.weight, trace(dm, r, depth + 1, rng, counters));
 }
 
 static struct vec3 scatter(const struct direct_mode *dm, const struct surface *s, int depth,
                            struct rng *rng, struct render_counters *counters)
 {
     const struct material *m = s->material;
-    if (m->kind == MATERIAL_LAMBERT)
-        return direct_lighting(dm->scene, s, rng, counters);
-    if (depth >= dm->max_depth)
-        return vec3_zero();
-    if (m->kind == MATERIAL_MIRROR) {
-        struct ray r = make_ray(offset_origin(s->p, s->ng), reflect(s->wo, s->ns));
-        return vec3_mul(m->rho, trace(dm, r, depth + 1, rng, counters));
-    }
-    double weight;
-    struct ray r = glass_ray(s, rng, &weight);
-    return vec3_scale(trace(dm, r, depth + 1, rng, counters), weight);
+    struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
+    struct vec3 l = vec3_zero();
+    if (brdf_has_diffuse(m))
+        l = direct_lighting(dm->scene, s, &frame, rng, counters);
+    if (brdf_has_delta(m) && depth < dm->max_depth)
+        l = vec3_add(l, specular_ray(dm, s, &frame, depth, rng, counters));
+    return l;
 }
 
 static struct vec3 trace(const struct direct_mode *dm, struct ray ray, int depth,
@@ -94,8 +100,9 @@ static struct vec3 direct_radiance(const void *mode, struct ray ray, struct rng 
     return trace(mode, ray, 0, rng, counters);
 }
 
-struct image *render_direct(const struct scene *scene, const struct render_settings *rs,
-                            struct render_counters *counters)
+struct render_result render_direct(const struct scene *scene, const struct render_settings *rs,
+                                   int want_variance, const struct checkpoint *checkpoint,
+                                   struct render_counters *counters)
 {
     struct direct_mode dm;
     dm.scene = scene;
@@ -103,5 +110,5 @@ struct image *render_direct(const struct scene *scene, const struct render_setti
     struct radiance_estimator estimator;
     estimator.radiance = direct_radiance;
     estimator.mode = &dm;
-    return render_pixels(scene, rs, estimator, counters);
+    return render_pixels(scene, rs, estimator, want_variance, checkpoint, counters);
 }

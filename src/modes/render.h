@@ -1,12 +1,17 @@
 /*
- * modes/render.h -- the pixel loop every mode shares.
+ * modes/render.h -- the pixel loop every camera-driven mode shares.
  *
- * A pixel's value is the mean radiance over the pixel's square: spp camera rays through
+ * A pixel's value is the mean radiance over the pixel's square: camera rays through
  * uniformly jittered points of the pixel (a box filter), each estimated independently by
  * the mode. Sample s of pixel (x, y) draws every random number of its path from
  * rng_stream(seed, STREAM_CAMERA, y * width + x, s), (x, y) in the whole image, so a
  * pixel's value depends on nothing but the scene, the settings and its place: a crop
  * equals the same window of the whole image, bit for bit.
+ *
+ * Samples are taken in sample passes: pass s adds sample s to every pixel of the window.
+ * Each pixel's samples are summed in the order s = 0, 1, 2, ..., so stopping after any
+ * pass gives exactly the image a render with that many samples would give. Checkpoints
+ * (for --report) fall after passes 1, 2, 4, 8, ... and after the last.
  */
 #ifndef PHOTON_RENDER_H
 #define PHOTON_RENDER_H
@@ -17,21 +22,23 @@
 #include "../image/image.h"
 #include "../scene/scene.h"
 
-#define MAX_SPP (1 << 20)   /* documented limit on samples per pixel */
+#define MAX_SPP (1 << 20)    /* documented limit on samples per pixel */
 #define MAX_DEPTH_LIMIT 1000 /* documented limit on --max-depth */
 
 struct render_settings {
     uint64_t seed;
-    int spp;            /* camera samples per pixel, 1..MAX_SPP                      */
-    int max_depth;      /* longest chain of bounces followed, 0..MAX_DEPTH_LIMIT      */
-    int x0, y0, x1, y1; /* the window rendered, [x0, x1) x [y0, y1) of the whole image */
-    int progress;       /* whether to print a progress line on stderr                */
+    int spp;            /* camera samples per pixel, 1..MAX_SPP: the most passes run      */
+    double time_limit;  /* CPU seconds; > 0: no pass starts after it has passed           */
+    int max_depth;      /* longest chain of bounces followed, 0..MAX_DEPTH_LIMIT          */
+    int x0, y0, x1, y1; /* the window rendered, [x0, x1) x [y0, y1) of the whole image    */
+    int progress;       /* whether to print a progress line on stderr                     */
 };
 
 struct render_counters {
-    unsigned long long rays;              /* rays cast, camera, secondary and shadow     */
+    unsigned long long rays;              /* rays cast: camera, secondary and shadow     */
     unsigned long long nonfinite_samples; /* samples dropped for NaN or Inf: always 0
                                              unless a bug lets one through              */
+    int passes;                           /* sample passes completed = spp reached       */
 };
 
 /* Radiance arriving at the camera along ray, estimated by a mode from its own state. */
@@ -41,9 +48,30 @@ struct radiance_estimator {
     const void *mode; /* borrowed; passed back to radiance() */
 };
 
-/* Renders the settings' window (width x1 - x0, height y1 - y0) of the scene's image. */
-struct image *render_pixels(const struct scene *scene, const struct render_settings *rs,
-                            struct radiance_estimator estimator,
-                            struct render_counters *counters);
+/* Called at each checkpoint with the current mean image and the work done so far
+ * (samples per pixel for camera modes, photons emitted for photon passes); returns the
+ * CPU seconds it spent, which the render excludes from its own clock. */
+struct checkpoint {
+    double (*at)(void *context, const struct image *mean, long long work, double seconds);
+    void *context;
+};
+
+/* What a render produces: the mean and, optionally, the variance of that mean. */
+struct render_result {
+    struct image *image;    /* owned: mean radiance over each pixel                       */
+    struct image *variance; /* owned or NULL: per pixel and channel, the variance of the
+                               mean, s^2 / n from the samples' own second moment (0 when
+                               fewer than two samples)                                     */
+    double seconds;         /* CPU seconds rendering, checkpoint work excluded            */
+};
+
+/* Renders the settings' window of the scene's image (width x1 - x0, height y1 - y0).
+ * want_variance: also fill result->variance. checkpoint may be NULL. */
+struct render_result render_pixels(const struct scene *scene, const struct render_settings *rs,
+                                   struct radiance_estimator estimator, int want_variance,
+                                   const struct checkpoint *checkpoint,
+                                   struct render_counters *counters);
+
+void render_result_free(struct render_result *result);
 
 #endif

@@ -35,10 +35,11 @@ static inline struct surface surface_at(const struct scene *scene, const struct 
     return s;
 }
 
-/* Radiance the surface emits towards wo: Le on the front side of an emitter, else zero. */
+/* Radiance the surface emits towards wo: Le on an emitter's front side (and its back
+ * side if it is two-sided), else zero. */
 static inline struct vec3 surface_emission(const struct surface *s)
 {
-    return s->front ? s->material->emission : vec3_zero();
+    return s->front || s->material->two_sided ? s->material->emission : vec3_zero();
 }
 
 #endif

@@ -3,6 +3,14 @@
  */
 #include "light.h"
 
+/* Whether a point at squared distance d2 from a sphere light's centre sees its outside.
+ * Points on the sphere itself (within rounding, 1e-9 relative) do not: they see its
+ * surface edge-on, and a point on its inside sees no front side at all. */
+static int outside_sphere(double d2, double r2)
+{
+    return d2 > r2 * (1.0 + 1e-9);
+}
+
 /* A sphere of radius r seen from distance d > r subtends a cone of half-angle theta_max,
  * sin^2 theta_max = (r / d)^2. Directions are sampled uniformly in that cone, so the pdf is
  * 1 / (2 pi (1 - cos theta_max)); 1 - cos is computed as sin^2 / (1 + cos) to keep its
@@ -13,8 +21,8 @@ static int sample_sphere(const struct light *l, struct vec3 p, double u1, double
     struct vec3 to_centre = vec3_sub(l->position, p);
     double d2 = vec3_length2(to_centre);
     double r2 = l->radius * l->radius;
-    if (!(d2 > r2))
-        return 0; /* inside or on the sphere: its outside is not visible from p */
+    if (!outside_sphere(d2, r2))
+        return 0;
     double d = sqrt(d2);
     double sin2_max = r2 / d2;
     double cos_max = sqrt(fmax(0.0, 1.0 - sin2_max));
@@ -37,6 +45,13 @@ static int sample_sphere(const struct light *l, struct vec3 p, double u1, double
     s->li = l->radiance;
     s->pdf = 1.0 / (2.0 * PI * one_minus_cos_max);
     return s->distance > 0;
+}
+
+/* Area of a planar light: |e1 x e2| for a quad, half of it for a triangle. */
+static double planar_area(const struct light *l)
+{
+    double area = vec3_length(vec3_cross(l->e1, l->e2));
+    return l->kind == LIGHT_TRIANGLE ? 0.5 * area : area;
 }
 
 /* A point q on a planar emitter of area A with unnormalised normal n (|n| = A for a quad,
@@ -80,15 +95,50 @@ int light_sample(const struct light *l, struct vec3 p, double u1, double u2,
     case LIGHT_QUAD: {
         struct vec3 q = vec3_add(l->position, vec3_add(vec3_scale(l->e1, u1),
                                                        vec3_scale(l->e2, u2)));
-        return sample_planar(l, p, q, vec3_length(vec3_cross(l->e1, l->e2)), s);
+        return sample_planar(l, p, q, planar_area(l), s);
     }
     case LIGHT_TRIANGLE: {
         /* Uniform by area: v0 + sqrt(u1) ((1 - u2) e1 + u2 e2) (Turk 1990). */
         double su = sqrt(u1);
         struct vec3 q = vec3_add(l->position, vec3_add(vec3_scale(l->e1, su * (1.0 - u2)),
                                                        vec3_scale(l->e2, u2 * su)));
-        return sample_planar(l, p, q, 0.5 * vec3_length(vec3_cross(l->e1, l->e2)), s);
+        return sample_planar(l, p, q, planar_area(l), s);
     }
     }
     return 0;
+}
+
+double light_pdf(const struct light *l, struct vec3 p, struct vec3 q, struct vec3 wi)
+{
+    if (l->kind == LIGHT_POINT)
+        return 0.0;
+    if (l->kind == LIGHT_SPHERE) {
+        double d2 = vec3_length2(vec3_sub(l->position, p));
+        double r2 = l->radius * l->radius;
+        if (!outside_sphere(d2, r2))
+            return 0.0;
+        double sin2_max = r2 / d2;
+        double one_minus_cos_max = sin2_max / (1.0 + sqrt(fmax(0.0, 1.0 - sin2_max)));
+        return one_minus_cos_max > 0 ? 1.0 / (2.0 * PI * one_minus_cos_max) : 0.0;
+    }
+    struct vec3 n = vec3_normalize(vec3_cross(l->e1, l->e2));
+    double cos_light = -vec3_dot(wi, n);
+    double area = planar_area(l);
+    if (!(cos_light > 0) || !(area > 0))
+        return 0.0; /* the back of a one-sided emitter is never sampled */
+    return vec3_length2(vec3_sub(q, p)) / (area * cos_light);
+}
+
+struct vec3 light_power(const struct light *l)
+{
+    switch (l->kind) {
+    case LIGHT_POINT:
+        return l->power;
+    case LIGHT_SPHERE:
+        return vec3_scale(l->radiance, PI * 4.0 * PI * l->radius * l->radius);
+    case LIGHT_QUAD:
+    case LIGHT_TRIANGLE:
+        return vec3_scale(l->radiance, PI * planar_area(l));
+    }
+    return vec3_zero();
 }

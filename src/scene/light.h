@@ -42,4 +42,13 @@ struct light_sample {
 int light_sample(const struct light *l, struct vec3 p, double u1, double u2,
                  struct light_sample *s);
 
+/* The solid-angle pdf with which light_sample() from p produces the direction wi that
+ * reaches the light's front at point q (a hit on the light): what multiple importance
+ * sampling needs when a BRDF-sampled ray lands on an emitter. 0 for a point light. */
+double light_pdf(const struct light *l, struct vec3 p, struct vec3 q, struct vec3 wi);
+
+/* Total emitted power Phi per channel: a point light's power; an area light of radiance
+ * Le and area A emitting from one side into the hemisphere, Phi = pi Le A. */
+struct vec3 light_power(const struct light *l);
+
 #endif

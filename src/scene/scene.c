@@ -34,6 +34,7 @@ void scene_free(struct scene *scene)
         return;
     geometry_free(scene->geometry);
     free(scene->light_of_prim);
+    free(scene->light_cdf);
     free(scene->lights);
     free(scene->materials);
     free(scene);
@@ -144,8 +145,52 @@ int scene_add_point_light(struct scene *scene, struct vec3 position, struct vec3
     return add_light(scene, &l);
 }
 
+/* The cumulative distribution of picking lights by power (scene_pick_light). */
+static void build_light_cdf(struct scene *scene)
+{
+    size_t n = scene->n_lights;
+    double total = 0.0;
+    scene->light_cdf = xmalloc(n + 1, sizeof *scene->light_cdf, "light distribution");
+    for (size_t i = 0; i < n; i++)
+        total += fmax(0.0, vec3_luminance(light_power(&scene->lights[i])));
+    scene->light_cdf[0] = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        double weight = total > 0 ? fmax(0.0, vec3_luminance(light_power(&scene->lights[i])))
+                                        / total
+                                  : 1.0 / n;
+        scene->light_cdf[i + 1] = scene->light_cdf[i] + weight;
+    }
+    if (n > 0)
+        scene->light_cdf[n] = 1.0; /* exactly, whatever the rounding of the sum */
+}
+
+int scene_pick_light(const struct scene *scene, double u, double *probability)
+{
+    size_t lo = 0, hi = scene->n_lights;
+    if (hi == 0)
+        return -1;
+    /* Binary search for the i with cdf[i] <= u < cdf[i + 1], skipping empty intervals. */
+    while (hi - lo > 1) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (scene->light_cdf[mid] <= u)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    while (scene->light_cdf[lo + 1] - scene->light_cdf[lo] <= 0)
+        lo--; /* a black light was landed on only through rounding at its boundary */
+    *probability = scene->light_cdf[lo + 1] - scene->light_cdf[lo];
+    return (int)lo;
+}
+
+double scene_light_probability(const struct scene *scene, int light)
+{
+    return scene->light_cdf[light + 1] - scene->light_cdf[light];
+}
+
 void scene_finish(struct scene *scene, int width, int height)
 {
+    build_light_cdf(scene);
     scene->width = width;
     scene->height = height;
     camera_setup(&scene->camera, width, height);

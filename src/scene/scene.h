@@ -33,6 +33,9 @@ struct scene {
     size_t n_materials;
     struct light *lights;        /* owned; n_lights of them                             */
     size_t n_lights;
+    double *light_cdf;           /* owned, set by scene_finish(): n_lights + 1 entries,
+                                    light_cdf[i + 1] - light_cdf[i] = light i's probability
+                                    of being picked, proportional to its power           */
     int *light_of_prim;          /* owned; for each primitive id, its light or -1       */
     size_t n_prims;              /* primitives added so far (= entries of light_of_prim) */
     struct geometry *geometry;   /* owned                                               */
@@ -60,6 +63,14 @@ int scene_add_point_light(struct scene *scene, struct vec3 position, struct vec3
 
 /* Sets the image size, sets up the camera and builds the BVH. Call once, after the adds. */
 void scene_finish(struct scene *scene, int width, int height);
+
+/* Picks a light for one sample with probability proportional to the luminance of its
+ * power (Phi), uniformly if every light is black; u uniform in [0, 1). Returns the light
+ * and its probability in *probability (> 0), or -1 when the scene has no light. */
+int scene_pick_light(const struct scene *scene, double u, double *probability);
+
+/* The probability with which scene_pick_light() picks light. */
+double scene_light_probability(const struct scene *scene, int light);
 
 static inline int scene_intersect(const struct scene *scene, struct ray ray, double tmax,
                                   struct hit *hit)

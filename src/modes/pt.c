@@ -1,0 +1,154 @@
+/*
+ * modes/pt.c -- `--mode pt`: unbiased path tracing (Kajiya 1986), the ground truth.
+ *
+ * Each camera sample follows one path. At every surface with a non-delta BRDF, one light
+ * is sampled (picked by power) and shadow-tested: next-event estimation. The path then
+ * continues in a direction sampled from the BRDF. Emission found by that BRDF-sampled ray
+ * and the light sample estimate the same light twice, so both are weighted by Veach's
+ * power heuristic (multiple importance sampling, Veach 1997, Sec. 9.2): each weight is
+ * pdf_a^2 / (pdf_a^2 + pdf_b^2) for the two strategies' solid-angle densities of the
+ * same direction, and the weights of the two sum to one. Point lights and delta lobes
+ * have one strategy only and weight 1. After ROULETTE_DEPTH bounces Russian roulette ends
+ * a path with probability 1 - q, q = min(1, max channel of the throughput), and divides
+ * survivors by q: unbiased, and no path is cut short by a depth limit it could exceed in
+ * practice (--max-depth defaults to the limit, 1000). Nothing is clamped.
+ */
+#include "pt.h"
+
+#include "../scene/brdf.h"
+#include "surface.h"
+
+#define ROULETTE_DEPTH 3 /* bounces before roulette, as in pbrt: short paths are cheap */
+
+struct pt_mode {
+    const struct scene *scene; /* borrowed */
+    int max_depth;
+};
+
+/* Where a path has been, for weighting the emission its next ray finds. */
+struct path_vertex {
+    struct vec3 p;  /* the last scattering point                                   */
+    double pdf;     /* solid-angle pdf of the direction sampled there              */
+    int delta;      /* whether it was a delta lobe (or the camera): no MIS         */
+};
+
+/* Veach 1997 Eq. 9.13 with beta = 2: the weight of strategy a against strategy b. */
+static double power_heuristic(double pdf_a, double pdf_b)
+{
+    double a2 = pdf_a * pdf_a, b2 = pdf_b * pdf_b;
+    return a2 + b2 > 0 ? a2 / (a2 + b2) : 0.0;
+}
+
+/* Next-event estimation: reflected radiance from one light sample, MIS-weighted. */
+static struct vec3 sample_one_light(const struct scene *scene, const struct surface *s,
+                                    const struct shading_frame *frame, struct rng *rng,
+                                    struct render_counters *counters)
+{
+    double pick;
+    int index = scene_pick_light(scene, rng_uniform(rng), &pick);
+    double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
+    struct light_sample ls;
+    if (index < 0 || !light_sample(&scene->lights[index], s->p, u1, u2, &ls))
+        return vec3_zero();
+    double cos_theta = vec3_dot(s->ns, ls.wi);
+    if (cos_theta <= 0 || vec3_dot(s->ng, ls.wi) <= 0)
+        return vec3_zero(); /* the light is behind the surface */
+    struct vec3 fr = brdf_eval(s->material, frame, s->wo, ls.wi);
+    if (vec3_max_component(fr) <= 0)
+        return vec3_zero();
+    counters->rays++;
+    if (scene_occluded(scene, offset_origin(s->p, s->ng), ls.wi, ls.distance))
+        return vec3_zero();
+    double pdf_light = pick * ls.pdf; /* > 0: pick > 0 and light_sample() succeeded */
+    double weight = scene->lights[index].kind == LIGHT_POINT
+                        ? 1.0
+                        : power_heuristic(pdf_light, brdf_pdf(s->material, frame, s->wo, ls.wi));
+    return vec3_scale(vec3_mul(fr, ls.li), cos_theta * weight / pdf_light);
+}
+
+/* Emitted radiance that a BRDF-sampled ray found at s, MIS-weighted against having
+ * sampled the same light from the previous vertex. */
+static struct vec3 emission_found(const struct scene *scene, const struct surface *s,
+                                  const struct path_vertex *previous)
+{
+    struct vec3 le = surface_emission(s);
+    int light = scene->light_of_prim[s->prim];
+    if (previous->delta || light < 0 || vec3_max_component(le) <= 0)
+        return le;
+    double pdf_light = scene_light_probability(scene, light) *
+                       light_pdf(&scene->lights[light], previous->p, s->p, vec3_neg(s->wo));
+    return vec3_scale(le, power_heuristic(previous->pdf, pdf_light));
+}
+
+/* The ray leaving s along a sampled direction: from the side wi is on. */
+static struct ray continue_ray(const struct surface *s, const struct brdf_sample *bs)
+{
+    struct vec3 side = bs->transmitted ? vec3_neg(s->ng) : s->ng;
+    return make_ray(offset_origin(s->p, side), bs->wi);
+}
+
+/* Russian roulette: 0 ends the path; otherwise *beta is divided by the survival odds. */
+static int survives_roulette(struct vec3 *beta, int depth, struct rng *rng)
+{
+    if (depth < ROULETTE_DEPTH)
+        return 1;
+    double q = fmin(1.0, vec3_max_component(*beta));
+    if (!(rng_uniform(rng) < q))
+        return 0; /* also ends paths whose throughput is 0 or NaN */
+    *beta = vec3_scale(*beta, 1.0 / q); /* q > 0 here: a uniform number was below it */
+    return 1;
+}
+
+static struct vec3 trace_path(const struct pt_mode *pt, struct ray ray, struct rng *rng,
+                              struct render_counters *counters)
+{
+    const struct scene *scene = pt->scene;
+    struct vec3 l = vec3_zero(), beta = vec3(1, 1, 1);
+    struct path_vertex previous = {{0, 0, 0}, 0.0, 1}; /* the camera: a delta "lobe" */
+    for (int depth = 0;; depth++) {
+        struct hit hit;
+        counters->rays++;
+        if (!scene_intersect(scene, ray, INFINITY, &hit))
+            return vec3_add(l, vec3_mul(beta, scene->background));
+        struct surface s = surface_at(scene, &hit, vec3_neg(ray.dir));
+        l = vec3_add(l, vec3_mul(beta, emission_found(scene, &s, &previous)));
+        if (depth >= pt->max_depth)
+            return l;
+        struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
+                                                               TRANSPORT_RADIANCE);
+        if (brdf_has_diffuse(s.material))
+            l = vec3_add(l, vec3_mul(beta, sample_one_light(scene, &s, &frame, rng, counters)));
+        double u[3];
+        for (int k = 0; k < 3; k++)
+            u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+        struct brdf_sample bs;
+        if (!brdf_sample(s.material, &frame, s.wo, u, &bs))
+            return l;
+        beta = vec3_mul(beta, bs.weight);
+        previous.p = s.p;
+        previous.pdf = bs.pdf;
+        previous.delta = bs.delta;
+        ray = continue_ray(&s, &bs);
+        if (!survives_roulette(&beta, depth + 1, rng))
+            return l;
+    }
+}
+
+static struct vec3 pt_radiance(const void *mode, struct ray ray, struct rng *rng,
+                               struct render_counters *counters)
+{
+    return trace_path(mode, ray, rng, counters);
+}
+
+struct render_result render_pt(const struct scene *scene, const struct render_settings *rs,
+                               int want_variance, const struct checkpoint *checkpoint,
+                               struct render_counters *counters)
+{
+    struct pt_mode pt;
+    pt.scene = scene;
+    pt.max_depth = rs->max_depth;
+    struct radiance_estimator estimator;
+    estimator.radiance = pt_radiance;
+    estimator.mode = &pt;
+    return render_pixels(scene, rs, estimator, want_variance, checkpoint, counters);
+}

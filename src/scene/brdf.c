@@ -1,0 +1,212 @@
+/*
+ * scene/brdf.c -- the material interface (brdf.h): local frames, dispatch, and the
+ * models with no parameters beyond a reflectance: Lambert, the ideal mirror and glass.
+ *
+ * Every call turns world directions into the frame's local coordinates (z along n) and
+ * hands them to a model; phong.c, ward.c and schlick.c hold the glossy ones
+ * (brdf_models.h). A non-delta sample's weight and pdf are computed here from the
+ * model's own eval and pdf, so the three always agree.
+ *
+ * Glass follows direct.c's glass_ray(): eta = n_t / n_i with the outside at index 1;
+ * the reflected or refracted lobe is chosen with the exact Fresnel probability F
+ * (optics.h), so its weight is the lobe's reflectance over its probability: 1 for
+ * reflection, (1 - F) / (1 - F) / eta^2 for radiance refracted (Veach 1997, Sec. 5.2).
+ */
+#include "brdf.h"
+
+#include <assert.h>
+#include <float.h>
+
+#include "brdf_models.h"
+#include "optics.h"
+
+struct shading_frame shading_frame_from_normal(struct vec3 n, int front,
+                                               enum transport transport)
+{
+    struct shading_frame f;
+    f.n = n;
+    vec3_frame(n, &f.t, &f.b);
+    f.front = front;
+    f.transport = transport;
+    return f;
+}
+
+static struct vec3 to_local(const struct shading_frame *f, struct vec3 w)
+{
+    return vec3(vec3_dot(w, f->t), vec3_dot(w, f->b), vec3_dot(w, f->n));
+}
+
+static struct vec3 to_world(const struct shading_frame *f, struct vec3 w)
+{
+    return vec3_add(vec3_add(vec3_scale(f->t, w.x), vec3_scale(f->b, w.y)),
+                    vec3_scale(f->n, w.z));
+}
+
+struct vec3 brdf_eval(const struct material *m, const struct shading_frame *f, struct vec3 wo,
+                      struct vec3 wi)
+{
+    struct vec3 lo = to_local(f, wo), li = to_local(f, wi);
+    if (!(lo.z > 0 && li.z > 0))
+        return vec3_zero();
+    switch (m->kind) {
+    case MATERIAL_LAMBERT:
+        return vec3_scale(m->rho, 1.0 / PI);
+    case MATERIAL_PHONG:
+        return phong_eval(m, lo, li);
+    case MATERIAL_WARD:
+        return ward_eval(m, lo, li);
+    case MATERIAL_SCHLICK:
+        return schlick_eval(m, lo, li);
+    case MATERIAL_MIRROR:
+    case MATERIAL_GLASS:
+        break;
+    }
+    return vec3_zero();
+}
+
+static double pdf_local(const struct material *m, struct vec3 lo, struct vec3 li)
+{
+    switch (m->kind) {
+    case MATERIAL_LAMBERT:
+        return li.z / PI;
+    case MATERIAL_PHONG:
+        return phong_pdf(m, lo, li);
+    case MATERIAL_WARD:
+        return ward_pdf(m, lo, li);
+    case MATERIAL_SCHLICK:
+        return schlick_pdf(m, lo, li);
+    case MATERIAL_MIRROR:
+    case MATERIAL_GLASS:
+        break;
+    }
+    return 0.0;
+}
+
+double brdf_pdf(const struct material *m, const struct shading_frame *f, struct vec3 wo,
+                struct vec3 wi)
+{
+    struct vec3 lo = to_local(f, wo), li = to_local(f, wi);
+    if (!(lo.z > 0 && li.z > 0))
+        return 0.0;
+    /* A glossy lobe's density grows as 1 / (wo . h); with wo within 1e-300 of the plane
+     * and a lobe narrower than 1e-8 it would overflow: saturate instead of giving inf. */
+    return fmin(pdf_local(m, lo, li), DBL_MAX);
+}
+
+/* One of glass's two delta lobes, chosen with the Fresnel probability. */
+static int sample_glass(const struct material *m, const struct shading_frame *f,
+                        struct vec3 wo, double u, struct brdf_sample *s)
+{
+    assert(m->ior > 0);
+    double eta = f->front ? m->ior : 1.0 / m->ior; /* n_t / n_i, outside at index 1 */
+    double reflectance = fresnel_dielectric(vec3_dot(wo, f->n), eta); /* 1 on TIR */
+    s->delta = 1;
+    if (u >= reflectance && refract(wo, f->n, eta, &s->wi)) {
+        double scale = f->transport == TRANSPORT_RADIANCE ? 1.0 / (eta * eta) : 1.0;
+        s->weight = vec3(scale, scale, scale);
+        s->pdf = 1.0 - reflectance; /* > 0: u < 1 and u >= reflectance */
+        s->transmitted = 1;
+        return 1;
+    }
+    s->wi = reflect(wo, f->n);
+    s->weight = vec3(1.0, 1.0, 1.0);
+    s->pdf = reflectance;
+    return 1;
+}
+
+/* The lobe direction from the model; delta lobes come back complete. */
+static int sample_local(const struct material *m, struct vec3 lo, const double u[3],
+                        struct brdf_sample *s)
+{
+    switch (m->kind) {
+    case MATERIAL_LAMBERT:
+        assert(is_reflectance(m->rho));
+        s->wi = sample_cosine_local(u[1], u[2]);
+        return channel_mean(m->rho) > 0;
+    case MATERIAL_MIRROR:
+        assert(is_reflectance(m->rho));
+        if (!(channel_mean(m->rho) > 0))
+            return 0;
+        s->wi = vec3(-lo.x, -lo.y, lo.z);
+        s->weight = m->rho;
+        s->pdf = 1.0;
+        s->delta = 1;
+        return 1;
+    case MATERIAL_PHONG:
+        return phong_sample(m, lo, u, s);
+    case MATERIAL_WARD:
+        return ward_sample(m, lo, u, s);
+    case MATERIAL_SCHLICK:
+        return schlick_sample(m, lo, u, s);
+    case MATERIAL_GLASS:
+        break;
+    }
+    return 0;
+}
+
+int brdf_sample(const struct material *m, const struct shading_frame *f, struct vec3 wo,
+                const double u[3], struct brdf_sample *s)
+{
+    struct vec3 lo = to_local(f, wo);
+    s->delta = 0;
+    s->transmitted = 0;
+    if (!(lo.z > 0))
+        return 0;
+    if (m->kind == MATERIAL_GLASS)
+        return sample_glass(m, f, wo, u[0], s);
+    if (!sample_local(m, lo, u, s) || !(s->wi.z > 0))
+        return 0;
+    struct vec3 li = s->wi;
+    s->wi = to_world(f, li);
+    if (s->delta)
+        return 1;
+    s->pdf = brdf_pdf(m, f, wo, s->wi);
+    if (!(s->pdf > 0))
+        return 0; /* a direction the pdf cannot see (underflow far out in a lobe's tail) */
+    if (m->kind == MATERIAL_LAMBERT)
+        s->weight = m->rho; /* (rho / pi) cos / (cos / pi), without rounding */
+    else
+        s->weight = vec3_scale(brdf_eval(m, f, wo, s->wi), vec3_dot(s->wi, f->n) / s->pdf);
+    return 1;
+}
+
+struct vec3 brdf_albedo(const struct material *m, const struct shading_frame *f,
+                        struct vec3 wo)
+{
+    struct vec3 lo = to_local(f, wo);
+    if (!(lo.z > 0))
+        return vec3_zero();
+    switch (m->kind) {
+    case MATERIAL_LAMBERT:
+    case MATERIAL_MIRROR:
+        return m->rho;
+    case MATERIAL_GLASS:
+        return vec3(1.0, 1.0, 1.0); /* F + (1 - F): glass absorbs nothing */
+    case MATERIAL_PHONG:
+        return phong_albedo(m, lo);
+    case MATERIAL_WARD:
+        /* The bound: the specular albedo is at most rho_s (ward.c). */
+        return vec3_add(m->rho, m->rho_s);
+    case MATERIAL_SCHLICK:
+        /* The bound: a + b + c = 1 and the glossy term's albedo is at most 1 (schlick.c);
+         * exact for r = 0 and r = 1, which have no glossy term. */
+        return m->rho;
+    }
+    return vec3_zero();
+}
+
+int brdf_is_delta(const struct material *m)
+{
+    return material_is_specular(m);
+}
+
+int brdf_has_diffuse(const struct material *m)
+{
+    return !material_is_specular(m);
+}
+
+int brdf_has_delta(const struct material *m)
+{
+    return m->kind == MATERIAL_MIRROR || m->kind == MATERIAL_GLASS ||
+           (m->kind == MATERIAL_SCHLICK && m->roughness < 0.5); /* Schlick's c > 0 (schlick.c) */
+}

@@ -1,0 +1,236 @@
+/*
+ * tests/test_pt.c -- the path tracer against closed forms (scenes/analytic/), with
+ * tolerances from the standard errors the renderer itself reports (its variance image).
+ */
+#include <math.h>
+#include <string.h>
+
+#include "../src/image/compare.h"
+#include "../src/modes/direct.h"
+#include "../src/modes/pt.h"
+#include "tests.h"
+
+/* Loads and finishes a scene at width x height (0 x 0: the file's own size). */
+static struct scene *load_scene(const char *path, int width, int height)
+{
+    struct error err;
+    struct scene *scene = scene_load(path, &err);
+    if (scene == NULL) {
+        error_print(&err);
+        return NULL;
+    }
+    scene_finish(scene, width > 0 ? width : scene->width, height > 0 ? height : scene->height);
+    return scene;
+}
+
+static struct render_result render_seed(const struct scene *scene, int pt, int spp,
+                                        uint64_t seed)
+{
+    struct render_settings rs;
+    memset(&rs, 0, sizeof rs);
+    rs.seed = seed;
+    rs.spp = spp;
+    rs.max_depth = pt ? MAX_DEPTH_LIMIT : DIRECT_MAX_DEPTH;
+    rs.x1 = scene->width;
+    rs.y1 = scene->height;
+    struct render_counters counters = {0, 0, 0};
+    if (pt)
+        return render_pt(scene, &rs, 1, NULL, &counters);
+    return render_direct(scene, &rs, 1, NULL, &counters);
+}
+
+/* truth: the white furnace, L = Le / (1 - rho) = 5 in every pixel, whatever the path.
+ * tolerance: the image mean within 4 standard errors, the SE from the render's own
+ *   variance image (green channel; the channels are identical, so they are not
+ *   independent and only one is used). 1024 samples make the SE below 0.2% of the
+ *   answer, so a bias of 1% cannot pass.
+ * catches: Russian roulette without reweighting (darker), a missing 1/pi or cos in the
+ *   Lambertian sampling weight, MIS weights that do not sum to one, a path cut by a
+ *   depth limit (darker by rho^depth). */
+static void test_furnace(struct check *t)
+{
+    struct scene *scene = load_scene("scenes/analytic/furnace.scene", 0, 0);
+    CHECK(t, scene != NULL);
+    if (scene == NULL)
+        return;
+    struct render_result r = render_seed(scene, 1, 1024, 7);
+    double sum = 0, var = 0;
+    size_t n = (size_t)r.image->width * (size_t)r.image->height;
+    for (size_t i = 0; i < n; i++) {
+        sum += r.image->pixels[i].y;
+        var += r.variance->pixels[i].y;
+    }
+    double se = sqrt(var) / n;
+    CHECK(t, se > 0 && se < 0.01);
+    CHECK_CLOSE(t, sum / n, 5.0, 4 * se);
+    render_result_free(&r);
+    scene_free(scene);
+}
+
+/* Lambert's formula (light.h's convention): irradiance at p, normal n, from a polygon of
+ * radiance le. */
+static double polygon_irradiance(const struct vec3 *v, int count, struct vec3 p, struct vec3 n,
+                                 double le)
+{
+    double sum = 0;
+    for (int i = 0; i < count; i++) {
+        struct vec3 a = vec3_normalize(vec3_sub(v[i], p));
+        struct vec3 b = vec3_normalize(vec3_sub(v[(i + 1) % count], p));
+        double beta = acos(fmax(-1.0, fmin(1.0, vec3_dot(a, b))));
+        sum += beta * vec3_dot(n, vec3_normalize(vec3_cross(a, b)));
+    }
+    return le / 2 * fabs(sum);
+}
+
+/* The closed-form radiance the camera sees through image point (px, py) of
+ * scenes/analytic/area-over-floor.scene: the light's Le where the ray meets the light
+ * square first, else rho E / pi of the floor. */
+static double area_over_floor(const struct scene *scene, double px, double py)
+{
+    static const struct vec3 light[4] = {{-0.5, 1, -0.5}, {0.5, 1, -0.5}, {0.5, 1, 0.5},
+                                         {-0.5, 1, 0.5}};
+    struct ray r = camera_ray(&scene->camera, px, py);
+    if (r.dir.y > 0) {
+        struct vec3 q = ray_at(r, (1 - r.origin.y) / r.dir.y);
+        return fabs(q.x) <= 0.5 && fabs(q.z) <= 0.5 ? 10.0 : 0.0;
+    }
+    struct vec3 x = ray_at(r, -r.origin.y / r.dir.y);
+    return 0.5 * polygon_irradiance(light, 4, x, vec3(0, 1, 0), 10.0) / PI;
+}
+
+/* truth: Lambert's polygon formula for the floor under a square light, integrated over
+ *   each pixel with an 8 x 8 midpoint rule (its error is far below the noise), for both
+ *   --mode direct and --mode pt (the light is black, so pt adds nothing).
+ * tolerance: per pixel 5 standard errors from the variance image, plus 1% of the value
+ *   for the quadrature near the light's edge; and over the floor's pixels the sum of
+ *   squared z-scores must be near its expectation (within 4 sigma of a chi-square).
+ * catches: area pdf not converted to solid angle, a wrong cos at the light, light picked
+ *   without dividing by its probability, MIS double counting (pt brighter than direct). */
+static void test_area_light_over_floor(struct check *t)
+{
+    struct scene *scene = load_scene("scenes/analytic/area-over-floor.scene", 0, 0);
+    CHECK(t, scene != NULL);
+    if (scene == NULL)
+        return;
+    for (int pt = 0; pt < 2; pt++) {
+        struct render_result r = render_seed(scene, pt, 64, 7);
+        double chi2 = 0;
+        int n_floor = 0;
+        for (int y = 0; y < r.image->height; y++)
+            for (int x = 0; x < r.image->width; x++) {
+                double exact = 0;
+                for (int j = 0; j < 8; j++)
+                    for (int i = 0; i < 8; i++)
+                        exact += area_over_floor(scene, x + (i + 0.5) / 8, y + (j + 0.5) / 8);
+                exact /= 64;
+                double v = image_get(r.image, x, y).y;
+                double se = sqrt(image_get(r.variance, x, y).y);
+                CHECK(t, fabs(v - exact) <= 5 * se + 0.01 * exact);
+                if (se > 0 && exact < 1.0) {
+                    chi2 += (v - exact) * (v - exact) / (se * se);
+                    n_floor++;
+                }
+            }
+        CHECK(t, n_floor > 300);
+        CHECK(t, fabs(chi2 - n_floor) <= 4 * sqrt(2.0 * n_floor));
+        render_result_free(&r);
+    }
+    scene_free(scene);
+}
+
+/* Makes every emitter of the scene brighter by factor, in its light and its material. */
+static void brighten_lights(struct scene *scene, double factor)
+{
+    for (size_t i = 0; i < scene->n_lights; i++)
+        scene->lights[i].radiance = vec3_scale(scene->lights[i].radiance, factor);
+    for (size_t i = 0; i < scene->n_materials; i++)
+        scene->materials[i].emission = vec3_scale(scene->materials[i].emission, factor);
+}
+
+/* truth: two renders of the same scene with different seeds estimate the same image, so
+ *   the per-pixel test of image_consistency() (z with both variances, Sidak-corrected
+ *   over all pixels at alpha = 0.01) must accept them; a render whose light is 2% too
+ *   bright must be refused.
+ * tolerance: the test's own level, alpha = 0.01, with fixed seeds.
+ * catches: a variance image of single samples instead of the mean (too wide: everything
+ *   passes), or of the sum (too narrow: independent renders fail), a variance that ignores
+ *   the test image's noise. The biased render fails at the pixels that see the light
+ *   itself, whose variance is zero: at 256 samples a 2% bias in the noisy diffuse pixels
+ *   is below one standard error, which is why references are judged by relmse as well. */
+static void test_independent_renders_agree(struct check *t)
+{
+    struct scene *scene = load_scene("scenes/cornell.scene", 32, 32);
+    CHECK(t, scene != NULL);
+    if (scene == NULL)
+        return;
+    struct render_result a = render_seed(scene, 1, 256, 1);
+    struct render_result b = render_seed(scene, 1, 256, 2);
+    brighten_lights(scene, 1.02);
+    struct render_result biased = render_seed(scene, 1, 256, 2);
+    struct consistency same = image_consistency(b.image, a.image, b.variance, a.variance, 0.01);
+    struct consistency off =
+        image_consistency(biased.image, a.image, biased.variance, a.variance, 0.01);
+    CHECK(t, same.consistent && same.n_failed == 0);
+    CHECK(t, !off.consistent && off.n_failed > 0);
+    render_result_free(&biased);
+    render_result_free(&b);
+    render_result_free(&a);
+    scene_free(scene);
+}
+
+/* The relmse a render of spp samples per pixel should have against the reference, from
+ * the reference's own variance image (made with REFERENCE_SPP samples): a pixel's
+ * variance at spp samples is var_ref * REFERENCE_SPP / spp, and relmse averages
+ * (a - b)^2 / (b^2 + 0.01); the reference's own error adds spp / REFERENCE_SPP of that. */
+#define REFERENCE_SPP 4096 /* reference/README.md: the command that made cornell-pt.pfm */
+static double expected_relmse(const struct image *ref, const struct image *ref_var, int spp)
+{
+    double sum = 0;
+    size_t n = (size_t)ref->width * (size_t)ref->height;
+    for (size_t i = 0; i < n; i++) {
+        double b[3] = {ref->pixels[i].x, ref->pixels[i].y, ref->pixels[i].z};
+        double v[3] = {ref_var->pixels[i].x, ref_var->pixels[i].y, ref_var->pixels[i].z};
+        for (int c = 0; c < 3; c++)
+            sum += v[c] * ((double)REFERENCE_SPP / spp + 1.0) / (b[c] * b[c] + 1e-2);
+    }
+    return sum / (3.0 * n);
+}
+
+/* truth: reference/cornell-pt.pfm and its variance image, made by an independent run
+ *   (another seed, 4096 samples). A short render's relmse against it must be what the
+ *   reference's variance predicts for that many samples: not zero (not the same
+ *   samples), not large (the renderer and the reference agree), and falling as 1/spp.
+ * tolerance: 20% of the prediction: relmse averages 196,608 squared errors, so its own
+ *   scatter is a few percent (measured: 1-2%). A bias of 5% in the image adds about
+ *   (0.05 b)^2 / (b^2 + 0.01) = 2.4e-3 at the typical b = 0.5, more than 20% of the 7.5e-3
+ *   expected at 16 samples, so it fails; smaller biases are for converged comparisons.
+ * catches: a renderer that drifted from the reference (any bias), a stale reference, a
+ *   variance image that is not the variance of the mean. */
+static void test_error_against_reference(struct check *t)
+{
+    struct error err;
+    struct image *ref = pfm_read("reference/cornell-pt.pfm", &err);
+    struct image *ref_var = pfm_read("reference/cornell-pt-var.pfm", &err);
+    struct scene *scene = load_scene("scenes/cornell.scene", 0, 0);
+    CHECK(t, ref != NULL && ref_var != NULL && scene != NULL);
+    if (ref != NULL && ref_var != NULL && scene != NULL) {
+        for (int spp = 4; spp <= 16; spp *= 4) {
+            struct render_result r = render_seed(scene, 1, spp, 1000);
+            double relmse = image_compare(r.image, ref).relmse;
+            double expected = expected_relmse(ref, ref_var, spp);
+            CHECK(t, fabs(relmse - expected) <= 0.2 * expected);
+            render_result_free(&r);
+        }
+    }
+    scene_free(scene);
+    image_free(ref_var);
+    image_free(ref);
+}
+
+void test_pt(struct check *t)
+{
+    RUN_TEST(t, test_furnace);
+    RUN_TEST(t, test_area_light_over_floor);
+    RUN_TEST(t, test_independent_renders_agree);
+    RUN_TEST(t, test_error_against_reference);
+}
