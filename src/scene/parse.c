@@ -13,6 +13,8 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../geom/heightfield.h"
+#include "../geom/sphereflake.h"
 #include "../image/image.h"
 #include "scene.h"
 
@@ -445,6 +447,131 @@ static int parse_light(struct parser *ps, struct error *err)
     return check_added(ps, id, err);
 }
 
+/* Reads a material for a procedural shape: defined, and not emitting (shapes are not
+ * sampled as lights). Returns its index or -1. */
+static int read_shape_material(struct parser *ps, struct error *err)
+{
+    int m = read_material(ps, err);
+    if (m >= 0 && material_emits(&ps->scene->materials[m]))
+        return parse_error(ps, err, "an emitting material cannot be used here");
+    return m;
+}
+
+/* Reads the optional last word "expand": store the shape's primitives in the BVH instead
+ * of intersecting the shape procedurally (for comparisons). */
+static int read_expand(struct parser *ps, struct error *err)
+{
+    int expand = ps->next < ps->n_tokens && strcmp(ps->tokens[ps->next], "expand") == 0;
+    ps->next += expand;
+    return expect_end(ps, err) < 0 ? -1 : expand;
+}
+
+/* Whether count more primitives stay within MAX_PRIMITIVES. */
+static int room_for(const struct parser *ps, double count)
+{
+    return ps->scene->n_prims + count <= MAX_PRIMITIVES;
+}
+
+/* Adds a created shape to the scene; the shape is freed here if it cannot be added. */
+static int add_shape(struct parser *ps, const struct shape_ops *ops, void *shape, int material,
+                     struct error *err)
+{
+    if (scene_add_shape(ps->scene, ops, shape, material) >= 0)
+        return 0;
+    ops->free(shape);
+    return check_added(ps, -1, err);
+}
+
+static void add_flake_sphere(void *context, struct vec3 centre, double radius, int material)
+{
+    scene_add_sphere(context, centre, radius, material); /* room_for() checked the count */
+}
+
+/* "sphereflake CX CY CZ RADIUS LEVELS AX AY AZ MATERIAL [MATERIAL ...] [expand]": Haines'
+ * sphere flake with its top sphere's axis along A; one material per depth, the last one
+ * repeating for the depths below. */
+static int parse_sphereflake(struct parser *ps, struct error *err)
+{
+    struct sphereflake_params params;
+    double v[8];
+    int n = 0;
+    if (read_numbers(ps, v, 8, "centre x y z, radius, levels, axis x y z", err) < 0)
+        return -1;
+    if (!(v[4] >= 0 && v[4] <= SPHEREFLAKE_MAX_LEVELS && v[4] == floor(v[4])))
+        return error_set(err, ps->file, ps->line,
+                         "sphereflake: levels must be a whole number from 0 to %d",
+                         SPHEREFLAKE_MAX_LEVELS);
+    params.centre = vec3_at(v);
+    params.radius = v[3];
+    params.levels = (int)v[4];
+    params.orientation = vec3_at(v + 5);
+    do {
+        if (n > params.levels)
+            return parse_error(ps, err, "more materials than depths (levels + 1)");
+        params.materials[n] = read_shape_material(ps, err);
+        if (params.materials[n++] < 0)
+            return -1;
+    } while (ps->next < ps->n_tokens && strcmp(ps->tokens[ps->next], "expand") != 0);
+    for (int depth = n; depth <= SPHEREFLAKE_MAX_LEVELS; depth++)
+        params.materials[depth] = params.materials[n - 1];
+    int expand = read_expand(ps, err);
+    if (expand < 0)
+        return -1;
+    struct error inner;
+    struct sphereflake *flake = sphereflake_create(&params, &inner);
+    if (flake == NULL)
+        return error_set(err, ps->file, ps->line, "%s", inner.message);
+    if (!expand)
+        return add_shape(ps, &sphereflake_ops, flake, params.materials[0], err);
+    int fits = room_for(ps, sphereflake_sphere_count(params.levels));
+    if (fits)
+        sphereflake_spheres(flake, add_flake_sphere, ps->scene);
+    sphereflake_free(flake);
+    return check_added(ps, fits ? 0 : -1, err);
+}
+
+static void add_terrain_triangle(void *context, const struct vec3 v[3],
+                                 const struct vec3 normals[3], int material)
+{
+    scene_add_triangle(context, v, normals, material); /* room_for() checked the count */
+}
+
+/* "heightfield X Y Z SIZE RESOLUTION OCTAVES ROUGHNESS FREQUENCY HEIGHT SEED MATERIAL
+ * [expand]": a fractal landscape over the square from corner (X, Z), side SIZE, with
+ * RESOLUTION x RESOLUTION height samples about Y (heightfield.h gives each parameter). */
+static int parse_heightfield(struct parser *ps, struct error *err)
+{
+    double v[10];
+    if (read_numbers(ps, v, 10, "corner x y z, size, resolution, octaves, roughness, "
+                                "frequency, height, seed", err) < 0)
+        return -1;
+    if (!(v[4] == floor(v[4]) && v[5] == floor(v[5]) && v[9] == floor(v[9]) &&
+          v[4] >= 0 && v[4] <= HEIGHTFIELD_MAX_RESOLUTION && v[5] >= 0 &&
+          v[5] <= HEIGHTFIELD_MAX_OCTAVES && v[9] >= 0 && v[9] <= 9007199254740992.0))
+        return parse_error(ps, err, "resolution, octaves and seed must be whole numbers "
+                                    "within their limits (README)");
+    struct heightfield_params params = {vec3_at(v), v[3], (int)v[4], (int)v[5], v[6], v[7],
+                                        v[8], (uint64_t)v[9], 0};
+    params.material = read_shape_material(ps, err);
+    if (params.material < 0)
+        return -1;
+    int expand = read_expand(ps, err);
+    if (expand < 0)
+        return -1;
+    struct error inner;
+    struct heightfield *hf = heightfield_create(&params, &inner);
+    if (hf == NULL)
+        return error_set(err, ps->file, ps->line, "%s", inner.message);
+    if (!expand)
+        return add_shape(ps, &heightfield_ops, hf, params.material, err);
+    double cells = (double)(params.resolution - 1) * (params.resolution - 1);
+    int fits = room_for(ps, 2 * cells);
+    if (fits)
+        heightfield_triangles(hf, add_terrain_triangle, ps->scene);
+    heightfield_free(hf);
+    return check_added(ps, fits ? 0 : -1, err);
+}
+
 /* "include FILE": FILE is relative to the directory of the including file. */
 static int parse_include(struct parser *ps, struct error *err)
 {
@@ -477,6 +604,7 @@ static const struct keyword keywords[] = {
     {"sphere", parse_sphere},     {"triangle", parse_triangle},
     {"smooth_triangle", parse_triangle}, {"quad", parse_quad},
     {"light", parse_light},       {"include", parse_include},
+    {"sphereflake", parse_sphereflake}, {"heightfield", parse_heightfield},
 };
 
 /* Cuts ps->text into tokens at white space, stopping at a '#' that starts a token. */

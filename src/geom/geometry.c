@@ -1,0 +1,444 @@
+/*
+ * geom/geometry.c -- the scene's primitives and the BVH over them (see geometry.h).
+ *
+ * Primitives live in one array per kind (spheres, triangles, quads, procedural shapes),
+ * each record carrying its id and material. geometry_build() builds the BVH over every
+ * primitive that can be hit (degenerate ones, which have no area, are left out) and then
+ *   (1) refs[k] names the BVH's k-th item in leaf order as (kind << REF_KIND_SHIFT) | index;
+ *   (2) each kind's array is permuted into that leaf order, so a leaf reads consecutive
+ *       records, and the records the BVH left out follow at the end of their array.
+ * A leaf test dispatches on the kind with a switch: spheres, triangles and quads by direct
+ * calls, shapes through their struct shape_ops. During traversal a primitive reports only
+ * t and its surface parameters; the shading record of the closest one is completed once,
+ * at the end (complete_hit).
+ *
+ * Owns every array here, the shapes (freed by their ops->free) and the BVH.
+ */
+#include "geometry.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../base/alloc.h"
+#include "bvh.h"
+#include "quad.h"
+#include "sphere.h"
+#include "triangle.h"
+
+enum kind { KIND_SPHERE, KIND_TRIANGLE, KIND_QUAD, KIND_SHAPE, N_KINDS };
+
+#define REF_KIND_SHIFT 30                 /* 2 bits of kind above 30 bits of index >= 2^28 */
+#define REF_INDEX_MASK ((UINT32_C(1) << REF_KIND_SHIFT) - 1)
+
+struct shape {
+    const struct shape_ops *ops;  /* borrowed: static operations table             */
+    void *data;                   /* owned: released by ops->free                   */
+    int material;                 /* as given to geometry_add_shape()               */
+    int id;
+};
+
+struct geometry {
+    struct sphere *spheres;       /* owned; n_spheres used of cap_spheres           */
+    size_t n_spheres, cap_spheres;
+    struct triangle *triangles;   /* owned; likewise                                 */
+    size_t n_triangles, cap_triangles;
+    struct quad *quads;           /* owned; likewise                                 */
+    size_t n_quads, cap_quads;
+    struct shape *shapes;         /* owned; likewise                                 */
+    size_t n_shapes, cap_shapes;
+    struct vec3 *normals;         /* owned: vertex normals, three per triangle given them */
+    size_t n_normals, cap_normals;
+    size_t n_prims;               /* ids handed out: 0 .. n_prims - 1                */
+    uint32_t *refs;               /* owned: invariant (1); NULL before geometry_build() */
+    struct bvh *bvh;              /* owned; NULL before geometry_build()             */
+};
+
+/* One geometry_intersect() or geometry_occluded() call. */
+struct query {
+    const struct geometry *g;
+    struct ray ray;
+    struct sheared_ray sheared;   /* for triangles and quads                         */
+    struct hit hit;               /* closest so far: t, u, v (a shape's: all fields) */
+    uint32_t ref;                 /* its primitive                                   */
+};
+
+struct geometry *geometry_create(void)
+{
+    struct geometry *g = xcalloc(1, sizeof *g, "geometry");
+    g->spheres = NULL;   /* calloc's zero bits need not be null pointers */
+    g->triangles = NULL;
+    g->quads = NULL;
+    g->shapes = NULL;
+    g->normals = NULL;
+    g->refs = NULL;
+    g->bvh = NULL;
+    return g;
+}
+
+void geometry_free(struct geometry *g)
+{
+    if (g == NULL)
+        return;
+    for (size_t i = 0; i < g->n_shapes; i++)
+        g->shapes[i].ops->free(g->shapes[i].data);
+    free(g->spheres);
+    free(g->triangles);
+    free(g->quads);
+    free(g->shapes);
+    free(g->normals);
+    free(g->refs);
+    bvh_free(g->bvh);
+    free(g);
+}
+
+/* Room for `need` elements of `size` bytes in p (capacity *cap), growing geometrically. */
+static void *reserve(void *p, size_t *cap, size_t need, size_t size, const char *what)
+{
+    if (need <= *cap)
+        return p;
+    size_t grown = *cap < 16 ? 16 : 2 * *cap;
+    *cap = grown > need ? grown : need;
+    return xrealloc(p, *cap, size, what);
+}
+
+int geometry_add_sphere(struct geometry *g, struct vec3 centre, double radius, int material)
+{
+    if (g->n_prims >= MAX_PRIMITIVES)
+        return -1;
+    g->spheres = reserve(g->spheres, &g->cap_spheres, g->n_spheres + 1, sizeof *g->spheres,
+                         "spheres");
+    g->spheres[g->n_spheres++] = sphere_make(centre, radius, material, (int)g->n_prims);
+    return (int)g->n_prims++;
+}
+
+int geometry_add_triangle(struct geometry *g, const struct vec3 v[3], const struct vec3 *normals,
+                          int material)
+{
+    if (g->n_prims >= MAX_PRIMITIVES)
+        return -1;
+    int first_normal = -1;
+    if (normals != NULL) {
+        g->normals = reserve(g->normals, &g->cap_normals, g->n_normals + 3, sizeof *g->normals,
+                             "vertex normals");
+        for (int i = 0; i < 3; i++)
+            g->normals[g->n_normals + i] = normals[i];
+        first_normal = (int)g->n_normals;   /* < 3 MAX_PRIMITIVES < INT_MAX */
+        g->n_normals += 3;
+    }
+    g->triangles = reserve(g->triangles, &g->cap_triangles, g->n_triangles + 1,
+                           sizeof *g->triangles, "triangles");
+    g->triangles[g->n_triangles++] = triangle_make(v, first_normal, material, (int)g->n_prims);
+    return (int)g->n_prims++;
+}
+
+int geometry_add_quad(struct geometry *g, struct vec3 p0, struct vec3 e1, struct vec3 e2,
+                      int material)
+{
+    if (g->n_prims >= MAX_PRIMITIVES)
+        return -1;
+    g->quads = reserve(g->quads, &g->cap_quads, g->n_quads + 1, sizeof *g->quads, "quads");
+    g->quads[g->n_quads++] = quad_make(p0, e1, e2, material, (int)g->n_prims);
+    return (int)g->n_prims++;
+}
+
+int geometry_add_shape(struct geometry *g, const struct shape_ops *ops, void *shape, int material)
+{
+    if (g->n_prims >= MAX_PRIMITIVES)
+        return -1;
+    g->shapes = reserve(g->shapes, &g->cap_shapes, g->n_shapes + 1, sizeof *g->shapes, "shapes");
+    struct shape *s = &g->shapes[g->n_shapes++];
+    s->ops = ops;
+    s->data = shape;
+    s->material = material;
+    s->id = (int)g->n_prims;
+    return (int)g->n_prims++;
+}
+
+/* ---- building ---- */
+
+static uint32_t make_ref(enum kind kind, size_t index)
+{
+    return ((uint32_t)kind << REF_KIND_SHIFT) | (uint32_t)index;
+}
+
+/* Appends the box and ref of every primitive of one kind that can be hit. */
+static size_t collect_kind(const struct geometry *g, enum kind kind, struct aabb *bounds,
+                           uint32_t *refs, size_t n)
+{
+    size_t i;
+    switch (kind) {
+    case KIND_SPHERE:
+        for (i = 0; i < g->n_spheres; i++)
+            if (!sphere_is_degenerate(&g->spheres[i])) {
+                bounds[n] = sphere_bounds(&g->spheres[i]);
+                refs[n++] = make_ref(kind, i);
+            }
+        break;
+    case KIND_TRIANGLE:
+        for (i = 0; i < g->n_triangles; i++)
+            if (!triangle_is_degenerate(&g->triangles[i])) {
+                bounds[n] = triangle_bounds(&g->triangles[i]);
+                refs[n++] = make_ref(kind, i);
+            }
+        break;
+    case KIND_QUAD:
+        for (i = 0; i < g->n_quads; i++)
+            if (!quad_is_degenerate(&g->quads[i])) {
+                bounds[n] = quad_bounds(&g->quads[i]);
+                refs[n++] = make_ref(kind, i);
+            }
+        break;
+    default:
+        for (i = 0; i < g->n_shapes; i++) {
+            bounds[n] = g->shapes[i].ops->bounds(g->shapes[i].data);
+            refs[n++] = make_ref(kind, i);
+        }
+    }
+    return n;
+}
+
+/* A kind's record array: its base address, element size and count. */
+struct record_array {
+    char *base;
+    size_t size, count;
+};
+
+static struct record_array make_record_array(void *base, size_t size, size_t count)
+{
+    struct record_array a;
+    a.base = base;
+    a.size = size;
+    a.count = count;
+    return a;
+}
+
+static struct record_array records_of(struct geometry *g, enum kind kind)
+{
+    switch (kind) {
+    case KIND_SPHERE:
+        return make_record_array(g->spheres, sizeof *g->spheres, g->n_spheres);
+    case KIND_TRIANGLE:
+        return make_record_array(g->triangles, sizeof *g->triangles, g->n_triangles);
+    case KIND_QUAD:
+        return make_record_array(g->quads, sizeof *g->quads, g->n_quads);
+    default:
+        return make_record_array(g->shapes, sizeof *g->shapes, g->n_shapes);
+    }
+}
+
+/* Invariant (2) for one kind: records in leaf order first, then those the BVH left out.
+ * leaf_refs[k] is the k-th item's ref; the kind's refs are rewritten to the new places.
+ * Returns the new array, exactly as long as the kind's count, and frees the old one. */
+static void *permute_kind(struct geometry *g, enum kind kind, uint32_t *leaf_refs, size_t n)
+{
+    struct record_array a = records_of(g, kind);
+    if (a.count == 0)
+        return a.base;
+    char *sorted = xmalloc(a.count, a.size, "primitives in leaf order");
+    unsigned char *placed = xcalloc(a.count, 1, "primitives in leaf order");
+    size_t next = 0;
+    for (size_t k = 0; k < n; k++) {
+        size_t index = leaf_refs[k] & REF_INDEX_MASK;
+        if ((enum kind)(leaf_refs[k] >> REF_KIND_SHIFT) != kind)
+            continue;
+        memcpy(sorted + next * a.size, a.base + index * a.size, a.size);
+        placed[index] = 1;
+        leaf_refs[k] = make_ref(kind, next++);
+    }
+    for (size_t i = 0; i < a.count; i++)
+        if (!placed[i])
+            memcpy(sorted + next++ * a.size, a.base + i * a.size, a.size);
+    free(placed);
+    free(a.base);
+    return sorted;
+}
+
+void geometry_build(struct geometry *g)
+{
+    bvh_free(g->bvh);
+    free(g->refs);
+    size_t n_max = g->n_prims;
+    struct aabb *bounds = xmalloc(n_max, sizeof *bounds, "primitive bounds");
+    uint32_t *item_refs = xmalloc(n_max, sizeof *item_refs, "primitive refs");
+    size_t n = 0;
+    for (int kind = 0; kind < N_KINDS; kind++)
+        n = collect_kind(g, (enum kind)kind, bounds, item_refs, n);
+    g->bvh = bvh_build(bounds, n);
+    free(bounds);
+    g->refs = xmalloc(n, sizeof *g->refs, "BVH refs");
+    for (size_t k = 0; k < n; k++)
+        g->refs[k] = item_refs[g->bvh->items[k]];
+    free(item_refs);
+    /* The permuted arrays are exactly full: later adds grow them again. */
+    g->spheres = permute_kind(g, KIND_SPHERE, g->refs, n);
+    g->cap_spheres = g->n_spheres;
+    g->triangles = permute_kind(g, KIND_TRIANGLE, g->refs, n);
+    g->cap_triangles = g->n_triangles;
+    g->quads = permute_kind(g, KIND_QUAD, g->refs, n);
+    g->cap_quads = g->n_quads;
+    g->shapes = permute_kind(g, KIND_SHAPE, g->refs, n);
+    g->cap_shapes = g->n_shapes;
+}
+
+/* ---- queries ---- */
+
+static int intersect_ref(const struct query *q, uint32_t ref, double tmax, struct hit *hit)
+{
+    const struct geometry *g = q->g;
+    size_t index = ref & REF_INDEX_MASK;
+    switch ((enum kind)(ref >> REF_KIND_SHIFT)) {
+    case KIND_SPHERE:
+        return sphere_intersect(&g->spheres[index], q->ray, tmax, hit);
+    case KIND_TRIANGLE:
+        return triangle_intersect(&g->triangles[index], &q->sheared, tmax, hit);
+    case KIND_QUAD:
+        return quad_intersect(&g->quads[index], &q->sheared, tmax, hit);
+    default:
+        return g->shapes[index].ops->intersect(g->shapes[index].data, q->ray, tmax, hit);
+    }
+}
+
+static int closest_in_leaf(void *ctx, size_t first, size_t count, double *tmax)
+{
+    struct query *q = ctx;
+    int found = 0;
+    for (size_t k = first; k < first + count; k++) {
+        uint32_t ref = q->g->refs[k];
+        if (intersect_ref(q, ref, *tmax, &q->hit)) {
+            *tmax = q->hit.t;
+            q->ref = ref;
+            found = 1;
+        }
+    }
+    return found;
+}
+
+static int any_in_leaf(void *ctx, size_t first, size_t count, double tmax)
+{
+    struct query *q = ctx;
+    for (size_t k = first; k < first + count; k++) {
+        uint32_t ref = q->g->refs[k];
+        size_t index = ref & REF_INDEX_MASK;
+        if ((enum kind)(ref >> REF_KIND_SHIFT) == KIND_SHAPE) {
+            const struct shape *s = &q->g->shapes[index];
+            if (s->ops->occluded(s->data, q->ray, tmax))
+                return 1;
+        } else if (intersect_ref(q, ref, tmax, &q->hit)) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* The closest primitive's shading record, from the t, u, v its test left in q->hit. */
+static void complete_hit(const struct query *q, struct hit *hit)
+{
+    const struct geometry *g = q->g;
+    size_t index = q->ref & REF_INDEX_MASK;
+    *hit = q->hit;
+    switch ((enum kind)(q->ref >> REF_KIND_SHIFT)) {
+    case KIND_SPHERE:
+        sphere_shade(&g->spheres[index], q->ray, hit);
+        hit->prim = g->spheres[index].id;
+        break;
+    case KIND_TRIANGLE: {
+        const struct triangle *tri = &g->triangles[index];
+        triangle_shade(tri, tri->normals >= 0 ? &g->normals[tri->normals] : NULL, hit);
+        hit->prim = tri->id;
+        break;
+    }
+    case KIND_QUAD:
+        quad_shade(&g->quads[index], hit);
+        hit->prim = g->quads[index].id;
+        break;
+    default:
+        hit->prim = g->shapes[index].id;   /* the shape filled the rest */
+    }
+}
+
+static int is_usable(const struct geometry *g, struct ray ray)
+{
+    return g->bvh != NULL && vec3_length2(ray.dir) > 0;
+}
+
+int geometry_intersect(const struct geometry *g, struct ray ray, double tmax, struct hit *hit)
+{
+    if (!is_usable(g, ray))
+        return 0;
+    struct query q;
+    q.g = g;
+    q.ray = ray;
+    q.sheared = shear_ray(ray);
+    q.ref = 0;
+    if (!bvh_intersect(g->bvh, ray, tmax, closest_in_leaf, &q))
+        return 0;
+    complete_hit(&q, hit);
+    return 1;
+}
+
+int geometry_occluded(const struct geometry *g, struct ray ray, double tmax)
+{
+    if (!is_usable(g, ray))
+        return 0;
+    struct query q;
+    q.g = g;
+    q.ray = ray;
+    q.sheared = shear_ray(ray);
+    q.ref = 0;
+    return bvh_occluded(g->bvh, ray, tmax, any_in_leaf, &q);
+}
+
+/* ---- statistics ---- */
+
+size_t geometry_primitive_count(const struct geometry *g)
+{
+    return g->n_prims;
+}
+
+size_t geometry_bvh_nodes(const struct geometry *g)
+{
+    return g->bvh != NULL ? g->bvh->n_nodes : 0;
+}
+
+size_t geometry_bytes(const struct geometry *g)
+{
+    size_t bytes = sizeof *g + g->cap_spheres * sizeof *g->spheres
+                   + g->cap_triangles * sizeof *g->triangles + g->cap_quads * sizeof *g->quads
+                   + g->cap_shapes * sizeof *g->shapes + g->cap_normals * sizeof *g->normals;
+    if (g->bvh != NULL)
+        bytes += bvh_bytes(g->bvh) + g->bvh->n_items * sizeof *g->refs;
+    for (size_t i = 0; i < g->n_shapes; i++)
+        bytes += g->shapes[i].ops->bytes(g->shapes[i].data);
+    return bytes;
+}
+
+/* Every primitive's box, degenerate ones included (their points are still in the scene);
+ * lo = +inf, hi = -inf when there is none. */
+struct aabb geometry_bounds(const struct geometry *g)
+{
+    struct aabb box;
+    box.lo = vec3(INFINITY, INFINITY, INFINITY);
+    box.hi = vec3(-INFINITY, -INFINITY, -INFINITY);
+    for (size_t i = 0; i < g->n_spheres; i++) {
+        struct aabb b = sphere_bounds(&g->spheres[i]);
+        box.lo = vec3_min(box.lo, b.lo);
+        box.hi = vec3_max(box.hi, b.hi);
+    }
+    for (size_t i = 0; i < g->n_triangles; i++) {
+        struct aabb b = triangle_bounds(&g->triangles[i]);
+        box.lo = vec3_min(box.lo, b.lo);
+        box.hi = vec3_max(box.hi, b.hi);
+    }
+    for (size_t i = 0; i < g->n_quads; i++) {
+        struct aabb b = quad_bounds(&g->quads[i]);
+        box.lo = vec3_min(box.lo, b.lo);
+        box.hi = vec3_max(box.hi, b.hi);
+    }
+    for (size_t i = 0; i < g->n_shapes; i++) {
+        struct aabb b = g->shapes[i].ops->bounds(g->shapes[i].data);
+        box.lo = vec3_min(box.lo, b.lo);
+        box.hi = vec3_max(box.hi, b.hi);
+    }
+    return box;
+}

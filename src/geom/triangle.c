@@ -1,0 +1,173 @@
+/*
+ * geom/triangle.c -- watertight ray/triangle intersection (Woop, Benthin, Wald 2013).
+ *
+ * Why the sign of an edge function is exact: qx py - qy px is computed as fl(fl(qx py) -
+ * fl(qy px)). Rounding is monotone, so when qx py > qy px exactly, fl(qx py) >= fl(qy px)
+ * and the computed difference is >= 0: a nonzero result always has the true sign. It can
+ * only be wrong by being zero, which happens exactly when the two rounded products are
+ * equal; then the true value is the difference of their rounding errors, which Dekker's
+ * product (Dekker 1971, "A floating-point technique for extending the available
+ * precision") gives exactly. This is the paper's "recompute in double precision when an
+ * edge function is zero" (Sec. 4), one level up: our edge functions are already double.
+ * It requires every operation rounded once (no FMA contraction: -ffp-contract=off).
+ */
+#include "triangle.h"
+
+#include <stddef.h>
+
+/* 2^27 + 1: splits a double into two halves of 26 bits whose products are exact. */
+#define DEKKER_SPLIT 134217729.0
+
+/* The rounding error of fl(a b): a b = fl(a b) + product_error(a, b, fl(a b)) exactly. */
+static double product_error(double a, double b, double p)
+{
+    double ca = DEKKER_SPLIT * a, cb = DEKKER_SPLIT * b;
+    double a_hi = ca - (ca - a), b_hi = cb - (cb - b);
+    double a_lo = a - a_hi, b_lo = b - b_hi;
+    return ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo;
+}
+
+/* edge_function() for this file's hot path, where the compiler may inline it. */
+static inline double edge(double px, double py, double qx, double qy)
+{
+    double qx_py = qx * py, qy_px = qy * px;
+    double e = qx_py - qy_px;
+    if (e != 0)
+        return e;
+    /* The products are equal, so the exact value is the difference of their errors. */
+    return product_error(qx, py, qx_py) - product_error(qy, px, qy_px);
+}
+
+double edge_function(double px, double py, double qx, double qy)
+{
+    return edge(px, py, qx, qy);
+}
+
+struct sheared_ray shear_ray(struct ray ray)
+{
+    struct sheared_ray s;
+    double d[3] = {ray.dir.x, ray.dir.y, ray.dir.z};
+    s.origin[0] = ray.origin.x;
+    s.origin[1] = ray.origin.y;
+    s.origin[2] = ray.origin.z;
+    s.kz = 0;
+    if (fabs(d[1]) > fabs(d[s.kz]))
+        s.kz = 1;
+    if (fabs(d[2]) > fabs(d[s.kz]))
+        s.kz = 2;
+    s.kx = (s.kz + 1) % 3;
+    s.ky = (s.kx + 1) % 3;
+    if (d[s.kz] < 0) {   /* a mirrored frame would flip every edge function's sign */
+        int swap = s.kx;
+        s.kx = s.ky;
+        s.ky = swap;
+    }
+    s.sz = 1.0 / d[s.kz];   /* d[kz] != 0: the largest |component| of a non-zero direction */
+    s.sx = d[s.kx] * s.sz;
+    s.sy = d[s.ky] * s.sz;
+    return s;
+}
+
+struct vec3 unit_normal(struct vec3 n)
+{
+    double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
+    double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);   /* not NaN: finite input */
+    if (!(m > 0))
+        return vec3_zero();
+    return vec3_normalize(vec3_scale(n, 1.0 / m));   /* components in [-1, 1]: no underflow */
+}
+
+struct triangle triangle_make(const struct vec3 v[3], int normals, int material, int id)
+{
+    struct triangle tri;
+    for (int i = 0; i < 3; i++) {
+        tri.v[i][0] = v[i].x;
+        tri.v[i][1] = v[i].y;
+        tri.v[i][2] = v[i].z;
+    }
+    tri.normals = normals;
+    tri.material = material;
+    tri.id = id;
+    return tri;
+}
+
+static struct vec3 vertex(const struct triangle *tri, int i)
+{
+    return vec3(tri->v[i][0], tri->v[i][1], tri->v[i][2]);
+}
+
+/* ng before normalisation: (v1 - v0) x (v2 - v0), on the counter-clockwise side. */
+static struct vec3 area_normal(const struct triangle *tri)
+{
+    struct vec3 v0 = vertex(tri, 0);
+    return vec3_cross(vec3_sub(vertex(tri, 1), v0), vec3_sub(vertex(tri, 2), v0));
+}
+
+int triangle_is_degenerate(const struct triangle *tri)
+{
+    return vec3_length2(unit_normal(area_normal(tri))) == 0;
+}
+
+struct aabb triangle_bounds(const struct triangle *tri)
+{
+    struct aabb box;
+    box.lo = vertex(tri, 0);
+    box.hi = box.lo;
+    for (int i = 1; i < 3; i++) {
+        box.lo = vec3_min(box.lo, vertex(tri, i));
+        box.hi = vec3_max(box.hi, vertex(tri, i));
+    }
+    return box;
+}
+
+/* Woop et al., Fig. 1 (without back-face culling). Vertex i becomes (x[i], y[i]) in the
+ * sheared frame; U, V, W are the edge functions of B -> C, C -> A, A -> B. */
+int triangle_intersect(const struct triangle *tri, const struct sheared_ray *ray, double tmax,
+                       struct hit *hit)
+{
+    const double *o = ray->origin;
+    int kx = ray->kx, ky = ray->ky, kz = ray->kz;
+    double x[3], y[3], z[3];
+    for (int i = 0; i < 3; i++) {
+        z[i] = tri->v[i][kz] - o[kz];
+        x[i] = (tri->v[i][kx] - o[kx]) - ray->sx * z[i];
+        y[i] = (tri->v[i][ky] - o[ky]) - ray->sy * z[i];
+    }
+    double u = edge(x[1], y[1], x[2], y[2]);
+    double v = edge(x[2], y[2], x[0], y[0]);
+    double w = edge(x[0], y[0], x[1], y[1]);
+    if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0))
+        return 0;   /* the origin is outside an edge */
+    double det = u + v + w;
+    if (det == 0)
+        return 0;   /* all three zero: the triangle is seen edge-on */
+    double inv_det = 1.0 / det;
+    double t = ray->sz * (u * z[0] + v * z[1] + w * z[2]) * inv_det;
+    if (!(t > 0 && t < tmax))
+        return 0;
+    hit->t = t;
+    hit->u = v * inv_det;
+    hit->v = w * inv_det;
+    return 1;
+}
+
+/* ns: the barycentric blend of the vertex normals, normalised, and turned to ng's side
+ * when it points the other way (the renderer then sees ng and ns on one side). */
+void triangle_shade(const struct triangle *tri, const struct vec3 *normals, struct hit *hit)
+{
+    double b0 = 1.0 - hit->u - hit->v, b1 = hit->u, b2 = hit->v;
+    struct vec3 p = vec3_scale(vertex(tri, 0), b0);
+    p = vec3_madd(p, vertex(tri, 1), b1);
+    hit->p = vec3_madd(p, vertex(tri, 2), b2);
+    hit->ng = unit_normal(area_normal(tri));
+    hit->ns = hit->ng;
+    hit->material = tri->material;
+    if (normals == NULL)
+        return;
+    struct vec3 n = vec3_scale(normals[0], b0);
+    n = vec3_madd(vec3_madd(n, normals[1], b1), normals[2], b2);
+    n = unit_normal(n);
+    if (vec3_length2(n) == 0)
+        return;   /* the vertex normals cancel here: fall back to ng */
+    hit->ns = vec3_dot(n, hit->ng) < 0 ? vec3_neg(n) : n;
+}

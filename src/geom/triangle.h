@@ -1,0 +1,66 @@
+/*
+ * geom/triangle.h -- the watertight ray/triangle test (Woop, Benthin, Wald, "Watertight
+ * Ray/Triangle Intersection", JCGT 2(1), 2013) and the triangle's shading record.
+ *
+ * A ray is first sheared so that it becomes the +z axis through the origin (struct
+ * sheared_ray); a triangle is then hit when the origin lies inside its projection onto
+ * the xy plane, decided by the signs of three edge functions. Each vertex is transformed
+ * by the same operations whichever triangle it belongs to, and edge_function() returns the
+ * exact sign, so two triangles sharing an edge see exactly opposite values on it: a ray
+ * through a shared edge or vertex of a closed mesh hits at least one of the triangles
+ * around it. The guarantee needs shared vertices to be bitwise equal.
+ *
+ * quad.c uses the same shear and edge functions for parallelograms.
+ */
+#ifndef PHOTON_TRIANGLE_H
+#define PHOTON_TRIANGLE_H
+
+#include "ray.h"
+
+struct triangle {
+    double v[3][3];  /* v[i][axis]: vertex i, counter-clockwise seen from the front; arrays
+                        so that the shear can pick axes by index */
+    int normals;     /* index of vertex i's normal in the owner's normal array is
+                        normals + i; -1 when the triangle has none */
+    int material;    /* handed back in struct hit */
+    int id;          /* primitive id from geometry_add_triangle() */
+};
+
+/* A ray in the frame of Woop et al., Sec. 3: axis kz is the largest component of |d|, kx and
+ * ky the other two, swapped when d[kz] < 0 to keep the winding. A point P maps to
+ *   x = (P - o)[kx] - sx (P - o)[kz],  y = (P - o)[ky] - sy (P - o)[kz],  z = sz (P - o)[kz]
+ * and the ray to (0, 0, t). */
+struct sheared_ray {
+    double origin[3];
+    int kx, ky, kz;
+    double sx, sy, sz; /* d[kx] sz, d[ky] sz, sz = 1 / d[kz] */
+};
+
+/* ray.dir must not be the zero vector. */
+struct sheared_ray shear_ray(struct ray ray);
+
+/* The edge function of the directed edge P -> Q at the origin, qx py - qy px, with its exact
+ * sign: positive when the origin is on the left of P -> Q, zero only when it is exactly on
+ * the edge's line (for |coordinates| between about 1e-140 and 1e140, where the products
+ * neither underflow nor overflow). e(Q, P) = -e(P, Q) exactly. */
+double edge_function(double px, double py, double qx, double qy);
+
+/* The triangle's vertices from vectors; normals as in struct triangle. */
+struct triangle triangle_make(const struct vec3 v[3], int normals, int material, int id);
+/* Zero area (coincident or collinear vertices): never hit, excluded from the BVH. */
+int triangle_is_degenerate(const struct triangle *tri);
+struct aabb triangle_bounds(const struct triangle *tri);
+
+/* Hit with t in (0, tmax), from either side: 1 with hit->t and the barycentrics of v[1] and
+ * v[2] in hit->u, hit->v set (nothing else), or 0. */
+int triangle_intersect(const struct triangle *tri, const struct sheared_ray *ray, double tmax,
+                       struct hit *hit);
+
+/* Completes a hit from its t, u, v: p, ng, ns and material. normals: the triangle's three
+ * vertex normals, or NULL when it has none (then ns = ng). prim is the caller's. */
+void triangle_shade(const struct triangle *tri, const struct vec3 *normals, struct hit *hit);
+
+/* The unit normal along n, computed without overflow or underflow; zero when n is zero. */
+struct vec3 unit_normal(struct vec3 n);
+
+#endif
