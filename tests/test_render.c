@@ -3,6 +3,7 @@
  * and robustness to the scale of the scene.
  */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "../src/image/compare.h"
@@ -164,10 +165,62 @@ static void test_scale_invariance(struct check *t)
     image_free(reference);
 }
 
+static void write_text(const char *name, const char *text)
+{
+    FILE *f = fopen(name, "wb");
+    if (f == NULL)
+        return;
+    fputs(text, f);
+    fclose(f);
+}
+
+/* truth: a procedural shape and its expansion into plain primitives (the `expand` word)
+ *   are the same surfaces computed by the same sphere and triangle routines, so the whole
+ *   pipeline -- parser, BVH, shading, lights -- must give the same image, bit for bit.
+ * catches: a keyword that reads its parameters differently in the two forms, a shape that
+ *   reports another normal or material than its primitives, a shadow test that treats
+ *   shapes differently. */
+static void test_shapes_render_as_their_expansions(struct check *t)
+{
+    static const char *objects[] = {
+        "sphereflake 0 0 0 0.5 2  0 0 1  m n", "heightfield -1 -0.6 -1 2 17 4 0.5 2 0.3 3 m"};
+    const char *path = "build/test_render_shape.scene";
+    for (int i = 0; i < 2; i++) {
+        struct image *img[2] = {NULL, NULL};
+        for (int expand = 0; expand < 2; expand++) {
+            char text[1024];
+            sprintf(text, "camera 0.3 1.2 -2.5  0 0 0  0 1 0  40\n"
+                          "material m lambert 0.8 0.5 0.3\nmaterial n mirror 0.9 0.9 0.9\n"
+                          "%s%s\nlight point 1 3 -2  100 100 100\n"
+                          "light quad -1 2 -1  1 2 -1  1 2 1  -1 2 1  3 3 3\n",
+                    objects[i], expand ? " expand" : "");
+            write_text(path, text);
+            struct scene *scene = load(path, 40, 40);
+            CHECK(t, scene != NULL);
+            if (scene == NULL)
+                break;
+            struct render_settings rs = whole_image(scene, 2);
+            img[expand] = render(scene, &rs);
+            scene_free(scene);
+        }
+        CHECK(t, img[0] != NULL && img[1] != NULL &&
+                     memcmp(img[0]->pixels, img[1]->pixels, 40 * 40 * sizeof *img[0]->pixels)
+                         == 0);
+        int lit = 0; /* the shape must be in the picture, lit, for the test to mean anything */
+        for (int k = 0; img[0] != NULL && k < 40 * 40; k++)
+            lit += img[0]->pixels[k].x > 0.01;
+        CHECK(t, lit > 200);
+        image_free(img[0]);
+        image_free(img[1]);
+    }
+    remove(path);
+}
+
 void test_render(struct check *t)
 {
     RUN_TEST(t, test_point_light_over_plane);
     RUN_TEST(t, test_light_seen_directly);
     RUN_TEST(t, test_crop_matches_whole_image);
     RUN_TEST(t, test_scale_invariance);
+    RUN_TEST(t, test_shapes_render_as_their_expansions);
 }

@@ -87,6 +87,26 @@ static void test_bad_scenes_are_refused(struct check *t)
         {"", 0, "no camera"},
         {"\x01\x02\xff\xfe binary\n", 1, "unknown keyword"},
         {"camera 0 0 0 0 0 1 0 1 0 40 # a comment\nsphere", 2, "expected 4 numbers"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\n"
+         "sphereflake 0 0 0 1 11 0 0 1 m\n", 3, "levels"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\n"
+         "sphereflake 0 0 0 1 1 0 0 1 m m m\n", 3, "more materials"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\n"
+         "sphereflake 0 0 0 -1 1 0 0 1 m\n", 3, "sphereflake"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial e lambert 1 1 1 emit 1 1 1\n"
+         "sphereflake 0 0 0 1 1 0 0 1 e\n", 3, "emitting"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\n"
+         "heightfield 0 0 0 1 1.5 4 0.5 2 0.1 1 m\n", 3, "whole numbers"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\n"
+         "heightfield 0 0 0 1 1 4 0.5 2 0.1 1 m\n", 3, "heightfield"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\n"
+         "heightfield 0 0 0 1 9 4 0.5 2 0.1 1 m expand extra\n", 3, "unexpected 'extra'"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m phong 0.6 0.6 0.6 0.5 0.5 0.5 10\n", 2,
+         "kd + ks"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m ward 0.1 0.1 0.1 0.5 0.5 0.5 0 0.2\n", 2,
+         "alpha"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m schlick 0.5 0.5 0.5 0.1 0\n", 2,
+         "isotropy"},
     };
     const char *path = "build/test_scene_bad.scene";
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
