@@ -65,8 +65,7 @@ static struct vec3 specular_ray(const struct direct_mode *dm, const struct surfa
     struct brdf_sample bs;
     if (!brdf_sample(s->material, frame, s->wo, u, &bs) || !bs.delta)
         return vec3_zero();
-    struct vec3 side = bs.transmitted ? vec3_neg(s->ng) : s->ng;
-    struct ray r = make_ray(offset_origin(s->p, side), bs.wi);
+    struct ray r = surface_ray(s, bs.wi, bs.transmitted);
     return vec3_mul(bs.weight, trace(dm, r, depth + 1, rng, counters));
 }
 

@@ -80,13 +80,6 @@ static struct vec3 emission_found(const struct scene *scene, const struct surfac
     return vec3_scale(le, power_heuristic(previous->pdf, pdf_light));
 }
 
-/* The ray leaving s along a sampled direction: from the side wi is on. */
-static struct ray continue_ray(const struct surface *s, const struct brdf_sample *bs)
-{
-    struct vec3 side = bs->transmitted ? vec3_neg(s->ng) : s->ng;
-    return make_ray(offset_origin(s->p, side), bs->wi);
-}
-
 /* Russian roulette: 0 ends the path; otherwise *beta is divided by the survival odds. */
 static int survives_roulette(struct vec3 *beta, int depth, struct rng *rng)
 {
@@ -128,7 +121,7 @@ static struct vec3 trace_path(const struct pt_mode *pt, struct ray ray, struct r
         previous.p = s.p;
         previous.pdf = bs.pdf;
         previous.delta = bs.delta;
-        ray = continue_ray(&s, &bs);
+        ray = surface_ray(&s, bs.wi, bs.transmitted);
         if (!survives_roulette(&beta, depth + 1, rng))
             return l;
     }

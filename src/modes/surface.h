@@ -42,4 +42,12 @@ static inline struct vec3 surface_emission(const struct surface *s)
     return s->front || s->material->two_sided ? s->material->emission : vec3_zero();
 }
 
+/* The ray leaving s in unit direction wi: from the side of the surface wi goes to, so it
+ * does not hit the surface it starts on (through it, when transmitted). */
+static inline struct ray surface_ray(const struct surface *s, struct vec3 wi, int transmitted)
+{
+    struct vec3 side = transmitted ? vec3_neg(s->ng) : s->ng;
+    return make_ray(offset_origin(s->p, side), wi);
+}
+
 #endif
