@@ -366,7 +366,8 @@ static void test_bvh_matches_brute_force(struct check *t)
  *   cubes of quads hit by axis-parallel rays lying exactly in their faces' planes.
  * tolerance: as above.
  * catches: a build that loops or overflows its depth on coincident centres, a leaf over
- *   BVH_MAX_LEAF, a traversal stack overrun, a slab whose 0 * inf = NaN rejects the box. */
+ *   BVH_MAX_LEAF (8 nearly coincident balls tempt the SAH), a traversal stack overrun, a
+ *   slab whose 0 * inf = NaN rejects the box. */
 static void test_bvh_hard_cases(struct check *t)
 {
     struct brute same, deep, cubes;
@@ -376,6 +377,8 @@ static void test_bvh_hard_cases(struct check *t)
     struct vec3 v[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     for (int i = 0; i < 300; i++) {
         CHECK(t, brute_triangle(&same, v, NULL, i % 3));
+        if (i < 8)   /* nearly coincident balls: the SAH would rather keep all 8 in one leaf */
+            CHECK(t, brute_sphere(&same, vec3(1e-6 * i, 0.5, 0.0), 1.0, 0));
         CHECK(t, brute_sphere(&deep, vec3(ldexp(1.0, i), 0.0, 0.0), ldexp(0.1, i), 0));
     }
     for (int i = 0; i < 64; i++) {
@@ -476,6 +479,36 @@ static void test_empty_and_single_primitives(struct check *t)
         CHECK(t, !geometry_occluded(g, ray, expected_t[kind]));
         geometry_free(g);
     }
+}
+
+/* truth: geometry.h's life cycle: adds after geometry_build() join the BVH when it is
+ *   called again, ids keep counting, and the records permuted by the first build still
+ *   answer with their own ids.
+ * tolerance: exact (small integers).
+ * catches: a rebuild that drops or duplicates permuted records, arrays shrunk by the build
+ *   and not grown again, stale refs. */
+static void test_rebuild_after_more_adds(struct check *t)
+{
+    struct geometry *g = geometry_create();
+    for (int i = 0; i < 10; i++)
+        CHECK(t, geometry_add_sphere(g, vec3(3.0 * i, 0.0, 0.0), 1.0, i) == i);
+    geometry_build(g);
+    for (int i = 0; i < 10; i++)
+        CHECK(t, geometry_add_quad(g, vec3(3.0 * i - 1, -1, 5), vec3(2, 0, 0), vec3(0, 2, 0), 0)
+                     == 10 + i);
+    struct hit hit;
+    struct ray before = make_ray(vec3(6.0, 0.0, 9.0), vec3(0, 0, -1));
+    CHECK(t, geometry_intersect(g, before, INFINITY, &hit) && hit.prim == 2);   /* old BVH */
+    geometry_build(g);
+    CHECK(t, geometry_primitive_count(g) == 20);
+    for (int i = 0; i < 10; i++) {
+        struct ray down = make_ray(vec3(3.0 * i, 0.0, 9.0), vec3(0, 0, -1));
+        struct ray below = make_ray(vec3(3.0 * i, 0.0, -9.0), vec3(0, 0, 1));
+        CHECK(t, geometry_intersect(g, down, INFINITY, &hit) && hit.prim == 10 + i);
+        CHECK(t, geometry_intersect(g, below, INFINITY, &hit) && hit.prim == i);
+        CHECK(t, hit.material == i);
+    }
+    geometry_free(g);
 }
 
 /* truth: a primitive without area has no surface (triangle.h, quad.h, sphere.h): rays aimed
@@ -985,6 +1018,7 @@ void test_geom(struct check *t)
 {
     RUN_TEST(t, test_edge_function_exact_sign);
     RUN_TEST(t, test_empty_and_single_primitives);
+    RUN_TEST(t, test_rebuild_after_more_adds);
     RUN_TEST(t, test_bvh_matches_brute_force);
     RUN_TEST(t, test_bvh_hard_cases);
     RUN_TEST(t, test_bvh_check_detects_damage);

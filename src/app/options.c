@@ -13,7 +13,9 @@
 #include "../image/image.h"
 #include "../modes/render.h"
 
-enum option_kind { OPT_FLAG, OPT_INT, OPT_SEED, OPT_REAL, OPT_MODE, OPT_OUTPUT, OPT_FILE, OPT_CROP };
+enum option_kind {
+    OPT_FLAG, OPT_INT, OPT_SEED, OPT_REAL, OPT_MODE, OPT_OUTPUT, OPT_FILE, OPT_CROP
+};
 
 struct option_spec {
     const char *name;
@@ -27,7 +29,8 @@ struct option_spec {
 #define FIELD(f) offsetof(struct options, f)
 
 static const struct option_spec specs[] = {
-    {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME", "rendering mode: direct or pt (default direct)"},
+    {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME",
+     "rendering mode: direct or pt (default direct)"},
     {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm",
      "output image; FILE.ppm is written beside it (default: SCENE's name, .pfm)"},
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)"},

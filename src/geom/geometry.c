@@ -2,8 +2,9 @@
  * geom/geometry.c -- the scene's primitives and the BVH over them (see geometry.h).
  *
  * Primitives live in one array per kind (spheres, triangles, quads, procedural shapes),
- * each record carrying its id and material. geometry_build() builds the BVH over every
- * primitive that can be hit (degenerate ones, which have no area, are left out) and then
+ * each record carrying its id and material (shapes report their own). geometry_build()
+ * builds the BVH over every primitive that can be hit (degenerate ones, which have no
+ * area, are left out) and then
  *   (1) refs[k] names the BVH's k-th item in leaf order as (kind << REF_KIND_SHIFT) | index;
  *   (2) each kind's array is permuted into that leaf order, so a leaf reads consecutive
  *       records, and the records the BVH left out follow at the end of their array.
@@ -12,7 +13,9 @@
  * t and its surface parameters; the shading record of the closest one is completed once,
  * at the end (complete_hit).
  *
- * Owns every array here, the shapes (freed by their ops->free) and the BVH.
+ * Primitives added after geometry_build() are not seen until it is called again, which
+ * rebuilds everything. Owns every array here, the shapes (freed by their ops->free) and
+ * the BVH.
  */
 #include "geometry.h"
 
@@ -34,7 +37,6 @@ enum kind { KIND_SPHERE, KIND_TRIANGLE, KIND_QUAD, KIND_SHAPE, N_KINDS };
 struct shape {
     const struct shape_ops *ops;  /* borrowed: static operations table             */
     void *data;                   /* owned: released by ops->free                   */
-    int material;                 /* as given to geometry_add_shape()               */
     int id;
 };
 
@@ -148,9 +150,9 @@ int geometry_add_shape(struct geometry *g, const struct shape_ops *ops, void *sh
         return -1;
     g->shapes = reserve(g->shapes, &g->cap_shapes, g->n_shapes + 1, sizeof *g->shapes, "shapes");
     struct shape *s = &g->shapes[g->n_shapes++];
+    (void)material;   /* a shape reports its own materials in struct hit (shape_ops) */
     s->ops = ops;
     s->data = shape;
-    s->material = material;
     s->id = (int)g->n_prims;
     return (int)g->n_prims++;
 }

@@ -49,7 +49,9 @@ int geometry_add_triangle(struct geometry *g, const struct vec3 v[3], const stru
 /* The parallelogram p0 + s e1 + t e2, s, t in [0, 1]; front side along e1 x e2; uv = (s, t). */
 int geometry_add_quad(struct geometry *g, struct vec3 p0, struct vec3 e1, struct vec3 e2,
                       int material);
-/* Takes ownership of shape (freed with ops->free by geometry_free). */
+/* Takes ownership of shape (freed with ops->free by geometry_free) when it returns an id;
+ * on -1 the caller still owns it. A shape reports its own materials (a sphere flake may
+ * have one per depth), so `material` is only recorded. */
 int geometry_add_shape(struct geometry *g, const struct shape_ops *ops, void *shape, int material);
 
 /* Builds the BVH over everything added so far (binned SAH). Call once, after the adds. */

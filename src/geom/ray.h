@@ -18,7 +18,7 @@
 
 struct ray {
     struct vec3 origin;
-    struct vec3 dir; /* need not be unit; t is measured in units of |dir|. Renderer rays are unit. */
+    struct vec3 dir; /* need not be unit; t is in units of |dir|. Renderer rays are unit. */
 };
 
 struct aabb {
