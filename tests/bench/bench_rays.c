@@ -13,6 +13,7 @@
 
 #include "../../src/base/alloc.h"
 #include "../../src/base/rng.h"
+#include "../../src/scene/scene.h"
 #include "bench.h"
 
 #define IMAGE_SIZE 1024          /* BENCH.md: 1024 x 1024 whatever the file says          */
@@ -177,6 +178,22 @@ static struct geometry *build_terrain(void *ctx)
     return g;
 }
 
+/* A scene file's geometry, taken from the loaded scene (which then frees the rest). */
+static struct geometry *build_scene_file(void *ctx)
+{
+    struct error err;
+    struct scene *scene = scene_load(ctx, &err);
+    if (scene == NULL) {
+        error_print(&err);
+        exit(2);
+    }
+    struct geometry *g = scene->geometry;
+    scene->geometry = NULL; /* ours now: the bench frees it */
+    scene_free(scene);
+    geometry_build(g);
+    return g;
+}
+
 void bench_rays(void)
 {
     struct terrain terrain;
@@ -193,4 +210,7 @@ void bench_rays(void)
     struct bench_camera camera = {{0.1, 0.8, 1.3}, {0.0, -0.1, -0.1}, {0.0, 1.0, 0.0}, 50.0};
     bench_ray_workload("terrain1m", build_terrain, &terrain, &camera);
     free(terrain.vertices);
+    /* The default scene's own view (scenes/cornell.scene). */
+    struct bench_camera cornell = {{278, 273, -800}, {278, 273, 0}, {0, 1, 0}, 39.3077};
+    bench_ray_workload("cornell", build_scene_file, "scenes/cornell.scene", &cornell);
 }
