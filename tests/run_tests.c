@@ -20,6 +20,7 @@ int main(void)
     test_photon(&t);
     test_render(&t);
     test_pt(&t);
+    test_report(&t);
     test_cli(&t);
     printf("%d passed, %d failed\n", t.passed, t.failed);
     return t.failed == 0 ? 0 : 1;

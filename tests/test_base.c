@@ -7,6 +7,7 @@
 
 #include "../src/base/error.h"
 #include "../src/base/rng.h"
+#include "files.h"
 #include "tests.h"
 
 /* truth: the definition of a keyed stream (rng.h): the same key gives the same numbers,
@@ -64,14 +65,6 @@ static void test_error_set(struct check *t)
     CHECK(t, err.line == 12);
     CHECK(t, strcmp(err.message, "expected 4 numbers") == 0);
     CHECK(t, error_set(NULL, "x", 1, "no record") == -1);
-}
-
-static int file_exists(const char *name)
-{
-    FILE *f = fopen(name, "rb");
-    if (f != NULL)
-        fclose(f);
-    return f != NULL;
 }
 
 /* truth: outputs are whole or absent (DESIGN.md): before commit only NAME.tmp exists;

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "../src/image/image.h"
+#include "files.h"
 #include "tests.h"
 
 #define COMMAND_MAX 1024
@@ -15,41 +16,13 @@
 /* Runs "PHOTON args" with stdout and stderr captured in OUT.log; returns the exit status. */
 static int photon(const char *args)
 {
-    char command[2 * COMMAND_MAX];
-    if (snprintf(command, sizeof command, "%s %s >" OUT ".log 2>&1", photon_binary(), args)
-        >= (int)sizeof command)
-        return -1;
-    return run_command(command);
+    return photon_logged("", args, OUT ".log");
 }
 
 /* Whether the captured output contains text. */
 static int log_contains(const char *text)
 {
-    char buffer[8192];
-    FILE *f = fopen(OUT ".log", "rb");
-    if (f == NULL)
-        return 0;
-    size_t n = fread(buffer, 1, sizeof buffer - 1, f);
-    fclose(f);
-    buffer[n] = '\0';
-    return strstr(buffer, text) != NULL;
-}
-
-static int file_exists(const char *name)
-{
-    FILE *f = fopen(name, "rb");
-    if (f != NULL)
-        fclose(f);
-    return f != NULL;
-}
-
-static void write_file(const char *name, const char *text)
-{
-    FILE *f = fopen(name, "wb");
-    if (f == NULL)
-        return;
-    fputs(text, f);
-    fclose(f);
+    return file_contains(OUT ".log", text);
 }
 
 /* truth: the command-line contract (DESIGN.md): --help and --version exit 0; any bad
@@ -80,13 +53,13 @@ static void test_options(struct check *t)
  * catches: an output opened before the scene is read, a partial file left behind. */
 static void test_bad_scene_leaves_no_output(struct check *t)
 {
-    write_file(OUT "_bad.scene", "camera 0 0 0 0 0 1 0 1 0 40\nsphere 0 0 5 1 nosuch\n");
+    write_text_file(OUT "_bad.scene", "camera 0 0 0 0 0 1 0 1 0 40\nsphere 0 0 5 1 nosuch\n");
     remove(OUT "_new.pfm");
     CHECK(t, photon("-o " OUT "_new.pfm " OUT "_bad.scene") == 2);
     CHECK(t, log_contains(OUT "_bad.scene:2: sphere: undefined material 'nosuch'"));
     CHECK(t, !file_exists(OUT "_new.pfm") && !file_exists(OUT "_new.pfm.tmp"));
     CHECK(t, !file_exists(OUT "_new.ppm"));
-    write_file(OUT "_old.pfm", "precious");
+    write_text_file(OUT "_old.pfm", "precious");
     CHECK(t, photon("-o " OUT "_old.pfm " OUT "_bad.scene") == 2);
     FILE *f = fopen(OUT "_old.pfm", "rb");
     char buffer[16] = {0};
@@ -102,23 +75,6 @@ static void test_bad_scene_leaves_no_output(struct check *t)
                  == 2);
     remove(OUT "_bad.scene");
     remove(OUT "_old.pfm");
-}
-
-static int same_bytes(const char *a, const char *b)
-{
-    FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
-    int same = fa != NULL && fb != NULL;
-    while (same) {
-        int ca = fgetc(fa), cb = fgetc(fb);
-        same = ca == cb;
-        if (ca == EOF || cb == EOF)
-            break;
-    }
-    if (fa != NULL)
-        fclose(fa);
-    if (fb != NULL)
-        fclose(fb);
-    return same;
 }
 
 /* truth: same scene and seed give a bit-identical PFM (DESIGN.md, Determinism); the
@@ -138,7 +94,7 @@ static void test_render_writes_deterministic_files(struct check *t)
         CHECK(t, log_contains(keys[i]));
     snprintf(command, sizeof command, "-o " OUT "_b.pfm %s", args);
     CHECK(t, photon(command) == 0);
-    CHECK(t, same_bytes(OUT "_a.pfm", OUT "_b.pfm"));
+    CHECK(t, files_equal(OUT "_a.pfm", OUT "_b.pfm"));
     struct error err;
     struct image *img = pfm_read(OUT "_a.pfm", &err);
     CHECK(t, img != NULL && img->width == 24 && img->height == 16);

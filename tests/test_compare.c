@@ -13,33 +13,17 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "../src/base/rng.h"
 #include "../src/image/compare.h"
 #include "check.h"
+#include "files.h"
 #include "tests.h"
 
 #define NAME_MAX_BYTES 256
-#define COMMAND_MAX 1024
 #define SIDE 64                /* synthetic images are SIDE x SIDE: 12288 channel tests */
 #define SEED_REFERENCE 11      /* the two independent draws of the synthetic images */
 #define SEED_TEST 12
-
-/* A file name under /tmp unique to this run and to what (as in test_image.c). */
-static void temp_name(char *out, size_t size, const char *what)
-{
-    static uint64_t run = 0;
-    if (run == 0) {
-        int on_stack = 0;
-        uint64_t key = (uint64_t)time(NULL) ^ (uint64_t)clock()
-                       ^ (uint64_t)(uintptr_t)(void *)&on_stack;
-        struct rng r = rng_stream(key, STREAM_TEST, 2, 0);
-        run = rng_next(&r) | 1;
-    }
-    snprintf(out, size, "/tmp/photon_test_compare_%016llx_%s", (unsigned long long)run,
-             what);
-}
 
 /* truth: tabulated standard normal quantiles, computed to 20 digits with mpmath as the
  *   root of erfc(z / sqrt(2)) = p (and agreeing with the usual tables: 0.05 -> 1.95996,
@@ -283,7 +267,7 @@ static int write_pfm(const char *name, const struct image *img)
 static void test_variance_read(struct check *t)
 {
     char name[NAME_MAX_BYTES];
-    temp_name(name, sizeof name, "var.pfm");
+    temp_name(name, sizeof name, "compare", "var.pfm");
     struct image *like = image_create(3, 2), *var = image_create(3, 2);
     struct error err;
     image_set(var, 2, 1, vec3(0.5, -0.0, 0));
@@ -309,36 +293,7 @@ static void test_variance_read(struct check *t)
 /* Runs "PHOTON compare args" with its output in log; the exit status. */
 static int photon_compare(const char *args, const char *log)
 {
-    char command[3 * COMMAND_MAX];
-    if (snprintf(command, sizeof command, "%s compare %s >%s 2>&1", photon_binary(), args,
-                 log) >= (int)sizeof command)
-        return -1;
-    return run_command(command);
-}
-
-/* Whether the file's whole content is text. */
-static int log_is(const char *log, const char *text)
-{
-    char buffer[COMMAND_MAX];
-    FILE *f = fopen(log, "rb");
-    if (f == NULL)
-        return 0;
-    size_t n = fread(buffer, 1, sizeof buffer - 1, f);
-    fclose(f);
-    buffer[n] = '\0';
-    return strcmp(buffer, text) == 0;
-}
-
-static int log_contains(const char *log, const char *text)
-{
-    char buffer[COMMAND_MAX];
-    FILE *f = fopen(log, "rb");
-    if (f == NULL)
-        return 0;
-    size_t n = fread(buffer, 1, sizeof buffer - 1, f);
-    fclose(f);
-    buffer[n] = '\0';
-    return strstr(buffer, text) != NULL;
+    return photon_logged("compare", args, log);
 }
 
 /* The files of test_compare_command_line: an image, a variance, a negative variance. */
@@ -349,10 +304,10 @@ struct cli_files {
 
 static void make_cli_files(struct cli_files *files)
 {
-    temp_name(files->log, sizeof files->log, "compare.log");
-    temp_name(files->image, sizeof files->image, "image.pfm");
-    temp_name(files->var, sizeof files->var, "var.pfm");
-    temp_name(files->negative, sizeof files->negative, "negative.pfm");
+    temp_name(files->log, sizeof files->log, "compare", "compare.log");
+    temp_name(files->image, sizeof files->image, "compare", "image.pfm");
+    temp_name(files->var, sizeof files->var, "compare", "var.pfm");
+    temp_name(files->negative, sizeof files->negative, "compare", "negative.pfm");
     struct image *img = image_create(2, 2);
     image_set(img, 1, 1, vec3(0.25, 0.5, 1));
     write_pfm(files->image, img);
@@ -376,26 +331,26 @@ static void test_compare_command_line(struct check *t)
     make_cli_files(&f);
     const char *plain = "rmse=0 relmse=0 psnr=inf maxerr=0\n";
     snprintf(args, sizeof args, "%s %s", f.image, f.image);
-    CHECK(t, photon_compare(args, f.log) == 0 && log_is(f.log, plain));
+    CHECK(t, photon_compare(args, f.log) == 0 && file_equals_text(f.log, plain));
     snprintf(args, sizeof args, "%s %s --ref-variance %s", f.image, f.image, f.var);
-    CHECK(t, photon_compare(args, f.log) == 0 && log_is(f.log, "rmse=0 relmse=0 psnr=inf "
+    CHECK(t, photon_compare(args, f.log) == 0 && file_equals_text(f.log, "rmse=0 relmse=0 psnr=inf "
           "maxerr=0 pass_fraction=1.000000 consistent=yes alpha=0.01\n"));
     snprintf(args, sizeof args, "%s %s --test-variance %s --alpha 0.05", f.image, f.image,
              f.var);
-    CHECK(t, photon_compare(args, f.log) == 0 && log_contains(f.log, " alpha=0.05\n"));
+    CHECK(t, photon_compare(args, f.log) == 0 && file_contains(f.log, " alpha=0.05\n"));
     static const char *bad_alpha[] = {"0", "1", "-0.1", "abc", "0.01x", "nan"};
     for (size_t i = 0; i < sizeof bad_alpha / sizeof bad_alpha[0]; i++) {
         snprintf(args, sizeof args, "%s %s --ref-variance %s --alpha %s", f.image, f.image,
                  f.var, bad_alpha[i]);
-        CHECK(t, photon_compare(args, f.log) == 2 && log_contains(f.log, "--alpha"));
+        CHECK(t, photon_compare(args, f.log) == 2 && file_contains(f.log, "--alpha"));
     }
     snprintf(args, sizeof args, "%s %s --alpha 0.05", f.image, f.image);
-    CHECK(t, photon_compare(args, f.log) == 2 && log_contains(f.log, "needs --ref-variance"));
+    CHECK(t, photon_compare(args, f.log) == 2 && file_contains(f.log, "needs --ref-variance"));
     snprintf(args, sizeof args, "%s %s --ref-variance", f.image, f.image);
-    CHECK(t, photon_compare(args, f.log) == 2 && log_contains(f.log, "needs a file name"));
+    CHECK(t, photon_compare(args, f.log) == 2 && file_contains(f.log, "needs a file name"));
     snprintf(args, sizeof args, "%s %s --ref-variance %s", f.image, f.image, f.negative);
-    CHECK(t, photon_compare(args, f.log) == 2 && !log_contains(f.log, "rmse=")
-             && log_contains(f.log, "negative variance"));
+    CHECK(t, photon_compare(args, f.log) == 2 && !file_contains(f.log, "rmse=")
+             && file_contains(f.log, "negative variance"));
     remove(f.negative);
     remove(f.var);
     remove(f.image);

@@ -2,8 +2,8 @@
  * tests/test_image.c -- the image room: PFM and PPM files byte for byte, PFM input that
  * must be refused, and the compare metrics on images small enough to work by hand.
  *
- * Files go to /tmp under names unique to the run (temp_name) and are removed by the test
- * that made them. The `photon compare` command line itself is tested on the built binary
+ * Files go to /tmp under names unique to the run (temp_name, files.c) and are removed by
+ * the test that made them. The `photon compare` command line itself is tested on the built binary
  * in test_cli.c.
  */
 #include <float.h>
@@ -11,42 +11,16 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
 
 #include "../src/base/rng.h"
 #include "../src/image/compare.h"
 #include "../src/image/image.h"
 #include "check.h"
+#include "files.h"
 #include "tests.h"
 
 #define NAME_MAX_BYTES 256
 #define FILE_MAX_BYTES 4096 /* larger than any file these tests write by hand */
-
-/* A file name under /tmp unique to this run and to what: C99 has no process id, so runs
- * are told apart by the clock and by where the OS placed the stack (randomised per process
- * on the systems we test on), hashed through the test stream. No result depends on it. */
-static void temp_name(char *out, size_t size, const char *what)
-{
-    static uint64_t run = 0;
-    if (run == 0) {
-        int on_stack = 0;
-        uint64_t key = (uint64_t)time(NULL) ^ (uint64_t)clock()
-                       ^ (uint64_t)(uintptr_t)(void *)&on_stack;
-        struct rng r = rng_stream(key, STREAM_TEST, 0, 0);
-        run = rng_next(&r) | 1;
-    }
-    snprintf(out, size, "/tmp/photon_test_image_%016llx_%s", (unsigned long long)run, what);
-}
-
-static void write_file(const char *name, const unsigned char *bytes, size_t n)
-{
-    FILE *f = fopen(name, "wb");
-    if (f == NULL)
-        return; /* the read that follows fails and says so */
-    if (n > 0)
-        fwrite(bytes, 1, n, f);
-    fclose(f);
-}
 
 /* Reads up to FILE_MAX_BYTES of a file into bytes; returns the count, 0 if unreadable. */
 static size_t read_file(const char *name, unsigned char *bytes)
@@ -57,14 +31,6 @@ static size_t read_file(const char *name, unsigned char *bytes)
     size_t n = fread(bytes, 1, FILE_MAX_BYTES, f);
     fclose(f);
     return n;
-}
-
-static int file_exists(const char *name)
-{
-    FILE *f = fopen(name, "rb");
-    if (f != NULL)
-        fclose(f);
-    return f != NULL;
 }
 
 /* True when the writer left no NAME.tmp behind. */
@@ -97,7 +63,7 @@ static double float_rounded(double v)
 static void check_round_trip(struct check *t, int width, int height, uint64_t index)
 {
     char name[NAME_MAX_BYTES];
-    temp_name(name, sizeof name, "round_trip.pfm");
+    temp_name(name, sizeof name, "image", "round_trip.pfm");
     struct image *img = image_create(width, height);
     struct image *expected = image_create(width, height);
     struct rng r = rng_stream(1, STREAM_TEST, index, 0);
@@ -167,7 +133,7 @@ static void test_pfm_byte_layout(struct check *t)
         0x00, 0x00, 0x80, 0xBF, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80, 0x3E,
     };
     char name[NAME_MAX_BYTES];
-    temp_name(name, sizeof name, "layout.pfm");
+    temp_name(name, sizeof name, "image", "layout.pfm");
     struct image *img = image_create(2, 2);
     image_set(img, 0, 0, vec3(1, 2, 0.5));
     image_set(img, 1, 0, vec3(-1, 0, 0.25));
@@ -195,8 +161,8 @@ static struct image *read_bytes_as_pfm(const unsigned char *bytes, size_t n,
                                        struct error *err)
 {
     char name[NAME_MAX_BYTES];
-    temp_name(name, sizeof name, "by_hand.pfm");
-    write_file(name, bytes, n);
+    temp_name(name, sizeof name, "image", "by_hand.pfm");
+    write_bytes_file(name, bytes, n);
     struct image *img = pfm_read(name, err);
     remove(name);
     return img;
@@ -309,10 +275,10 @@ static void test_pfm_refuses_malformed(struct check *t)
         {"PF\n1 1\n-1e300\n", 3, 0x7149F2CAu, "infinite"}, /* 1e30 * 1e300 overflows */
     };
     char name[NAME_MAX_BYTES];
-    temp_name(name, sizeof name, "bad.pfm");
+    temp_name(name, sizeof name, "image", "bad.pfm");
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         unsigned char bytes[FILE_MAX_BYTES];
-        write_file(name, bytes, build_bad_pfm(&cases[i], bytes));
+        write_bytes_file(name, bytes, build_bad_pfm(&cases[i], bytes));
         check_refused(t, name, cases[i].keyword);
     }
     remove(name);
@@ -340,7 +306,7 @@ static void test_ppm_bytes(struct check *t)
         0, 255, 255, 22, 255, 0, 188, 255, 255, 29, 255, 0,
     };
     char name[NAME_MAX_BYTES];
-    temp_name(name, sizeof name, "bytes.ppm");
+    temp_name(name, sizeof name, "image", "bytes.ppm");
     struct image *img = image_create(2, 2);
     image_set(img, 0, 0, vec3(0, 1, 0.5));
     image_set(img, 1, 0, vec3(0.002, 2.0, -1.0));
@@ -402,7 +368,7 @@ static void test_compare_metrics(struct check *t)
 static void test_write_fails_cleanly(struct check *t)
 {
     char dir[NAME_MAX_BYTES], name[2 * NAME_MAX_BYTES];
-    temp_name(dir, sizeof dir, "no_such_dir");
+    temp_name(dir, sizeof dir, "image", "no_such_dir");
     struct image *img = image_create(3, 2);
     struct error err;
     snprintf(name, sizeof name, "%s/out.pfm", dir);

@@ -3,72 +3,24 @@
  * SVG, the legend, CSV input that must be refused (with file:line, and nothing written),
  * and the command line on the built binary.
  *
- * Files go to /tmp under names unique to the run (temp_name) and are removed by the test
- * that made them. The SVG is checked as text: the frame rectangle (id="frame") and the
- * polylines' points are read back with sscanf.
+ * Files go to /tmp under names unique to the run (temp_name, files.c) and are removed by
+ * the test that made them. The SVG is checked as text: the frame rectangle (id="frame")
+ * and the polylines' points are read back with sscanf.
  */
 #include <math.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
-#include "../src/base/rng.h"
 #include "../src/image/plot.h"
 #include "check.h"
+#include "files.h"
 #include "tests.h"
 
 #define NAME_MAX_BYTES 256
-#define TEXT_MAX_BYTES (1 << 20) /* larger than any SVG these tests make */
 #define COMMAND_MAX 1024
 #define HEADER "seconds,work,rmse,relmse\n"
 #define POINT_TOLERANCE 0.006 /* the SVG prints coordinates with two decimals */
-
-/* A file name under /tmp unique to this run and to what (as in test_image.c). */
-static void temp_name(char *out, size_t size, const char *what)
-{
-    static uint64_t run = 0;
-    if (run == 0) {
-        int on_stack = 0;
-        uint64_t key = (uint64_t)time(NULL) ^ (uint64_t)clock()
-                       ^ (uint64_t)(uintptr_t)(void *)&on_stack;
-        struct rng r = rng_stream(key, STREAM_TEST, 1, 0);
-        run = rng_next(&r) | 1;
-    }
-    snprintf(out, size, "/tmp/photon_test_plot_%016llx_%s", (unsigned long long)run, what);
-}
-
-static void write_text(const char *name, const char *text)
-{
-    FILE *f = fopen(name, "wb");
-    if (f == NULL)
-        return; /* the read that follows fails and says so */
-    fputs(text, f);
-    fclose(f);
-}
-
-/* The whole file as a string (malloc'd, caller frees), or NULL when unreadable. */
-static char *read_text(const char *name)
-{
-    FILE *f = fopen(name, "rb");
-    if (f == NULL)
-        return NULL;
-    char *text = malloc(TEXT_MAX_BYTES + 1);
-    size_t n = text != NULL ? fread(text, 1, TEXT_MAX_BYTES, f) : 0;
-    fclose(f);
-    if (text != NULL)
-        text[n] = '\0';
-    return text;
-}
-
-static int file_exists(const char *name)
-{
-    FILE *f = fopen(name, "rb");
-    if (f != NULL)
-        fclose(f);
-    return f != NULL;
-}
 
 static int count_of(const char *text, const char *word)
 {
@@ -135,12 +87,12 @@ static int read_polyline(const char *svg, int n, double *xy, int max)
 static char *plot_one(const char *csv_text)
 {
     char csv[NAME_MAX_BYTES], svg[NAME_MAX_BYTES];
-    temp_name(csv, sizeof csv, "one.csv");
-    temp_name(svg, sizeof svg, "one.svg");
-    write_text(csv, csv_text);
+    temp_name(csv, sizeof csv, "plot", "one.csv");
+    temp_name(svg, sizeof svg, "plot", "one.svg");
+    write_text_file(csv, csv_text);
     const char *files[1] = {csv};
     struct error err;
-    char *text = plot_files(files, 1, svg, &err) == 0 ? read_text(svg) : NULL;
+    char *text = plot_files(files, 1, svg, &err) == 0 ? read_text_file(svg) : NULL;
     remove(csv);
     remove(svg);
     return text;
@@ -199,15 +151,15 @@ static void test_points_land_on_decades(struct check *t)
 static void test_legend_and_skipped_rows(struct check *t)
 {
     char a[NAME_MAX_BYTES], b[NAME_MAX_BYTES], svg_name[NAME_MAX_BYTES];
-    temp_name(a, sizeof a, "x&y<z>.csv");
-    temp_name(b, sizeof b, "zeros.csv");
-    temp_name(svg_name, sizeof svg_name, "legend.svg");
-    write_text(a, HEADER "1,1,1,0.5\n2,1,1,0.2\n");
-    write_text(b, HEADER "0,1,1,0.5\n1,1,1,0.1\n2,1,1,0\n4,1,1,0.05\n");
+    temp_name(a, sizeof a, "plot", "x&y<z>.csv");
+    temp_name(b, sizeof b, "plot", "zeros.csv");
+    temp_name(svg_name, sizeof svg_name, "plot", "legend.svg");
+    write_text_file(a, HEADER "1,1,1,0.5\n2,1,1,0.2\n");
+    write_text_file(b, HEADER "0,1,1,0.5\n1,1,1,0.1\n2,1,1,0\n4,1,1,0.05\n");
     const char *files[2] = {a, b};
     struct error err;
     CHECK(t, plot_files(files, 2, svg_name, &err) == 0);
-    char *svg = read_text(svg_name);
+    char *svg = read_text_file(svg_name);
     CHECK(t, svg != NULL);
     if (svg != NULL) {
         double xy[2 * 8];
@@ -239,9 +191,9 @@ struct bad_csv {
 static void check_refused(struct check *t, const char *csv_name, const struct bad_csv *c)
 {
     char svg[NAME_MAX_BYTES], tmp[NAME_MAX_BYTES + 8];
-    temp_name(svg, sizeof svg, "refused.svg");
+    temp_name(svg, sizeof svg, "plot", "refused.svg");
     snprintf(tmp, sizeof tmp, "%s.tmp", svg);
-    write_text(svg, "precious");
+    write_text_file(svg, "precious");
     const char *files[1] = {csv_name};
     struct error err;
     err.message[0] = '\0';
@@ -251,9 +203,7 @@ static void check_refused(struct check *t, const char *csv_name, const struct ba
     if (!ok)
         fprintf(stderr, "  expected line %d '%s', got %s:%d: %s\n", c->line, c->keyword,
                 err.file, err.line, err.message);
-    char *left = read_text(svg);
-    CHECK(t, left != NULL && strcmp(left, "precious") == 0 && !file_exists(tmp));
-    free(left);
+    CHECK(t, file_equals_text(svg, "precious") && !file_exists(tmp));
     remove(svg);
 }
 
@@ -279,15 +229,15 @@ static void test_plot_refuses_bad_csv(struct check *t)
         {"a,b,c,d,e,f,g,h,i,j,k,l,m,n,o,p,seconds,relmse\n", 1, "more than 16 columns"},
     };
     char name[NAME_MAX_BYTES];
-    temp_name(name, sizeof name, "bad.csv");
+    temp_name(name, sizeof name, "plot", "bad.csv");
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        write_text(name, cases[i].text);
+        write_text_file(name, cases[i].text);
         check_refused(t, name, &cases[i]);
     }
     char *long_line = malloc(4096);
     if (long_line != NULL) {
         snprintf(long_line, 4096, HEADER "1,2,3,0.%02000d1\n", 0); /* 2010 bytes */
-        write_text(name, long_line);
+        write_text_file(name, long_line);
         struct bad_csv c = {NULL, 2, "longer than"};
         check_refused(t, name, &c);
         free(long_line);
@@ -306,19 +256,19 @@ static void test_plot_refuses_bad_csv(struct check *t)
 static void test_plot_refuses_bad_sets(struct check *t)
 {
     char csv[NAME_MAX_BYTES], svg[NAME_MAX_BYTES];
-    temp_name(csv, sizeof csv, "set.csv");
-    temp_name(svg, sizeof svg, "set.svg");
+    temp_name(csv, sizeof csv, "plot", "set.csv");
+    temp_name(svg, sizeof svg, "plot", "set.svg");
     const char *files[PLOT_MAX_SERIES + 1];
     for (int i = 0; i <= PLOT_MAX_SERIES; i++)
         files[i] = csv;
     struct error err;
-    write_text(csv, HEADER "1,1,1,0.5\n");
+    write_text_file(csv, HEADER "1,1,1,0.5\n");
     CHECK(t, plot_files(files, PLOT_MAX_SERIES, svg, &err) == 0);
     remove(svg);
     CHECK(t, plot_files(files, PLOT_MAX_SERIES + 1, svg, &err) == -1);
     CHECK(t, strstr(err.message, "1 to 8") != NULL && !file_exists(svg));
     CHECK(t, plot_files(files, 0, svg, &err) == -1 && !file_exists(svg));
-    write_text(csv, HEADER "0,1,1,0.5\n1,1,1,0\n");
+    write_text_file(csv, HEADER "0,1,1,0.5\n1,1,1,0\n");
     CHECK(t, plot_files(files, 2, svg, &err) == -1);
     CHECK(t, strstr(err.message, "nothing to plot") != NULL && !file_exists(svg));
     remove(csv);
@@ -327,19 +277,7 @@ static void test_plot_refuses_bad_sets(struct check *t)
 /* Runs "PHOTON plot args" with its output in log; the exit status. */
 static int photon_plot(const char *args, const char *log)
 {
-    char command[2 * COMMAND_MAX];
-    if (snprintf(command, sizeof command, "%s plot %s >%s 2>&1", photon_binary(), args, log)
-        >= (int)sizeof command)
-        return -1;
-    return run_command(command);
-}
-
-static int log_contains(const char *log, const char *text)
-{
-    char *s = read_text(log);
-    int found = s != NULL && strstr(s, text) != NULL;
-    free(s);
-    return found;
+    return photon_logged("plot", args, log);
 }
 
 /* truth: the command-line contract (DESIGN.md): bad input exits 2 with "file:line:
@@ -352,34 +290,32 @@ static void test_plot_command_line(struct check *t)
 {
     char log[NAME_MAX_BYTES], csv[NAME_MAX_BYTES], svg[NAME_MAX_BYTES];
     char args[COMMAND_MAX], message[COMMAND_MAX];
-    temp_name(log, sizeof log, "plot.log");
-    temp_name(csv, sizeof csv, "cli.csv");
-    temp_name(svg, sizeof svg, "cli.svg");
-    write_text(csv, HEADER "1,1,1,0.5\n2,1,1,0.25\n");
-    CHECK(t, photon_plot("", log) == 2 && log_contains(log, "photon: plot: no output"));
+    temp_name(log, sizeof log, "plot", "plot.log");
+    temp_name(csv, sizeof csv, "plot", "cli.csv");
+    temp_name(svg, sizeof svg, "plot", "cli.svg");
+    write_text_file(csv, HEADER "1,1,1,0.5\n2,1,1,0.25\n");
+    CHECK(t, photon_plot("", log) == 2 && file_contains(log, "photon: plot: no output"));
     snprintf(args, sizeof args, "%s", csv);
-    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, "-o PLOT.svg"));
+    CHECK(t, photon_plot(args, log) == 2 && file_contains(log, "-o PLOT.svg"));
     snprintf(args, sizeof args, "%s -o %s.png", csv, svg);
-    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, ".svg file"));
+    CHECK(t, photon_plot(args, log) == 2 && file_contains(log, ".svg file"));
     snprintf(args, sizeof args, "-o %s", svg);
-    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, "no CSV files"));
+    CHECK(t, photon_plot(args, log) == 2 && file_contains(log, "no CSV files"));
     snprintf(args, sizeof args, "%s -o", csv);
-    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, "-o needs"));
+    CHECK(t, photon_plot(args, log) == 2 && file_contains(log, "-o needs"));
     snprintf(args, sizeof args, "--log %s -o %s", csv, svg);
-    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, "unknown option '--log'"));
+    CHECK(t, photon_plot(args, log) == 2 && file_contains(log, "unknown option '--log'"));
     snprintf(args, sizeof args, "%s.missing -o %s", csv, svg);
-    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, ".missing: cannot open"));
+    CHECK(t, photon_plot(args, log) == 2 && file_contains(log, ".missing: cannot open"));
     CHECK(t, !file_exists(svg));
     snprintf(args, sizeof args, "%s -o %s", csv, svg);
     CHECK(t, photon_plot(args, log) == 0 && file_exists(svg));
-    char *text = read_text(log);
-    CHECK(t, text != NULL && text[0] == '\0');
-    free(text);
+    CHECK(t, file_equals_text(log, ""));
     remove(svg);
-    write_text(csv, HEADER "1,1,1,0.5\n2,1,1,0.25,9\n");
+    write_text_file(csv, HEADER "1,1,1,0.5\n2,1,1,0.25,9\n");
     snprintf(args, sizeof args, "%s -o %s", csv, svg);
     snprintf(message, sizeof message, "%s:3: expected 4 fields", csv);
-    CHECK(t, photon_plot(args, log) == 2 && log_contains(log, message) && !file_exists(svg));
+    CHECK(t, photon_plot(args, log) == 2 && file_contains(log, message) && !file_exists(svg));
     remove(csv);
     remove(log);
 }

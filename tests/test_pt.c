@@ -9,19 +9,7 @@
 #include "../src/modes/direct.h"
 #include "../src/modes/pt.h"
 #include "tests.h"
-
-/* Loads and finishes a scene at width x height (0 x 0: the file's own size). */
-static struct scene *load_scene(const char *path, int width, int height)
-{
-    struct error err;
-    struct scene *scene = scene_load(path, &err);
-    if (scene == NULL) {
-        error_print(&err);
-        return NULL;
-    }
-    scene_finish(scene, width > 0 ? width : scene->width, height > 0 ? height : scene->height);
-    return scene;
-}
+#include "truths.h"
 
 static struct render_result render_seed(const struct scene *scene, int pt, int spp,
                                         uint64_t seed)
@@ -49,7 +37,7 @@ static struct render_result render_seed(const struct scene *scene, int pt, int s
  *   depth limit (darker by rho^depth). */
 static void test_furnace(struct check *t)
 {
-    struct scene *scene = load_scene("scenes/analytic/furnace.scene", 0, 0);
+    struct scene *scene = load_test_scene("scenes/analytic/furnace.scene", 0, 0);
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
@@ -65,21 +53,6 @@ static void test_furnace(struct check *t)
     CHECK_CLOSE(t, sum / n, 5.0, 4 * se);
     render_result_free(&r);
     scene_free(scene);
-}
-
-/* Lambert's formula (light.h's convention): irradiance at p, normal n, from a polygon of
- * radiance le. */
-static double polygon_irradiance(const struct vec3 *v, int count, struct vec3 p, struct vec3 n,
-                                 double le)
-{
-    double sum = 0;
-    for (int i = 0; i < count; i++) {
-        struct vec3 a = vec3_normalize(vec3_sub(v[i], p));
-        struct vec3 b = vec3_normalize(vec3_sub(v[(i + 1) % count], p));
-        double beta = acos(fmax(-1.0, fmin(1.0, vec3_dot(a, b))));
-        sum += beta * vec3_dot(n, vec3_normalize(vec3_cross(a, b)));
-    }
-    return le / 2 * fabs(sum);
 }
 
 /* The closed-form radiance the camera sees through image point (px, py) of
@@ -108,7 +81,7 @@ static double area_over_floor(const struct scene *scene, double px, double py)
  *   without dividing by its probability, MIS double counting (pt brighter than direct). */
 static void test_area_light_over_floor(struct check *t)
 {
-    struct scene *scene = load_scene("scenes/analytic/area-over-floor.scene", 0, 0);
+    struct scene *scene = load_test_scene("scenes/analytic/area-over-floor.scene", 0, 0);
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
@@ -159,7 +132,7 @@ static void brighten_lights(struct scene *scene, double factor)
  *   is below one standard error, which is why references are judged by relmse as well. */
 static void test_independent_renders_agree(struct check *t)
 {
-    struct scene *scene = load_scene("scenes/cornell.scene", 32, 32);
+    struct scene *scene = load_test_scene("scenes/cornell.scene", 32, 32);
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
@@ -211,7 +184,7 @@ static void test_error_against_reference(struct check *t)
     struct error err;
     struct image *ref = pfm_read("reference/cornell-pt.pfm", &err);
     struct image *ref_var = pfm_read("reference/cornell-pt-var.pfm", &err);
-    struct scene *scene = load_scene("scenes/cornell.scene", 0, 0);
+    struct scene *scene = load_test_scene("scenes/cornell.scene", 0, 0);
     CHECK(t, ref != NULL && ref_var != NULL && scene != NULL);
     if (ref != NULL && ref_var != NULL && scene != NULL) {
         for (int spp = 4; spp <= 16; spp *= 4) {

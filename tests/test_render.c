@@ -8,19 +8,9 @@
 
 #include "../src/image/compare.h"
 #include "../src/modes/direct.h"
+#include "files.h"
 #include "tests.h"
-
-static struct scene *load(const char *path, int width, int height)
-{
-    struct error err;
-    struct scene *scene = scene_load(path, &err);
-    if (scene == NULL) {
-        error_print(&err);
-        return NULL;
-    }
-    scene_finish(scene, width > 0 ? width : scene->width, height > 0 ? height : scene->height);
-    return scene;
-}
+#include "truths.h"
 
 static struct render_settings whole_image(const struct scene *scene, int spp)
 {
@@ -58,7 +48,7 @@ static double plane_radiance(const struct scene *scene, double px, double py)
  *   power read as intensity; a shadow ray blocked by the plane itself (acne). */
 static void test_point_light_over_plane(struct check *t)
 {
-    struct scene *scene = load("scenes/analytic/point-over-plane.scene", 0, 0);
+    struct scene *scene = load_test_scene("scenes/analytic/point-over-plane.scene", 0, 0);
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
@@ -87,7 +77,7 @@ static void test_point_light_over_plane(struct check *t)
  * catches: the light reflecting light, emission from its back, emission lost. */
 static void test_light_seen_directly(struct check *t)
 {
-    struct scene *scene = load("scenes/cornell.scene", 0, 0);
+    struct scene *scene = load_test_scene("scenes/cornell.scene", 0, 0);
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
@@ -109,7 +99,7 @@ static void test_light_seen_directly(struct check *t)
  *   pixels (a shared rng), uninitialised pixels. */
 static void test_crop_matches_whole_image(struct check *t)
 {
-    struct scene *scene = load("scenes/cornell.scene", 40, 30);
+    struct scene *scene = load_test_scene("scenes/cornell.scene", 40, 30);
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
@@ -145,7 +135,7 @@ static void test_crop_matches_whole_image(struct check *t)
 static void test_scale_invariance(struct check *t)
 {
     static const char *scaled[] = {"scenes/cornell-1e-3.scene", "scenes/cornell-1e3.scene"};
-    struct scene *scene = load("scenes/cornell.scene", 64, 64);
+    struct scene *scene = load_test_scene("scenes/cornell.scene", 64, 64);
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
@@ -153,7 +143,7 @@ static void test_scale_invariance(struct check *t)
     struct image *reference = render(scene, &rs);
     scene_free(scene);
     for (int i = 0; i < 2; i++) {
-        scene = load(scaled[i], 64, 64);
+        scene = load_test_scene(scaled[i], 64, 64);
         CHECK(t, scene != NULL);
         if (scene == NULL)
             break;
@@ -163,15 +153,6 @@ static void test_scale_invariance(struct check *t)
         scene_free(scene);
     }
     image_free(reference);
-}
-
-static void write_text(const char *name, const char *text)
-{
-    FILE *f = fopen(name, "wb");
-    if (f == NULL)
-        return;
-    fputs(text, f);
-    fclose(f);
 }
 
 /* truth: a procedural shape and its expansion into plain primitives (the `expand` word)
@@ -194,8 +175,8 @@ static void test_shapes_render_as_their_expansions(struct check *t)
                           "%s%s\nlight point 1 3 -2  100 100 100\n"
                           "light quad -1 2 -1  1 2 -1  1 2 1  -1 2 1  3 3 3\n",
                     objects[i], expand ? " expand" : "");
-            write_text(path, text);
-            struct scene *scene = load(path, 40, 40);
+            write_text_file(path, text);
+            struct scene *scene = load_test_scene(path, 40, 40);
             CHECK(t, scene != NULL);
             if (scene == NULL)
                 break;

@@ -10,6 +10,7 @@
 #include "../src/scene/optics.h"
 #include "../src/scene/scene.h"
 #include "tests.h"
+#include "truths.h"
 
 /* truth: the default scene as the issue specifies it: 10 wall triangles, 1 light quad,
  *   2 spheres; 3 named materials plus the light's; one quad light of radiance (17, 12, 4)
@@ -187,22 +188,6 @@ static double estimated_irradiance(const struct light *l, struct vec3 p, struct 
     double mean = sum / n_samples;
     *standard_error = sqrt(fmax(0.0, sum2 / n_samples - mean * mean) / n_samples);
     return mean;
-}
-
-/* Lambert's formula for a polygon of constant radiance le seen from p with normal n:
- * E = le / 2 * | sum_i beta_i n . normalize(r_i x r_i+1) |, r_i = v_i - p, beta_i the angle
- * between r_i and r_i+1. */
-static double polygon_irradiance(const struct vec3 *v, int count, struct vec3 p, struct vec3 n,
-                                 double le)
-{
-    double sum = 0;
-    for (int i = 0; i < count; i++) {
-        struct vec3 a = vec3_normalize(vec3_sub(v[i], p));
-        struct vec3 b = vec3_normalize(vec3_sub(v[(i + 1) % count], p));
-        double beta = acos(fmax(-1.0, fmin(1.0, vec3_dot(a, b))));
-        sum += beta * vec3_dot(n, vec3_normalize(vec3_cross(a, b)));
-    }
-    return le / 2 * fabs(sum);
 }
 
 /* truth: closed forms: a sphere of radius a and radiance Le at distance d, wholly above

@@ -17,6 +17,7 @@ void test_shapes(struct check *t); /* test_shapes.c: sphere flake, heightfield  
 void test_photon(struct check *t); /* test_photon.c: photon record, kd-tree       */
 void test_render(struct check *t); /* test_render.c: direct mode, crops, scaling  */
 void test_pt(struct check *t);     /* test_pt.c: the path tracer, closed forms    */
+void test_report(struct check *t); /* test_report.c: --report, --time-limit, ...  */
 void test_cli(struct check *t);    /* test_cli.c: the command line, exit statuses */
 
 #endif

@@ -1,0 +1,36 @@
+/*
+ * tests/files.h -- helpers the tests share for temporary files and captured output: unique
+ * names under /tmp, writing a file from text or bytes, and reading one back to compare.
+ *
+ * Every helper opens and closes its own FILE; nothing stays open between calls. A file that
+ * cannot be written is left absent, so the read that follows fails and the test says so.
+ */
+#ifndef PHOTON_TEST_FILES_H
+#define PHOTON_TEST_FILES_H
+
+#include <stddef.h>
+
+/* Puts "/tmp/photon_test_GROUP_RUN_WHAT" in out (size bytes), RUN unique to this process. */
+void temp_name(char *out, size_t size, const char *group, const char *what);
+
+/* Writes text (without its '\0') to name, replacing what was there. */
+void write_text_file(const char *name, const char *text);
+/* Writes the n bytes to name, replacing what was there; n may be 0. */
+void write_bytes_file(const char *name, const unsigned char *bytes, size_t n);
+
+/* Whether name can be opened for reading. */
+int file_exists(const char *name);
+/* The first MiB of name as a string (malloc'd, caller frees), or NULL when unreadable. */
+char *read_text_file(const char *name);
+/* Whether name can be read and its text contains text. */
+int file_contains(const char *name, const char *text);
+/* Whether name can be read and its whole text is exactly text. */
+int file_equals_text(const char *name, const char *text);
+/* Whether both files can be read and hold the same bytes. */
+int files_equal(const char *a, const char *b);
+
+/* Runs "PHOTON subcommand args" (subcommand may be "") with stdout and stderr captured in
+ * log; the exit status, or -1 if the command is too long or did not exit. */
+int photon_logged(const char *subcommand, const char *args, const char *log);
+
+#endif
