@@ -14,6 +14,7 @@
 #include "image/compare.h"
 #include "image/plot.h"
 #include "modes/direct.h"
+#include "modes/photons.h"
 #include "modes/pt.h"
 
 /* What one render command holds; released by finish_run() whatever happened. */
@@ -25,6 +26,7 @@ struct run {
     struct render_settings rs;
     struct render_counters counters;
     struct render_result result;
+    struct photon_stats photon_stats; /* photon modes only */
     clock_t start;
     double seconds_build;
 };
@@ -75,7 +77,7 @@ static int prepare_run(struct run *run, struct error *err)
     run->rs.time_limit = o->time_limit;
     run->rs.max_depth = o->max_depth >= 0 ? o->max_depth
                         : o->mode == MODE_DIRECT ? DIRECT_MAX_DEPTH
-                                                 : MAX_DEPTH_LIMIT;
+                                                 : MAX_DEPTH_LIMIT; /* roulette ends paths */
     run->rs.progress = show_progress(o->progress);
     if (choose_window(o, width, height, &run->rs, err) < 0)
         return -1;
@@ -105,6 +107,15 @@ static int write_outputs(const struct run *run, struct error *err)
     return 0;
 }
 
+static void print_photon_stats(const struct photon_stats *ps)
+{
+    fprintf(stderr, "photons_emitted=%zu\nphotons_stored=%zu\nbytes_per_photon=%.2f\n",
+            ps->photons_emitted, ps->photons_stored, ps->bytes_per_photon);
+    fprintf(stderr, "seconds_photons=%.3f\nseconds_balance=%.3f\nmax_radius=%.6g\n",
+            ps->seconds_photons, ps->seconds_balance, ps->max_radius);
+    fprintf(stderr, "photon_rays=%llu\n", ps->photon_rays);
+}
+
 static void print_stats(const struct run *run)
 {
     const struct scene *scene = run->scene;
@@ -118,15 +129,30 @@ static void print_stats(const struct run *run)
             geometry_bvh_nodes(scene->geometry), geometry_bytes(scene->geometry));
     fprintf(stderr, "width=%d\nheight=%d\nspp=%d\nseed=%llu\n", scene->width, scene->height,
             c->passes, (unsigned long long)run->o.seed);
+    if (run->o.mode == MODE_PHOTONS)
+        print_photon_stats(&run->photon_stats);
 }
 
-static struct render_result render_mode(struct run *run)
+/* Renders with the chosen mode; the image is NULL (and *err filled) on failure. */
+static struct render_result render_mode(struct run *run, struct error *err)
 {
     struct checkpoint report = {report_checkpoint, &run->report};
     const struct checkpoint *checkpoint = run->reference != NULL ? &report : NULL;
     int want_variance = run->o.variance != NULL;
-    if (run->o.mode == MODE_PT)
+    struct photon_settings ps;
+    switch (run->o.mode) {
+    case MODE_PT:
         return render_pt(run->scene, &run->rs, want_variance, checkpoint, &run->counters);
+    case MODE_PHOTONS:
+        ps.n_photons = (size_t)run->o.photons;
+        ps.gather = (size_t)run->o.gather;
+        ps.max_radius = run->o.max_radius;
+        ps.cone_k = run->o.cone;
+        return render_photons(run->scene, &run->rs, &ps, want_variance, checkpoint,
+                              &run->counters, &run->photon_stats, err);
+    case MODE_DIRECT:
+        break;
+    }
     return render_direct(run->scene, &run->rs, want_variance, checkpoint, &run->counters);
 }
 
@@ -134,8 +160,8 @@ static int render_command(struct run *run, struct error *err)
 {
     if (prepare_run(run, err) < 0)
         return 2;
-    run->result = render_mode(run);
-    if (write_outputs(run, err) < 0)
+    run->result = render_mode(run, err);
+    if (run->result.image == NULL || write_outputs(run, err) < 0)
         return 2;
     if (run->reference != NULL && report_close(&run->report, err) < 0)
         return 2;

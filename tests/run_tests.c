@@ -18,6 +18,7 @@ int main(void)
     test_brdf(&t);
     test_shapes(&t);
     test_photon(&t);
+    test_trace(&t);
     test_render(&t);
     test_pt(&t);
     test_report(&t);

@@ -15,6 +15,7 @@ void test_scene(struct check *t);  /* test_scene.c: parser, camera, lights      
 void test_brdf(struct check *t);   /* test_brdf.c: the material models            */
 void test_shapes(struct check *t); /* test_shapes.c: sphere flake, heightfield    */
 void test_photon(struct check *t); /* test_photon.c: photon record, kd-tree       */
+void test_trace(struct check *t);  /* test_trace.c: emission, tracing, estimates  */
 void test_render(struct check *t); /* test_render.c: direct mode, crops, scaling  */
 void test_pt(struct check *t);     /* test_pt.c: the path tracer, closed forms    */
 void test_report(struct check *t); /* test_report.c: --report, --time-limit, ...  */

@@ -11,7 +11,9 @@
 #include <string.h>
 
 #include "../image/image.h"
+#include "../modes/photons.h"
 #include "../modes/render.h"
+#include "../photon/trace.h"
 
 enum option_kind {
     OPT_FLAG, OPT_INT, OPT_SEED, OPT_REAL, OPT_MODE, OPT_OUTPUT, OPT_FILE, OPT_CROP
@@ -30,7 +32,7 @@ struct option_spec {
 
 static const struct option_spec specs[] = {
     {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME",
-     "rendering mode: direct or pt (default direct)"},
+     "rendering mode: direct, pt or photons (default direct)"},
     {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm",
      "output image; FILE.ppm is written beside it (default: SCENE's name, .pfm)"},
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)"},
@@ -41,7 +43,7 @@ static const struct option_spec specs[] = {
     {"--crop", OPT_CROP, FIELD(crop), 0, MAX_IMAGE_SIDE, "X0 Y0 X1 Y1",
      "render only pixels X0 <= x < X1, Y0 <= y < Y1 of the whole image (0,0 = top left)"},
     {"--max-depth", OPT_INT, FIELD(max_depth), 0, MAX_DEPTH_LIMIT, "N",
-     "longest chain of bounces followed (default: direct 16, pt 1000)"},
+     "longest chain of bounces followed (default: direct 16, others 1000)"},
     {"--time-limit", OPT_REAL, FIELD(time_limit), 0, 1e9, "SECONDS",
      "stop after the sample pass that crosses this many CPU seconds (default: none)"},
     {"--reference", OPT_FILE, FIELD(reference), 0, 0, "REF.pfm",
@@ -50,6 +52,14 @@ static const struct option_spec specs[] = {
      "write seconds,work,rmse,relmse at work 1, 2, 4, ... and at the end"},
     {"--variance", OPT_FILE, FIELD(variance), 0, 0, "FILE.pfm",
      "also write each pixel's variance of the mean (needs --spp >= 2)"},
+    {"--photons", OPT_INT, FIELD(photons), 1, MAX_PHOTONS, "N",
+     "photon modes: photons emitted (default 200000)"},
+    {"--gather", OPT_INT, FIELD(gather), 1, MAX_GATHER, "K",
+     "photon modes: photons in each radiance estimate (default 100)"},
+    {"--max-radius", OPT_REAL, FIELD(max_radius), 0, 1e30, "R",
+     "photon modes: largest gathering radius (default: 1/10 of the scene's diagonal)"},
+    {"--cone", OPT_REAL, FIELD(cone), 0, 1e6, "K",
+     "photon modes: cone filter constant k >= 1 (Jensen 1996 Eq. 4); 0 = none (default)"},
     {"--exposure", OPT_REAL, FIELD(exposure), 0, 1e30, "E",
      "PPM only: multiply radiance by E before sRGB encoding (default 1)"},
     {"--stats", OPT_FLAG, FIELD(stats), 0, 0, "", "print key=value statistics on stderr"},
@@ -64,6 +74,8 @@ const char *mode_name(enum mode mode)
         return "direct";
     case MODE_PT:
         return "pt";
+    case MODE_PHOTONS:
+        return "photons";
     }
     return "?";
 }
@@ -92,6 +104,8 @@ static void set_defaults(struct options *o)
     o->max_depth = -1;
     o->progress = -1;
     o->exposure = 1.0;
+    o->photons = PHOTONS_DEFAULT_N;
+    o->gather = PHOTONS_DEFAULT_GATHER;
 }
 
 /* A number from text: whole (integer != 0) or real, within [min, max]. */
@@ -126,13 +140,13 @@ static int read_seed(const char *text, uint64_t *seed, struct error *err)
 
 static int read_mode(const char *text, enum mode *mode, struct error *err)
 {
-    static const enum mode modes[] = {MODE_DIRECT, MODE_PT};
+    static const enum mode modes[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS};
     for (size_t i = 0; text != NULL && i < sizeof modes / sizeof modes[0]; i++)
         if (strcmp(text, mode_name(modes[i])) == 0) {
             *mode = modes[i];
             return 0;
         }
-    return error_set(err, "", 0, "--mode: unknown mode '%s' (available: direct, pt)",
+    return error_set(err, "", 0, "--mode: unknown mode '%s' (available: direct, pt, photons)",
                      text != NULL ? text : "nothing");
 }
 
@@ -248,5 +262,7 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         default_output(o->scene_path, o->output);
     if ((o->reference == NULL) != (o->report == NULL))
         return error_set(err, "", 0, "--reference and --report go together");
+    if (o->cone > 0 && o->cone < 1)
+        return error_set(err, "", 0, "--cone: k must be 0 (no filter) or at least 1");
     return 0;
 }

@@ -14,7 +14,7 @@
 #define PHOTON_VERSION "0.1.0"
 #define OUTPUT_PATH_MAX 1024
 
-enum mode { MODE_DIRECT, MODE_PT };
+enum mode { MODE_DIRECT, MODE_PT, MODE_PHOTONS };
 
 struct options {
     const char *scene_path;       /* the scene file (borrowed from argv)           */
@@ -32,6 +32,10 @@ struct options {
     const char *reference;        /* --reference REF.pfm, or NULL (borrowed)        */
     const char *report;           /* --report FILE.csv, or NULL (borrowed)          */
     const char *variance;         /* --variance FILE.pfm, or NULL (borrowed)        */
+    int photons;                  /* photon modes: photons emitted                 */
+    int gather;                   /* photon modes: photons per radiance estimate   */
+    double max_radius;            /* photon modes: gathering radius; 0 = default   */
+    double cone;                  /* photon modes: cone filter k; 0 = none         */
 };
 
 /* Parses argv into *o. Returns 0 to render, 1 when --help or --version was printed

@@ -16,5 +16,6 @@ double bench_median(double *values, int count);   /* sorts values in place   */
 void bench_rays(void);   /* bench_rays.c: BENCH.md Sec. 1 on generated and shipped scenes */
 void bench_knn(void);    /* bench_knn.c: BENCH.md Sec. 2, Cornell-wall k-nearest          */
 void bench_shapes(void); /* bench_shapes.c: procedural objects against their expansions   */
+void bench_photons(void); /* bench_photons.c: photons traced and stored per second        */
 
 #endif

@@ -1,0 +1,187 @@
+/*
+ * modes/photons.c -- `--mode photons`: the global photon map visualised directly, the
+ * picture of Jensen 1996's Fig. 4.
+ *
+ * The algorithm, one call per step (render_photons):
+ *   1. trace the global map: every photon stored at every non-delta surface it hits
+ *      (direct, caustic and indirect photons; Sec. 3);
+ *   2. balance it into a kd-tree (Sec. 3);
+ *   3. for each pixel, follow the camera ray through ideal mirrors and glass; at the first
+ *      surface with a non-delta part return its emission plus the radiance estimate of
+ *      Eq. 3 (or Eq. 5 with the cone filter) from the nearest photons (Sec. 5).
+ * No direct lighting is computed: everything a diffuse surface shows comes from the
+ * photons, which is why the picture is blotchy at low photon counts, and why its
+ * brightness is right (the estimate is consistent) where it is not blotchy.
+ *
+ * The estimate's scratch (struct nearest) is made once before render_pixels() and
+ * reached through the mode struct: render_pixels() estimates one pixel at a time, so a
+ * single scratch serves them all and the pixel loop allocates nothing. A renderer that
+ * ran pixels in parallel would need one scratch per thread.
+ */
+#include "photons.h"
+
+#include <string.h>
+#include <time.h>
+
+#include "../photon/estimate.h"
+#include "../photon/trace.h"
+#include "../scene/brdf.h"
+#include "surface.h"
+
+struct photons_mode {
+    const struct scene *scene;   /* borrowed                                            */
+    const struct kdtree *map;    /* borrowed from render_photons(): the global map      */
+    struct estimate_settings es; /* k, max_r2, cone filter                              */
+    struct nearest *nn;          /* borrowed from render_photons(): the one scratch,
+                                    overwritten by every estimate                       */
+    int max_depth;               /* longest chain of specular bounces from the camera   */
+};
+
+static double cpu_seconds(clock_t start)
+{
+    return (double)(clock() - start) / CLOCKS_PER_SEC;
+}
+
+/* Eq. 3 / Eq. 5 at the surface s, seen along s->wo. */
+static struct vec3 estimate_at(const struct photons_mode *pm, const struct surface *s,
+                               const struct shading_frame *frame)
+{
+    struct estimate_point at;
+    at.x = s->p;
+    at.ng = s->ng;
+    at.wo = s->wo;
+    at.material = s->material;
+    at.frame = frame;
+    return radiance_estimate(pm->map, &at, &pm->es, pm->nn);
+}
+
+/* Samples s's BRDF; if the lobe is a delta one (mirror, refraction), multiplies *beta by
+ * its weight, sets *ray to the reflected or refracted ray and returns 1. A non-delta
+ * lobe returns 0: the light it would bring is what the estimate at s already holds. */
+static int specular_bounce(const struct surface *s, const struct shading_frame *frame,
+                           struct rng *rng, struct vec3 *beta, struct ray *ray)
+{
+    double u[3];
+    for (int k = 0; k < 3; k++)
+        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+    struct brdf_sample bs;
+    if (!brdf_sample(s->material, frame, s->wo, u, &bs) || !bs.delta)
+        return 0;
+    *beta = vec3_mul(*beta, bs.weight);
+    struct vec3 side = bs.transmitted ? vec3_neg(s->ng) : s->ng;
+    *ray = make_ray(offset_origin(s->p, side), bs.wi);
+    return 1;
+}
+
+static struct vec3 photons_radiance(const void *mode, struct ray ray, struct rng *rng,
+                                    struct render_counters *counters)
+{
+    const struct photons_mode *pm = mode;
+    struct vec3 l = vec3_zero(), beta = vec3(1.0, 1.0, 1.0);
+    for (int depth = 0;; depth++) {
+        struct hit hit;
+        counters->rays++;
+        if (!scene_intersect(pm->scene, ray, INFINITY, &hit))
+            return vec3_add(l, vec3_mul(beta, pm->scene->background));
+        struct surface s = surface_at(pm->scene, &hit, vec3_neg(ray.dir));
+        struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
+                                                               TRANSPORT_RADIANCE);
+        struct vec3 le = surface_emission(&s);
+        if (brdf_has_diffuse(s.material))
+            le = vec3_add(le, estimate_at(pm, &s, &frame));
+        l = vec3_add(l, vec3_mul(beta, le));
+        if (!brdf_has_delta(s.material) || depth >= pm->max_depth ||
+            !specular_bounce(&s, &frame, rng, &beta, &ray))
+            return l;
+    }
+}
+
+/* PHOTONS_RADIUS_FRACTION of the diagonal of the scene's bounding box, so the limit
+ * scales with the scene; no limit (HUGE_VAL) for a scene with no extent. */
+static double default_max_radius(const struct scene *scene)
+{
+    struct aabb box = geometry_bounds(scene->geometry);
+    double diagonal = vec3_length(vec3_sub(box.hi, box.lo));
+    return isfinite(diagonal) && diagonal > 0 ? PHOTONS_RADIUS_FRACTION * diagonal : HUGE_VAL;
+}
+
+/* Steps 1 and 2: the balanced global map, or NULL with *err filled. */
+static struct kdtree *build_global_map(const struct scene *scene,
+                                       const struct render_settings *rs,
+                                       const struct photon_settings *ps,
+                                       struct photon_stats *stats, struct error *err)
+{
+    struct trace_settings ts;
+    memset(&ts, 0, sizeof ts);
+    ts.seed = rs->seed;
+    ts.pass = 0;
+    ts.n_emit = ps->n_photons;
+    ts.max_stored = MAX_PHOTONS;
+    ts.store = PHOTON_MAP_GLOBAL;
+    ts.max_depth = rs->max_depth;
+    ts.targets = NULL;
+    clock_t start = clock();
+    struct photon_trace traced;
+    if (trace_photons(scene, &ts, &traced, err) < 0)
+        return NULL;
+    stats->seconds_photons = cpu_seconds(start);
+    stats->photons_emitted = traced.n_emitted;
+    stats->photons_stored = traced.n_photons;
+    stats->photon_rays = traced.rays;
+    start = clock();
+    struct kdtree *map = balance_kdtree(traced.photons, traced.n_photons); /* takes them */
+    stats->seconds_balance = cpu_seconds(start);
+    traced.photons = NULL;
+    photon_trace_free(&traced);
+    stats->bytes_per_photon = map->n_photons > 0
+                                  ? (double)kdtree_bytes(map) / (double)map->n_photons
+                                  : 0.0;
+    return map;
+}
+
+/* A checkpoint that adds the photon pass's seconds to the render's before passing on. */
+struct shifted_checkpoint {
+    const struct checkpoint *inner; /* borrowed                        */
+    double seconds;                 /* added to every checkpoint's time */
+};
+
+static double shifted_at(void *context, const struct image *mean, long long work,
+                         double seconds)
+{
+    const struct shifted_checkpoint *sc = context;
+    return sc->inner->at(sc->inner->context, mean, work, seconds + sc->seconds);
+}
+
+struct render_result render_photons(const struct scene *scene, const struct render_settings *rs,
+                                    const struct photon_settings *ps, int want_variance,
+                                    const struct checkpoint *checkpoint,
+                                    struct render_counters *counters, struct photon_stats *stats,
+                                    struct error *err)
+{
+    struct render_result result = {NULL, NULL, 0.0};
+    memset(stats, 0, sizeof *stats);
+    struct kdtree *map = build_global_map(scene, rs, ps, stats, err);
+    if (map == NULL)
+        return result;
+    stats->max_radius = ps->max_radius > 0 ? ps->max_radius : default_max_radius(scene);
+    struct photons_mode pm;
+    pm.scene = scene;
+    pm.map = map;
+    pm.es.k = ps->gather;
+    pm.es.max_r2 = stats->max_radius * stats->max_radius;
+    pm.es.cone_k = ps->cone_k;
+    pm.nn = nearest_create(ps->gather);
+    pm.max_depth = rs->max_depth;
+    struct radiance_estimator estimator;
+    estimator.radiance = photons_radiance;
+    estimator.mode = &pm;
+    double photon_seconds = stats->seconds_photons + stats->seconds_balance;
+    struct shifted_checkpoint shifted = {checkpoint, photon_seconds};
+    struct checkpoint at_shifted = {shifted_at, &shifted};
+    result = render_pixels(scene, rs, estimator, want_variance,
+                           checkpoint != NULL ? &at_shifted : NULL, counters);
+    result.seconds += photon_seconds;
+    nearest_free(pm.nn);
+    kdtree_free(map);
+    return result;
+}

@@ -1,0 +1,53 @@
+/*
+ * modes/photons.h -- `--mode photons`: the global photon map seen directly, as Jensen
+ * 1996's Fig. 4 ("the radiance estimate from the global photon map").
+ */
+#ifndef PHOTON_PHOTONS_H
+#define PHOTON_PHOTONS_H
+
+#include <stddef.h>
+
+#include "../base/error.h"
+#include "render.h"
+
+#define PHOTONS_DEFAULT_N 200000   /* --photons: photons emitted for the global map     */
+#define PHOTONS_DEFAULT_GATHER 100 /* --gather: photons in each radiance estimate       */
+#define MAX_GATHER 100000          /* documented limit on --gather: the scratch holds
+                                      this many pointers and distances (1.6 MB)          */
+#define PHOTONS_RADIUS_FRACTION 0.1 /* default maximum radius: this fraction of the
+                                       diagonal of the scene's bounding box             */
+
+struct photon_settings {
+    size_t n_photons;  /* N emitted, 1..MAX_PHOTONS (trace.h)                           */
+    size_t gather;     /* k, photons per estimate, 1..MAX_GATHER                        */
+    double max_radius; /* > 0: photons farther than this are not gathered; <= 0: the
+                          default, PHOTONS_RADIUS_FRACTION of the scene's diagonal      */
+    double cone_k;     /* 0: the plain estimate; >= 1: the cone filter (estimate.h)     */
+};
+
+/* What the photon pass did, for --stats. */
+struct photon_stats {
+    size_t photons_emitted;         /* N                                                */
+    size_t photons_stored;          /* photons in the map                               */
+    double bytes_per_photon;        /* the map's bytes (kdtree_bytes) per stored photon */
+    double seconds_photons;         /* CPU seconds tracing photons                      */
+    double seconds_balance;         /* CPU seconds balancing the kd-tree                */
+    double max_radius;              /* the maximum gathering radius used                */
+    unsigned long long photon_rays; /* rays cast tracing photons (render_counters.rays
+                                       counts the camera pass's only)                  */
+};
+
+/* Traces the global map (every diffuse hit: direct, caustic and indirect photons; seed
+ * rs->seed, pass 0, rs->max_depth bounces), balances it, and renders the window of rs
+ * through render_pixels(): camera rays follow delta lobes (mirror, glass) up to
+ * rs->max_depth, and at a surface with a non-delta part the pixel takes its emission
+ * plus the radiance estimate from the ps->gather nearest photons. result.seconds and the
+ * checkpoints' seconds include the photon pass. On failure (more than MAX_PHOTONS
+ * photons would be stored) returns a result with image NULL and *err filled. */
+struct render_result render_photons(const struct scene *scene, const struct render_settings *rs,
+                                    const struct photon_settings *ps, int want_variance,
+                                    const struct checkpoint *checkpoint,
+                                    struct render_counters *counters, struct photon_stats *stats,
+                                    struct error *err);
+
+#endif

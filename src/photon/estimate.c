@@ -1,0 +1,42 @@
+/*
+ * photon/estimate.c -- the radiance estimates (estimate.h; Jensen 1996, Sec. 5).
+ *
+ * The cone filter (Eq. 4) weights photon p at distance d_p by w_p = max(0, 1 - d_p/(k r)).
+ * Photons spread evenly over the disc of radius r have mean weight
+ *   (1 / (pi r^2)) int_0^r (1 - s / (k r)) 2 pi s ds = 1 - 2 / (3k)
+ * (Eq. 5's normalisation, for k >= 1 where no weight is clipped), so dividing by it keeps
+ * the estimate of a uniform region unbiased. With k = 1 the k-th photon, the one on the
+ * rim, has weight 0: the other k - 1 lie uniformly inside the disc, and for a Poisson
+ * density lambda, E[(k - 1) / (pi r^2)] = lambda exactly, so the filtered estimate of a
+ * uniform region has no bias, while the plain one's mean is lambda k / (k - 1).
+ */
+#include "estimate.h"
+
+#include <assert.h>
+
+struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_point *at,
+                              const struct estimate_settings *es, struct nearest *nn)
+{
+    assert(es->cone_k == 0 || es->cone_k >= 1);
+    locate_photons(map, at->x, es->max_r2, es->k, nn); /* sets found, photon[], d2[], r2 */
+    if (nn->found == 0 || !(nn->r2 > 0))
+        return vec3_zero(); /* no photons, or all exactly at x: no area */
+    struct vec3 sum = vec3_zero();
+    for (size_t i = 0; i < nn->found; i++) {
+        const struct photon *p = nn->photon[i];
+        struct vec3 wi = photon_direction(p);
+        if (!(vec3_dot(wi, at->ng) > 0))
+            continue; /* arrived at the other side: a thin wall's back, not this surface */
+        struct vec3 fr = brdf_eval(at->material, at->frame, at->wo, wi);
+        double w = 1.0;
+        if (es->cone_k > 0) /* Eq. 4: w_p = max(0, 1 - d_p / (k r)) */
+            w = fmax(0.0, 1.0 - sqrt(nn->d2[i] / nn->r2) / es->cone_k);
+        sum = vec3_add(sum, vec3_scale(vec3_mul(fr, photon_power(p)), w));
+    }
+    /* Eq. 3: L = sum f_r Delta Phi_p / (pi r^2). Eq. 5 also divides by the cone's
+     * normalisation 1 - 2/(3k), which is at least 1/3 because k >= 1. */
+    double area = PI * nn->r2;
+    if (es->cone_k > 0)
+        area *= 1.0 - 2.0 / (3.0 * es->cone_k);
+    return vec3_scale(sum, 1.0 / area);
+}

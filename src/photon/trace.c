@@ -1,0 +1,230 @@
+/*
+ * photon/trace.c -- photon tracing (trace.h; Jensen 1996, Sec. 3).
+ *
+ * A photon's life: a light is picked with probability p_pick proportional to its power
+ * (scene_pick_light), the light emits the photon (scene/emit.h) with power
+ * Phi_l weight / (p_pick N), and the photon is followed from surface to surface. At each
+ * surface that holds photons it is stored with the power it arrives with; then the
+ * BRDF samples the direction it leaves in (under TRANSPORT_IMPORTANCE: power is not
+ * scaled by refraction) with weight f cos / pdf (or reflectance / probability for a
+ * delta lobe), and Russian roulette keeps it with probability
+ *   q = min(1, max channel of the weight),
+ * dividing its power by q when it survives: power <- power weight / q. For a grey
+ * Lambertian surface weight = rho and q = rho, so the power stays as it was and the
+ * photon is absorbed with probability 1 - rho, as the paper's roulette on the albedo;
+ * for a coloured one the power takes on the surface's colour. Every step keeps the
+ * expected power of what is stored equal to the flux that arrives, so estimates are
+ * unbiased. Powers are computed in double and rounded once, by photon_pack().
+ *
+ * What the emitted powers sum to. With one light (p_pick = 1) every photon leaves with
+ * exactly Phi_l / N in every channel, so N photons carry Phi_l (up to rounding). With
+ * several, light l is picked with p_l = lum(Phi_l) / sum lum(Phi) (luminance, vec3.h),
+ * so every photon leaves with the same luminance lum(Phi_total) / N, exactly; per
+ * channel c the N photons carry sum_l n_l Phi_l,c / (p_l N) with (n_l) multinomial,
+ * which is Phi_total,c in expectation, not in every trace.
+ *
+ * Departs from Sec. 3: a surface whose albedo is zero in every channel (the black
+ * emitter the `light` keyword makes) holds no photons: they could add nothing to its own
+ * estimates and would only join a neighbour's (the Cornell light hangs 0.1 mm below the
+ * ceiling).
+ */
+#include "trace.h"
+
+#include <assert.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../base/alloc.h"
+#include "../base/rng.h"
+#include "../scene/brdf.h"
+
+#define INITIAL_CAPACITY 4096 /* records; the array doubles from here up to max_stored */
+
+/* A surface as the photon that reaches it sees it. */
+struct photon_hit {
+    struct vec3 p;                   /* where it hit                                    */
+    struct vec3 ng;                  /* unit geometric normal on the side of wi         */
+    struct vec3 wi;                  /* unit, back towards where the photon came from   */
+    struct shading_frame frame;      /* around the shading normal on the side of wi     */
+    const struct material *material; /* borrowed from the scene                         */
+};
+
+/* The path a photon has taken so far. */
+struct photon_path {
+    struct vec3 power; /* Delta Phi it carries, W per channel */
+    int specular_only; /* whether every bounce so far was a delta lobe (L S* so far) */
+};
+
+static struct photon_hit photon_hit_at(const struct scene *scene, const struct hit *hit,
+                                       struct vec3 dir)
+{
+    struct photon_hit h;
+    h.p = hit->p;
+    h.wi = vec3_neg(dir);
+    int front = vec3_dot(h.wi, hit->ng) > 0;
+    h.ng = front ? hit->ng : vec3_neg(hit->ng);
+    h.frame = shading_frame_from_normal(front ? hit->ns : vec3_neg(hit->ns), front,
+                                        TRANSPORT_IMPORTANCE);
+    h.material = &scene->materials[hit->material];
+    return h;
+}
+
+/* Whether photons are stored at h: a non-delta part that reflects something. */
+static int holds_photons(const struct photon_hit *h)
+{
+    return brdf_has_diffuse(h->material) &&
+           vec3_max_component(brdf_albedo(h->material, &h->frame, h->wi)) > 0;
+}
+
+/* Appends photon p, growing the array; -1 when that would exceed max_stored. */
+static int store_photon(struct photon_trace *out, size_t max_stored, struct photon p)
+{
+    if (out->n_photons == out->capacity) {
+        if (out->capacity >= max_stored)
+            return -1;
+        size_t grown = out->capacity < INITIAL_CAPACITY / 2 ? INITIAL_CAPACITY
+                                                            : 2 * out->capacity;
+        grown = grown < max_stored ? grown : max_stored;
+        out->photons = xrealloc(out->photons, grown, sizeof *out->photons, "photon map");
+        out->capacity = grown;
+    }
+    out->photons[out->n_photons++] = p;
+    out->n_direct += (p.flags & PHOTON_DIRECT) != 0;
+    out->n_caustic += (p.flags & PHOTON_CAUSTIC) != 0;
+    out->n_indirect += (p.flags & PHOTON_INDIRECT) != 0;
+    out->n_shadow += (p.flags & PHOTON_SHADOW) != 0;
+    return 0;
+}
+
+/* Picks a light and emits photon i's ray and power from it. 0 when it carries nothing
+ * (no lights, a black light, a degenerate emission). */
+static int emit_photon(const struct scene *scene, const struct trace_settings *ts,
+                       struct rng *rng, struct ray *ray, struct vec3 *power)
+{
+    double pick;
+    int index = scene_pick_light(scene, rng_uniform(rng), &pick);
+    double u[5];
+    for (int k = 0; k < 5; k++)
+        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+    if (index < 0)
+        return 0;
+    const struct light *l = &scene->lights[index];
+    struct emission e;
+    int emitted = ts->targets == NULL ? light_emit(l, u, &e)
+                                      : light_emit_towards(l, ts->targets, u, &e);
+    if (!emitted)
+        return 0;
+    /* Phi_l weight / (p_pick N): pick > 0 (scene_pick_light), N >= 1 (a photon exists) */
+    *power = vec3_scale(light_power(l), e.weight / (pick * (double)ts->n_emit));
+    struct vec3 origin = vec3_length2(e.normal) > 0 ? offset_origin(e.origin, e.normal)
+                                                    : e.origin;
+    *ray = make_ray(origin, e.dir);
+    return vec3_max_component(*power) > 0;
+}
+
+/* Jensen and Christensen 1995: the emitted ray followed on through the surfaces behind
+ * its first hit (at most max_depth of them), a zero-power shadow photon at each one that
+ * holds photons. ray: the emitted ray; first: its first hit. -1 when the map is full. */
+static int store_shadow_photons(const struct scene *scene, const struct trace_settings *ts,
+                                struct ray ray, const struct photon_hit *first,
+                                struct photon_trace *out)
+{
+    struct photon_hit h = *first;
+    for (int n = 0; n < ts->max_depth; n++) {
+        struct hit hit;
+        ray.origin = offset_origin(h.p, vec3_neg(h.ng)); /* on through the surface */
+        out->rays++;
+        if (!scene_intersect(scene, ray, INFINITY, &hit))
+            return 0;
+        h = photon_hit_at(scene, &hit, ray.dir);
+        if (holds_photons(&h) &&
+            store_photon(out, ts->max_stored,
+                         photon_pack(h.p, vec3_zero(), h.wi, PHOTON_SHADOW)) < 0)
+            return -1;
+    }
+    return 0;
+}
+
+/* Russian roulette and the next direction (see the top of the file). Returns 0 when the
+ * photon is absorbed; else updates *path and sets *ray to the scattered ray. */
+static int scatter(const struct photon_hit *h, struct rng *rng, struct photon_path *path,
+                   struct ray *ray)
+{
+    double u[3];
+    for (int k = 0; k < 3; k++)
+        u[k] = rng_uniform(rng);
+    struct brdf_sample bs;
+    if (!brdf_sample(h->material, &h->frame, h->wi, u, &bs))
+        return 0; /* black, or arrived below the shading normal */
+    double q = fmin(1.0, vec3_max_component(bs.weight));
+    if (!(rng_uniform(rng) < q))
+        return 0; /* absorbed; also ends a zero or NaN weight */
+    path->power = vec3_scale(vec3_mul(path->power, bs.weight), 1.0 / q); /* q > 0: u < q */
+    path->specular_only = path->specular_only && bs.delta;
+    struct vec3 side = bs.transmitted ? vec3_neg(h->ng) : h->ng;
+    *ray = make_ray(offset_origin(h->p, side), bs.wi);
+    return 1;
+}
+
+/* Whether a photon whose path is specular_only so far can still be stored in a class
+ * of store: later hits are caustic while the path stays specular, else indirect. Lets
+ * a caustic map end a path at its first diffuse bounce. */
+static int can_store_later(unsigned store, int specular_only)
+{
+    return (store & PHOTON_INDIRECT) || (specular_only && (store & PHOTON_CAUSTIC));
+}
+
+/* Follows photon i from its light until it is absorbed, leaves the scene or has made
+ * max_depth bounces. -1 when the map is full. */
+static int trace_photon(const struct scene *scene, const struct trace_settings *ts, size_t i,
+                        struct photon_trace *out)
+{
+    struct rng rng = rng_stream(ts->seed, STREAM_PHOTON, ts->pass, i);
+    struct photon_path path = {{0, 0, 0}, 1};
+    struct ray ray;
+    if (!emit_photon(scene, ts, &rng, &ray, &path.power))
+        return 0;
+    for (int depth = 0;; depth++) {
+        struct hit hit;
+        out->rays++;
+        if (!scene_intersect(scene, ray, INFINITY, &hit))
+            return 0;
+        struct photon_hit h = photon_hit_at(scene, &hit, ray.dir);
+        if (depth == 0 && (ts->store & PHOTON_SHADOW) &&
+            store_shadow_photons(scene, ts, ray, &h, out) < 0)
+            return -1;
+        unsigned kind = depth == 0 ? PHOTON_DIRECT
+                                   : path.specular_only ? PHOTON_CAUSTIC : PHOTON_INDIRECT;
+        if ((ts->store & kind) && holds_photons(&h) &&
+            store_photon(out, ts->max_stored, photon_pack(h.p, path.power, h.wi, kind)) < 0)
+            return -1;
+        if (depth >= ts->max_depth || !scatter(&h, &rng, &path, &ray) ||
+            !can_store_later(ts->store, path.specular_only))
+            return 0;
+    }
+}
+
+int trace_photons(const struct scene *scene, const struct trace_settings *ts,
+                  struct photon_trace *out, struct error *err)
+{
+    assert(ts->n_emit <= MAX_PHOTONS && ts->max_depth >= 0);
+    assert(ts->max_stored >= 1 && ts->max_stored <= MAX_PHOTONS);
+    memset(out, 0, sizeof *out);
+    for (size_t i = 0; i < ts->n_emit; i++) {
+        if (trace_photon(scene, ts, i, out) < 0) {
+            photon_trace_free(out);
+            return error_set(err, "", 0,
+                             "photon map: more than %zu photons would be stored; emit fewer "
+                             "photons or follow fewer bounces (--max-depth)",
+                             ts->max_stored);
+        }
+    }
+    out->n_emitted = ts->n_emit;
+    return 0;
+}
+
+void photon_trace_free(struct photon_trace *out)
+{
+    free(out->photons);
+    memset(out, 0, sizeof *out);
+}

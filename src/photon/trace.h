@@ -1,0 +1,89 @@
+/*
+ * photon/trace.h -- photon tracing: shooting photons from the lights, following them
+ * through the scene and storing them where they hit (Jensen 1996, Sec. 3).
+ *
+ * trace_photons() emits N photons, light by light in proportion to power, and follows
+ * each one as the paper says: "every time a photon hits a surface it is stored ... and
+ * Russian roulette is used to determine whether the photon is absorbed or reflected".
+ * The result is an array of 20-byte photons (photon.h) in the order they were stored,
+ * ready for balance_kdtree(). Photon i of a trace draws every random number from
+ * rng_stream(seed, STREAM_PHOTON, pass, i) and from nothing else, so the array does not
+ * depend on the order in which photons are traced.
+ *
+ * Each stored photon carries in its flags the path that brought it (photon.h):
+ *   PHOTON_DIRECT    the first surface hit after leaving the light;
+ *   PHOTON_CAUSTIC   L S+ D: only specular (delta) bounces since the light;
+ *   PHOTON_INDIRECT  at least one bounce off a non-delta lobe;
+ *   PHOTON_SHADOW    Jensen and Christensen 1995: a surface behind the first hit along
+ *                    the emitted ray, where the light is blocked. Shadow photons carry
+ *                    ZERO power and the direction towards the light; a map used for
+ *                    radiance estimates must not contain them (they would shrink the
+ *                    gathering radius without adding flux), so a mode that wants them
+ *                    keeps them apart (e.g. splits the array by flag before balancing).
+ * Which of these are stored is the caller's choice (trace_settings.store); the global
+ * map stores the first three, the caustic map only PHOTON_CAUSTIC.
+ */
+#ifndef PHOTON_TRACE_H
+#define PHOTON_TRACE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "../base/error.h"
+#include "../scene/emit.h"
+#include "../scene/scene.h"
+#include "photon.h"
+
+/* Documented limit on photons emitted by one trace and on photons stored by one: 10^8
+ * records are 2 GB, and balancing copies them once more. Beyond it a request is bad
+ * input, refused with a message, never an allocation failure. */
+#define MAX_PHOTONS 100000000
+
+/* Classes stored for the two maps of Jensen 1996, Sec. 3. */
+#define PHOTON_MAP_GLOBAL (PHOTON_DIRECT | PHOTON_CAUSTIC | PHOTON_INDIRECT)
+#define PHOTON_MAP_CAUSTIC PHOTON_CAUSTIC
+
+struct trace_settings {
+    uint64_t seed;                          /* the run's seed                             */
+    uint64_t pass;                          /* photon i uses rng_stream(seed,
+                                               STREAM_PHOTON, pass, i)                    */
+    size_t n_emit;                          /* N, photons emitted: 0..MAX_PHOTONS          */
+    size_t max_stored;                      /* more stored than this is refused: the
+                                               trace fails; 1..MAX_PHOTONS                 */
+    unsigned store;                         /* PHOTON_DIRECT | PHOTON_CAUSTIC |
+                                               PHOTON_INDIRECT | PHOTON_SHADOW bits: the
+                                               classes stored (PHOTON_SHADOW turns shadow
+                                               photons on)                                 */
+    int max_depth;                          /* bounces followed after the first hit (>= 0);
+                                               also the most surfaces a shadow ray crosses
+                                               behind the first hit                        */
+    const struct emission_targets *targets; /* borrowed; NULL: emit into all directions
+                                               (light_emit); else directed emission
+                                               towards these spheres (light_emit_towards)  */
+};
+
+/* The traced photons and what it took to make them. */
+struct photon_trace {
+    struct photon *photons; /* owned; n_photons of them in the order stored, photon 0's
+                               path first; powers in watts with the 1 / N already in:
+                               Phi_l weight / (p_pick N) times the path's throughput    */
+    size_t n_photons;       /* photons stored, <= max_stored                           */
+    size_t capacity;        /* records allocated, >= n_photons                         */
+    size_t n_emitted;       /* N: photons emitted (including those that hit nothing)   */
+    size_t n_direct, n_caustic, n_indirect, n_shadow; /* stored, by class               */
+    unsigned long long rays; /* rays cast                                               */
+};
+
+/* Traces ts->n_emit photons through the scene (finished; it need not have lights: then
+ * nothing is stored) and fills *out, which the caller releases with
+ * photon_trace_free(). Fails with -1, *err filled and *out empty when more than
+ * ts->max_stored photons would be stored (a white furnace stores about N max_depth);
+ * nothing is then left allocated. Returns 0 on success. */
+int trace_photons(const struct scene *scene, const struct trace_settings *ts,
+                  struct photon_trace *out, struct error *err);
+
+/* Releases out->photons (NULL allowed: after balance_kdtree() took them) and empties
+ * *out. */
+void photon_trace_free(struct photon_trace *out);
+
+#endif
