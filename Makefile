@@ -6,6 +6,7 @@
 #   make check      the tests built by gcc and clang with -Werror, by tcc, and under
 #                   AddressSanitizer + UndefinedBehaviorSanitizer
 #   make bench      benchmark figures (ONLY=rays|knn|... runs one workload)
+#   make fuzz       libFuzzer targets for the four readers, built with clang (development)
 #   make clean
 #
 # BUILD names the object directory, so several compilers can build side by side.
@@ -33,7 +34,7 @@ MAIN_OBJ := $(BUILD)/src/main.o
 TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)))
 BENCH_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/bench/*.c)))
 
-.PHONY: all run test check bench clean
+.PHONY: all run test check bench fuzz clean
 
 all: $(BIN)
 
@@ -74,6 +75,18 @@ check:
 
 bench: $(BIN) $(BUILD)/bench
 	./$(BUILD)/bench $(ONLY)
+
+# Fuzz targets (a development tool, not part of the product build): one per reader. Run
+# e.g. build/fuzz/fuzz_nff -max_len=8192 -max_total_time=600 CORPUS_DIR < /dev/null
+FUZZ_CC ?= clang
+FUZZ_FLAGS = -std=c99 -g -O1 -ffp-contract=off -fsanitize=fuzzer,address,undefined $(WARN)
+FUZZ_BIN := $(patsubst tests/fuzz/%.c,build/fuzz/%,$(wildcard tests/fuzz/*.c))
+
+fuzz: $(FUZZ_BIN)
+
+build/fuzz/%: tests/fuzz/%.c $(SRC) $(HEADERS)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $< $(filter-out src/main.c,$(SRC)) -lm
 
 clean:
 	rm -rf build out $(BIN)

@@ -17,6 +17,7 @@ int main(void)
     test_scene(&t);
     test_brdf(&t);
     test_shapes(&t);
+    test_import(&t);
     test_photon(&t);
     test_trace(&t);
     test_render(&t);

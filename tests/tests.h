@@ -14,6 +14,7 @@ void test_geom(struct check *t);   /* test_geom.c: primitives, BVH, robustness  
 void test_scene(struct check *t);  /* test_scene.c: parser, camera, lights        */
 void test_brdf(struct check *t);   /* test_brdf.c: the material models            */
 void test_shapes(struct check *t); /* test_shapes.c: sphere flake, heightfield    */
+void test_import(struct check *t); /* test_import.c: cone, ear clipping, NFF, OBJ */
 void test_photon(struct check *t); /* test_photon.c: photon record, kd-tree       */
 void test_trace(struct check *t);  /* test_trace.c: emission, tracing, estimates  */
 void test_render(struct check *t); /* test_render.c: direct mode, crops, scaling  */

@@ -1,0 +1,64 @@
+/*
+ * tests/fuzz/fuzz_obj.c -- libFuzzer target for the OBJ reader (scene/obj.c), built by
+ * `make fuzz` with clang -fsanitize=fuzzer,address,undefined; a development tool only.
+ *
+ * Each input is written to a temporary file and imported with obj_import() into a scene
+ * that has one material and a camera; a mesh that loads is finished (BVH built). A crash,
+ * a sanitizer report or a leak is a bug; bad input must end in a struct error.
+ *   build/fuzz/fuzz_obj CORPUS_DIR scenes/mesh.obj
+ */
+#define _POSIX_C_SOURCE 200809L /* mkstemp(), close(): a development tool, not the product */
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "../../src/scene/obj.h"
+
+static char input_path[64]; /* this process's input file, made on the first call */
+
+static void remove_input(void)
+{
+    remove(input_path);
+}
+
+/* Writes the bytes to this process's temporary file (the readers take file names), so
+ * fuzzers running side by side never share one. */
+static const char *input_file(const uint8_t *data, size_t size)
+{
+    if (input_path[0] == '\0') {
+        strcpy(input_path, "/tmp/photon-fuzz-XXXXXX");
+        int fd = mkstemp(input_path);
+        if (fd < 0)
+            abort();
+        close(fd);
+        atexit(remove_input);
+    }
+    FILE *f = fopen(input_path, "wb");
+    if (f == NULL || fwrite(data, 1, size, f) != size || fclose(f) != 0)
+        abort();
+    return input_path;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    struct scene *scene = scene_create();
+    struct material m;
+    memset(&m, 0, sizeof m);
+    m.kind = MATERIAL_LAMBERT;
+    m.rho = vec3(0.5, 0.5, 0.5);
+    struct obj_placement place = {0, 1.0, {0.0, 0.0, 0.0}};
+    place.material = scene_add_material(scene, &m);
+    scene->camera.from = vec3(0, 0, 5);
+    scene->camera.up = vec3(0, 1, 0);
+    scene->camera.fov = 40;
+    struct error err;
+    if (obj_import(scene, input_file(data, size), &place, &err) == 0)
+        scene_finish(scene, 4, 4);
+    scene_free(scene);
+    return 0;
+}

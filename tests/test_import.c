@@ -1,0 +1,974 @@
+/*
+ * tests/test_import.c -- the importers: the open cone (geom/cone.c), ear clipping, the NFF
+ * reader (scene/nff.c) on the Standard Procedural Databases and on bad files, the OBJ
+ * reader (scene/obj.c), and the scene keywords `nff` and `obj`.
+ *
+ * Truths: the cone's implicit equation sampled along each ray (brute force) and closed
+ * forms for special rays; the shoelace area and point-in-polygon for triangulations; the
+ * entity counts of ../shared/spd/README.md; the light-power convention written out by hand;
+ * the same mesh or cone written two ways (round trips through the readers).
+ * Scratch files go to /tmp (files.h); the SPD files and scenes/ are read from the top of
+ * the repository, where the tests run.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../src/base/alloc.h"
+#include "../src/base/rng.h"
+#include "../src/geom/cone.h"
+#include "../src/scene/nff.h"
+#include "../src/scene/obj.h"
+#include "files.h"
+#include "tests.h"
+
+#define SPD "../shared/spd/" /* from the top of the repository */
+#define NAME_MAX_BYTES 256
+
+/* Scratch files, all in one directory (/tmp), named by temp_name() in test_import(). */
+static char scratch_nff[NAME_MAX_BYTES], scratch_obj[NAME_MAX_BYTES];
+static char scratch_scene[NAME_MAX_BYTES], scratch_mesh[NAME_MAX_BYTES];
+
+/* The file name without its directory: how a scene file in the same directory names it. */
+static const char *base_name(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash != NULL ? slash + 1 : path;
+}
+
+/* ---- the cone ---------------------------------------------------------------------- */
+
+/* The cone's implicit function g(P) = |q(P)| - r(s(P)) and P's axial coordinate s. */
+struct cone_truth {
+    struct vec3 base, axis; /* axis unit */
+    double height, r_base, slope;
+};
+
+static struct cone_truth cone_truth(struct vec3 base, double r_base, struct vec3 apex,
+                                    double r_apex)
+{
+    struct cone_truth c;
+    c.base = base;
+    c.height = vec3_length(vec3_sub(apex, base));
+    c.axis = vec3_scale(vec3_sub(apex, base), 1.0 / c.height);
+    c.r_base = fabs(r_base);
+    c.slope = (fabs(r_apex) - fabs(r_base)) / c.height;
+    return c;
+}
+
+static double axial(const struct cone_truth *c, struct vec3 p)
+{
+    return vec3_dot(vec3_sub(p, c->base), c->axis);
+}
+
+static double implicit(const struct cone_truth *c, struct vec3 p)
+{
+    double s = axial(c, p);
+    struct vec3 q = vec3_madd(vec3_sub(p, c->base), c->axis, -s);
+    return vec3_length(q) - (c->r_base + c->slope * s);
+}
+
+/* Whether the point at t on the ray is on the frustum's length, away from its rims by a
+ * relative margin (near a rim a sample and a root may fall on different sides). */
+static int well_inside(const struct cone_truth *c, struct ray ray, double t)
+{
+    double s = axial(c, ray_at(ray, t));
+    return s > 1e-6 * c->height && s < (1 - 1e-6) * c->height;
+}
+
+/* The first sign change of g along the ray within [0, t_end] in N_STEPS samples, both ends
+ * well inside the length: its left end, or INFINITY when there is none. */
+#define N_STEPS 3000
+static double first_crossing(const struct cone_truth *c, struct ray ray, double t_end)
+{
+    double step = t_end / N_STEPS, g0 = implicit(c, ray.origin);
+    for (int i = 1; i <= N_STEPS; i++) {
+        double g1 = implicit(c, ray_at(ray, i * step));
+        if ((g0 < 0) != (g1 < 0) && well_inside(c, ray, (i - 1) * step) &&
+            well_inside(c, ray, i * step))
+            return (i - 1) * step;
+        g0 = g1;
+    }
+    return INFINITY;
+}
+
+static double random_in(struct rng *rng, double lo, double hi)
+{
+    return lo + (hi - lo) * rng_uniform(rng);
+}
+
+static struct vec3 random_point(struct rng *rng, double extent)
+{
+    double x = random_in(rng, -extent, extent), y = random_in(rng, -extent, extent);
+    return vec3(x, y, random_in(rng, -extent, extent));
+}
+
+/* Checks one reported hit: on the surface, within the length, normal perpendicular to the
+ * surface's two tangents and on the front side, inside the bounds. */
+static void check_cone_hit(struct check *t, const struct cone_truth *c, const struct hit *h,
+                           struct aabb box, int inside)
+{
+    double scale = fmax(1.0, vec3_max_abs(h->p));
+    CHECK(t, fabs(implicit(c, h->p)) <= 1e-9 * scale);
+    double s = axial(c, h->p);
+    CHECK(t, s >= -1e-9 * scale && s <= c->height + 1e-9 * scale);
+    struct vec3 e = vec3_normalize(vec3_madd(vec3_sub(h->p, c->base), c->axis, -s));
+    struct vec3 around = vec3_cross(c->axis, e), along = vec3_madd(c->axis, e, c->slope);
+    CHECK(t, fabs(vec3_length(h->ng) - 1) <= 1e-12);
+    CHECK(t, fabs(vec3_dot(h->ng, around)) <= 1e-9 && fabs(vec3_dot(h->ng, along)) <= 1e-9);
+    CHECK(t, inside ? vec3_dot(h->ng, e) < 0 : vec3_dot(h->ng, e) > 0);
+    CHECK(t, h->u >= 0 && h->u < 1 && h->v >= 0 && h->v <= 1);
+    CHECK(t, h->p.x >= box.lo.x && h->p.y >= box.lo.y && h->p.z >= box.lo.z &&
+                 h->p.x <= box.hi.x && h->p.y <= box.hi.y && h->p.z <= box.hi.z);
+}
+
+/* truth: brute force, the implicit function |q| - r(s) sampled at 3000 points along each
+ *   ray: a reported hit must lie on the surface, no sign change may come before it, and a
+ *   sign change well inside the length must be reported (at or before it).
+ * tolerance: 1e-9 of the coordinates' size on the surface equation (the hit carries a few
+ *   ulps times the conditioning, 1e-15 to 1e-12 here); the sampled root is bracketed by a
+ *   step, so "before" means before the bracket's right end. Grazing pairs of roots closer
+ *   than a step escape the sampling; those rays are not judged (the checks are one-sided).
+ * catches: a dropped term in A, B or C, the wrong root taken, hits beyond the rims or on
+ *   the mirrored nappe accepted, a normal off the gradient, negative radii not flipped. */
+static void test_cone_against_brute_force(struct check *t)
+{
+    int n_hits = 0;
+    for (uint64_t k = 0; k < 64; k++) {
+        struct rng rng = rng_stream(11, STREAM_TEST, k, 0);
+        struct vec3 base = random_point(&rng, 2.0);
+        struct vec3 apex = vec3_add(base, random_point(&rng, 1.5));
+        double r_base = random_in(&rng, 0.05, 1.2), r_apex = random_in(&rng, 0.05, 1.2);
+        if (k % 4 == 0)
+            r_apex = r_base; /* cylinder */
+        else if (k % 4 == 1)
+            r_apex = 0;      /* true cone */
+        int inside = k % 8 == 5;
+        struct error err;
+        struct cone *cone = cone_create(base, inside ? -r_base : r_base, apex,
+                                        inside ? -r_apex : r_apex, 7, &err);
+        CHECK(t, cone != NULL);
+        if (cone == NULL)
+            return;
+        struct cone_truth c = cone_truth(base, r_base, apex, r_apex);
+        struct aabb box = cone_ops.bounds(cone);
+        for (int i = 0; i < 40; i++) {
+            struct vec3 o = random_point(&rng, 5.0);
+            struct vec3 aim = vec3_add(vec3_madd(base, c.axis, c.height * rng_uniform(&rng)),
+                                       random_point(&rng, 1.0));
+            struct ray ray = make_ray(o, vec3_scale(vec3_sub(aim, o), random_in(&rng, 0.3, 3)));
+            double t_end = 20.0 / vec3_length(ray.dir); /* beyond every cone from any o */
+            struct hit h;
+            int hit = cone_ops.intersect(cone, ray, INFINITY, &h);
+            double crossing = first_crossing(&c, ray, hit ? h.t : t_end);
+            CHECK(t, hit == cone_ops.occluded(cone, ray, INFINITY));
+            if (!hit) {
+                CHECK(t, crossing == INFINITY);
+                continue;
+            }
+            n_hits++;
+            CHECK(t, h.material == 7);
+            check_cone_hit(t, &c, &h, box, inside);
+            CHECK(t, crossing == INFINITY || crossing + h.t / N_STEPS >= h.t * (1 - 1e-9));
+            CHECK(t, !cone_ops.occluded(cone, ray, h.t * (1 - 1e-9)));
+        }
+        cone_ops.free(cone);
+    }
+    CHECK(t, n_hits > 800); /* most of the 2560 rays are aimed at the cone */
+}
+
+/* A unit-radius shape along +z from the origin, of height 1 or 2. */
+static struct cone *z_cone(double r_base, double r_apex, double height)
+{
+    struct error err;
+    return cone_create(vec3(0, 0, 0), r_base, vec3(0, 0, height), r_apex, 0, &err);
+}
+
+/* truth: closed forms. A cylinder's axis ray, and rays parallel to its axis inside it,
+ *   meet nothing (open ends); a ray parallel to a generator of the cone r = 1 - s
+ *   (A = 0, the linear case) hits at t = 1.3; a ray tangent to the cylinder x^2 + y^2 = 1
+ *   touches it at t = 5; one 1e-6 inside, 1e4 away, enters at t = 1e4 - sqrt(1 - x^2).
+ * tolerance: 1e-12 for the first three (a few roundings of numbers near 1); 1e-9 for the
+ *   far grazing ray, whose half chord 1.4e-3 the textbook discriminant (1e8 - 1e8) would
+ *   get wrong by 5e-6, which is what this catches.
+ * catches: A = 0 divided by, open ends capped, cancellation in the discriminant. */
+static void test_cone_special_rays(struct check *t)
+{
+    struct cone *cylinder = z_cone(1, 1, 2), *cone = z_cone(1, 0, 1);
+    struct hit h;
+    CHECK(t, !cone_ops.intersect(cylinder, make_ray(vec3(0, 0, 1), vec3(0, 0, 1)), INFINITY, &h));
+    CHECK(t, !cone_ops.intersect(cylinder, make_ray(vec3(0, 0, -1), vec3(0, 0, 1)), INFINITY,
+                                 &h));
+    CHECK(t, !cone_ops.intersect(cylinder, make_ray(vec3(0.5, 0.2, 1), vec3(0, 0, -3)),
+                                 INFINITY, &h));
+    for (double scale = 1; scale <= 3; scale += 2) {
+        struct ray ray = make_ray(vec3(1.1, 0, -0.5), vec3(-scale, 0, scale));
+        CHECK(t, cone_ops.intersect(cone, ray, INFINITY, &h));
+        CHECK_CLOSE(t, h.t, 1.3 / scale, 1e-12);
+        CHECK_CLOSE(t, h.p.x, -0.2, 1e-12);
+        CHECK_CLOSE(t, h.p.z, 0.8, 1e-12);
+    }
+    CHECK(t, cone_ops.intersect(cylinder, make_ray(vec3(1, -5, 0.5), vec3(0, 1, 0)), INFINITY,
+                                &h));
+    CHECK_CLOSE(t, h.t, 5.0, 1e-12);
+    CHECK(t, !cone_ops.intersect(cylinder, make_ray(vec3(1 + 1e-9, -5, 0.5), vec3(0, 1, 0)),
+                                 INFINITY, &h));
+    double x = 1 - 1e-6;
+    CHECK(t, cone_ops.intersect(cylinder, make_ray(vec3(x, -1e4, 0.5), vec3(0, 1, 0)),
+                                INFINITY, &h));
+    CHECK_CLOSE(t, h.t, 1e4 - sqrt((1 - x) * (1 + x)), 1e-9);
+    /* from inside the cylinder, the far wall; bounded by tmax */
+    CHECK(t, cone_ops.intersect(cylinder, make_ray(vec3(0, 0, 1), vec3(1, 0, 0)), INFINITY, &h));
+    CHECK_CLOSE(t, h.t, 1.0, 1e-15);
+    CHECK(t, !cone_ops.intersect(cylinder, make_ray(vec3(0, 0, 1), vec3(1, 0, 0)), 1.0, &h));
+    cone_ops.free(cylinder);
+    cone_ops.free(cone);
+}
+
+/* truth: NFF's rules (nff.c): coincident ends, radii of opposite signs or both zero are
+ *   refused; anything else is made. catches: a zero height divided by. */
+static void test_cone_refusals(struct check *t)
+{
+    struct error err;
+    struct vec3 o = vec3(0, 0, 0), z = vec3(0, 0, 1);
+    CHECK(t, cone_create(o, 1, o, 1, 0, &err) == NULL && strstr(err.message, "coincide"));
+    CHECK(t, cone_create(o, 1, z, -1, 0, &err) == NULL && strstr(err.message, "opposite"));
+    CHECK(t, cone_create(o, 0, z, 0, 0, &err) == NULL && strstr(err.message, "both zero"));
+    CHECK(t, cone_create(o, NAN, z, 1, 0, &err) == NULL && strstr(err.message, "finite"));
+    CHECK(t, cone_create(o, 1e300, vec3(0, 0, 1e-300), 0, 0, &err) == NULL);
+    struct cone *c = cone_create(o, -1, z, 0, 0, &err);
+    CHECK(t, c != NULL);
+    cone_free(c);
+    cone_free(NULL);
+}
+
+/* ---- ear clipping --------------------------------------------------------------------- */
+
+/* Twice the signed area of the 2-D polygon (x, y) by the shoelace formula. */
+static double shoelace(const double *x, const double *y, const int *index, int n)
+{
+    double sum = 0;
+    for (int i = 0; i < n; i++) {
+        int a = index != NULL ? index[i] : i, b = index != NULL ? index[(i + 1) % n] : (i + 1) % n;
+        sum += x[a] * y[b] - x[b] * y[a];
+    }
+    return sum;
+}
+
+/* Whether (px, py) is inside the polygon (even-odd rule). */
+static int point_in_polygon(const double *x, const double *y, int n, double px, double py)
+{
+    int inside = 0;
+    for (int i = 0, j = n - 1; i < n; j = i++)
+        if ((y[i] > py) != (y[j] > py) &&
+            px < x[j] + (x[i] - x[j]) * (py - y[j]) / (y[i] - y[j])) /* y[i] != y[j] here */
+            inside = !inside;
+    return inside;
+}
+
+/* Triangulates the 2-D polygon embedded in 3-D by `frame` (a rotation and a shift) and checks
+ * the triangles in 2-D: n - 2 of them with distinct corners, each turning the polygon's way,
+ * centroid inside, areas summing to the polygon's. Returns the number of failed checks. */
+static int check_triangulation(struct check *t, const double *x, const double *y, int n,
+                               const struct vec3 frame[4])
+{
+    struct vec3 *v = xmalloc((size_t)n, sizeof *v, "test polygon");
+    int *tri = xmalloc(3 * (size_t)(n - 2), sizeof *tri, "test triangles");
+    for (int i = 0; i < n; i++)
+        v[i] = vec3_add(frame[3], vec3_add(vec3_scale(frame[0], x[i]), vec3_scale(frame[1], y[i])));
+    polygon_triangulate(v, n, tri);
+    int before = t->failures_in_test;
+    double polygon = shoelace(x, y, NULL, n), sum = 0;
+    for (int k = 0; k < n - 2; k++) {
+        const int *c = tri + 3 * k;
+        CHECK(t, c[0] >= 0 && c[0] < n && c[1] >= 0 && c[1] < n && c[2] >= 0 && c[2] < n);
+        CHECK(t, c[0] != c[1] && c[1] != c[2] && c[2] != c[0]);
+        double area = shoelace(x, y, c, 3);
+        CHECK(t, area * polygon >= 0);
+        sum += fabs(area);
+        if (area != 0)
+            CHECK(t, point_in_polygon(x, y, n, (x[c[0]] + x[c[1]] + x[c[2]]) / 3,
+                                      (y[c[0]] + y[c[1]] + y[c[2]]) / 3));
+    }
+    CHECK_CLOSE(t, sum, fabs(polygon), 1e-12 * fabs(polygon));
+    free(tri);
+    free(v);
+    return t->failures_in_test - before;
+}
+
+/* A star-shaped polygon of n vertices: increasing angles, random radii; so simple, and
+ * concave wherever a radius dips. */
+static void random_star(struct rng *rng, int n, double *x, double *y)
+{
+    for (int i = 0; i < n; i++) {
+        double angle = 2 * PI * (i + 0.8 * rng_uniform(rng)) / n;
+        double radius = random_in(rng, 0.05, 1.0);
+        x[i] = radius * cos(angle);
+        y[i] = radius * sin(angle);
+    }
+}
+
+/* A comb: a bar along the bottom with `teeth` thin teeth upwards (2 + 4 teeth vertices). */
+static int comb(int teeth, double *x, double *y)
+{
+    int n = 0;
+    x[n] = 0, y[n++] = 0;
+    x[n] = teeth, y[n++] = 0;
+    for (int i = teeth - 1; i >= 0; i--) {
+        x[n] = i + 0.8, y[n++] = 3;
+        x[n] = i + 0.6, y[n++] = 0.5;
+        x[n] = i + 0.4, y[n++] = 0.5;
+        x[n] = i + 0.2, y[n++] = 3;
+    }
+    x[n - 1] = 0; /* the first tooth's left edge is the bar's */
+    return n;
+}
+
+/* A random orthonormal pair and a shift: the polygon's plane in space. */
+static void random_frame(struct rng *rng, struct vec3 frame[4])
+{
+    struct vec3 n = vec3_normalize(random_point(rng, 1.0));
+    vec3_frame(n, &frame[0], &frame[1]);
+    frame[2] = n;
+    frame[3] = random_point(rng, 100.0);
+}
+
+/* Reads the first 144-vertex polygon of gears-s3.nff (a gear's concave outline) into x, y
+ * (it lies in a plane z = constant); returns its vertex count, 0 if not found. */
+static int gear_outline(double *x, double *y)
+{
+    FILE *f = fopen(SPD "gears-s3.nff", "r");
+    if (f == NULL)
+        return 0;
+    char line[256];
+    while (fgets(line, sizeof line, f) != NULL && strcmp(line, "p 144\n") != 0)
+        continue;
+    int n = 0;
+    double z;
+    while (n < 144 && fgets(line, sizeof line, f) != NULL &&
+           sscanf(line, "%lf %lf %lf", &x[n], &y[n], &z) == 3)
+        n++;
+    fclose(f);
+    return n;
+}
+
+/* truth: the shoelace area and an even-odd point-in-polygon test, in the polygon's own 2-D
+ *   coordinates, of triangles found in 3-D (randomly rotated and shifted planes).
+ * tolerance: 1e-12 relative on the area: the 3-D embedding rounds the coordinates (1e-16
+ *   of 100), which may tip a triangle of collinear points, nothing more.
+ * catches: a fan (wrong on every concave polygon here), reflex vertices not checked,
+ *   clockwise polygons (the reversed copies) clipped on the wrong side, a wrong count. */
+static void test_ear_clipping(struct check *t)
+{
+    static double x[200], y[200], rx[200], ry[200];
+    struct rng rng = rng_stream(12, STREAM_TEST, 0, 0);
+    struct vec3 frame[4];
+    for (int k = 0; k < 120; k++) {
+        int n;
+        if (k == 0) {
+            static const double lx[] = {0, 2, 2, 0.7, 0.7, 0}, ly[] = {0, 0, 0.7, 0.7, 2, 2};
+            n = 6;
+            memcpy(x, lx, sizeof lx);
+            memcpy(y, ly, sizeof ly);
+        } else if (k == 1) {
+            n = comb(20, x, y);
+        } else if (k == 2) {
+            static const double sx[] = {0, 1, 2, 2, 2, 1, 0, 0}, sy[] = {0, 0, 0, 1, 2, 2, 2, 1};
+            n = 8; /* a square with collinear midpoints */
+            memcpy(x, sx, sizeof sx);
+            memcpy(y, sy, sizeof sy);
+        } else if (k == 3) {
+            n = gear_outline(x, y);
+            CHECK(t, n == 144);
+        } else {
+            n = 3 + (int)(rng_uniform(&rng) * 120);
+            random_star(&rng, n, x, y);
+        }
+        random_frame(&rng, frame);
+        for (int i = 0; i < n; i++) {
+            rx[i] = x[n - 1 - i];
+            ry[i] = y[n - 1 - i];
+        }
+        if (check_triangulation(t, x, y, n, frame) + check_triangulation(t, rx, ry, n, frame))
+            fprintf(stderr, "ear clipping: polygon %d (%d vertices) failed\n", k, n);
+    }
+}
+
+/* ---- NFF: the databases ---------------------------------------------------------------- */
+
+struct spd_count {
+    const char *file;
+    size_t prims;     /* spheres + cones + sum over polygons of (n - 2) triangles */
+    size_t lights;
+    size_t materials; /* distinct `f` lines */
+};
+
+/* truth: ../shared/spd/README.md's census: balls-s4 7,381 spheres + 1 quad (2 triangles);
+ *   gears-s3 3,889 quads (x 2) + 54 polygons of 144 vertices (x 142); rings-s4 900 spheres
+ *   + 900 cylinders + 1 quad; tree-s5 63 + 63 cones + 1 quad; teapot-s3 9 quads + 552 pp
+ *   triangles; lattice-s6 343 + 882 cylinders, 4 distinct materials among 1,225 `f` lines;
+ *   mount-s4 512 triangles + 4 spheres; tetra-s5 1,024 triangles; shells-s4 2,881 spheres.
+ * tolerance: none, counts. catches: the one-line `c` swallowing the next entities, the
+ *   polygon count formula broken, lights dropped, materials not shared. */
+static void test_spd_counts(struct check *t)
+{
+    static const struct spd_count cases[] = {
+        {SPD "balls-s4.nff", 7381 + 2, 3, 2},
+        {SPD "gears-s3.nff", 3889 * 2 + 54 * 142, 5, 27},
+        {SPD "rings-s4.nff", 900 + 900 + 2, 3, 7},
+        {SPD "tree-s5.nff", 63 + 63 + 2, 7, 2},
+        {SPD "teapot-s3.nff", 9 * 2 + 552, 2, 3},
+        {SPD "lattice-s6.nff", 343 + 882, 6, 4},
+        {SPD "mount-s4.nff", 512 + 4, 1, 2},
+        {SPD "tetra-s5.nff", 1024, 1, 1},
+        {SPD "shells-s4.nff", 2881, 1, 1},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        struct error err;
+        struct scene *scene = nff_load(cases[i].file, &err);
+        CHECK(t, scene != NULL);
+        if (scene == NULL) {
+            error_print(&err);
+            continue;
+        }
+        CHECK(t, geometry_primitive_count(scene->geometry) == cases[i].prims);
+        CHECK(t, scene->n_lights == cases[i].lights);
+        CHECK(t, scene->n_materials == cases[i].materials);
+        CHECK(t, scene->has_camera && scene->width == 512 && scene->height == 512);
+        CHECK(t, scene->background.x == 0.078 && scene->background.z == 0.753);
+        scene_free(scene);
+    }
+}
+
+/* truth: balls-s4.nff's view line by line (README's table), and a ray from the camera
+ *   through the image centre hits the flake. catches: view lines read into wrong fields. */
+static void test_spd_view(struct check *t)
+{
+    struct error err;
+    struct scene *scene = nff_load(SPD "balls-s4.nff", &err);
+    CHECK(t, scene != NULL);
+    if (scene == NULL)
+        return;
+    CHECK(t, scene->camera.from.x == 2.1 && scene->camera.from.y == 1.3 &&
+                 scene->camera.from.z == 1.7);
+    CHECK(t, scene->camera.at.x == 0 && scene->camera.up.z == 1 && scene->camera.fov == 45);
+    scene_finish(scene, 64, 64);
+    struct hit h;
+    CHECK(t, scene_intersect(scene, camera_ray(&scene->camera, 32, 32), INFINITY, &h));
+    CHECK(t, h.t > 1.5 && h.t < vec3_length(scene->camera.from));
+    scene_free(scene);
+}
+
+/* ---- NFF: conventions ------------------------------------------------------------------ */
+
+#define VIEW "v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 1\nresolution 8 6\n"
+
+static struct scene *load_nff_text(const char *text, struct error *err)
+{
+    write_text_file(scratch_nff, text);
+    return nff_load(scratch_nff, err);
+}
+
+/* truth: the convention of nff.c written out: n = 3 lights, I = sqrt(3) / 6, and
+ *   Phi = 4 pi^2 d^2 I colour with d the distance to `at` (to `from` for a light at `at`);
+ *   so the irradiance at `at` facing the light, E = Phi / (4 pi d^2), is pi I colour, and a
+ *   white Lambertian surface there has radiance E / pi = I colour. Lights before the view
+ *   and a yon line are accepted.
+ * tolerance: 1e-12 relative, a few roundings.
+ * catches: n taken as lights seen so far, d measured from the wrong point, pi lost. */
+static void test_nff_light_power(struct check *t)
+{
+    struct error err;
+    struct scene *scene = load_nff_text("l 0 3 4\n" "v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\n"
+                                        "angle 40\nhither 1\nyon 1000\nresolution 8 6\n"
+                                        "l 1 1 1 0.5 0.25 1\nl 0 0 0\n", &err);
+    CHECK(t, scene != NULL);
+    if (scene == NULL)
+        return;
+    CHECK(t, scene->n_lights == 3 && scene->width == 8 && scene->height == 6);
+    double intensity = sqrt(3.0) / 6.0;
+    static const double d2[3] = {25, 3, 25}, colour[3][3] = {{1, 1, 1}, {0.5, 0.25, 1},
+                                                             {1, 1, 1}};
+    for (int i = 0; i < 3; i++) {
+        const struct light *l = &scene->lights[i];
+        double phi = 4 * PI * PI * d2[i] * intensity;
+        CHECK(t, l->kind == LIGHT_POINT);
+        CHECK_CLOSE(t, l->power.x, phi * colour[i][0], 1e-12 * phi);
+        CHECK_CLOSE(t, l->power.y, phi * colour[i][1], 1e-12 * phi);
+        CHECK_CLOSE(t, l->power.z, phi * colour[i][2], 1e-12 * phi);
+        struct light_sample ls;
+        if (i < 2 && light_sample(l, vec3(0, 0, 0), 0.5, 0.5, &ls))
+            CHECK_CLOSE(t, ls.li.x, PI * intensity * colour[i][0], 1e-12);
+    }
+    scene_free(scene);
+}
+
+/* truth: nff.c's mapping of f r g b Kd Ks Shine T ior, case by case, and kd + ks <= 1 in
+ *   doubles for 200 random f lines with Kd, Ks up to 2 and colours up to 1.5.
+ * tolerance: exact where no arithmetic is done, 1e-15 where a product is.
+ * catches: T and Ks tested in the wrong order, the Kd + Ks scaling forgotten, colours
+ *   over 1 passed on, equal f lines not shared. */
+static void test_nff_materials(struct check *t)
+{
+    static char text[40000];
+    int length = sprintf(text, "%s", VIEW "f 0.5 0.6 0.7 0.8 0 100000 0 0\ns 0 0 0 1\n"
+                         "f 1 0.5 0.25 0.3 0.6 20 0 0\ns 3 0 0 1\n"
+                         "f 1 1 1 0.7 0.7 11 0 1\ns 6 0 0 1\n"
+                         "f 1 1 1 0.1 0.1 100 0.9 1.5\ns 9 0 0 1\n"
+                         "f 2 2 2 0.9 0 0 0 0\ns 12 0 0 1\n"
+                         "f 0.5 0.6 0.7 0.8 0 100000 0 0\ns 15 0 0 1\n");
+    struct rng rng = rng_stream(13, STREAM_TEST, 0, 0);
+    for (int i = 0; i < 200; i++)
+        length += sprintf(text + length, "f %.17g %.17g %.17g %.17g %.17g 10 0 0\n",
+                          1.5 * rng_uniform(&rng), 1.5 * rng_uniform(&rng),
+                          1.5 * rng_uniform(&rng), 2 * rng_uniform(&rng),
+                          2 * rng_uniform(&rng));
+    struct error err;
+    struct scene *scene = load_nff_text(text, &err);
+    CHECK(t, scene != NULL && scene->n_materials == 5 + 200);
+    if (scene == NULL)
+        return;
+    const struct material *m = scene->materials;
+    CHECK(t, m[0].kind == MATERIAL_LAMBERT && m[0].rho.x == 0.5 * 0.8 && m[0].rho.z == 0.7 * 0.8);
+    CHECK(t, m[1].kind == MATERIAL_PHONG && m[1].rho.y == 0.3 * 0.5 && m[1].rho_s.x == 0.6 &&
+                 m[1].exponent == 20);
+    CHECK(t, m[2].kind == MATERIAL_PHONG);
+    CHECK_CLOSE(t, m[2].rho.x, 0.5, 1e-15);
+    CHECK_CLOSE(t, m[2].rho_s.x, 0.5, 1e-15);
+    CHECK(t, m[3].kind == MATERIAL_GLASS && m[3].ior == 1.5);
+    CHECK(t, m[4].kind == MATERIAL_LAMBERT && m[4].rho.x == 0.9);
+    for (size_t i = 0; i < scene->n_materials; i++) {
+        struct vec3 sum = vec3_add(scene->materials[i].rho, scene->materials[i].rho_s);
+        CHECK(t, vec3_max_component(sum) <= 1 && scene->materials[i].rho.x >= 0);
+    }
+    scene_finish(scene, 8, 6); /* the sixth sphere, the first f again, shares material 0 */
+    struct hit h;
+    CHECK(t, scene_intersect(scene, make_ray(vec3(15, 0, -5), vec3(0, 0, 1)), INFINITY, &h));
+    CHECK(t, geometry_primitive_count(scene->geometry) == 6 && h.prim == 5 && h.material == 0);
+    scene_free(scene);
+}
+
+/* Hits of a fixed fan of rays through two scenes must be identical. */
+static int same_hits(struct scene *a, struct scene *b, struct vec3 eye, struct vec3 target)
+{
+    int same = 1, n_hits = 0;
+    for (int i = 0; i < 400; i++) {
+        struct vec3 aim = vec3_add(target, vec3((i % 20 - 9.5) * 0.12, (i / 20 - 9.5) * 0.12, 0));
+        struct ray ray = make_ray(eye, vec3_normalize(vec3_sub(aim, eye)));
+        struct hit ha, hb;
+        int hit_a = scene_intersect(a, ray, INFINITY, &ha);
+        int hit_b = scene_intersect(b, ray, INFINITY, &hb);
+        same = same && hit_a == hit_b;
+        if (hit_a && hit_b) {
+            n_hits++;
+            same = same && ha.t == hb.t && ha.ng.x == hb.ng.x && ha.ns.y == hb.ns.y &&
+                   ha.u == hb.u && ha.v == hb.v;
+        }
+    }
+    return same && n_hits > 50;
+}
+
+/* truth: round trip, the same cone in NFF's two `c` layouts (plus comments, blank lines
+ *   and CRLF) gives bit-identical hits; the inside-only cone (negative radii) the same
+ *   points with the normal reversed.
+ * catches: the three-line layout misread, CR taken into a number, the sign ignored. */
+static void test_nff_cone_layouts(struct check *t)
+{
+    struct error err;
+    struct scene *one = load_nff_text(VIEW "f 1 1 1 1 0 0 0 0\nc 0 0 0 1 0 0.5 1 0.3\n", &err);
+    struct scene *three = load_nff_text(VIEW "f 1 1 1 1 0 0 0 0\r\n# a comment\r\nc\r\n"
+                                        "0 0 0 1 # base\r\n\r\n0 0.5 1 0.3\r\n", &err);
+    struct scene *inside = load_nff_text(VIEW "f 1 1 1 1 0 0 0 0\nc 0 0 0 -1 0 0.5 1 -0.3\n",
+                                         &err);
+    CHECK(t, one != NULL && three != NULL && inside != NULL);
+    if (one != NULL && three != NULL && inside != NULL) {
+        scene_finish(one, 8, 6);
+        scene_finish(three, 8, 6);
+        scene_finish(inside, 8, 6);
+        CHECK(t, same_hits(one, three, vec3(0.3, 0.2, -5), vec3(0, 0.2, 0.5)));
+        struct ray ray = make_ray(vec3(0, -0.6, -5), vec3(0, 0, 1));
+        struct hit a, b;
+        CHECK(t, scene_intersect(one, ray, INFINITY, &a) && scene_intersect(inside, ray,
+                                                                             INFINITY, &b));
+        CHECK(t, a.t == b.t && a.ng.x == -b.ng.x && a.ng.y == -b.ng.y && a.ng.z == -b.ng.z);
+    }
+    scene_free(one);
+    scene_free(three);
+    scene_free(inside);
+}
+
+/* ---- NFF and OBJ: bad input ------------------------------------------------------------ */
+
+struct bad_input {
+    const char *text;    /* the file's contents                     */
+    int line;            /* the line the error must name            */
+    const char *message; /* a part of the message it must contain   */
+};
+
+#define F1 "f 1 1 1 1 0 0 0 0\n" /* line 8 after VIEW */
+
+static const struct bad_input bad_nff[] = {
+    {"", 0, "no 'v'"},
+    {F1 "s 0 0 0 1\n", 0, "no 'v'"},
+    {VIEW "s 0 0 0 1\n", 8, "before any 'f'"},
+    {VIEW F1 "s 0 0 0\n", 9, "expected 4 numbers"},
+    {VIEW F1 "s 0 0 0 nan\n", 9, "not finite"},
+    {VIEW F1 "s 0 0 0 -inf\n", 9, "not finite"},
+    {VIEW F1 "s 0 0 0 1x\n", 9, "not a number"},
+    {VIEW F1 "s 0 0 0 -1\n", 9, "radius must be positive"},
+    {VIEW F1 "s 0 0 0 1 2\n", 9, "unexpected '2'"},
+    {VIEW F1 "s 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17\n", 9, "more than 16 words"},
+    {VIEW F1 "p 0\n", 9, "from 3 to 10000"},
+    {VIEW F1 "p 2\n0 0 0\n1 0 0\n", 9, "from 3 to 10000"},
+    {VIEW F1 "p 10001\n", 9, "from 3 to 10000"},
+    {VIEW F1 "p 1e300\n", 9, "from 3 to 10000"},
+    {VIEW F1 "p 3.5\n", 9, "whole number"},
+    {VIEW F1 "p 3\n0 0 0\n1 0 0\n", 11, "ends where vertex 3 of 3"},
+    {VIEW F1 "p 3\n0 0 0\n1 0\n0 1 0\n", 11, "expected 3 numbers"},
+    {VIEW F1 "p 3\n0 0 0\n1 0 0 # c\n\n0 1 0 1\n", 13, "unexpected '1'"},
+    {VIEW F1 "p 4\n0 0 0\n1 0 0\n1 1 0\ns 0 0 0 1\n", 13, "'s' is not a number"},
+    {VIEW F1 "pp 3\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 0\n", 12, "normal of vertex 3"},
+    {VIEW F1 "pp 3\n0 0 0 0 0 1\n1 0 0\n", 11, "expected 6 numbers"},
+    {VIEW F1 "c 0 0 0 1 0 0 1\n", 9, "expected 8 numbers"},
+    {VIEW F1 "c\n0 0 0 1\n", 10, "ends where the apex line"},
+    {VIEW F1 "c\n0 0 0 1 0 0 1 1\n", 10, "unexpected '0'"},
+    {VIEW F1 "c 0 0 0 1 0 0 0 1\n", 9, "coincide"},
+    {VIEW F1 "c 0 0 0 1 0 0 1 -1\n", 9, "opposite signs"},
+    {VIEW F1 "c 0 0 0 0 0 0 1 0\n", 9, "both zero"},
+    {VIEW "f 1 1 1 0.1 0.1 1 0.5 0\n", 8, "index of refraction"},
+    {VIEW "f 1 1 1 -1 0 0 0 0\n", 8, "negative"},
+    {VIEW "f 1 1 1 1 0 0 0\n", 8, "expected 8 numbers"},
+    {VIEW "b 0 0\n", 8, "expected 3 numbers"},
+    {VIEW "b -1 0 0\n", 8, "negative"},
+    {VIEW "l 0 0 0 1\n", 8, "expected 6 numbers"},
+    {VIEW "l 0 0 0 1 -1 1\n", 8, "negative"},
+    {VIEW "l 1e200 0 0\n", 8, "overflows"},
+    {VIEW "tpp 3\n", 8, "unknown keyword 'tpp'"},
+    {VIEW "v\n", 8, "a second view"},
+    {"v\nfrom 0 0 -5\nat 0 0 0\nangle 40\n", 4, "expected the line 'up'"},
+    {"v\nfrom 0 0 -5\n", 2, "ends where the line 'at'"},
+    {"v 1\n", 1, "unexpected '1'"},
+    {"v\nfrom 0 0 0\nat 0 0 0\nup 0 1 0\n", 4, "'at' equals 'from'"},
+    {"v\nfrom 0 0 -5\nat 0 0 0\nup 0 0 1\n", 4, "parallel"},
+    {"v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle 180\n", 5, "(0, 180)"},
+    {"v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 1\nresolution 0 8\n", 7,
+     "resolution"},
+    {"v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 1\nresolution 8.5 8\n", 7,
+     "resolution"},
+    {"v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 1\nresolution 40000 8\n", 7,
+     "resolution"},
+    {"\x01\x02\xff\xfe garbage\n", 1, "unknown keyword"},
+    {"\n\n   \t\n# only comments\n", 0, "no 'v'"},
+};
+
+#define THREE_V "v 0 0 0\nv 1 0 0\nv 0 1 0\n" /* lines 1-3 */
+
+static const struct bad_input bad_obj[] = {
+    {"", 0, "no faces"},
+    {THREE_V "# no face\n", 0, "no faces"},
+    {"f 1 2 3\n", 1, "vertex index 1 is out of range (0 defined above)"},
+    {THREE_V "f 1 2 4\n", 4, "vertex index 4 is out of range"},
+    {THREE_V "f 1 2 0\n", 4, "vertex index 0"},
+    {THREE_V "f 1 2 -4\n", 4, "vertex index -4"},
+    {THREE_V "f 3 2 1\nv 1 1 1\nf 1 2 5\n", 6, "vertex index 5"},
+    {THREE_V "f 99999999999999999999 2 3\n", 4, "out of range"},
+    {THREE_V "f -99999999999999999999 2 3\n", 4, "out of range"},
+    {THREE_V "f 1 2\n", 4, "at least 3 corners, got 2"},
+    {THREE_V "f\n", 4, "at least 3 corners, got 0"},
+    {THREE_V "f 1 2 x\n", 4, "whole number"},
+    {THREE_V "f 1 2 3.5\n", 4, "whole number"},
+    {THREE_V "f 1 2 3 # ok\nf 1 2 +\n", 5, "whole number"},
+    {THREE_V "f 1/1 2 3\n", 4, "texture index 1 is out of range"},
+    {THREE_V "f 1//1 2//1 3//1\n", 4, "normal index 1 is out of range"},
+    {THREE_V "f 1/ 2 3\n", 4, "texture index must be"},
+    {THREE_V "vt 0 0\nvn 0 0 1\nf 1/1/1/1 2 3\n", 6, "a corner is"},
+    {THREE_V "vn 0 0 1\nf 1//1 2//1 3//\n", 5, "normal index must be"},
+    {"v 0 0\n", 1, "expected 3 numbers"},
+    {"v 0 0 nan\n", 1, "not finite"},
+    {"v 0 0 inf\n", 1, "not finite"},
+    {"v 0 0 1e999\n", 1, "not finite"},
+    {"v 1 2 3 4 5 6 7 8\n", 1, "more than 7 numbers"},
+    {"v 1 2 three\n", 1, "'three' is not a number"},
+    {"vn 0 0 0\n", 1, "normal is zero"},
+    {"vn 0 0\n", 1, "expected 3 numbers"},
+    {"vn 1 0 0 1\n", 1, "more than 3 numbers"},
+    {"vt\n", 1, "expected 1 numbers"},
+    {"vt 1 2 3 4\n", 1, "more than 3 numbers"},
+    {"curv 0 1 2\n", 1, "unknown keyword 'curv'"},
+    {THREE_V "f 1 2 3\ncstype bspline\n", 5, "unknown keyword 'cstype'"},
+    {"\x01\x02\xff\xfe garbage\n", 1, "unknown keyword"},
+    {"v 1e300 0 0\n", 1, "placed vertex is not finite"}, /* scale 1e10 below */
+};
+
+/* A new scene with one grey Lambertian material, index 0, for OBJ meshes. */
+static struct scene *material_scene(void)
+{
+    struct scene *scene = scene_create();
+    struct material m;
+    memset(&m, 0, sizeof m);
+    m.kind = MATERIAL_LAMBERT;
+    m.rho = vec3(0.5, 0.5, 0.5);
+    scene_add_material(scene, &m);
+    return scene;
+}
+
+/* Loads text as an NFF (obj = 0) or OBJ (obj = 1) file; checks it is refused on the right
+ * line with the right words. Returns whether it was. */
+static int refused_as_expected(const struct bad_input *bad, int obj, double scale)
+{
+    struct error err;
+    memset(&err, 0, sizeof err);
+    const char *path = obj ? scratch_obj : scratch_nff;
+    write_text_file(path, bad->text);
+    int refused;
+    if (obj) {
+        struct scene *scene = material_scene();
+        struct obj_placement place = {0, scale, {0, 0, 0}};
+        refused = obj_import(scene, path, &place, &err) < 0;
+        scene_free(scene);
+    } else {
+        struct scene *scene = nff_load(path, &err);
+        refused = scene == NULL;
+        scene_free(scene);
+    }
+    int right = refused && err.line == bad->line && strstr(err.message, bad->message) != NULL &&
+                strcmp(err.file, path) == 0;
+    if (!right)
+        fprintf(stderr, "%s case '%.30s...': got %s:%d: %s\n", obj ? "OBJ" : "NFF", bad->text,
+                err.file, err.line, err.message);
+    return right;
+}
+
+/* truth: each file above is wrong in one known way on one known line (0: no line, e.g.
+ *   a missing view at the end of the file); plus a directory, a missing file and a line
+ *   too long. Run under the sanitizers (make check), "nothing crashed" is checked too.
+ * tolerance: none: the line number and the gist of the message must be right.
+ * catches: errors on the wrong line, NaN or Inf accepted, counts and indices unchecked
+ *   (reads out of bounds), truncated entities swallowing the next, crashes on garbage. */
+static void test_bad_files_are_refused(struct check *t)
+{
+    for (size_t i = 0; i < sizeof bad_nff / sizeof bad_nff[0]; i++)
+        CHECK(t, refused_as_expected(&bad_nff[i], 0, 1.0));
+    size_t n_obj = sizeof bad_obj / sizeof bad_obj[0];
+    for (size_t i = 0; i < n_obj; i++)
+        CHECK(t, refused_as_expected(&bad_obj[i], 1, i + 1 == n_obj ? 1e10 : 1.0));
+    static char long_text[70000];
+    memset(long_text, '1', sizeof long_text - 2);
+    long_text[0] = 'v';
+    long_text[1] = ' ';
+    long_text[sizeof long_text - 2] = '\n';
+    struct bad_input too_long = {long_text, 1, ""};
+    CHECK(t, refused_as_expected(&too_long, 0, 1.0));
+    CHECK(t, refused_as_expected(&too_long, 1, 1.0));
+    struct error err;
+    struct scene *scene = material_scene();
+    struct obj_placement place = {0, 1.0, {0, 0, 0}};
+    CHECK(t, nff_load("scenes", &err) == NULL && strstr(err.message, "directory") != NULL);
+    CHECK(t, obj_import(scene, "scenes", &place, &err) < 0 && strstr(err.message, "directory"));
+    CHECK(t, nff_load("/nonexistent/a.nff", &err) == NULL && strstr(err.message, "cannot open"));
+    CHECK(t, obj_import(scene, "/nonexistent/a.obj", &place, &err) < 0 && err.line == 0);
+    scene_free(scene);
+}
+
+/* truth: a face of 10,001 corners is refused, one of 10,000 accepted as 9,998 triangles
+ *   (the documented limit, exactly). catches: an off-by-one at the limit, scratch overrun. */
+static void test_polygon_limit(struct check *t)
+{
+    for (int n = MAX_POLYGON_VERTICES; n <= MAX_POLYGON_VERTICES + 1; n++) {
+        FILE *f = fopen(scratch_obj, "wb");
+        CHECK(t, f != NULL);
+        if (f == NULL)
+            return;
+        for (int i = 0; i < n; i++)
+            fprintf(f, "v %.17g %.17g 0\n", cos(2 * PI * i / n), sin(2 * PI * i / n));
+        fputs("f", f);
+        for (int i = 1; i <= n; i++)
+            fprintf(f, " %d", i);
+        fputs("\n", f);
+        fclose(f);
+        struct scene *scene = material_scene();
+        struct obj_placement place = {0, 1.0, {0, 0, 0}};
+        struct error err;
+        int status = obj_import(scene, scratch_obj, &place, &err);
+        CHECK(t, n == MAX_POLYGON_VERTICES
+                     ? status == 0 && geometry_primitive_count(scene->geometry) == (size_t)n - 2
+                     : status < 0 && err.line == n + 1 && strstr(err.message, "more than"));
+        scene_free(scene);
+    }
+}
+
+/* ---- OBJ and the scene keywords ------------------------------------------------------- */
+
+/* A scene with one material, a camera and the OBJ text placed by (scale, shift). */
+static struct scene *load_obj_text(const char *text, double scale, struct vec3 shift)
+{
+    struct scene *scene = material_scene();
+    struct obj_placement place;
+    place.material = 0;
+    place.scale = scale;
+    place.translation = shift;
+    struct error err;
+    write_text_file(scratch_obj, text);
+    if (obj_import(scene, scratch_obj, &place, &err) < 0) {
+        scene_free(scene);
+        return NULL;
+    }
+    scene->camera.from = vec3(0, 0, 5);
+    scene->camera.up = vec3(0, 1, 0);
+    scene->camera.fov = 40;
+    scene_finish(scene, 8, 8);
+    return scene;
+}
+
+#define PYRAMID_V "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nv 0 0 1.5\n" \
+                  "vn 0 -0.8 0.6\nvn 0.8 0 0.6\nvn 0 0.8 0.6\nvn -0.8 0 0.6\nvn 0 0 1\nvt 0 0\n"
+
+/* truth: round trip, the same pyramid written with positive indices and with negative
+ *   ones (and v/vt/vn corners, ignored statements) gives bit-identical hits.
+ * catches: a negative index off by one, normals attached to the wrong corner. */
+static void test_obj_negative_indices(struct check *t)
+{
+    struct scene *positive = load_obj_text(PYRAMID_V "f 1//1 2//2 5//5\nf 2//2 3//3 5//5\n"
+                                           "f 3//3 4//4 5//5\nf 4//4 1//1 5//5\nf 4 3 2 1\n",
+                                           1, vec3_zero());
+    struct scene *negative = load_obj_text(PYRAMID_V "o pyramid\ng sides\ns 1\nusemtl x\n"
+                                           "mtllib x.mtl\nl 1 2\np 1\n"
+                                           "f -5/1/-5 -4/-1/-4 -1//-1\nf -4//-4 -3//-3 -1//-1\n"
+                                           "f -3//-3 -2//-2 -1/1/-1\nf -2//-2 -5//-5 -1//-1\n"
+                                           "f -2 -3 -4 -5\n", 1, vec3_zero());
+    CHECK(t, positive != NULL && negative != NULL);
+    if (positive != NULL && negative != NULL) {
+        CHECK(t, geometry_primitive_count(positive->geometry) == 6);
+        CHECK(t, geometry_primitive_count(negative->geometry) == 6);
+        CHECK(t, same_hits(positive, negative, vec3(0.3, -0.2, 5), vec3(0, 0, 0.4)));
+        CHECK(t, same_hits(positive, negative, vec3(0.3, -0.2, -5), vec3(0, 0, 0.4)));
+    }
+    scene_free(positive);
+    scene_free(negative);
+}
+
+/* truth: closed form, vertex p placed at 2 p + (1, 2, 3): the triangle (0,0,0) (1,0,0)
+ *   (0,1,0) becomes (1,2,3) (3,2,3) (1,4,3), where x >= 1, y >= 2, x + y <= 5; rays down
+ *   -z at (1.5, 2.5) and (2.9, 2.05) hit it at z = 3, one at (2.1, 3.1) misses.
+ * catches: scale and translation swapped or applied in the wrong order. */
+static void test_obj_placement(struct check *t)
+{
+    struct scene *scene = load_obj_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 2,
+                                        vec3(1, 2, 3));
+    CHECK(t, scene != NULL);
+    if (scene == NULL)
+        return;
+    struct hit h;
+    CHECK(t, scene_intersect(scene, make_ray(vec3(1.5, 2.5, 10), vec3(0, 0, -1)), INFINITY, &h));
+    CHECK_CLOSE(t, h.t, 7.0, 1e-12);
+    CHECK(t, scene_intersect(scene, make_ray(vec3(2.9, 2.05, 10), vec3(0, 0, -1)), INFINITY,
+                             &h));
+    CHECK(t, !scene_intersect(scene, make_ray(vec3(2.1, 3.1, 10), vec3(0, 0, -1)), INFINITY,
+                              &h));
+    scene_free(scene);
+}
+
+/* truth: the scene keywords `obj` (with scale and translate) and `nff` read the same as the
+ *   importers called directly (closed form as in test_obj_placement); the shipped examples
+ *   load with the counts their files give (30 and 19 primitives).
+ * catches: paths not made relative to the scene file, the NFF view not taken. */
+static void test_scene_keywords(struct check *t)
+{
+    struct error err;
+    char text[1024];
+    write_text_file(scratch_mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    write_text_file(scratch_nff, VIEW F1 "s 0 0 3 1\nl 0 5 0\n");
+    sprintf(text, "material m lambert 0.5 0.5 0.5\nnff %s\nobj %s m scale 2 translate 1 2 3\n",
+            base_name(scratch_nff), base_name(scratch_mesh));
+    write_text_file(scratch_scene, text);
+    struct scene *scene = scene_load(scratch_scene, &err);
+    CHECK(t, scene != NULL);
+    if (scene != NULL) {
+        CHECK(t, scene->has_camera && scene->width == 8 && scene->height == 6);
+        CHECK(t, geometry_primitive_count(scene->geometry) == 2 && scene->n_lights == 1);
+        scene_finish(scene, 8, 6);
+        struct hit h;
+        CHECK(t, scene_intersect(scene, make_ray(vec3(1.5, 2.5, 10), vec3(0, 0, -1)), INFINITY,
+                                 &h) && fabs(h.t - 7) < 1e-12 && h.material == 0);
+        scene_free(scene);
+    }
+    struct scene *example = scene_load("scenes/obj-example.scene", &err);
+    struct scene *every = nff_load("scenes/every-primitive.nff", &err);
+    CHECK(t, example != NULL && geometry_primitive_count(example->geometry) == 30);
+    CHECK(t, every != NULL && geometry_primitive_count(every->geometry) == 19 &&
+                 every->n_lights == 2 && every->n_materials == 8);
+    scene_free(example);
+    scene_free(every);
+}
+
+/* A scene file wrong in one known way; %s in it names the scratch NFF or OBJ file. */
+struct bad_keyword {
+    const char *format;
+    int names_nff;       /* whether %s is the NFF file (else the OBJ mesh)      */
+    int line;            /* the line the error must name                        */
+    const char *message; /* a part of the message                               */
+    int in_import;       /* whether the error must name the imported file       */
+};
+
+/* truth: each scene file below is wrong in one known way; an error inside an imported file
+ *   names that file and its line, not the scene file's.
+ * catches: options misparsed, errors blamed on the wrong file or line. */
+static void test_scene_keyword_errors(struct check *t)
+{
+    static const struct bad_keyword bad[] = {
+        {"material m lambert 1 1 1\nobj %s q\n", 0, 2, "undefined material", 0},
+        {"material m lambert 1 1 1\nobj %s m scale 0\n", 0, 2, "positive", 0},
+        {"material m lambert 1 1 1\nobj %s m translate 1 2\n", 0, 2, "expected 3 numbers", 0},
+        {"material m lambert 1 1 1\nobj %s m rotate 1\n", 0, 2, "unexpected 'rotate'", 0},
+        {"nff\n", 1, 1, "expected a file name", 0},
+        {"nff %s extra\n", 1, 1, "unexpected 'extra'", 0},
+        {"nff %s\n", 1, 9, "radius must be positive", 1},
+        {"material m lambert 1 1 1\nobj %s m\n", 1, 1, "v: expected 3 numbers", 1},
+    };
+    write_text_file(scratch_mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    write_text_file(scratch_nff, VIEW F1 "s 0 0 3 -1\n");
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char text[1024];
+        const char *import = bad[i].names_nff ? scratch_nff : scratch_mesh;
+        sprintf(text, bad[i].format, base_name(import));
+        write_text_file(scratch_scene, text);
+        struct error err;
+        CHECK(t, scene_load(scratch_scene, &err) == NULL && err.line == bad[i].line &&
+                     strstr(err.message, bad[i].message) != NULL);
+        CHECK(t, strcmp(err.file, bad[i].in_import ? import : scratch_scene) == 0);
+    }
+    char missing[1024];
+    sprintf(missing, "material m lambert 1 1 1\nobj %s.none m\n", base_name(scratch_mesh));
+    write_text_file(scratch_scene, missing);
+    struct error err;
+    CHECK(t, scene_load(scratch_scene, &err) == NULL && err.line == 0 &&
+                 strstr(err.message, "cannot open") != NULL);
+}
+
+void test_import(struct check *t)
+{
+    temp_name(scratch_nff, sizeof scratch_nff, "import", "file.nff");
+    temp_name(scratch_obj, sizeof scratch_obj, "import", "file.obj");
+    temp_name(scratch_scene, sizeof scratch_scene, "import", "file.scene");
+    temp_name(scratch_mesh, sizeof scratch_mesh, "import", "mesh.obj");
+    RUN_TEST(t, test_cone_against_brute_force);
+    RUN_TEST(t, test_cone_special_rays);
+    RUN_TEST(t, test_cone_refusals);
+    RUN_TEST(t, test_ear_clipping);
+    RUN_TEST(t, test_spd_counts);
+    RUN_TEST(t, test_spd_view);
+    RUN_TEST(t, test_nff_light_power);
+    RUN_TEST(t, test_nff_materials);
+    RUN_TEST(t, test_nff_cone_layouts);
+    RUN_TEST(t, test_bad_files_are_refused);
+    RUN_TEST(t, test_polygon_limit);
+    RUN_TEST(t, test_obj_negative_indices);
+    RUN_TEST(t, test_obj_placement);
+    RUN_TEST(t, test_scene_keywords);
+    RUN_TEST(t, test_scene_keyword_errors);
+    remove(scratch_nff);
+    remove(scratch_obj);
+    remove(scratch_scene);
+    remove(scratch_mesh);
+}
