@@ -16,7 +16,6 @@
 #include "modes/direct.h"
 #include "modes/photons.h"
 #include "modes/pt.h"
-#include "scene/nff.h"
 
 /* What one render command holds; released by finish_run() whatever happened. */
 struct run {
@@ -64,14 +63,12 @@ static int show_progress(int requested)
     return term != NULL && strcmp(term, "dumb") != 0 && getenv("CI") == NULL;
 }
 
-/* Reads the scene (an NFF file by its .nff name, else a scene file) and the reference,
- * fixes the settings and builds the BVH. */
+/* Reads the scene (a scene file, or an NFF file by its .nff name) and the reference, fixes
+ * the settings and builds the BVH. */
 static int prepare_run(struct run *run, struct error *err)
 {
     const struct options *o = &run->o;
-    size_t n = strlen(o->scene_path);
-    int is_nff = n > 4 && strcmp(o->scene_path + n - 4, ".nff") == 0;
-    run->scene = is_nff ? nff_load(o->scene_path, err) : scene_load(o->scene_path, err);
+    run->scene = scene_load(o->scene_path, err);
     if (run->scene == NULL)
         return -1;
     int width = o->width > 0 ? o->width : run->scene->width;

@@ -109,9 +109,31 @@ static void test_render_writes_deterministic_files(struct check *t)
     remove(OUT ".log");
 }
 
+/* truth: an NFF file is a scene of its own (README, "NFF files"): photon renders it by its
+ *   .nff name, and a bad NFF line is reported as file:line with exit status 2 and no output.
+ * catches: .nff files sent to the scene-file parser, an NFF error without its line. */
+static void test_nff_file_is_a_scene(struct check *t)
+{
+    remove(OUT "_nff.pfm");
+    CHECK(t, photon("-o " OUT "_nff.pfm --width 16 --height 16 --spp 1 "
+                    "scenes/every-primitive.nff") == 0);
+    CHECK(t, file_exists(OUT "_nff.pfm") && file_exists(OUT "_nff.ppm"));
+    write_text_file(OUT "_bad.nff", "v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle 40\n"
+                                    "hither 1\nresolution 8 8\nf 1 1 1 1 0 0 0 0\n"
+                                    "s 0 0 0 1\ns 0 0 0 nan\n");
+    remove(OUT "_bad_nff.pfm");
+    CHECK(t, photon("-o " OUT "_bad_nff.pfm " OUT "_bad.nff") == 2);
+    CHECK(t, log_contains(OUT "_bad.nff:10: s: number 'nan' is not finite"));
+    CHECK(t, !file_exists(OUT "_bad_nff.pfm") && !file_exists(OUT "_bad_nff.ppm"));
+    remove(OUT "_nff.pfm");
+    remove(OUT "_nff.ppm");
+    remove(OUT "_bad.nff");
+}
+
 void test_cli(struct check *t)
 {
     RUN_TEST(t, test_options);
     RUN_TEST(t, test_bad_scene_leaves_no_output);
     RUN_TEST(t, test_render_writes_deterministic_files);
+    RUN_TEST(t, test_nff_file_is_a_scene);
 }

@@ -16,6 +16,7 @@
 
 #include "../base/alloc.h"
 #include "../image/image.h"
+#include "nff.h"
 #include "parser.h"
 
 static int parse_file(struct scene *scene, const char *path, int depth, struct error *err);
@@ -258,6 +259,9 @@ static int parse_file(struct scene *scene, const char *path, int depth, struct e
 
 struct scene *scene_load(const char *path, struct error *err)
 {
+    size_t length = strlen(path);
+    if (length > 4 && strcmp(path + length - 4, ".nff") == 0)
+        return nff_load(path, err);
     struct scene *scene = scene_create();
     if (parse_file(scene, path, 0, err) < 0) {
         scene_free(scene);

@@ -83,7 +83,8 @@ static inline int scene_intersect(const struct scene *scene, struct ray ray, dou
 int scene_occluded(const struct scene *scene, struct vec3 origin, struct vec3 dir,
                    double distance);
 
-/* Loads a scene file (parse.c). NULL with *err filled on bad input. */
+/* Loads a scene file (parse.c), or an NFF file when path ends in ".nff" (nff.c). NULL with
+ * *err filled on bad input. */
 struct scene *scene_load(const char *path, struct error *err);
 
 #endif
