@@ -80,13 +80,13 @@ bench: $(BIN) $(BUILD)/bench
 # e.g. build/fuzz/fuzz_nff -max_len=8192 -max_total_time=600 CORPUS_DIR < /dev/null
 FUZZ_CC ?= clang
 FUZZ_FLAGS = -std=c99 -g -O1 -ffp-contract=off -fsanitize=fuzzer,address,undefined $(WARN)
-FUZZ_BIN := $(patsubst tests/fuzz/%.c,build/fuzz/%,$(wildcard tests/fuzz/*.c))
+FUZZ_BIN := $(patsubst tests/fuzz/%.c,build/fuzz/%,$(wildcard tests/fuzz/fuzz_*.c))
 
 fuzz: $(FUZZ_BIN)
 
-build/fuzz/%: tests/fuzz/%.c $(SRC) $(HEADERS)
+build/fuzz/%: tests/fuzz/%.c tests/fuzz/input.c tests/fuzz/input.h $(SRC) $(HEADERS)
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $< $(filter-out src/main.c,$(SRC)) -lm
+	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $< tests/fuzz/input.c $(SRC) -lm
 
 clean:
 	rm -rf build out $(BIN)
