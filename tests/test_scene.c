@@ -36,6 +36,43 @@ static void test_cornell_scene_loads(struct check *t)
     scene_free(scene);
 }
 
+/* truth: README's table of shipped scenes, as written there: each loads, and has the
+ *   number of lights and primitives it is described with (a procedural object is one).
+ * catches: a scene broken by a format change, an include that no longer resolves, an
+ *   object silently lost. */
+static void test_shipped_scenes_load(struct check *t)
+{
+    static const struct {
+        const char *path;
+        size_t lights;
+        size_t primitives;
+    } shipped[] = {
+        {"scenes/cornell.scene", 1, 13},
+        {"scenes/cornell-1e-3.scene", 1, 13},
+        {"scenes/cornell-1e3.scene", 1, 13},
+        {"scenes/sphereflake.scene", 2, 3},   /* floor quad, flake, light sphere  */
+        {"scenes/sphereflake-6.scene", 2, 3},
+        {"scenes/landscape.scene", 1, 2},     /* heightfield, lens                */
+        {"scenes/obj-example.scene", 2, 0},   /* counted below                    */
+        {"scenes/every-primitive.nff", 2, 0},
+    };
+    for (size_t i = 0; i < sizeof shipped / sizeof shipped[0]; i++) {
+        struct error err;
+        struct scene *scene = scene_load(shipped[i].path, &err);
+        CHECK(t, scene != NULL);
+        if (scene == NULL) {
+            error_print(&err);
+            continue;
+        }
+        scene_finish(scene, scene->width, scene->height);
+        CHECK(t, scene->n_lights == shipped[i].lights);
+        size_t primitives = geometry_primitive_count(scene->geometry);
+        CHECK(t, shipped[i].primitives == 0 ? primitives > 2
+                                            : primitives == shipped[i].primitives);
+        scene_free(scene);
+    }
+}
+
 struct bad_scene {
     const char *text;     /* the file's contents                     */
     int line;             /* the line the error must name            */
@@ -274,6 +311,7 @@ static void test_fresnel_and_snell(struct check *t)
 void test_scene(struct check *t)
 {
     RUN_TEST(t, test_cornell_scene_loads);
+    RUN_TEST(t, test_shipped_scenes_load);
     RUN_TEST(t, test_bad_scenes_are_refused);
     RUN_TEST(t, test_unreadable_scenes_are_refused);
     RUN_TEST(t, test_camera_rays);
