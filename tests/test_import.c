@@ -18,6 +18,7 @@
 #include "../src/base/alloc.h"
 #include "../src/base/rng.h"
 #include "../src/geom/cone.h"
+#include "../src/geom/polygon.h"
 #include "../src/scene/nff.h"
 #include "../src/scene/obj.h"
 #include "files.h"

@@ -10,7 +10,7 @@
  *                        `v/vt`, `v//vn` or `v/vt/vn`. Indices count from 1; a negative
  *                        index counts back from the last element defined (-1 is the last).
  *                        An index must name an element defined above its line. The face
- *                        becomes n - 2 triangles by ear clipping (nff.h), all with the
+ *                        becomes n - 2 triangles by ear clipping (geom/polygon.h), all with the
  *                        placement's material; the vertex normals are interpolated when
  *                        every corner names one, else the face is flat.
  *   o g s usemtl mtllib l p   tolerated and ignored (names, groups, smoothing groups,
@@ -33,8 +33,8 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../geom/polygon.h"
 #include "../geom/triangle.h"
-#include "nff.h"
 
 #define OBJ_MAX_LINE 65536   /* longest line in bytes, newline included: a face of
                                 thousands of corners fits                            */

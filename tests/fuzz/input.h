@@ -11,7 +11,7 @@
 /* The fuzzer's entry point, declared once for the targets' definitions. */
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-/* Writes the bytes to this process's own temporary file in /tmp (made on the first call,
+/* Writes the bytes to this process's own temporary file (named on the first call,
  * removed at exit), so fuzzers running side by side never share one; returns its name. */
 const char *input_file(const uint8_t *data, size_t size);
 
