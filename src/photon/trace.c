@@ -76,23 +76,44 @@ static int holds_photons(const struct photon_hit *h)
            vec3_max_component(brdf_albedo(h->material, &h->frame, h->wi)) > 0;
 }
 
-/* Appends photon p, growing the array; -1 when that would exceed max_stored. */
-static int store_photon(struct photon_trace *out, size_t max_stored, struct photon p)
+/* The photon stored at h: what the tracer hands to its sink. */
+static struct photon_event photon_event_at(const struct photon_hit *h, struct vec3 power,
+                                           unsigned kind)
 {
+    struct photon_event e;
+    e.position = h->p;
+    e.normal = h->ng;
+    e.wi = h->wi;
+    e.power = power;
+    e.kind = kind;
+    return e;
+}
+
+/* trace_photons()' sink: packs the photon into 20 bytes and appends it, growing the
+ * array; -1 when that would exceed max_stored. */
+struct packing_sink {
+    struct photon_trace *out;
+    size_t max_stored;
+};
+
+static int pack_photon(void *context, const struct photon_event *e)
+{
+    struct packing_sink *ps = context;
+    struct photon_trace *out = ps->out;
     if (out->n_photons == out->capacity) {
-        if (out->capacity >= max_stored)
+        if (out->capacity >= ps->max_stored)
             return -1;
         size_t grown = out->capacity < INITIAL_CAPACITY / 2 ? INITIAL_CAPACITY
                                                             : 2 * out->capacity;
-        grown = grown < max_stored ? grown : max_stored;
+        grown = grown < ps->max_stored ? grown : ps->max_stored;
         out->photons = xrealloc(out->photons, grown, sizeof *out->photons, "photon map");
         out->capacity = grown;
     }
-    out->photons[out->n_photons++] = p;
-    out->n_direct += (p.flags & PHOTON_DIRECT) != 0;
-    out->n_caustic += (p.flags & PHOTON_CAUSTIC) != 0;
-    out->n_indirect += (p.flags & PHOTON_INDIRECT) != 0;
-    out->n_shadow += (p.flags & PHOTON_SHADOW) != 0;
+    out->photons[out->n_photons++] = photon_pack(e->position, e->power, e->wi, e->kind);
+    out->n_direct += (e->kind & PHOTON_DIRECT) != 0;
+    out->n_caustic += (e->kind & PHOTON_CAUSTIC) != 0;
+    out->n_indirect += (e->kind & PHOTON_INDIRECT) != 0;
+    out->n_shadow += (e->kind & PHOTON_SHADOW) != 0;
     return 0;
 }
 
@@ -127,19 +148,18 @@ static int emit_photon(const struct scene *scene, const struct trace_settings *t
  * holds photons. ray: the emitted ray; first: its first hit. -1 when the map is full. */
 static int store_shadow_photons(const struct scene *scene, const struct trace_settings *ts,
                                 struct ray ray, const struct photon_hit *first,
-                                struct photon_trace *out)
+                                const struct photon_sink *sink, unsigned long long *rays)
 {
     struct photon_hit h = *first;
     for (int n = 0; n < ts->max_depth; n++) {
         struct hit hit;
         ray.origin = offset_origin(h.p, vec3_neg(h.ng)); /* on through the surface */
-        out->rays++;
+        (*rays)++;
         if (!scene_intersect(scene, ray, INFINITY, &hit))
             return 0;
         h = photon_hit_at(scene, &hit, ray.dir);
-        if (holds_photons(&h) &&
-            store_photon(out, ts->max_stored,
-                         photon_pack(h.p, vec3_zero(), h.wi, PHOTON_SHADOW)) < 0)
+        struct photon_event e = photon_event_at(&h, vec3_zero(), PHOTON_SHADOW);
+        if (holds_photons(&h) && sink->store(sink->context, &e) < 0)
             return -1;
     }
     return 0;
@@ -175,9 +195,9 @@ static int can_store_later(unsigned store, int specular_only)
 }
 
 /* Follows photon i from its light until it is absorbed, leaves the scene or has made
- * max_depth bounces. -1 when the map is full. */
+ * max_depth bounces. -1 when the sink says stop. */
 static int trace_photon(const struct scene *scene, const struct trace_settings *ts, size_t i,
-                        struct photon_trace *out)
+                        const struct photon_sink *sink, unsigned long long *rays)
 {
     struct rng rng = rng_stream(ts->seed, STREAM_PHOTON, ts->pass, i);
     struct photon_path path = {{0, 0, 0}, 1};
@@ -186,17 +206,17 @@ static int trace_photon(const struct scene *scene, const struct trace_settings *
         return 0;
     for (int depth = 0;; depth++) {
         struct hit hit;
-        out->rays++;
+        (*rays)++;
         if (!scene_intersect(scene, ray, INFINITY, &hit))
             return 0;
         struct photon_hit h = photon_hit_at(scene, &hit, ray.dir);
         if (depth == 0 && (ts->store & PHOTON_SHADOW) &&
-            store_shadow_photons(scene, ts, ray, &h, out) < 0)
+            store_shadow_photons(scene, ts, ray, &h, sink, rays) < 0)
             return -1;
         unsigned kind = depth == 0 ? PHOTON_DIRECT
                                    : path.specular_only ? PHOTON_CAUSTIC : PHOTON_INDIRECT;
-        if ((ts->store & kind) && holds_photons(&h) &&
-            store_photon(out, ts->max_stored, photon_pack(h.p, path.power, h.wi, kind)) < 0)
+        struct photon_event e = photon_event_at(&h, path.power, kind);
+        if ((ts->store & kind) && holds_photons(&h) && sink->store(sink->context, &e) < 0)
             return -1;
         if (depth >= ts->max_depth || !scatter(&h, &rng, &path, &ray) ||
             !can_store_later(ts->store, path.specular_only))
@@ -204,20 +224,29 @@ static int trace_photon(const struct scene *scene, const struct trace_settings *
     }
 }
 
+int trace_photons_into(const struct scene *scene, const struct trace_settings *ts,
+                       const struct photon_sink *sink, unsigned long long *rays)
+{
+    assert(ts->n_emit <= MAX_PHOTONS && ts->max_depth >= 0);
+    for (size_t i = 0; i < ts->n_emit; i++)
+        if (trace_photon(scene, ts, i, sink, rays) < 0)
+            return -1;
+    return 0;
+}
+
 int trace_photons(const struct scene *scene, const struct trace_settings *ts,
                   struct photon_trace *out, struct error *err)
 {
-    assert(ts->n_emit <= MAX_PHOTONS && ts->max_depth >= 0);
     assert(ts->max_stored >= 1 && ts->max_stored <= MAX_PHOTONS);
     memset(out, 0, sizeof *out);
-    for (size_t i = 0; i < ts->n_emit; i++) {
-        if (trace_photon(scene, ts, i, out) < 0) {
-            photon_trace_free(out);
-            return error_set(err, "", 0,
-                             "photon map: more than %zu photons would be stored; emit fewer "
-                             "photons or follow fewer bounces (--max-depth)",
-                             ts->max_stored);
-        }
+    struct packing_sink packing = {out, ts->max_stored};
+    struct photon_sink sink = {pack_photon, &packing};
+    if (trace_photons_into(scene, ts, &sink, &out->rays) < 0) {
+        photon_trace_free(out);
+        return error_set(err, "", 0,
+                         "photon map: more than %zu photons would be stored; emit fewer "
+                         "photons or follow fewer bounces (--max-depth)",
+                         ts->max_stored);
     }
     out->n_emitted = ts->n_emit;
     return 0;

@@ -74,6 +74,30 @@ struct photon_trace {
     unsigned long long rays; /* rays cast                                               */
 };
 
+/* A photon at the moment it is stored, in full precision: what a sink receives. */
+struct photon_event {
+    struct vec3 position; /* where it hit                                              */
+    struct vec3 normal;   /* unit geometric normal on the side it arrived from         */
+    struct vec3 wi;       /* unit, back towards where it came from                      */
+    struct vec3 power;    /* W per channel, the 1 / N already in (zero for shadow ones) */
+    unsigned kind;        /* one of PHOTON_DIRECT, _CAUSTIC, _INDIRECT, _SHADOW          */
+};
+
+/* Where stored photons go: a photon map packs them (trace_photons), progressive photon
+ * mapping adds them to hit points at once and keeps none. store() returns 0, or -1 to
+ * stop the trace (a full map). */
+struct photon_sink {
+    int (*store)(void *context, const struct photon_event *photon);
+    void *context;
+};
+
+/* Traces ts->n_emit photons as trace_photons() does, handing each photon of a class in
+ * ts->store to the sink in the order they are stored (ts->max_stored is the sink's
+ * business, unused here). Adds the rays cast to *rays. Returns 0, or -1 as soon as the
+ * sink returns -1. */
+int trace_photons_into(const struct scene *scene, const struct trace_settings *ts,
+                       const struct photon_sink *sink, unsigned long long *rays);
+
 /* Traces ts->n_emit photons through the scene (finished; it need not have lights: then
  * nothing is stored) and fills *out, which the caller releases with
  * photon_trace_free(). Fails with -1, *err filled and *out empty when more than
