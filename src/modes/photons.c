@@ -55,24 +55,6 @@ static struct vec3 estimate_at(const struct photons_mode *pm, const struct surfa
     return radiance_estimate(pm->map, &at, &pm->es, pm->nn);
 }
 
-/* Samples s's BRDF; if the lobe is a delta one (mirror, refraction), multiplies *beta by
- * its weight, sets *ray to the reflected or refracted ray and returns 1. A non-delta
- * lobe returns 0: the light it would bring is what the estimate at s already holds. */
-static int specular_bounce(const struct surface *s, const struct shading_frame *frame,
-                           struct rng *rng, struct vec3 *beta, struct ray *ray)
-{
-    double u[3];
-    for (int k = 0; k < 3; k++)
-        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
-    struct brdf_sample bs;
-    if (!brdf_sample(s->material, frame, s->wo, u, &bs) || !bs.delta)
-        return 0;
-    *beta = vec3_mul(*beta, bs.weight);
-    struct vec3 side = bs.transmitted ? vec3_neg(s->ng) : s->ng;
-    *ray = make_ray(offset_origin(s->p, side), bs.wi);
-    return 1;
-}
-
 static struct vec3 photons_radiance(const void *mode, struct ray ray, struct rng *rng,
                                     struct render_counters *counters)
 {

@@ -24,6 +24,16 @@ static double cpu_seconds(clock_t start)
     return (double)(clock() - start) / CLOCKS_PER_SEC;
 }
 
+struct ray camera_sample(const struct scene *scene, uint64_t seed, int x, int y, int s,
+                         struct rng *rng)
+{
+    uint64_t pixel = (uint64_t)y * (uint64_t)scene->width + (uint64_t)x;
+    *rng = rng_stream(seed, STREAM_CAMERA, pixel, (uint64_t)s);
+    double px = x + rng_uniform(rng);
+    double py = y + rng_uniform(rng);
+    return camera_ray(&scene->camera, px, py);
+}
+
 /* Adds sample s of every pixel in the window. A non-finite sample (a bug upstream) counts
  * as zero and is reported, so no NaN or Inf can reach an image. */
 static void render_pass(const struct scene *scene, const struct render_settings *rs,
@@ -32,12 +42,9 @@ static void render_pass(const struct scene *scene, const struct render_settings 
 {
     for (int y = rs->y0; y < rs->y1; y++)
         for (int x = rs->x0; x < rs->x1; x++) {
-            uint64_t pixel = (uint64_t)y * (uint64_t)scene->width + (uint64_t)x;
-            struct rng rng = rng_stream(rs->seed, STREAM_CAMERA, pixel, (uint64_t)s);
-            double px = x + rng_uniform(&rng);
-            double py = y + rng_uniform(&rng);
-            struct vec3 l = est.radiance(est.mode, camera_ray(&scene->camera, px, py), &rng,
-                                         counters);
+            struct rng rng;
+            struct ray ray = camera_sample(scene, rs->seed, x, y, s, &rng);
+            struct vec3 l = est.radiance(est.mode, ray, &rng, counters);
             if (!vec3_is_finite(l)) {
                 counters->nonfinite_samples++;
                 l = vec3_zero();

@@ -65,6 +65,13 @@ struct render_result {
     double seconds;         /* CPU seconds rendering, checkpoint work excluded            */
 };
 
+/* Camera sample s of pixel (x, y) of the whole image: *rng becomes the sample's stream,
+ * rng_stream(seed, STREAM_CAMERA, y * width + x, s), and the ray goes through a uniformly
+ * jittered point of the pixel's square drawn from it; the rest of the stream is the
+ * sample's to use. */
+struct ray camera_sample(const struct scene *scene, uint64_t seed, int x, int y, int s,
+                         struct rng *rng);
+
 /* Renders the settings' window of the scene's image (width x1 - x0, height y1 - y0).
  * want_variance: also fill result->variance. checkpoint may be NULL. */
 struct render_result render_pixels(const struct scene *scene, const struct render_settings *rs,

@@ -8,6 +8,8 @@
 #ifndef PHOTON_SURFACE_H
 #define PHOTON_SURFACE_H
 
+#include "../base/rng.h"
+#include "../scene/brdf.h"
 #include "../scene/scene.h"
 
 struct surface {
@@ -48,6 +50,24 @@ static inline struct ray surface_ray(const struct surface *s, struct vec3 wi, in
 {
     struct vec3 side = transmitted ? vec3_neg(s->ng) : s->ng;
     return make_ray(offset_origin(s->p, side), wi);
+}
+
+/* Samples s's BRDF; if the lobe is a delta one (mirror, refraction), multiplies *beta by
+ * its weight, sets *ray to the reflected or refracted ray and returns 1. A non-delta
+ * lobe returns 0: for the photon modes, the light it would bring is what the photons at
+ * s already hold. */
+static inline int specular_bounce(const struct surface *s, const struct shading_frame *frame,
+                                  struct rng *rng, struct vec3 *beta, struct ray *ray)
+{
+    double u[3];
+    for (int k = 0; k < 3; k++)
+        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+    struct brdf_sample bs;
+    if (!brdf_sample(s->material, frame, s->wo, u, &bs) || !bs.delta)
+        return 0;
+    *beta = vec3_mul(*beta, bs.weight);
+    *ray = surface_ray(s, bs.wi, bs.transmitted);
+    return 1;
 }
 
 #endif

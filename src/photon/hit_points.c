@@ -1,0 +1,162 @@
+/*
+ * photon/hit_points.c -- the kd-tree over hit points (hit_points.h).
+ *
+ * Node [lo, hi) of the index array has its hit point at m = lo + (hi - lo) / 2; the points
+ * of [lo, m) lie on one side of its split plane, those of [m + 1, hi) on the other, the
+ * plane being across the axis along which the range's positions spread most. The build
+ * picks each median by quickselect, O(n log n) in all.
+ */
+#include "hit_points.h"
+
+#include <stdlib.h>
+
+#include "../base/alloc.h"
+
+/* The box of the sphere of radius R around the hit point: its disc and then some. */
+static struct aabb disc_box(const struct hit_point *hp)
+{
+    struct vec3 r = vec3(hp->radius, hp->radius, hp->radius);
+    struct aabb box;
+    box.lo = vec3_sub(hp->x, r);
+    box.hi = vec3_add(hp->x, r);
+    return box;
+}
+
+static struct aabb box_union(struct aabb a, struct aabb b)
+{
+    struct aabb u;
+    u.lo = vec3_min(a.lo, b.lo);
+    u.hi = vec3_max(a.hi, b.hi);
+    return u;
+}
+
+static int box_contains(struct aabb box, struct vec3 p)
+{
+    return p.x >= box.lo.x && p.x <= box.hi.x && p.y >= box.lo.y && p.y <= box.hi.y &&
+           p.z >= box.lo.z && p.z <= box.hi.z;
+}
+
+/* The axis along which the positions of index[lo .. hi-1] spread most. */
+static int widest_axis(const struct hit_point_tree *tree, size_t lo, size_t hi)
+{
+    struct vec3 min = tree->points[tree->index[lo]].x, max = min;
+    for (size_t i = lo + 1; i < hi; i++) {
+        min = vec3_min(min, tree->points[tree->index[i]].x);
+        max = vec3_max(max, tree->points[tree->index[i]].x);
+    }
+    struct vec3 extent = vec3_sub(max, min);
+    return extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+}
+
+static double key(const struct hit_point_tree *tree, size_t i, int axis)
+{
+    return vec3_get(tree->points[tree->index[i]].x, axis);
+}
+
+static void swap_index(size_t *index, size_t a, size_t b)
+{
+    size_t t = index[a];
+    index[a] = index[b];
+    index[b] = t;
+}
+
+/* Reorders index[lo .. hi-1] so that position m holds the element that sorting by the
+ * axis coordinate would put there, smaller keys before it and larger after (Hoare's
+ * quickselect with the middle element as pivot and a three-way partition, so equal keys
+ * cost nothing extra). */
+static void select_median(struct hit_point_tree *tree, size_t lo, size_t hi, size_t m,
+                          int axis)
+{
+    while (hi - lo > 1) {
+        double pivot = key(tree, lo + (hi - lo) / 2, axis);
+        size_t less = lo, i = lo, greater = hi;
+        while (i < greater) {
+            double k = key(tree, i, axis);
+            if (k < pivot)
+                swap_index(tree->index, less++, i++);
+            else if (k > pivot)
+                swap_index(tree->index, i, --greater);
+            else
+                i++;
+        }
+        if (m < less)
+            hi = less;
+        else if (m >= greater)
+            lo = greater;
+        else
+            return;
+    }
+}
+
+static void build_range(struct hit_point_tree *tree, size_t lo, size_t hi)
+{
+    if (hi - lo <= 1)
+        return;
+    size_t m = lo + (hi - lo) / 2;
+    select_median(tree, lo, hi, m, widest_axis(tree, lo, hi));
+    build_range(tree, lo, m);
+    build_range(tree, m + 1, hi);
+}
+
+/* Sets the boxes of node [lo, hi) and below; returns the node's box. hi > lo. */
+static struct aabb refit_range(struct hit_point_tree *tree, size_t lo, size_t hi)
+{
+    size_t m = lo + (hi - lo) / 2;
+    struct aabb box = disc_box(&tree->points[tree->index[m]]);
+    if (m > lo)
+        box = box_union(box, refit_range(tree, lo, m));
+    if (m + 1 < hi)
+        box = box_union(box, refit_range(tree, m + 1, hi));
+    tree->bounds[m] = box;
+    return box;
+}
+
+void hit_point_tree_build(struct hit_point_tree *tree, const struct hit_point *points,
+                          size_t n)
+{
+    tree->points = points;
+    tree->n = n;
+    tree->index = xmalloc(n > 0 ? n : 1, sizeof *tree->index, "hit point tree");
+    tree->bounds = xmalloc(n > 0 ? n : 1, sizeof *tree->bounds, "hit point tree");
+    for (size_t i = 0; i < n; i++)
+        tree->index[i] = i;
+    build_range(tree, 0, n);
+    hit_point_tree_refit(tree);
+}
+
+void hit_point_tree_refit(struct hit_point_tree *tree)
+{
+    if (tree->n > 0)
+        refit_range(tree, 0, tree->n);
+}
+
+static void visit_range(const struct hit_point_tree *tree, size_t lo, size_t hi, struct vec3 p,
+                        void (*visit)(void *context, size_t i), void *context)
+{
+    while (hi > lo) {
+        size_t m = lo + (hi - lo) / 2;
+        if (!box_contains(tree->bounds[m], p))
+            return;
+        size_t i = tree->index[m];
+        const struct hit_point *hp = &tree->points[i];
+        if (vec3_length2(vec3_sub(p, hp->x)) <= hp->radius * hp->radius)
+            visit(context, i);
+        visit_range(tree, lo, m, p, visit, context);
+        lo = m + 1; /* the right half by iteration: recursion only as deep as the tree */
+    }
+}
+
+void hit_point_tree_visit(const struct hit_point_tree *tree, struct vec3 p,
+                          void (*visit)(void *context, size_t i), void *context)
+{
+    visit_range(tree, 0, tree->n, p, visit, context);
+}
+
+void hit_point_tree_free(struct hit_point_tree *tree)
+{
+    free(tree->bounds);
+    free(tree->index);
+    tree->index = NULL;
+    tree->bounds = NULL;
+    tree->n = 0;
+}

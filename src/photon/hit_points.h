@@ -1,0 +1,66 @@
+/*
+ * photon/hit_points.h -- the hit points of progressive photon mapping (Hachisuka, Ogaki and
+ * Jensen 2008, Sec. 4.1) and the tree that finds, for a photon, every hit point whose disc
+ * holds it.
+ *
+ * The paper's struct hitpoint, field for field: position x, normal n, ray direction w, the
+ * BRDF, the pixel, the pixel weight, and the three values of the progressive estimate:
+ * radius R, accumulated photon count N, accumulated flux tau. Our N is a double, since
+ * Eq. 7 adds alpha M, a fraction of a photon.
+ *
+ * The tree is a kd-tree over the hit points' positions, balanced by median splits and
+ * stored without pointers as an array of indices (node = the middle of an index range),
+ * each node with the box that bounds the discs (as spheres of radius R) of every hit point
+ * below it. Radii only shrink (Eq. 9), so boxes made for larger radii stay valid; refitting
+ * after a pass makes them tight again. The hit points themselves are never moved: their
+ * order, pixel by pixel and sample by sample, is the order in which the image sums them,
+ * so a pixel's value does not depend on the rest of the window.
+ */
+#ifndef PHOTON_HIT_POINTS_H
+#define PHOTON_HIT_POINTS_H
+
+#include <stddef.h>
+
+#include "../geom/ray.h"
+#include "../scene/brdf.h"
+
+struct hit_point {
+    struct vec3 x;                   /* hit location                                     */
+    struct vec3 n;                   /* unit geometric normal, on the viewer's side      */
+    struct vec3 wo;                  /* unit, back along the ray: the paper's w reversed */
+    struct shading_frame frame;      /* for the BRDF (TRANSPORT_RADIANCE)                */
+    const struct material *material; /* borrowed from the scene: the paper's BRDF index  */
+    size_t pixel;                    /* row-major index in the rendered window           */
+    struct vec3 weight;              /* pixel weight: the eye path's throughput / spp    */
+    double radius;                   /* R(x)                                             */
+    double n_photons;                /* N(x), photons accumulated                        */
+    struct vec3 tau;                 /* tau(x, w): flux times BRDF, unnormalised; during
+                                        a pass it also gathers the pass's tau_M          */
+    unsigned long m_photons;         /* M(x): photons found in the current pass          */
+};
+
+struct hit_point_tree {
+    const struct hit_point *points; /* borrowed; n of them, never reordered              */
+    size_t n;
+    size_t *index;                  /* owned: n point indices in tree order              */
+    struct aabb *bounds;            /* owned: bounds[m] for the node whose middle is m   */
+};
+
+/* Builds the tree over points[0 .. n-1] (n >= 0) with their current radii. */
+void hit_point_tree_build(struct hit_point_tree *tree, const struct hit_point *points,
+                          size_t n);
+
+/* Tightens every node's box to the hit points' current radii. */
+void hit_point_tree_refit(struct hit_point_tree *tree);
+
+/* Calls visit(context, i) for every hit point i whose disc holds p: |x_i - p| <= R_i,
+ * in tree order. */
+void hit_point_tree_visit(const struct hit_point_tree *tree, struct vec3 p,
+                          void (*visit)(void *context, size_t i), void *context);
+
+/* Bytes the tree owns per hit point: an index and a box. */
+#define HIT_POINT_TREE_BYTES_PER_POINT (sizeof(size_t) + sizeof(struct aabb))
+
+void hit_point_tree_free(struct hit_point_tree *tree);
+
+#endif
