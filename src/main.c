@@ -15,6 +15,7 @@
 #include "image/plot.h"
 #include "modes/direct.h"
 #include "modes/photons.h"
+#include "modes/ppm2008.h"
 #include "modes/pt.h"
 
 /* What one render command holds; released by finish_run() whatever happened. */
@@ -26,7 +27,8 @@ struct run {
     struct render_settings rs;
     struct render_counters counters;
     struct render_result result;
-    struct photon_stats photon_stats; /* photon modes only */
+    struct photon_stats photon_stats; /* --mode photons only */
+    struct ppm_stats ppm_stats;       /* --mode 2008 only */
     clock_t start;
     double seconds_build;
 };
@@ -94,18 +96,39 @@ static int prepare_run(struct run *run, struct error *err)
     return 0;
 }
 
-static int write_outputs(const struct run *run, struct error *err)
+/* The image as -o's PFM and the PPM beside it, each written whole or not at all. */
+static int write_images(const struct options *o, const struct image *image, struct error *err)
 {
-    const struct options *o = &run->o;
     char ppm[OUTPUT_PATH_MAX];
     strcpy(ppm, o->output);
     strcpy(ppm + strlen(ppm) - 4, ".ppm"); /* the name ends in .pfm (parse_options) */
-    if (pfm_write(o->output, run->result.image, err) < 0 ||
-        ppm_write(ppm, run->result.image, o->exposure, err) < 0)
+    if (pfm_write(o->output, image, err) < 0 || ppm_write(ppm, image, o->exposure, err) < 0)
+        return -1;
+    return 0;
+}
+
+static int write_outputs(const struct run *run, struct error *err)
+{
+    const struct options *o = &run->o;
+    if (write_images(o, run->result.image, err) < 0)
         return -1;
     if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
         return -1;
     return 0;
+}
+
+/* --checkpoint: the image so far, written over -o's files; a failed write is reported and
+ * the render goes on (the final write will say so again if the problem stays). */
+static double write_snapshot(void *context, const struct image *image, long long work,
+                             double seconds)
+{
+    (void)work;
+    (void)seconds;
+    clock_t start = clock();
+    struct error err;
+    if (write_images(context, image, &err) < 0)
+        error_print(&err);
+    return seconds_since(start);
 }
 
 static void print_photon_stats(const struct photon_stats *ps)
@@ -115,6 +138,18 @@ static void print_photon_stats(const struct photon_stats *ps)
     fprintf(stderr, "seconds_photons=%.3f\nseconds_balance=%.3f\nmax_radius=%.6g\n",
             ps->seconds_photons, ps->seconds_balance, ps->max_radius);
     fprintf(stderr, "photon_rays=%llu\n", ps->photon_rays);
+}
+
+static void print_ppm_stats(const struct ppm_stats *ps)
+{
+    fprintf(stderr, "hit_points=%zu\nbytes_per_hit_point=%zu\npasses=%ld\n", ps->hit_points,
+            ps->bytes_per_hit_point, ps->passes);
+    fprintf(stderr, "photons_emitted=%zu\nphoton_rays=%llu\n", ps->photons_emitted,
+            ps->photon_rays);
+    fprintf(stderr, "seconds_ray_pass=%.3f\nseconds_photons=%.3f\n", ps->seconds_ray_pass,
+            ps->seconds_photons);
+    fprintf(stderr, "initial_mean_radius=%.6g\nmean_radius=%.6g\n", ps->initial_mean_radius,
+            ps->mean_radius);
 }
 
 static void print_stats(const struct run *run)
@@ -132,6 +167,8 @@ static void print_stats(const struct run *run)
             c->passes, (unsigned long long)run->o.seed);
     if (run->o.mode == MODE_PHOTONS)
         print_photon_stats(&run->photon_stats);
+    if (run->o.mode == MODE_PPM2008)
+        print_ppm_stats(&run->ppm_stats);
 }
 
 /* Renders with the chosen mode; the image is NULL (and *err filled) on failure. */
@@ -141,6 +178,8 @@ static struct render_result render_mode(struct run *run, struct error *err)
     const struct checkpoint *checkpoint = run->reference != NULL ? &report : NULL;
     int want_variance = run->o.variance != NULL;
     struct photon_settings ps;
+    struct ppm_settings pp;
+    struct checkpoint snapshot = {write_snapshot, &run->o};
     switch (run->o.mode) {
     case MODE_PT:
         return render_pt(run->scene, &run->rs, want_variance, checkpoint, &run->counters);
@@ -151,6 +190,15 @@ static struct render_result render_mode(struct run *run, struct error *err)
         ps.cone_k = run->o.cone;
         return render_photons(run->scene, &run->rs, &ps, want_variance, checkpoint,
                               &run->counters, &run->photon_stats, err);
+    case MODE_PPM2008:
+        pp.photons_per_pass = (size_t)run->o.photons_per_pass;
+        pp.passes = run->o.passes;
+        pp.alpha = run->o.alpha;
+        pp.radius = run->o.radius;
+        pp.snapshot_every = run->o.checkpoint;
+        pp.snapshot = run->o.checkpoint > 0 ? &snapshot : NULL;
+        return render_ppm(run->scene, &run->rs, &pp, checkpoint, &run->counters,
+                          &run->ppm_stats);
     case MODE_DIRECT:
         break;
     }

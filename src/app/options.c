@@ -12,6 +12,7 @@
 
 #include "../image/image.h"
 #include "../modes/photons.h"
+#include "../modes/ppm2008.h"
 #include "../modes/render.h"
 #include "../photon/trace.h"
 
@@ -32,11 +33,12 @@ struct option_spec {
 
 static const struct option_spec specs[] = {
     {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME",
-     "rendering mode: direct, pt or photons (default direct)"},
+     "rendering mode: direct, pt, photons or 2008 (default direct)"},
     {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm",
      "output image; FILE.ppm is written beside it (default: SCENE's name, .pfm)"},
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)"},
-    {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N", "camera samples per pixel (default 16)"},
+    {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N",
+     "camera samples per pixel (default 16; 2008: eye rays per pixel, default 4)"},
     {"--width", OPT_INT, FIELD(width), 1, MAX_IMAGE_SIDE, "N", "image width (default: scene's)"},
     {"--height", OPT_INT, FIELD(height), 1, MAX_IMAGE_SIDE, "N",
      "image height (default: scene's)"},
@@ -60,6 +62,16 @@ static const struct option_spec specs[] = {
      "photon modes: largest gathering radius (default: 1/10 of the scene's diagonal)"},
     {"--cone", OPT_REAL, FIELD(cone), 0, 1e6, "K",
      "photon modes: cone filter constant k >= 1 (Jensen 1996 Eq. 4); 0 = none (default)"},
+    {"--passes", OPT_INT, FIELD(passes), 1, MAX_PASSES, "N",
+     "2008: photon passes (default 64; --time-limit may stop sooner)"},
+    {"--photons-per-pass", OPT_INT, FIELD(photons_per_pass), 1, MAX_PHOTONS, "N",
+     "2008: photons traced in each pass (default 100000)"},
+    {"--alpha", OPT_REAL, FIELD(alpha), 0, 1, "A",
+     "2008: fraction of new photons kept, 0 < A < 1 (Eq. 7; default 0.7)"},
+    {"--radius", OPT_REAL, FIELD(radius), 0, 1e30, "R",
+     "2008: initial radius in scene units (default: 2 pixel footprints at each hit point)"},
+    {"--checkpoint", OPT_INT, FIELD(checkpoint), 1, MAX_PASSES, "K",
+     "2008: write the image (-o) every K passes, each write complete (default: at the end)"},
     {"--exposure", OPT_REAL, FIELD(exposure), 0, 1e30, "E",
      "PPM only: multiply radiance by E before sRGB encoding (default 1)"},
     {"--stats", OPT_FLAG, FIELD(stats), 0, 0, "", "print key=value statistics on stderr"},
@@ -76,6 +88,8 @@ const char *mode_name(enum mode mode)
         return "pt";
     case MODE_PHOTONS:
         return "photons";
+    case MODE_PPM2008:
+        return "2008";
     }
     return "?";
 }
@@ -100,12 +114,15 @@ static void set_defaults(struct options *o)
     memset(o, 0, sizeof *o);
     o->mode = MODE_DIRECT;
     o->seed = 1;
-    o->spp = 16;
+    o->spp = 0;
     o->max_depth = -1;
     o->progress = -1;
     o->exposure = 1.0;
     o->photons = PHOTONS_DEFAULT_N;
     o->gather = PHOTONS_DEFAULT_GATHER;
+    o->passes = PPM_DEFAULT_PASSES;
+    o->photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
+    o->alpha = PPM_DEFAULT_ALPHA;
 }
 
 /* A number from text: whole (integer != 0) or real, within [min, max]. */
@@ -140,13 +157,13 @@ static int read_seed(const char *text, uint64_t *seed, struct error *err)
 
 static int read_mode(const char *text, enum mode *mode, struct error *err)
 {
-    static const enum mode modes[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS};
+    static const enum mode modes[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_PPM2008};
     for (size_t i = 0; text != NULL && i < sizeof modes / sizeof modes[0]; i++)
         if (strcmp(text, mode_name(modes[i])) == 0) {
             *mode = modes[i];
             return 0;
         }
-    return error_set(err, "", 0, "--mode: unknown mode '%s' (available: direct, pt, photons)",
+    return error_set(err, "", 0, "--mode: unknown mode '%s' (available: direct, pt, photons, 2008)",
                      text != NULL ? text : "nothing");
 }
 
@@ -264,5 +281,12 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         return error_set(err, "", 0, "--reference and --report go together");
     if (o->cone > 0 && o->cone < 1)
         return error_set(err, "", 0, "--cone: k must be 0 (no filter) or at least 1");
+    if (!(o->alpha > 0 && o->alpha < 1))
+        return error_set(err, "", 0, "--alpha: expected a number strictly between 0 and 1");
+    if (o->spp == 0)
+        o->spp = o->mode == MODE_PPM2008 ? PPM_DEFAULT_SPP : DEFAULT_SPP;
+    if (o->mode == MODE_PPM2008 && o->variance != NULL)
+        return error_set(err, "", 0, "--variance: not available with --mode 2008, whose "
+                                     "pixels are not means of independent samples");
     return 0;
 }

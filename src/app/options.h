@@ -14,14 +14,14 @@
 #define PHOTON_VERSION "0.1.0"
 #define OUTPUT_PATH_MAX 1024
 
-enum mode { MODE_DIRECT, MODE_PT, MODE_PHOTONS };
+enum mode { MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_PPM2008 };
 
 struct options {
     const char *scene_path;       /* the scene file (borrowed from argv)           */
     char output[OUTPUT_PATH_MAX]; /* the PFM to write; the PPM goes beside it      */
     enum mode mode;
     uint64_t seed;
-    int spp;                      /* samples per pixel                             */
+    int spp;                      /* samples per pixel; 0 = the mode's default      */
     int max_depth;                /* longest path followed; -1 = the mode's default */
     int width, height;            /* 0 = the scene's own size                      */
     int crop[4];                  /* x0 y0 x1 y1; crop[2] == 0 means no crop       */
@@ -36,6 +36,11 @@ struct options {
     int gather;                   /* photon modes: photons per radiance estimate   */
     double max_radius;            /* photon modes: gathering radius; 0 = default   */
     double cone;                  /* photon modes: cone filter k; 0 = none         */
+    int passes;                   /* 2008: photon passes                           */
+    int photons_per_pass;         /* 2008: photons traced in each pass             */
+    double alpha;                 /* 2008: Eq. 7's alpha, in (0, 1)                */
+    double radius;                /* 2008: initial radius; 0 = pixel footprints    */
+    int checkpoint;               /* 2008: write the image every this many passes  */
 };
 
 /* Parses argv into *o. Returns 0 to render, 1 when --help or --version was printed

@@ -18,7 +18,6 @@
 #include "../scene/brdf.h"
 #include "surface.h"
 
-#define ROULETTE_DEPTH 3 /* bounces before roulette, as in pbrt: short paths are cheap */
 
 struct pt_mode {
     const struct scene *scene; /* borrowed */
@@ -78,18 +77,6 @@ static struct vec3 emission_found(const struct scene *scene, const struct surfac
     double pdf_light = scene_light_probability(scene, light) *
                        light_pdf(&scene->lights[light], previous->p, s->p, vec3_neg(s->wo));
     return vec3_scale(le, power_heuristic(previous->pdf, pdf_light));
-}
-
-/* Russian roulette: 0 ends the path; otherwise *beta is divided by the survival odds. */
-static int survives_roulette(struct vec3 *beta, int depth, struct rng *rng)
-{
-    if (depth < ROULETTE_DEPTH)
-        return 1;
-    double q = fmin(1.0, vec3_max_component(*beta));
-    if (!(rng_uniform(rng) < q))
-        return 0; /* also ends paths whose throughput is 0 or NaN */
-    *beta = vec3_scale(*beta, 1.0 / q); /* q > 0 here: a uniform number was below it */
-    return 1;
 }
 
 static struct vec3 trace_path(const struct pt_mode *pt, struct ray ray, struct rng *rng,

@@ -23,6 +23,7 @@
 #include "../scene/scene.h"
 
 #define MAX_SPP (1 << 20)    /* documented limit on samples per pixel */
+#define DEFAULT_SPP 16       /* --spp when not given, for the camera-driven modes */
 #define MAX_DEPTH_LIMIT 1000 /* documented limit on --max-depth */
 
 struct render_settings {

@@ -12,6 +12,8 @@
 #include "../scene/brdf.h"
 #include "../scene/scene.h"
 
+#define ROULETTE_DEPTH 3 /* bounces before roulette, as in pbrt: short paths are cheap */
+
 struct surface {
     struct vec3 p;                    /* hit position                                  */
     struct vec3 ng;                   /* unit geometric normal on the side of wo       */
@@ -67,6 +69,20 @@ static inline int specular_bounce(const struct surface *s, const struct shading_
         return 0;
     *beta = vec3_mul(*beta, bs.weight);
     *ray = surface_ray(s, bs.wi, bs.transmitted);
+    return 1;
+}
+
+/* Russian roulette on a camera path after ROULETTE_DEPTH bounces, with survival odds
+ * q = min(1, largest channel of the throughput *beta): 0 ends the path; otherwise *beta
+ * is divided by q, so the estimate stays unbiased. */
+static inline int survives_roulette(struct vec3 *beta, int depth, struct rng *rng)
+{
+    if (depth < ROULETTE_DEPTH)
+        return 1;
+    double q = fmin(1.0, vec3_max_component(*beta));
+    if (!(rng_uniform(rng) < q))
+        return 0; /* also ends paths whose throughput is 0 or NaN */
+    *beta = vec3_scale(*beta, 1.0 / q); /* q > 0 here: a uniform number was below it */
     return 1;
 }
 

@@ -1,0 +1,345 @@
+/*
+ * modes/ppm2008.c -- `--mode 2008`: progressive photon mapping (Hachisuka, Ogaki and
+ * Jensen 2008), read top to bottom as the paper's Sec. 4:
+ *
+ *   4.1 the ray tracing pass stores a hit point wherever an eye path, followed through
+ *       every mirror and glass bounce, meets a surface with a non-specular part;
+ *   4.2 each photon tracing pass shoots photons with the shared tracer; every photon that
+ *       lands on a non-specular surface adds f_r Phi' to each hit point whose disc holds it
+ *       and whose surface faces the photon's; no photon is kept after its pass;
+ *   4.3 after each pass every hit point shrinks its radius (Eq. 9) and corrects its flux
+ *       (Eq. 12), keeping alpha of the new photons (Eq. 7);
+ *   4.4 the image at any time: each hit point's radiance (Eq. 13) times its pixel weight,
+ *       plus the emission the eye paths saw directly.
+ *
+ * The initial radius R0 is the paper's "footprint of the pixel": PPM_INITIAL_FOOTPRINTS
+ * times the width a pixel covers at the hit point's distance along its eye path, d 2
+ * tan(fov / 2) / height. It scales with the scene (millimetres or kilometres alike) and is
+ * the hit point's own, so a crop starts with the radii the whole image has. Mirrors and
+ * lenses change a pixel's real footprint; this ignores that, which only moves the start.
+ *
+ * Determinism: photon i of pass p draws from rng_stream(seed, STREAM_PHOTON, p, i) and eye
+ * sample s of pixel (x, y) from its camera stream (render.h); each hit point receives its
+ * photons in photon order, and the image sums hit points in the order they were made, so a
+ * pixel depends on nothing but its own hit points.
+ */
+#include "ppm2008.h"
+
+#include <float.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "../base/alloc.h"
+#include "../photon/hit_points.h"
+#include "../photon/trace.h"
+#include "surface.h"
+
+
+struct ppm {
+    const struct scene *scene;          /* borrowed                                       */
+    const struct render_settings *rs;   /* borrowed                                       */
+    const struct ppm_settings *ps;      /* borrowed                                       */
+    struct render_counters *counters;   /* borrowed                                       */
+    int width, height;                  /* of the window                                  */
+    struct vec3 *seen;                  /* owned: per window pixel, the mean emission and
+                                           background radiance seen along its eye paths   */
+    struct hit_point *points;           /* owned: n_points of cap_points, in the order made */
+    size_t n_points, cap_points;
+    struct hit_point_tree tree;         /* over points                                    */
+    double footprint_per_distance;      /* a pixel's width at distance 1: 2 tan(fov/2) / H */
+    const struct photon_event *photon;  /* the photon being added (Sec. 4.2)              */
+    double unnormalise;                 /* photons per pass: turns the tracer's Phi / N
+                                           back into the paper's unnormalised Phi'        */
+    size_t photons_emitted;             /* N_emitted of Eq. 13, so far                    */
+};
+
+static double cpu_seconds(clock_t start)
+{
+    return (double)(clock() - start) / CLOCKS_PER_SEC;
+}
+
+/* ---- 4.1 The ray tracing pass ------------------------------------------------------- */
+
+/* Stores a hit point at s, reached by an eye path of throughput beta and length distance. */
+static void store_hit_point(struct ppm *ppm, const struct surface *s,
+                            const struct shading_frame *frame, size_t pixel, struct vec3 beta,
+                            double distance)
+{
+    if (ppm->n_points == ppm->cap_points) {
+        ppm->cap_points = ppm->cap_points > 0 ? 2 * ppm->cap_points : 4096;
+        ppm->points = xrealloc(ppm->points, ppm->cap_points, sizeof *ppm->points,
+                               "hit points");
+    }
+    struct hit_point *hp = &ppm->points[ppm->n_points++];
+    hp->x = s->p;
+    hp->n = s->ng;
+    hp->wo = s->wo;
+    hp->frame = *frame;
+    hp->material = s->material;
+    hp->pixel = pixel;
+    hp->weight = vec3_scale(beta, 1.0 / ppm->rs->spp); /* the box filter's share */
+    hp->radius = ppm->ps->radius > 0
+                     ? ppm->ps->radius
+                     : PPM_INITIAL_FOOTPRINTS * distance * ppm->footprint_per_distance;
+    hp->n_photons = 0.0;
+    hp->tau = vec3_zero();
+    hp->m_photons = 0;
+}
+
+/* Follows one eye ray through mirrors and glass (Russian roulette on long chains), storing
+ * a hit point at every surface with a non-specular part; what emitters and the background
+ * show along the way goes to the pixel directly. Returns that radiance. */
+static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct rng *rng,
+                                  size_t pixel)
+{
+    struct vec3 seen = vec3_zero(), beta = vec3(1.0, 1.0, 1.0);
+    double distance = 0.0;
+    for (int depth = 0;; depth++) {
+        struct hit hit;
+        ppm->counters->rays++;
+        if (!scene_intersect(ppm->scene, ray, INFINITY, &hit))
+            return vec3_add(seen, vec3_mul(beta, ppm->scene->background));
+        distance += hit.t;
+        struct surface s = surface_at(ppm->scene, &hit, vec3_neg(ray.dir));
+        struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
+                                                               TRANSPORT_RADIANCE);
+        seen = vec3_add(seen, vec3_mul(beta, surface_emission(&s)));
+        if (brdf_has_diffuse(s.material))
+            store_hit_point(ppm, &s, &frame, pixel, beta, distance);
+        if (!brdf_has_delta(s.material) || depth >= ppm->rs->max_depth ||
+            !specular_bounce(&s, &frame, rng, &beta, &ray) ||
+            !survives_roulette(&beta, depth + 1, rng))
+            return seen;
+    }
+}
+
+/* rs->spp jittered eye rays through every pixel of the window, then the hit points' tree. */
+static void ray_tracing_pass(struct ppm *ppm)
+{
+    const struct render_settings *rs = ppm->rs;
+    for (int y = rs->y0; y < rs->y1; y++)
+        for (int x = rs->x0; x < rs->x1; x++) {
+            size_t pixel = (size_t)(y - rs->y0) * (size_t)ppm->width + (size_t)(x - rs->x0);
+            struct vec3 sum = vec3_zero();
+            for (int s = 0; s < rs->spp; s++) {
+                struct rng rng;
+                struct ray ray = camera_sample(ppm->scene, rs->seed, x, y, s, &rng);
+                sum = vec3_add(sum, trace_eye_path(ppm, ray, &rng, pixel));
+            }
+            ppm->seen[pixel] = vec3_scale(sum, 1.0 / rs->spp);
+        }
+    hit_point_tree_build(&ppm->tree, ppm->points, ppm->n_points);
+}
+
+/* ---- 4.2 Photon tracing passes ------------------------------------------------------ */
+
+/* A photon within hit point i's disc: tau_M += f_r(x, w, w_p) Phi'_p and M += 1 (Eq. 11),
+ * unless the two surfaces face apart (a photon on the far side of a thin wall, or on the
+ * back of the hit point's own surface). No cosine: it is in the photon's flux already. */
+static void add_flux(void *context, size_t i)
+{
+    struct ppm *ppm = context;
+    struct hit_point *hp = &ppm->points[i];
+    const struct photon_event *photon = ppm->photon;
+    if (vec3_dot(hp->n, photon->normal) <= 0)
+        return;
+    struct vec3 f = brdf_eval(hp->material, &hp->frame, hp->wo, photon->wi);
+    hp->tau = vec3_add(hp->tau, vec3_mul(f, vec3_scale(photon->power, ppm->unnormalise)));
+    hp->m_photons++;
+}
+
+/* The tracer's sink: each stored photon goes to the hit points around it, then is gone. */
+static int add_photon(void *context, const struct photon_event *photon)
+{
+    struct ppm *ppm = context;
+    ppm->photon = photon;
+    hit_point_tree_visit(&ppm->tree, photon->position, add_flux, ppm);
+    return 0;
+}
+
+/* Pass p: photons_per_pass photons, stored at every non-specular hit (direct, caustic and
+ * indirect alike: every path class reaches the hit points the same way). */
+static void photon_tracing_pass(struct ppm *ppm, long pass, struct ppm_stats *stats)
+{
+    struct trace_settings ts;
+    memset(&ts, 0, sizeof ts);
+    ts.seed = ppm->rs->seed;
+    ts.pass = (uint64_t)pass;
+    ts.n_emit = ppm->ps->photons_per_pass;
+    ts.max_stored = MAX_PHOTONS;
+    ts.store = PHOTON_MAP_GLOBAL;
+    ts.max_depth = ppm->rs->max_depth;
+    ts.targets = NULL;
+    struct photon_sink sink = {add_photon, ppm};
+    trace_photons_into(ppm->scene, &ts, &sink, &stats->photon_rays); /* the sink never stops it */
+    ppm->photons_emitted += ts.n_emit;
+}
+
+/* ---- 4.3 The progressive radiance estimate ------------------------------------------ */
+
+double ppm_accumulated_photons(double n, double m, double alpha)
+{
+    return n + alpha * m; /* Eq. 7: N^ = N + alpha M */
+}
+
+double ppm_reduced_radius(double r, double n, double m, double alpha)
+{
+    if (!(n + m > 0))
+        return r; /* no photon yet: nothing to trade the radius for */
+    return r * sqrt((n + alpha * m) / (n + m)); /* Eq. 9: R^ = R sqrt((N + aM) / (N + M)) */
+}
+
+struct vec3 ppm_corrected_flux(struct vec3 tau_n_plus_m, double n, double m, double alpha)
+{
+    if (!(n + m > 0))
+        return tau_n_plus_m;
+    /* Eq. 12: tau^ = (tau_N + tau_M) (N + aM) / (N + M), the flux of the smaller disc */
+    return vec3_scale(tau_n_plus_m, (n + alpha * m) / (n + m));
+}
+
+/* After a pass, per hit point: Eq. 12, Eq. 9 and Eq. 7, in that order, since all three
+ * use the N and M of the pass that just ended. */
+static void progressive_update(struct ppm *ppm)
+{
+    double alpha = ppm->ps->alpha;
+    for (size_t i = 0; i < ppm->n_points; i++) {
+        struct hit_point *hp = &ppm->points[i];
+        double m = (double)hp->m_photons;
+        hp->tau = ppm_corrected_flux(hp->tau, hp->n_photons, m, alpha);
+        hp->radius = ppm_reduced_radius(hp->radius, hp->n_photons, m, alpha);
+        hp->n_photons = ppm_accumulated_photons(hp->n_photons, m, alpha);
+        hp->m_photons = 0;
+    }
+    hit_point_tree_refit(&ppm->tree); /* the discs shrank: tighten the boxes */
+}
+
+/* ---- 4.4 Radiance evaluation --------------------------------------------------------- */
+
+struct vec3 ppm_radiance(struct vec3 tau, double r, double n_emitted)
+{
+    /* Below DBL_MIN, r^2 would lose its digits; no photon can be that close anyway. */
+    if (!(r * r >= DBL_MIN) || !(n_emitted > 0))
+        return vec3_zero();
+    return vec3_scale(tau, 1.0 / (PI * r * r * n_emitted)); /* Eq. 13 */
+}
+
+/* The image so far: what the eye paths saw directly plus every hit point's Eq. 13 radiance
+ * times its pixel weight, summed in the order the hit points were made. */
+static void evaluate_image(const struct ppm *ppm, struct image *image)
+{
+    size_t n_pixels = (size_t)ppm->width * (size_t)ppm->height;
+    memcpy(image->pixels, ppm->seen, n_pixels * sizeof *image->pixels);
+    for (size_t i = 0; i < ppm->n_points; i++) {
+        const struct hit_point *hp = &ppm->points[i];
+        struct vec3 l = ppm_radiance(hp->tau, hp->radius, (double)ppm->photons_emitted);
+        image->pixels[hp->pixel] = vec3_add(image->pixels[hp->pixel], vec3_mul(hp->weight, l));
+    }
+    for (size_t i = 0; i < n_pixels; i++)
+        if (!vec3_is_finite(image->pixels[i])) { /* a bug upstream: report, never write */
+            ppm->counters->nonfinite_samples++;
+            image->pixels[i] = vec3_zero();
+        }
+}
+
+/* ---- the passes, their checkpoints and progress -------------------------------------- */
+
+static double mean_radius(const struct ppm *ppm)
+{
+    double sum = 0.0;
+    for (size_t i = 0; i < ppm->n_points; i++)
+        sum += ppm->points[i].radius;
+    return ppm->n_points > 0 ? sum / (double)ppm->n_points : 0.0;
+}
+
+static void show_progress(const struct ppm *ppm, long pass, double seconds, int done)
+{
+    long passes = ppm->ps->passes;
+    double left = seconds * (double)(passes - pass) / (double)pass;
+    fprintf(stderr, "\rphoton: pass %ld/%ld, %.3g photons, mean radius %.3g, %.1f s, "
+            "about %.0f s left   ", pass, passes, (double)ppm->photons_emitted,
+            mean_radius(ppm), seconds, left);
+    if (done)
+        fputc('\n', stderr);
+    fflush(stderr);
+}
+
+static int is_power_of_two(long n)
+{
+    return n > 0 && (n & (n - 1)) == 0;
+}
+
+/* Calls checkpoint with the image so far; returns the CPU seconds it took. */
+static double call_checkpoint(const struct ppm *ppm, const struct checkpoint *checkpoint,
+                              struct image *image, double seconds)
+{
+    evaluate_image(ppm, image);
+    return checkpoint->at(checkpoint->context, image, (long long)ppm->photons_emitted, seconds);
+}
+
+/* Photon passes until ps->passes or the time limit; fills image with the final estimate.
+ * Checkpoint seconds count from the start of the ray tracing pass (offset seconds). */
+static void photon_passes(struct ppm *ppm, const struct checkpoint *checkpoint, double offset,
+                          struct image *image, struct ppm_stats *stats)
+{
+    const struct ppm_settings *ps = ppm->ps;
+    double limit = ppm->rs->time_limit;
+    clock_t start = clock();
+    double excluded = 0.0, seconds = 0.0, last_shown = 0.0;
+    long pass = 0;
+    while (pass < ps->passes && !(pass > 0 && limit > 0 && offset + seconds >= limit)) {
+        photon_tracing_pass(ppm, pass, stats);
+        progressive_update(ppm);
+        pass++;
+        seconds = cpu_seconds(start) - excluded;
+        int last = pass == ps->passes || (limit > 0 && offset + seconds >= limit);
+        if (checkpoint != NULL && (is_power_of_two(pass) || last))
+            excluded += call_checkpoint(ppm, checkpoint, image, offset + seconds);
+        if (ps->snapshot != NULL && ps->snapshot_every > 0 && pass % ps->snapshot_every == 0)
+            excluded += call_checkpoint(ppm, ps->snapshot, image, offset + seconds);
+        if (ppm->rs->progress && (last || seconds - last_shown >= 0.5)) {
+            show_progress(ppm, pass, seconds, last);
+            last_shown = seconds;
+        }
+    }
+    stats->passes = pass;
+    stats->seconds_photons = seconds;
+    evaluate_image(ppm, image);
+}
+
+struct render_result render_ppm(const struct scene *scene, const struct render_settings *rs,
+                                const struct ppm_settings *ps,
+                                const struct checkpoint *checkpoint,
+                                struct render_counters *counters, struct ppm_stats *stats)
+{
+    struct ppm ppm;
+    memset(&ppm, 0, sizeof ppm);
+    memset(stats, 0, sizeof *stats);
+    ppm.scene = scene;
+    ppm.rs = rs;
+    ppm.ps = ps;
+    ppm.counters = counters;
+    ppm.width = rs->x1 - rs->x0;
+    ppm.height = rs->y1 - rs->y0;
+    ppm.seen = xcalloc((size_t)ppm.width * (size_t)ppm.height, sizeof *ppm.seen, "ppm pixels");
+    ppm.footprint_per_distance = 2.0 * scene->camera.tan_half / scene->camera.height;
+    ppm.unnormalise = (double)ps->photons_per_pass;
+    clock_t start = clock();
+    ray_tracing_pass(&ppm);
+    stats->seconds_ray_pass = cpu_seconds(start);
+    stats->hit_points = ppm.n_points;
+    stats->bytes_per_hit_point = sizeof(struct hit_point) + HIT_POINT_TREE_BYTES_PER_POINT;
+    stats->initial_mean_radius = mean_radius(&ppm);
+    struct render_result result = {NULL, NULL, 0.0};
+    result.image = image_create(ppm.width, ppm.height);
+    photon_passes(&ppm, checkpoint, stats->seconds_ray_pass, result.image, stats);
+    result.seconds = stats->seconds_ray_pass + stats->seconds_photons;
+    stats->photons_emitted = ppm.photons_emitted;
+    stats->mean_radius = mean_radius(&ppm);
+    counters->passes = rs->spp;
+    hit_point_tree_free(&ppm.tree);
+    free(ppm.points);
+    free(ppm.seen);
+    return result;
+}

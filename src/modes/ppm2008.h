@@ -1,0 +1,67 @@
+/*
+ * modes/ppm2008.h -- `--mode 2008`: progressive photon mapping (Hachisuka, Ogaki and
+ * Jensen 2008).
+ */
+#ifndef PHOTON_PPM2008_H
+#define PHOTON_PPM2008_H
+
+#include <stddef.h>
+
+#include "../base/error.h"
+#include "render.h"
+
+#define PPM_DEFAULT_PHOTONS_PER_PASS 100000 /* the paper's (Sec. 5)                      */
+#define PPM_DEFAULT_PASSES 64               /* about 30 s on the Cornell box              */
+#define PPM_DEFAULT_ALPHA 0.7               /* the paper's (Sec. 5)                      */
+#define PPM_DEFAULT_SPP 4                   /* eye rays per pixel: hit points cost memory */
+#define PPM_INITIAL_FOOTPRINTS 2.0          /* default R0: this many pixel footprints    */
+#define MAX_PASSES 100000000                /* documented limit on --passes              */
+
+struct ppm_settings {
+    size_t photons_per_pass;          /* photons traced in each pass, 1..MAX_PHOTONS     */
+    long passes;                      /* the most photon passes, 1..MAX_PASSES           */
+    double alpha;                     /* Eq. 7: fraction of new photons kept, (0, 1)     */
+    double radius;                    /* > 0: R0 of every hit point, in scene units;
+                                         <= 0: PPM_INITIAL_FOOTPRINTS pixel footprints
+                                         at the hit point (see ppm2008.c)               */
+    long snapshot_every;              /* > 0: call snapshot after every this many passes */
+    const struct checkpoint *snapshot; /* borrowed or NULL: gets the image so far         */
+};
+
+/* What the render did, for --stats. */
+struct ppm_stats {
+    size_t hit_points;               /* stored by the ray tracing pass                  */
+    size_t bytes_per_hit_point;      /* the hit point and its share of the tree         */
+    long passes;                     /* photon passes done                               */
+    size_t photons_emitted;          /* N_emitted of Eq. 13                             */
+    double seconds_ray_pass;         /* CPU seconds of the ray tracing pass and tree     */
+    double seconds_photons;          /* CPU seconds of the photon passes                 */
+    double mean_radius;              /* mean R(x) over the hit points at the end         */
+    double initial_mean_radius;      /* mean R(x) before the first pass                  */
+    unsigned long long photon_rays;  /* rays cast tracing photons                        */
+};
+
+/* Eq. 7-8: N <- N + alpha M, the photons a hit point keeps after a pass. */
+double ppm_accumulated_photons(double n, double m, double alpha);
+
+/* Eq. 9: R <- R sqrt((N + alpha M) / (N + M)); R itself when M = 0. */
+double ppm_reduced_radius(double r, double n, double m, double alpha);
+
+/* Eq. 12: tau <- (tau_N + tau_M) (N + alpha M) / (N + M); tau_n_plus_m itself when M = 0. */
+struct vec3 ppm_corrected_flux(struct vec3 tau_n_plus_m, double n, double m, double alpha);
+
+/* Eq. 13: L = tau / (pi R^2 N_emitted); zero when R or N_emitted is zero (nothing can
+ * have been found yet). */
+struct vec3 ppm_radiance(struct vec3 tau, double r, double n_emitted);
+
+/* Renders the window of rs: the ray tracing pass with rs->spp eye rays per pixel, then
+ * photon passes until ps->passes are done or rs->time_limit has passed (no pass starts
+ * after it). checkpoint (may be NULL) gets the image after passes 1, 2, 4, ... and the
+ * last, with work = photons emitted. result.variance is always NULL: the pixels of a
+ * progressive estimate are not means of independent samples. */
+struct render_result render_ppm(const struct scene *scene, const struct render_settings *rs,
+                                const struct ppm_settings *ps,
+                                const struct checkpoint *checkpoint,
+                                struct render_counters *counters, struct ppm_stats *stats);
+
+#endif
