@@ -20,6 +20,7 @@ int main(void)
     test_import(&t);
     test_photon(&t);
     test_trace(&t);
+    test_ppm(&t);
     test_render(&t);
     test_pt(&t);
     test_report(&t);

@@ -44,6 +44,12 @@ static void test_options(struct check *t)
     CHECK(t, photon("--crop 0 0 300 10 scenes/cornell.scene") == 2 && log_contains("--crop"));
     CHECK(t, photon("--crop 5 5 5 10 scenes/cornell.scene") == 2);
     CHECK(t, photon("--crop 1 2 3 scenes/cornell.scene") == 2);
+    CHECK(t, photon("--mode 2008 --alpha 1 scenes/cornell.scene") == 2 &&
+             log_contains("--alpha"));
+    CHECK(t, photon("--mode 2008 --alpha 0 scenes/cornell.scene") == 2);
+    CHECK(t, photon("--mode 2008 --passes 0 scenes/cornell.scene") == 2);
+    CHECK(t, photon("--mode 2008 --variance v.pfm scenes/cornell.scene") == 2 &&
+             log_contains("--variance"));
     CHECK(t, photon("") == 2 && log_contains("no scene"));
     CHECK(t, photon("a.scene b.scene") == 2 && log_contains("more than one"));
 }
@@ -130,10 +136,29 @@ static void test_nff_file_is_a_scene(struct check *t)
     remove(OUT "_bad.nff");
 }
 
+/* truth: the 2008 mode's command line: it renders by name, with --checkpoint, and --stats
+ *   prints its keys with the counts asked for (test_ppm.c checks the snapshots' timing).
+ * catches: the mode not reachable by name, stats missing or miscounted. */
+static void test_ppm_command(struct check *t)
+{
+    remove(OUT "_ppm.pfm");
+    CHECK(t, photon("--mode 2008 -o " OUT "_ppm.pfm --width 8 --height 8 --passes 2 "
+                    "--photons-per-pass 1000 --checkpoint 1 --stats scenes/cornell.scene")
+                 == 0);
+    CHECK(t, file_exists(OUT "_ppm.pfm") && file_exists(OUT "_ppm.ppm"));
+    static const char *keys[] = {"mode=2008", "hit_points=", "bytes_per_hit_point=",
+                                 "passes=2", "photons_emitted=2000", "mean_radius=", "spp=4"};
+    for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
+        CHECK(t, log_contains(keys[i]));
+    remove(OUT "_ppm.pfm");
+    remove(OUT "_ppm.ppm");
+}
+
 void test_cli(struct check *t)
 {
     RUN_TEST(t, test_options);
     RUN_TEST(t, test_bad_scene_leaves_no_output);
     RUN_TEST(t, test_render_writes_deterministic_files);
     RUN_TEST(t, test_nff_file_is_a_scene);
+    RUN_TEST(t, test_ppm_command);
 }
