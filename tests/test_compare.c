@@ -344,6 +344,11 @@ static void test_compare_command_line(struct check *t)
                  f.var, bad_alpha[i]);
         CHECK(t, photon_compare(args, f.log) == 2 && file_contains(f.log, "--alpha"));
     }
+    snprintf(args, sizeof args, "%s %s --block 4", f.image, f.image);
+    CHECK(t, photon_compare(args, f.log) == 0 &&
+             file_contains(f.log, " worst_block=0 worst_block_at=0,0\n"));
+    snprintf(args, sizeof args, "%s %s --block 0", f.image, f.image);
+    CHECK(t, photon_compare(args, f.log) == 2 && file_contains(f.log, "--block"));
     snprintf(args, sizeof args, "%s %s --alpha 0.05", f.image, f.image);
     CHECK(t, photon_compare(args, f.log) == 2 && file_contains(f.log, "needs --ref-variance"));
     snprintf(args, sizeof args, "%s %s --ref-variance", f.image, f.image);
@@ -357,6 +362,32 @@ static void test_compare_command_line(struct check *t)
     remove(f.log);
 }
 
+/* truth: block means worked by hand. b is all ones (luminance 1); in a, the full block at
+ *   (16, 0) is 5% brighter and the partial 8 x 4 block at the bottom-right corner (32, 16)
+ *   10% darker: the worst is that corner, 0.1. A black reference block under a lit one
+ *   is infinitely wrong; equal images have no error.
+ * catches: partial edge blocks skipped, rows and columns swapped, sums not divided by the
+ *   partial block's own pixel count. */
+static void test_worst_block(struct check *t)
+{
+    struct image *a = image_create(40, 20), *b = image_create(40, 20);
+    for (int y = 0; y < 20; y++)
+        for (int x = 0; x < 40; x++) {
+            double v = x >= 16 && x < 32 && y < 16 ? 1.05 : x >= 32 && y >= 16 ? 0.9 : 1.0;
+            image_set(a, x, y, vec3(v, v, v));
+            image_set(b, x, y, vec3(1, 1, 1));
+        }
+    struct block_error w = image_worst_block(a, b, 16);
+    CHECK(t, w.x0 == 32 && w.y0 == 16 && fabs(w.relative_error - 0.1) < 1e-12);
+    CHECK(t, image_worst_block(b, b, 16).relative_error == 0);
+    for (int y = 16; y < 20; y++)
+        for (int x = 32; x < 40; x++)
+            image_set(b, x, y, vec3(0, 0, 0));
+    CHECK(t, isinf(image_worst_block(a, b, 16).relative_error));
+    image_free(a);
+    image_free(b);
+}
+
 void test_compare(struct check *t)
 {
     RUN_TEST(t, test_critical_values);
@@ -367,4 +398,5 @@ void test_compare(struct check *t)
     RUN_TEST(t, test_zero_variance);
     RUN_TEST(t, test_variance_read);
     RUN_TEST(t, test_compare_command_line);
+    RUN_TEST(t, test_worst_block);
 }

@@ -44,7 +44,8 @@
 #define RELMSE_EPSILON 1e-2 /* compare.h's definition of relmse */
 #define PSNR_MIN_PEAK 1e-30 /* compare.h: keeps peak^2 > 0 for an all-black reference */
 #define COMPARE_USAGE "usage: photon compare A.pfm B.pfm [--diff OUT.ppm] " \
-                      "[--ref-variance VB.pfm] [--test-variance VA.pfm] [--alpha ALPHA]"
+                      "[--ref-variance VB.pfm] [--test-variance VA.pfm] [--alpha ALPHA] " \
+                      "[--block N]"
 #define DEFAULT_ALPHA 0.01 /* family-wise level of the test when --alpha is not given */
 #define SQRT2 1.41421356237309504880
 /* Upper end of the critical value's bracket: erfc(40 / sqrt(2)) ~ 4e-350 is below the
@@ -196,7 +197,39 @@ struct compare_args {
     const char *test_variance; /* --test-variance VA.pfm (a's variance), or NULL */
     const char *alpha_text;    /* --alpha as given, or NULL                     */
     double alpha;              /* the test's level, from alpha_text or DEFAULT_ALPHA */
+    const char *block_text;    /* --block as given, or NULL                     */
+    int block;                 /* > 0: report the worst block of this size      */
 };
+
+/* Mean luminance of the pixels of image in [x0, x1) x [y0, y1). */
+static double block_mean(const struct image *image, int x0, int y0, int x1, int y1)
+{
+    double sum = 0.0;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++)
+            sum += vec3_luminance(image_get(image, x, y));
+    return sum / ((double)(x1 - x0) * (double)(y1 - y0));
+}
+
+struct block_error image_worst_block(const struct image *a, const struct image *b, int size)
+{
+    struct block_error worst = {0, 0, 0.0};
+    for (int y0 = 0; y0 < a->height; y0 += size)
+        for (int x0 = 0; x0 < a->width; x0 += size) {
+            int x1 = x0 + size < a->width ? x0 + size : a->width;
+            int y1 = y0 + size < a->height ? y0 + size : a->height;
+            double mean_a = block_mean(a, x0, y0, x1, y1), mean_b = block_mean(b, x0, y0, x1, y1);
+            double relative = mean_a == mean_b ? 0.0
+                              : mean_b != 0.0  ? fabs(mean_a - mean_b) / fabs(mean_b)
+                                               : INFINITY;
+            if (relative > worst.relative_error) {
+                worst.x0 = x0;
+                worst.y0 = y0;
+                worst.relative_error = relative;
+            }
+        }
+    return worst;
+}
 
 /* The field an option's value goes to, or NULL when arg is not an option with a value. */
 static const char **option_value(struct compare_args *args, const char *arg)
@@ -209,6 +242,8 @@ static const char **option_value(struct compare_args *args, const char *arg)
         return &args->test_variance;
     if (strcmp(arg, "--alpha") == 0)
         return &args->alpha_text;
+    if (strcmp(arg, "--block") == 0)
+        return &args->block_text;
     return NULL;
 }
 
@@ -229,18 +264,37 @@ static int parse_alpha(struct compare_args *args, struct error *err)
     return 0;
 }
 
+/* --block: a whole number of pixels, 1 to 65536. */
+static int parse_block(struct compare_args *args, struct error *err)
+{
+    args->block = 0;
+    if (args->block_text == NULL)
+        return 0;
+    char *end;
+    long size = strtol(args->block_text, &end, 10);
+    if (end == args->block_text || *end != '\0' || size < 1 || size > 65536)
+        return error_set(err, "", 0, "compare: --block '%s' must be a whole number of pixels "
+                                     "from 1 to 65536; " COMPARE_USAGE, args->block_text);
+    args->block = (int)size;
+    return 0;
+}
+
 static int parse_compare_args(int argc, char **argv, struct compare_args *args,
                               struct error *err)
 {
     const char *files[2] = {NULL, NULL};
     int n_files = 0;
     args->diff = args->ref_variance = args->test_variance = args->alpha_text = NULL;
+    args->block_text = NULL;
     for (int i = 1; i < argc; i++) {
         const char **value = option_value(args, argv[i]);
         if (value != NULL) {
             if (i + 1 == argc)
                 return error_set(err, "", 0, "compare: %s needs a %s; " COMPARE_USAGE,
-                                 argv[i], value == &args->alpha_text ? "number" : "file name");
+                                 argv[i],
+                                 value == &args->alpha_text || value == &args->block_text
+                                     ? "number"
+                                     : "file name");
             *value = argv[++i];
         } else if (argv[i][0] == '-') {
             return error_set(err, "", 0, "compare: unknown option '%s'; " COMPARE_USAGE,
@@ -255,7 +309,7 @@ static int parse_compare_args(int argc, char **argv, struct compare_args *args,
         return error_set(err, "", 0, "compare: expected two images; " COMPARE_USAGE);
     args->test = files[0];
     args->reference = files[1];
-    return parse_alpha(args, err);
+    return parse_alpha(args, err) < 0 ? -1 : parse_block(args, err);
 }
 
 /* --diff: |a - b| per channel divided by maxerr, so the largest error shows as full white
@@ -322,11 +376,16 @@ static int read_inputs(const struct compare_args *args, struct compare_inputs *i
 
 /* One line on stdout: the metrics and, given a variance image, the test's fields. */
 static void print_results(const struct image_error *e, const struct compare_inputs *in,
-                          double alpha)
+                          const struct compare_args *args)
 {
     print_metrics(e);
+    if (args->block > 0) {
+        struct block_error w = image_worst_block(in->a, in->b, args->block);
+        printf(" worst_block=%.6g worst_block_at=%d,%d", w.relative_error, w.x0, w.y0);
+    }
     if (in->var_a != NULL || in->var_b != NULL) {
-        struct consistency s = image_consistency(in->a, in->b, in->var_a, in->var_b, alpha);
+        struct consistency s = image_consistency(in->a, in->b, in->var_a, in->var_b,
+                                                 args->alpha);
         printf(" pass_fraction=%.6f consistent=%s alpha=%g", s.pass_fraction,
                s.consistent ? "yes" : "no", s.alpha);
     }
@@ -344,7 +403,7 @@ static int compare_files(const struct compare_args *args, struct error *err)
         if (args->diff != NULL)
             status = write_diff(args->diff, in.a, in.b, e.maxerr, err);
         if (status == 0)
-            print_results(&e, &in, args->alpha);
+            print_results(&e, &in, args);
     }
     image_free(in.var_b);
     image_free(in.var_a);

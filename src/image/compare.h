@@ -19,6 +19,18 @@ struct image_error {
 /* Metrics of test image a against reference b (same size, checked by the caller). */
 struct image_error image_compare(const struct image *a, const struct image *b);
 
+/* The block of image_worst_block(): where it is and how far off its mean is. */
+struct block_error {
+    int x0, y0;            /* its top-left pixel                                          */
+    double relative_error; /* |mean_a - mean_b| / mean_b of the block's luminance           */
+};
+
+/* Splits the images (same size) into size x size blocks from the top left (those at the
+ * right and bottom edges may be smaller) and returns the block whose mean luminance in a
+ * differs most, relatively, from its mean in b. Blocks whose mean in b is zero count
+ * when a's is not (relative error +Inf). size >= 1. */
+struct block_error image_worst_block(const struct image *a, const struct image *b, int size);
+
 /* The per-pixel test of image_consistency(); definitions in compare.c. */
 struct consistency {
     double alpha;         /* family-wise level asked for, 0 < alpha < 1                    */
@@ -50,7 +62,7 @@ struct consistency image_consistency(const struct image *a, const struct image *
 struct image *variance_read(const char *name, const struct image *like, struct error *err);
 
 /* `photon compare A.pfm B.pfm [--diff OUT.ppm] [--ref-variance VB.pfm]
- * [--test-variance VA.pfm] [--alpha ALPHA]`: argv[0] is "compare". Returns the exit
+ * [--test-variance VA.pfm] [--alpha ALPHA] [--block N]`: argv[0] is "compare". Returns the exit
  * status: 0, or 2 for bad input (messages on stderr). */
 int compare_command(int argc, char **argv);
 
