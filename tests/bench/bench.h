@@ -17,5 +17,6 @@ void bench_rays(void);   /* bench_rays.c: BENCH.md Sec. 1 on generated and shipp
 void bench_knn(void);    /* bench_knn.c: BENCH.md Sec. 2, Cornell-wall k-nearest          */
 void bench_shapes(void); /* bench_shapes.c: procedural objects against their expansions   */
 void bench_photons(void); /* bench_photons.c: photons traced and stored per second        */
+void bench_ppm(void);     /* bench_ppm.c: --mode 2008 hit points and photons per second    */
 
 #endif
