@@ -18,5 +18,6 @@ void bench_knn(void);    /* bench_knn.c: BENCH.md Sec. 2, Cornell-wall k-nearest
 void bench_shapes(void); /* bench_shapes.c: procedural objects against their expansions   */
 void bench_photons(void); /* bench_photons.c: photons traced and stored per second        */
 void bench_ppm(void);     /* bench_ppm.c: --mode 2008 hit points and photons per second    */
+void bench_tte(void);     /* bench_tte.c: BENCH.md Sec. 3, time to error beside pt         */
 
 #endif

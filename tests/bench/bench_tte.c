@@ -1,0 +1,130 @@
+/*
+ * tests/bench/bench_tte.c -- time to error (../shared/BENCH.md Sec. 3): how long each mode
+ * needs to reach a given relmse against a scene's converged reference, beside the path
+ * tracer, on the Cornell boxes whose references are in reference/.
+ *
+ * For each scene: --mode 2008 at its defaults (256 x 256, 4 eye rays, 64 passes of 100,000
+ * photons) sets the target, the relmse it ends with, and its seconds to reach it; pt then
+ * renders, with checkpoints after 1, 2, 4, ... samples per pixel, until it reaches the target
+ * or has run four times as long. pt's time to the target is read off its checkpoints
+ * (log-log interpolation between the two around it) or, when it did not get there, from
+ * its last one by pt's own law, relmse ~ 1 / time (tte.pt.SCENE.extrapolated=1 says so).
+ * Also printed: pt's relmse at 2008's time, and the ratio of the two relmse at equal time.
+ */
+#include "bench.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "../../src/image/compare.h"
+#include "../../src/modes/ppm2008.h"
+#include "../../src/modes/pt.h"
+
+#define MAX_ROWS 64
+
+/* The error curve a render's checkpoints trace. */
+struct curve {
+    const struct image *reference; /* borrowed, the whole image */
+    double seconds[MAX_ROWS], relmse[MAX_ROWS];
+    int n;
+};
+
+static double record(void *context, const struct image *mean, long long work, double seconds)
+{
+    (void)work;
+    double start = bench_seconds();
+    struct curve *c = context;
+    if (c->n < MAX_ROWS) {
+        c->seconds[c->n] = seconds;
+        c->relmse[c->n] = image_compare(mean, c->reference).relmse;
+        c->n++;
+    }
+    return bench_seconds() - start;
+}
+
+/* The time at which the curve first falls to target (log-log interpolation), or -1. */
+static double time_to(const struct curve *c, double target)
+{
+    for (int i = 0; i < c->n; i++) {
+        if (c->relmse[i] > target)
+            continue;
+        if (i == 0)
+            return c->seconds[0];
+        double f = log(c->relmse[i - 1] / target) / log(c->relmse[i - 1] / c->relmse[i]);
+        return exp(log(c->seconds[i - 1]) + f * log(c->seconds[i] / c->seconds[i - 1]));
+    }
+    return -1;
+}
+
+/* The curve's relmse at time t (log-log interpolation; the nearest end outside it). */
+static double error_at(const struct curve *c, double t)
+{
+    if (t <= c->seconds[0])
+        return c->relmse[0];
+    for (int i = 1; i < c->n; i++)
+        if (t <= c->seconds[i]) {
+            double f = log(t / c->seconds[i - 1]) / log(c->seconds[i] / c->seconds[i - 1]);
+            return exp(log(c->relmse[i - 1]) + f * log(c->relmse[i] / c->relmse[i - 1]));
+        }
+    return c->relmse[c->n - 1] * c->seconds[c->n - 1] / t; /* pt's 1 / time beyond its end */
+}
+
+static void bench_scene(const char *name, const char *scene_path, const char *reference_path)
+{
+    struct error err;
+    struct image *reference = pfm_read(reference_path, &err);
+    struct scene *scene = reference != NULL ? scene_load(scene_path, &err) : NULL;
+    if (scene == NULL) {
+        fprintf(stderr, "bench: tte.%s skipped: ", name);
+        error_print(&err);
+        image_free(reference);
+        return;
+    }
+    scene_finish(scene, reference->width, reference->height);
+    struct render_settings rs;
+    memset(&rs, 0, sizeof rs);
+    rs.seed = 1;
+    rs.spp = PPM_DEFAULT_SPP;
+    rs.max_depth = MAX_DEPTH_LIMIT;
+    rs.x1 = reference->width;
+    rs.y1 = reference->height;
+    struct ppm_settings ps;
+    memset(&ps, 0, sizeof ps);
+    ps.photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
+    ps.passes = PPM_DEFAULT_PASSES;
+    ps.alpha = PPM_DEFAULT_ALPHA;
+    struct curve ppm = {reference, {0}, {0}, 0}, pt = {reference, {0}, {0}, 0};
+    struct checkpoint at_ppm = {record, &ppm}, at_pt = {record, &pt};
+    struct render_counters counters = {0, 0, 0};
+    struct ppm_stats stats;
+    struct render_result result = render_ppm(scene, &rs, &ps, &at_ppm, &counters, &stats);
+    render_result_free(&result);
+    double target = ppm.relmse[ppm.n - 1], ppm_seconds = time_to(&ppm, target);
+    rs.spp = MAX_SPP;
+    rs.time_limit = 4 * ppm_seconds;
+    result = render_pt(scene, &rs, 0, &at_pt, &counters);
+    render_result_free(&result);
+    double pt_seconds = time_to(&pt, target);
+    int extrapolated = pt_seconds < 0;
+    if (extrapolated)
+        pt_seconds = pt.seconds[pt.n - 1] * pt.relmse[pt.n - 1] / target;
+    printf("tte.2008.%s.relmse=%.6g\n", name, target);
+    printf("tte.2008.%s.seconds=%.3f\n", name, ppm_seconds);
+    printf("tte.pt.%s.seconds=%.3f\n", name, pt_seconds);
+    printf("tte.pt.%s.extrapolated=%d\n", name, extrapolated);
+    printf("tte.2008.%s.ratio_to_pt=%.4g\n", name, ppm_seconds / pt_seconds);
+    printf("tte.pt.%s.relmse_at_2008_seconds=%.6g\n", name, error_at(&pt, ppm_seconds));
+    printf("tte.2008.%s.relmse_ratio_equal_time=%.4g\n", name,
+           target / error_at(&pt, ppm_seconds));
+    fflush(stdout);
+    scene_free(scene);
+    image_free(reference);
+}
+
+void bench_tte(void)
+{
+    bench_scene("cornell", "scenes/cornell.scene", "reference/cornell-pt.pfm");
+    bench_scene("cornell-specular", "scenes/cornell-specular.scene",
+                "reference/cornell-specular-pt.pfm");
+}
