@@ -197,6 +197,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         pp.radius = run->o.radius;
         pp.snapshot_every = run->o.checkpoint;
         pp.snapshot = run->o.checkpoint > 0 ? &snapshot : NULL;
+        pp.observer = NULL;
         return render_ppm(run->scene, &run->rs, &pp, checkpoint, &run->counters,
                           &run->ppm_stats);
     case MODE_DIRECT:

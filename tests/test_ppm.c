@@ -348,6 +348,54 @@ static void test_checkpoints(struct check *t)
     scene_free(scene);
 }
 
+/* Three hit points followed through the passes, as the paper's Fig. 4 follows A, B, C. */
+struct tracked {
+    size_t which[3];                 /* hit point indices                              */
+    double radius[3], n_photons[3];  /* after the previous pass                        */
+    int shrinking, growing, passes;  /* whether R never grew and N never fell; passes  */
+    int moved;                       /* whether R and N changed at all                 */
+};
+
+static void follow(void *context, long pass, const struct hit_point *points, size_t n)
+{
+    struct tracked *tr = context;
+    for (int k = 0; k < 3; k++) {
+        const struct hit_point *hp = &points[tr->which[k] % n];
+        if (pass > 1) {
+            tr->shrinking = tr->shrinking && hp->radius <= tr->radius[k];
+            tr->growing = tr->growing && hp->n_photons >= tr->n_photons[k];
+            tr->moved = tr->moved || hp->radius < tr->radius[k];
+        }
+        tr->radius[k] = hp->radius;
+        tr->n_photons[k] = hp->n_photons;
+    }
+    tr->passes = (int)pass;
+}
+
+/* truth: the paper's Fig. 4: at every hit point R(x) decreases while N(x) grows, pass
+ *   after pass (Eq. 7 and 9 allow nothing else). Three hit points of the Cornell box at
+ *   16 x 16 (the 4th, the 201st and the 256th made: top, lower middle and bottom rows),
+ *   followed through 24 passes.
+ * catches: a radius that grows back, N reset between passes, the update skipped. */
+static void test_tracked_hit_points(struct check *t)
+{
+    struct scene *scene = load_test_scene("scenes/cornell.scene", 16, 16);
+    if (scene == NULL)
+        return;
+    struct tracked tr = {{3, 200, 255}, {0}, {0}, 1, 1, 0, 0};
+    struct ppm_observer observer = {follow, &tr};
+    struct render_settings rs = ppm_window(scene, 1);
+    struct ppm_settings ps = ppm_defaults(5000, 24);
+    ps.observer = &observer;
+    struct render_counters counters = {0, 0, 0};
+    struct ppm_stats stats;
+    struct render_result result = render_ppm(scene, &rs, &ps, NULL, &counters, &stats);
+    CHECK(t, tr.passes == 24 && tr.shrinking && tr.growing && tr.moved);
+    CHECK(t, tr.n_photons[0] > 0 && tr.n_photons[1] > 0 && tr.n_photons[2] > 0);
+    render_result_free(&result);
+    scene_free(scene);
+}
+
 void test_ppm(struct check *t)
 {
     RUN_TEST(t, test_equations);
@@ -357,4 +405,5 @@ void test_ppm(struct check *t)
     RUN_TEST(t, test_crop_is_bit_identical);
     RUN_TEST(t, test_scale_invariance);
     RUN_TEST(t, test_checkpoints);
+    RUN_TEST(t, test_tracked_hit_points);
 }

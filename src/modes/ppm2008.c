@@ -292,6 +292,8 @@ static void photon_passes(struct ppm *ppm, const struct checkpoint *checkpoint, 
         photon_tracing_pass(ppm, pass, stats);
         progressive_update(ppm);
         pass++;
+        if (ps->observer != NULL)
+            ps->observer->after_pass(ps->observer->context, pass, ppm->points, ppm->n_points);
         seconds = cpu_seconds(start) - excluded;
         int last = pass == ps->passes || (limit > 0 && offset + seconds >= limit);
         if (checkpoint != NULL && (is_power_of_two(pass) || last))

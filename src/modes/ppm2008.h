@@ -17,6 +17,15 @@
 #define PPM_INITIAL_FOOTPRINTS 2.0          /* default R0: this many pixel footprints    */
 #define MAX_PASSES 100000000                /* documented limit on --passes              */
 
+struct hit_point;
+
+/* Sees the hit points after every pass's update (Eq. 7, 9, 12), e.g. to follow R(x) and
+ * N(x) as the paper's Fig. 4 does. */
+struct ppm_observer {
+    void (*after_pass)(void *context, long pass, const struct hit_point *points, size_t n);
+    void *context;
+};
+
 struct ppm_settings {
     size_t photons_per_pass;          /* photons traced in each pass, 1..MAX_PHOTONS     */
     long passes;                      /* the most photon passes, 1..MAX_PASSES           */
@@ -26,6 +35,7 @@ struct ppm_settings {
                                          at the hit point (see ppm2008.c)               */
     long snapshot_every;              /* > 0: call snapshot after every this many passes */
     const struct checkpoint *snapshot; /* borrowed or NULL: gets the image so far         */
+    const struct ppm_observer *observer; /* borrowed or NULL                               */
 };
 
 /* What the render did, for --stats. */
