@@ -50,6 +50,10 @@ static void test_shipped_scenes_load(struct check *t)
         {"scenes/cornell.scene", 1, 13},
         {"scenes/cornell-1e-3.scene", 1, 13},
         {"scenes/cornell-1e3.scene", 1, 13},
+        {"scenes/cornell-specular.scene", 1, 13},
+        {"scenes/ppm-box.scene", 2, 104},      /* 10 walls, 2 lights, 2 lenses, 8 shroud
+                                                  quads, 2 balls, 80 facets              */
+        {"scenes/analytic/point-in-sphere.scene", 1, 1},
         {"scenes/sphereflake.scene", 2, 3},   /* floor quad, flake, light sphere  */
         {"scenes/sphereflake-6.scene", 2, 3},
         {"scenes/landscape.scene", 1, 2},     /* heightfield, lens                */
