@@ -178,7 +178,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
     const struct checkpoint *checkpoint = run->reference != NULL ? &report : NULL;
     int want_variance = run->o.variance != NULL;
     struct photon_settings ps;
-    struct ppm_settings pp;
+    struct ppm_settings pp = ppm_settings_default();
     struct checkpoint snapshot = {write_snapshot, &run->o};
     switch (run->o.mode) {
     case MODE_PT:
@@ -197,7 +197,6 @@ static struct render_result render_mode(struct run *run, struct error *err)
         pp.radius = run->o.radius;
         pp.snapshot_every = run->o.checkpoint;
         pp.snapshot = run->o.checkpoint > 0 ? &snapshot : NULL;
-        pp.observer = NULL;
         return render_ppm(run->scene, &run->rs, &pp, checkpoint, &run->counters,
                           &run->ppm_stats);
     case MODE_DIRECT:

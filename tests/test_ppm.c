@@ -134,27 +134,11 @@ static void test_hit_point_tree(struct check *t)
     }
 }
 
-/* The whole-image settings of a small progressive render. */
-static struct render_settings ppm_window(const struct scene *scene, int spp)
-{
-    struct render_settings rs;
-    memset(&rs, 0, sizeof rs);
-    rs.seed = 1;
-    rs.spp = spp;
-    rs.max_depth = MAX_DEPTH_LIMIT;
-    rs.x1 = scene->width;
-    rs.y1 = scene->height;
-    return rs;
-}
-
 static struct ppm_settings ppm_defaults(size_t photons_per_pass, long passes)
 {
-    struct ppm_settings ps;
-    memset(&ps, 0, sizeof ps);
+    struct ppm_settings ps = ppm_settings_default();
     ps.photons_per_pass = photons_per_pass;
     ps.passes = passes;
-    ps.alpha = PPM_DEFAULT_ALPHA;
-    ps.radius = 0;
     return ps;
 }
 
@@ -193,7 +177,7 @@ static void converge(const char *path, int width, long passes, size_t photons_pe
     if (scene == NULL)
         return;
     c->scene = scene;
-    struct render_settings rs = ppm_window(scene, 1);
+    struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(photons_per_pass, passes);
     struct checkpoint checkpoint = {record_error, c};
     struct render_counters counters = {0, 0, 0};
@@ -251,7 +235,7 @@ static struct image *small_cornell(const char *path, uint64_t seed, const int *w
     struct scene *scene = load_test_scene(path, 32, 32);
     if (scene == NULL)
         return NULL;
-    struct render_settings rs = ppm_window(scene, 1);
+    struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
     rs.seed = seed;
     if (window != NULL) {
         rs.x0 = window[0];
@@ -333,7 +317,7 @@ static void test_checkpoints(struct check *t)
         return;
     long long report[8] = {0}, snapshots[8] = {0};
     struct checkpoint at_report = {count_call, report}, at_snapshot = {count_call, snapshots};
-    struct render_settings rs = ppm_window(scene, 1);
+    struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(100, 5);
     ps.snapshot_every = 2;
     ps.snapshot = &at_snapshot;
@@ -384,7 +368,7 @@ static void test_tracked_hit_points(struct check *t)
         return;
     struct tracked tr = {{3, 200, 255}, {0}, {0}, 1, 1, 0, 0};
     struct ppm_observer observer = {follow, &tr};
-    struct render_settings rs = ppm_window(scene, 1);
+    struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(5000, 24);
     ps.observer = &observer;
     struct render_counters counters = {0, 0, 0};

@@ -3,7 +3,6 @@
  * tolerances from the standard errors the renderer itself reports (its variance image).
  */
 #include <math.h>
-#include <string.h>
 
 #include "../src/image/compare.h"
 #include "../src/modes/direct.h"
@@ -14,13 +13,8 @@
 static struct render_result render_seed(const struct scene *scene, int pt, int spp,
                                         uint64_t seed)
 {
-    struct render_settings rs;
-    memset(&rs, 0, sizeof rs);
-    rs.seed = seed;
-    rs.spp = spp;
-    rs.max_depth = pt ? MAX_DEPTH_LIMIT : DIRECT_MAX_DEPTH;
-    rs.x1 = scene->width;
-    rs.y1 = scene->height;
+    struct render_settings rs = render_settings_whole(scene, seed, spp,
+                                                      pt ? MAX_DEPTH_LIMIT : DIRECT_MAX_DEPTH);
     struct render_counters counters = {0, 0, 0};
     if (pt)
         return render_pt(scene, &rs, 1, NULL, &counters);

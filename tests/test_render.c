@@ -12,18 +12,6 @@
 #include "tests.h"
 #include "truths.h"
 
-static struct render_settings whole_image(const struct scene *scene, int spp)
-{
-    struct render_settings rs;
-    memset(&rs, 0, sizeof rs);
-    rs.seed = 1;
-    rs.spp = spp;
-    rs.max_depth = 16;
-    rs.x1 = scene->width;
-    rs.y1 = scene->height;
-    return rs;
-}
-
 static struct image *render(const struct scene *scene, const struct render_settings *rs)
 {
     struct render_counters counters = {0, 0, 0};
@@ -52,7 +40,7 @@ static void test_point_light_over_plane(struct check *t)
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
-    struct render_settings rs = whole_image(scene, 4);
+    struct render_settings rs = render_settings_whole(scene, 1, 4, 16);
     struct image *img = render(scene, &rs);
     for (int y = 0; y < img->height; y++)
         for (int x = 0; x < img->width; x++) {
@@ -81,7 +69,7 @@ static void test_light_seen_directly(struct check *t)
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
-    struct render_settings rs = whole_image(scene, 4);
+    struct render_settings rs = render_settings_whole(scene, 1, 4, 16);
     rs.x0 = 128;
     rs.y0 = 36;
     rs.x1 = 129;
@@ -103,7 +91,7 @@ static void test_crop_matches_whole_image(struct check *t)
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
-    struct render_settings rs = whole_image(scene, 2);
+    struct render_settings rs = render_settings_whole(scene, 1, 2, 16);
     struct image *whole = render(scene, &rs);
     struct image *again = render(scene, &rs);
     CHECK(t, memcmp(whole->pixels, again->pixels, 40 * 30 * sizeof *whole->pixels) == 0);
@@ -139,7 +127,7 @@ static void test_scale_invariance(struct check *t)
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
-    struct render_settings rs = whole_image(scene, 4);
+    struct render_settings rs = render_settings_whole(scene, 1, 4, 16);
     struct image *reference = render(scene, &rs);
     scene_free(scene);
     for (int i = 0; i < 2; i++) {
@@ -180,7 +168,7 @@ static void test_shapes_render_as_their_expansions(struct check *t)
             CHECK(t, scene != NULL);
             if (scene == NULL)
                 break;
-            struct render_settings rs = whole_image(scene, 2);
+            struct render_settings rs = render_settings_whole(scene, 1, 2, 16);
             img[expand] = render(scene, &rs);
             scene_free(scene);
         }

@@ -809,12 +809,7 @@ static void test_photons_mode_cornell(struct check *t)
         image_free(ref);
         return;
     }
-    struct render_settings rs;
-    memset(&rs, 0, sizeof rs);
-    rs.seed = 3;
-    rs.spp = 16;
-    rs.max_depth = TEST_MAX_DEPTH;
-    rs.x1 = rs.y1 = 32;
+    struct render_settings rs = render_settings_whole(scene, 3, 16, TEST_MAX_DEPTH);
     struct photon_settings ps = {100000, 100, 0, 0};
     struct render_counters counters = {0, 0, 0};
     struct photon_stats stats;
@@ -946,12 +941,7 @@ static double mirror_view_truth(const struct scene *scene, int x, int y)
 static void test_photons_mode_mirror(struct check *t)
 {
     struct scene *scene = mirror_view_scene();
-    struct render_settings rs;
-    memset(&rs, 0, sizeof rs);
-    rs.seed = 5;
-    rs.spp = 4;
-    rs.max_depth = TEST_MAX_DEPTH;
-    rs.x1 = rs.y1 = 24;
+    struct render_settings rs = render_settings_whole(scene, 5, 4, TEST_MAX_DEPTH);
     struct photon_settings ps = {400000, 200, 0, 0};
     struct render_counters counters = {0, 0, 0};
     struct photon_stats stats;

@@ -60,6 +60,19 @@ static double cpu_seconds(clock_t start)
     return (double)(clock() - start) / CLOCKS_PER_SEC;
 }
 
+struct ppm_settings ppm_settings_default(void)
+{
+    struct ppm_settings ps;
+    ps.photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
+    ps.passes = PPM_DEFAULT_PASSES;
+    ps.alpha = PPM_DEFAULT_ALPHA;
+    ps.radius = 0.0;
+    ps.snapshot_every = 0;
+    ps.snapshot = NULL;
+    ps.observer = NULL;
+    return ps;
+}
+
 /* ---- 4.1 The ray tracing pass ------------------------------------------------------- */
 
 /* Stores a hit point at s, reached by an eye path of throughput beta and length distance. */

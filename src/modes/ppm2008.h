@@ -51,6 +51,10 @@ struct ppm_stats {
     unsigned long long photon_rays;  /* rays cast tracing photons                        */
 };
 
+/* The defaults above: the paper's photons per pass and alpha, PPM_DEFAULT_PASSES passes,
+ * pixel-footprint radii, no snapshot, no observer. */
+struct ppm_settings ppm_settings_default(void);
+
 /* Eq. 7-8: N <- N + alpha M, the photons a hit point keeps after a pass. */
 double ppm_accumulated_photons(double n, double m, double alpha);
 

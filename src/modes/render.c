@@ -9,6 +9,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #include "../base/alloc.h"
@@ -22,6 +23,19 @@ struct accumulator {
 static double cpu_seconds(clock_t start)
 {
     return (double)(clock() - start) / CLOCKS_PER_SEC;
+}
+
+struct render_settings render_settings_whole(const struct scene *scene, uint64_t seed, int spp,
+                                             int max_depth)
+{
+    struct render_settings rs;
+    memset(&rs, 0, sizeof rs);
+    rs.seed = seed;
+    rs.spp = spp;
+    rs.max_depth = max_depth;
+    rs.x1 = scene->width;
+    rs.y1 = scene->height;
+    return rs;
 }
 
 struct ray camera_sample(const struct scene *scene, uint64_t seed, int x, int y, int s,

@@ -66,6 +66,11 @@ struct render_result {
     double seconds;         /* CPU seconds rendering, checkpoint work excluded            */
 };
 
+/* Settings for the whole image of scene (finished): seed, spp and max_depth as given, no
+ * time limit, no progress line. Callers change the window or the rest as they need. */
+struct render_settings render_settings_whole(const struct scene *scene, uint64_t seed, int spp,
+                                             int max_depth);
+
 /* Camera sample s of pixel (x, y) of the whole image: *rng becomes the sample's stream,
  * rng_stream(seed, STREAM_CAMERA, y * width + x, s), and the ray goes through a uniformly
  * jittered point of the pixel's square drawn from it; the rest of the stream is the

@@ -8,7 +8,6 @@
 #include "bench.h"
 
 #include <stdio.h>
-#include <string.h>
 
 #include "../../src/modes/ppm2008.h"
 
@@ -23,18 +22,9 @@ void bench_ppm(void)
         return;
     }
     scene_finish(scene, scene->width, scene->height);
-    struct render_settings rs;
-    memset(&rs, 0, sizeof rs);
-    rs.seed = 1;
-    rs.spp = PPM_DEFAULT_SPP;
-    rs.max_depth = MAX_DEPTH_LIMIT;
-    rs.x1 = scene->width;
-    rs.y1 = scene->height;
-    struct ppm_settings ps;
-    memset(&ps, 0, sizeof ps);
-    ps.photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
+    struct render_settings rs = render_settings_whole(scene, 1, PPM_DEFAULT_SPP, MAX_DEPTH_LIMIT);
+    struct ppm_settings ps = ppm_settings_default();
     ps.passes = BENCH_PPM_PASSES;
-    ps.alpha = PPM_DEFAULT_ALPHA;
     double hit_points_per_s[BENCH_REPEATS], photons_per_s[BENCH_REPEATS], sum = 0;
     struct ppm_stats stats;
     for (int r = 0; r < BENCH_REPEATS; r++) {

@@ -15,7 +15,6 @@
 
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 
 #include "../../src/image/compare.h"
 #include "../../src/modes/ppm2008.h"
@@ -82,18 +81,8 @@ static void bench_scene(const char *name, const char *scene_path, const char *re
         return;
     }
     scene_finish(scene, reference->width, reference->height);
-    struct render_settings rs;
-    memset(&rs, 0, sizeof rs);
-    rs.seed = 1;
-    rs.spp = PPM_DEFAULT_SPP;
-    rs.max_depth = MAX_DEPTH_LIMIT;
-    rs.x1 = reference->width;
-    rs.y1 = reference->height;
-    struct ppm_settings ps;
-    memset(&ps, 0, sizeof ps);
-    ps.photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
-    ps.passes = PPM_DEFAULT_PASSES;
-    ps.alpha = PPM_DEFAULT_ALPHA;
+    struct render_settings rs = render_settings_whole(scene, 1, PPM_DEFAULT_SPP, MAX_DEPTH_LIMIT);
+    struct ppm_settings ps = ppm_settings_default();
     struct curve ppm = {reference, {0}, {0}, 0}, pt = {reference, {0}, {0}, 0};
     struct checkpoint at_ppm = {record, &ppm}, at_pt = {record, &pt};
     struct render_counters counters = {0, 0, 0};
