@@ -8,6 +8,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "../../src/scene/scene.h"
+
 double bench_seconds(void)
 {
     return (double)clock() / CLOCKS_PER_SEC;
@@ -23,6 +25,18 @@ double bench_median(double *values, int count)
 {
     qsort(values, (size_t)count, sizeof *values, compare_doubles);
     return values[count / 2];
+}
+
+struct scene *bench_scene(const char *path)
+{
+    struct error err;
+    struct scene *scene = scene_load(path, &err);
+    if (scene == NULL) {
+        error_print(&err);
+        return NULL;
+    }
+    scene_finish(scene, scene->width, scene->height);
+    return scene;
 }
 
 struct workload {

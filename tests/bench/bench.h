@@ -13,6 +13,11 @@
 double bench_seconds(void);                       /* CPU seconds since start */
 double bench_median(double *values, int count);   /* sorts values in place   */
 
+struct scene;
+/* The scene file at path, finished at its own image size; NULL (the error printed) when it
+ * cannot be read. The caller frees it with scene_free(). */
+struct scene *bench_scene(const char *path);
+
 void bench_rays(void);   /* bench_rays.c: BENCH.md Sec. 1 on generated and shipped scenes */
 void bench_knn(void);    /* bench_knn.c: BENCH.md Sec. 2, Cornell-wall k-nearest          */
 void bench_shapes(void); /* bench_shapes.c: procedural objects against their expansions   */

@@ -18,17 +18,14 @@
 
 void bench_photons(void)
 {
-    struct error err;
-    struct scene *scene = scene_load("scenes/cornell.scene", &err);
-    if (scene == NULL) {
-        error_print(&err);
+    struct scene *scene = bench_scene("scenes/cornell.scene");
+    if (scene == NULL)
         return;
-    }
-    scene_finish(scene, scene->width, scene->height);
     struct trace_settings ts = {1, 0, BENCH_PHOTONS, MAX_PHOTONS, PHOTON_MAP_GLOBAL,
                                 MAX_DEPTH_LIMIT, NULL};
     double traced[BENCH_REPEATS], stored[BENCH_REPEATS];
     size_t n_stored = 0;
+    struct error err;
     for (int r = 0; r < BENCH_REPEATS; r++) {
         struct photon_trace out;
         double start = bench_seconds();

@@ -15,13 +15,9 @@
 
 void bench_ppm(void)
 {
-    struct error err;
-    struct scene *scene = scene_load("scenes/cornell.scene", &err);
-    if (scene == NULL) {
-        error_print(&err);
+    struct scene *scene = bench_scene("scenes/cornell.scene");
+    if (scene == NULL)
         return;
-    }
-    scene_finish(scene, scene->width, scene->height);
     struct render_settings rs = render_settings_whole(scene, 1, PPM_DEFAULT_SPP, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_settings_default();
     ps.passes = BENCH_PPM_PASSES;
