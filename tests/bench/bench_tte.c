@@ -69,7 +69,8 @@ static double error_at(const struct curve *c, double t)
     return c->relmse[c->n - 1] * c->seconds[c->n - 1] / t; /* pt's 1 / time beyond its end */
 }
 
-static void bench_scene(const char *name, const char *scene_path, const char *reference_path)
+static void time_to_error_on(const char *name, const char *scene_path,
+                             const char *reference_path)
 {
     struct error err;
     struct image *reference = pfm_read(reference_path, &err);
@@ -113,7 +114,7 @@ static void bench_scene(const char *name, const char *scene_path, const char *re
 
 void bench_tte(void)
 {
-    bench_scene("cornell", "scenes/cornell.scene", "reference/cornell-pt.pfm");
-    bench_scene("cornell-specular", "scenes/cornell-specular.scene",
-                "reference/cornell-specular-pt.pfm");
+    time_to_error_on("cornell", "scenes/cornell.scene", "reference/cornell-pt.pfm");
+    time_to_error_on("cornell-specular", "scenes/cornell-specular.scene",
+                     "reference/cornell-specular-pt.pfm");
 }
