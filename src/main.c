@@ -84,6 +84,11 @@ static int prepare_run(struct run *run, struct error *err)
     run->rs.progress = show_progress(o->progress);
     if (choose_window(o, width, height, &run->rs, err) < 0)
         return -1;
+    double eye_rays = (double)(run->rs.x1 - run->rs.x0) * (run->rs.y1 - run->rs.y0) * o->spp;
+    if (o->mode == MODE_PPM2008 && eye_rays > PPM_MAX_EYE_RAYS)
+        return error_set(err, "", 0, "--spp: %.0f eye rays (pixels x spp) exceed --mode 2008's "
+                                     "limit of %d (each leaves a hit point of ~300 bytes)",
+                         eye_rays, PPM_MAX_EYE_RAYS);
     if (o->reference != NULL) {
         run->reference = pfm_read(o->reference, err);
         if (run->reference == NULL ||
@@ -196,9 +201,9 @@ static struct render_result render_mode(struct run *run, struct error *err)
         pp.alpha = run->o.alpha;
         pp.radius = run->o.radius;
         pp.snapshot_every = run->o.checkpoint;
+        pp.report = checkpoint;
         pp.snapshot = run->o.checkpoint > 0 ? &snapshot : NULL;
-        return render_ppm(run->scene, &run->rs, &pp, checkpoint, &run->counters,
-                          &run->ppm_stats);
+        return render_ppm(run->scene, &run->rs, &pp, &run->counters, &run->ppm_stats);
     case MODE_DIRECT:
         break;
     }

@@ -48,6 +48,8 @@ static void test_options(struct check *t)
              log_contains("--alpha"));
     CHECK(t, photon("--mode 2008 --alpha 0 scenes/cornell.scene") == 2);
     CHECK(t, photon("--mode 2008 --passes 0 scenes/cornell.scene") == 2);
+    CHECK(t, photon("--mode 2008 --width 4096 --height 4096 --spp 2 scenes/cornell.scene") == 2
+             && log_contains("eye rays"));
     CHECK(t, photon("--mode 2008 --variance v.pfm scenes/cornell.scene") == 2 &&
              log_contains("--variance"));
     CHECK(t, photon("") == 2 && log_contains("no scene"));

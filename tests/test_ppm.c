@@ -182,7 +182,8 @@ static void converge(const char *path, int width, long passes, size_t photons_pe
     struct checkpoint checkpoint = {record_error, c};
     struct render_counters counters = {0, 0, 0};
     struct ppm_stats stats;
-    struct render_result result = render_ppm(scene, &rs, &ps, &checkpoint, &counters, &stats);
+    ps.report = &checkpoint;
+    struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
     render_result_free(&result);
     scene_free(scene);
 }
@@ -246,7 +247,7 @@ static struct image *small_cornell(const char *path, uint64_t seed, const int *w
     struct ppm_settings ps = ppm_defaults(20000, 16);
     struct render_counters counters = {0, 0, 0};
     struct ppm_stats stats;
-    struct render_result result = render_ppm(scene, &rs, &ps, NULL, &counters, &stats);
+    struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
     scene_free(scene);
     return result.image;
 }
@@ -323,7 +324,8 @@ static void test_checkpoints(struct check *t)
     ps.snapshot = &at_snapshot;
     struct render_counters counters = {0, 0, 0};
     struct ppm_stats stats;
-    struct render_result result = render_ppm(scene, &rs, &ps, &at_report, &counters, &stats);
+    ps.report = &at_report;
+    struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
     CHECK(t, report[0] == 4 && report[1] == 100 && report[2] == 200 && report[3] == 400 &&
              report[4] == 500);
     CHECK(t, snapshots[0] == 2 && snapshots[1] == 200 && snapshots[2] == 400);
@@ -373,7 +375,7 @@ static void test_tracked_hit_points(struct check *t)
     ps.observer = &observer;
     struct render_counters counters = {0, 0, 0};
     struct ppm_stats stats;
-    struct render_result result = render_ppm(scene, &rs, &ps, NULL, &counters, &stats);
+    struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
     CHECK(t, tr.passes == 24 && tr.shrinking && tr.growing && tr.moved);
     CHECK(t, tr.n_photons[0] > 0 && tr.n_photons[1] > 0 && tr.n_photons[2] > 0);
     render_result_free(&result);

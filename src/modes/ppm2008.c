@@ -67,6 +67,7 @@ struct ppm_settings ppm_settings_default(void)
     ps.passes = PPM_DEFAULT_PASSES;
     ps.alpha = PPM_DEFAULT_ALPHA;
     ps.radius = 0.0;
+    ps.report = NULL;
     ps.snapshot_every = 0;
     ps.snapshot = NULL;
     ps.observer = NULL;
@@ -75,10 +76,16 @@ struct ppm_settings ppm_settings_default(void)
 
 /* ---- 4.1 The ray tracing pass ------------------------------------------------------- */
 
-/* Stores a hit point at s, reached by an eye path of throughput beta and length distance. */
+/* An eye path so far: whose it is, what it carries and how far it has come. */
+struct eye_path {
+    size_t pixel;     /* row-major index in the window                 */
+    struct vec3 beta; /* throughput of the mirror and glass bounces    */
+    double distance;  /* length travelled from the camera              */
+};
+
+/* Stores a hit point at s, reached by the eye path. */
 static void store_hit_point(struct ppm *ppm, const struct surface *s,
-                            const struct shading_frame *frame, size_t pixel, struct vec3 beta,
-                            double distance)
+                            const struct shading_frame *frame, const struct eye_path *path)
 {
     if (ppm->n_points == ppm->cap_points) {
         ppm->cap_points = ppm->cap_points > 0 ? 2 * ppm->cap_points : 4096;
@@ -91,11 +98,11 @@ static void store_hit_point(struct ppm *ppm, const struct surface *s,
     hp->wo = s->wo;
     hp->frame = *frame;
     hp->material = s->material;
-    hp->pixel = pixel;
-    hp->weight = vec3_scale(beta, 1.0 / ppm->rs->spp); /* the box filter's share */
+    hp->pixel = path->pixel;
+    hp->weight = vec3_scale(path->beta, 1.0 / ppm->rs->spp); /* the box filter's share; spp >= 1 */
     hp->radius = ppm->ps->radius > 0
                      ? ppm->ps->radius
-                     : PPM_INITIAL_FOOTPRINTS * distance * ppm->footprint_per_distance;
+                     : PPM_INITIAL_FOOTPRINTS * path->distance * ppm->footprint_per_distance;
     hp->n_photons = 0.0;
     hp->tau = vec3_zero();
     hp->m_photons = 0;
@@ -107,23 +114,23 @@ static void store_hit_point(struct ppm *ppm, const struct surface *s,
 static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct rng *rng,
                                   size_t pixel)
 {
-    struct vec3 seen = vec3_zero(), beta = vec3(1.0, 1.0, 1.0);
-    double distance = 0.0;
+    struct vec3 seen = vec3_zero();
+    struct eye_path path = {pixel, vec3(1.0, 1.0, 1.0), 0.0};
     for (int depth = 0;; depth++) {
         struct hit hit;
         ppm->counters->rays++;
         if (!scene_intersect(ppm->scene, ray, INFINITY, &hit))
-            return vec3_add(seen, vec3_mul(beta, ppm->scene->background));
-        distance += hit.t;
+            return vec3_add(seen, vec3_mul(path.beta, ppm->scene->background));
+        path.distance += hit.t;
         struct surface s = surface_at(ppm->scene, &hit, vec3_neg(ray.dir));
         struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
                                                                TRANSPORT_RADIANCE);
-        seen = vec3_add(seen, vec3_mul(beta, surface_emission(&s)));
+        seen = vec3_add(seen, vec3_mul(path.beta, surface_emission(&s)));
         if (brdf_has_diffuse(s.material))
-            store_hit_point(ppm, &s, &frame, pixel, beta, distance);
+            store_hit_point(ppm, &s, &frame, &path);
         if (!brdf_has_delta(s.material) || depth >= ppm->rs->max_depth ||
-            !specular_bounce(&s, &frame, rng, &beta, &ray) ||
-            !survives_roulette(&beta, depth + 1, rng))
+            !specular_bounce(&s, &frame, rng, &path.beta, &ray) ||
+            !survives_roulette(&path.beta, depth + 1, rng))
             return seen;
     }
 }
@@ -293,8 +300,8 @@ static double call_checkpoint(const struct ppm *ppm, const struct checkpoint *ch
 
 /* Photon passes until ps->passes or the time limit; fills image with the final estimate.
  * Checkpoint seconds count from the start of the ray tracing pass (offset seconds). */
-static void photon_passes(struct ppm *ppm, const struct checkpoint *checkpoint, double offset,
-                          struct image *image, struct ppm_stats *stats)
+static void photon_passes(struct ppm *ppm, double offset, struct image *image,
+                          struct ppm_stats *stats)
 {
     const struct ppm_settings *ps = ppm->ps;
     double limit = ppm->rs->time_limit;
@@ -309,8 +316,8 @@ static void photon_passes(struct ppm *ppm, const struct checkpoint *checkpoint, 
             ps->observer->after_pass(ps->observer->context, pass, ppm->points, ppm->n_points);
         seconds = cpu_seconds(start) - excluded;
         int last = pass == ps->passes || (limit > 0 && offset + seconds >= limit);
-        if (checkpoint != NULL && (is_power_of_two(pass) || last))
-            excluded += call_checkpoint(ppm, checkpoint, image, offset + seconds);
+        if (ps->report != NULL && (is_power_of_two(pass) || last))
+            excluded += call_checkpoint(ppm, ps->report, image, offset + seconds);
         if (ps->snapshot != NULL && ps->snapshot_every > 0 && pass % ps->snapshot_every == 0)
             excluded += call_checkpoint(ppm, ps->snapshot, image, offset + seconds);
         if (ppm->rs->progress && (last || seconds - last_shown >= 0.5)) {
@@ -325,7 +332,6 @@ static void photon_passes(struct ppm *ppm, const struct checkpoint *checkpoint, 
 
 struct render_result render_ppm(const struct scene *scene, const struct render_settings *rs,
                                 const struct ppm_settings *ps,
-                                const struct checkpoint *checkpoint,
                                 struct render_counters *counters, struct ppm_stats *stats)
 {
     struct ppm ppm;
@@ -338,7 +344,7 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     ppm.width = rs->x1 - rs->x0;
     ppm.height = rs->y1 - rs->y0;
     ppm.seen = xcalloc((size_t)ppm.width * (size_t)ppm.height, sizeof *ppm.seen, "ppm pixels");
-    ppm.footprint_per_distance = 2.0 * scene->camera.tan_half / scene->camera.height;
+    ppm.footprint_per_distance = 2.0 * scene->camera.tan_half / scene->camera.height; /* >= 1 */
     ppm.unnormalise = (double)ps->photons_per_pass;
     clock_t start = clock();
     ray_tracing_pass(&ppm);
@@ -348,7 +354,7 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     stats->initial_mean_radius = mean_radius(&ppm);
     struct render_result result = {NULL, NULL, 0.0};
     result.image = image_create(ppm.width, ppm.height);
-    photon_passes(&ppm, checkpoint, stats->seconds_ray_pass, result.image, stats);
+    photon_passes(&ppm, stats->seconds_ray_pass, result.image, stats);
     result.seconds = stats->seconds_ray_pass + stats->seconds_photons;
     stats->photons_emitted = ppm.photons_emitted;
     stats->mean_radius = mean_radius(&ppm);

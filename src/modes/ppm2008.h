@@ -16,6 +16,8 @@
 #define PPM_DEFAULT_SPP 4                   /* eye rays per pixel: hit points cost memory */
 #define PPM_INITIAL_FOOTPRINTS 2.0          /* default R0: this many pixel footprints    */
 #define MAX_PASSES 100000000                /* documented limit on --passes              */
+#define PPM_MAX_EYE_RAYS (1 << 24)          /* documented limit on pixels x spp: each eye
+                                               ray leaves a hit point of ~300 bytes      */
 
 struct hit_point;
 
@@ -33,6 +35,8 @@ struct ppm_settings {
     double radius;                    /* > 0: R0 of every hit point, in scene units;
                                          <= 0: PPM_INITIAL_FOOTPRINTS pixel footprints
                                          at the hit point (see ppm2008.c)               */
+    const struct checkpoint *report;  /* borrowed or NULL: gets the image after passes 1,
+                                         2, 4, ... and the last, work = photons emitted  */
     long snapshot_every;              /* > 0: call snapshot after every this many passes */
     const struct checkpoint *snapshot; /* borrowed or NULL: gets the image so far         */
     const struct ppm_observer *observer; /* borrowed or NULL                               */
@@ -52,7 +56,7 @@ struct ppm_stats {
 };
 
 /* The defaults above: the paper's photons per pass and alpha, PPM_DEFAULT_PASSES passes,
- * pixel-footprint radii, no snapshot, no observer. */
+ * pixel-footprint radii, no report, no snapshot, no observer. */
 struct ppm_settings ppm_settings_default(void);
 
 /* Eq. 7-8: N <- N + alpha M, the photons a hit point keeps after a pass. */
@@ -68,14 +72,13 @@ struct vec3 ppm_corrected_flux(struct vec3 tau_n_plus_m, double n, double m, dou
  * have been found yet). */
 struct vec3 ppm_radiance(struct vec3 tau, double r, double n_emitted);
 
-/* Renders the window of rs: the ray tracing pass with rs->spp eye rays per pixel, then
- * photon passes until ps->passes are done or rs->time_limit has passed (no pass starts
- * after it). checkpoint (may be NULL) gets the image after passes 1, 2, 4, ... and the
- * last, with work = photons emitted. result.variance is always NULL: the pixels of a
- * progressive estimate are not means of independent samples. */
+/* Renders the window of rs: the ray tracing pass with rs->spp eye rays per pixel (the
+ * caller keeps window pixels x spp <= PPM_MAX_EYE_RAYS), then photon passes until
+ * ps->passes are done or rs->time_limit has passed (no pass starts after it), calling
+ * ps->report, ps->snapshot and ps->observer as they say. result.variance is always NULL:
+ * the pixels of a progressive estimate are not means of independent samples. */
 struct render_result render_ppm(const struct scene *scene, const struct render_settings *rs,
                                 const struct ppm_settings *ps,
-                                const struct checkpoint *checkpoint,
                                 struct render_counters *counters, struct ppm_stats *stats);
 
 #endif

@@ -88,7 +88,8 @@ static void time_to_error_on(const char *name, const char *scene_path,
     struct checkpoint at_ppm = {record, &ppm}, at_pt = {record, &pt};
     struct render_counters counters = {0, 0, 0};
     struct ppm_stats stats;
-    struct render_result result = render_ppm(scene, &rs, &ps, &at_ppm, &counters, &stats);
+    ps.report = &at_ppm;
+    struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
     render_result_free(&result);
     double target = ppm.relmse[ppm.n - 1], ppm_seconds = time_to(&ppm, target);
     rs.spp = MAX_SPP;
