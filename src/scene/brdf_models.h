@@ -45,6 +45,16 @@ static inline double channel_mean(struct vec3 c)
     return (c.x + c.y + c.z) / 3.0;
 }
 
+/* Probability of sampling the specular lobe of a two-lobe model (phong, ward), by the
+ * lobes' mean reflectances rho (diffuse) and rho_s; -1 when the material is black. */
+static inline double specular_probability(const struct material *m)
+{
+    double diffuse = channel_mean(m->rho), specular = channel_mean(m->rho_s);
+    if (!(diffuse + specular > 0))
+        return -1.0;
+    return specular / (diffuse + specular);
+}
+
 /* Cosine-weighted direction about +z (Malley's method: a uniform point on the unit disc
  * lifted to the hemisphere); pdf cos / pi. z = sqrt(1 - u1) > 0 since u1 < 1. */
 static inline struct vec3 sample_cosine_local(double u1, double u2)

@@ -41,15 +41,6 @@ static void assert_phong(const struct material *m)
     (void)m; /* only asserts read it */
 }
 
-/* Probability of sampling the specular lobe; -1 when the material is black. */
-static double specular_probability(const struct material *m)
-{
-    double diffuse = channel_mean(m->rho), specular = channel_mean(m->rho_s);
-    if (!(diffuse + specular > 0))
-        return -1.0;
-    return specular / (diffuse + specular);
-}
-
 /* cos^n(alpha) for the lobe, zero beyond pi / 2 (pow(0, 0) would give 1). */
 static double phong_lobe(double cos_alpha, double n)
 {

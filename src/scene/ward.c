@@ -41,15 +41,6 @@ static void assert_ward(const struct material *m)
     (void)m; /* only asserts read it */
 }
 
-/* Probability of sampling the specular lobe; -1 when the material is black. */
-static double specular_probability(const struct material *m)
-{
-    double diffuse = channel_mean(m->rho), specular = channel_mean(m->rho_s);
-    if (!(diffuse + specular > 0))
-        return -1.0;
-    return specular / (diffuse + specular);
-}
-
 /* tan^2(theta_h) (cos^2(phi_h) / ax^2 + sin^2(phi_h) / ay^2) for any positive multiple
  * h of the half vector; h.z > 0 since both directions are above the surface. */
 static double ward_exponent(const struct material *m, struct vec3 h)
