@@ -96,9 +96,10 @@ const char *mode_name(enum mode mode)
 
 static void print_help(void)
 {
-    printf("usage: photon [options] SCENE       render SCENE (see README: Scene files)\n"
+    printf("usage: photon [options] SCENE       render SCENE: a scene file, or an NFF file by its\n"
+           "                                    .nff name (see README: Scene files, NFF files)\n"
            "       photon compare A.pfm B.pfm [--diff OUT.ppm] [--ref-variance VB.pfm]\n"
-           "                      [--test-variance VA.pfm] [--alpha ALPHA]\n"
+           "                      [--test-variance VA.pfm] [--alpha ALPHA] [--block N]\n"
            "       photon plot A.csv [B.csv ...] -o PLOT.svg\n\noptions:\n");
     for (size_t i = 0; i < sizeof specs / sizeof specs[0]; i++) {
         char left[40];
