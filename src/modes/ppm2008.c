@@ -187,8 +187,7 @@ static void photon_tracing_pass(struct ppm *ppm, long pass, struct ppm_stats *st
     memset(&ts, 0, sizeof ts);
     ts.seed = ppm->rs->seed;
     ts.pass = (uint64_t)pass;
-    ts.n_emit = ppm->ps->photons_per_pass;
-    ts.max_stored = MAX_PHOTONS;
+    ts.n_emit = ppm->ps->photons_per_pass; /* max_stored: unused, nothing is stored */
     ts.store = PHOTON_MAP_GLOBAL;
     ts.max_depth = ppm->rs->max_depth;
     ts.targets = NULL;

@@ -158,9 +158,11 @@ static int store_shadow_photons(const struct scene *scene, const struct trace_se
         if (!scene_intersect(scene, ray, INFINITY, &hit))
             return 0;
         h = photon_hit_at(scene, &hit, ray.dir);
-        struct photon_event e = photon_event_at(&h, vec3_zero(), PHOTON_SHADOW);
-        if (holds_photons(&h) && sink->store(sink->context, &e) < 0)
-            return -1;
+        if (holds_photons(&h)) {
+            struct photon_event e = photon_event_at(&h, vec3_zero(), PHOTON_SHADOW);
+            if (sink->store(sink->context, &e) < 0)
+                return -1;
+        }
     }
     return 0;
 }
@@ -215,9 +217,11 @@ static int trace_photon(const struct scene *scene, const struct trace_settings *
             return -1;
         unsigned kind = depth == 0 ? PHOTON_DIRECT
                                    : path.specular_only ? PHOTON_CAUSTIC : PHOTON_INDIRECT;
-        struct photon_event e = photon_event_at(&h, path.power, kind);
-        if ((ts->store & kind) && holds_photons(&h) && sink->store(sink->context, &e) < 0)
-            return -1;
+        if ((ts->store & kind) && holds_photons(&h)) {
+            struct photon_event e = photon_event_at(&h, path.power, kind);
+            if (sink->store(sink->context, &e) < 0)
+                return -1;
+        }
         if (depth >= ts->max_depth || !scatter(&h, &rng, &path, &ray) ||
             !can_store_later(ts->store, path.specular_only))
             return 0;
