@@ -680,6 +680,45 @@ static void test_brdf_below_surface_and_kinds(struct check *t)
     }
 }
 
+/* truth: f_r,d + f_r,s = f_r (Jensen 1996, Eq. 2) for every model, direction by
+ * direction; the delta lobes all go to the specular part; a Lambertian diffuse part is
+ * the constant rho / pi. */
+static void test_brdf_split_sums_to_whole(struct check *t)
+{
+    struct model_case cases[MAX_CASES + 3];
+    int n_cases = all_cases(cases);
+    struct shading_frame f = test_frame(TRANSPORT_RADIANCE);
+    struct rng rng = rng_stream(SEED, STREAM_TEST, 1001, 0);
+    for (int c = 0; c < n_cases; c++) {
+        const struct material *m = &cases[c].m;
+        struct brdf_split split = brdf_split(m);
+        int diffuse = m->kind == MATERIAL_SCHLICK ? m->roughness >= 0.5
+                      : m->kind == MATERIAL_MIRROR || m->kind == MATERIAL_GLASS
+                          ? 0
+                          : vec3_max_component(m->rho) > 0;
+        CHECK(t, split.has_diffuse == diffuse);
+        CHECK(t, brdf_has_delta(m) ? split.has_specular && brdf_has_delta(&split.specular)
+                                   : !split.has_diffuse || !brdf_has_delta(&split.diffuse));
+        for (int i = 0; i < 500; i++) {
+            double c1 = 1.0 - rng_uniform(&rng), c2 = 1.0 - rng_uniform(&rng);
+            struct vec3 wo = frame_direction(&f, c1, 2 * PI * rng_uniform(&rng));
+            struct vec3 wi = frame_direction(&f, c2, 2 * PI * rng_uniform(&rng));
+            struct vec3 whole = brdf_eval(m, &f, wo, wi);
+            struct vec3 d = split.has_diffuse ? brdf_eval(&split.diffuse, &f, wo, wi) : vec3_zero();
+            struct vec3 sp = split.has_specular ? brdf_eval(&split.specular, &f, wo, wi)
+                                                : vec3_zero();
+            CHECK(t, close_vec3(vec3_add(d, sp), whole, 1e-12));
+            if (split.has_diffuse && split.lambertian)
+                CHECK(t, close_vec3(d, vec3_scale(split.diffuse.rho, 1.0 / PI), 1e-15));
+        }
+    }
+    struct material phong = phong_case("phong", vec3(0.5, 0.3, 0.2), vec3(0.4, 0.4, 0.4), 10).m;
+    struct brdf_split split = brdf_split(&phong);
+    CHECK(t, split.has_diffuse && split.has_specular && split.lambertian);
+    struct brdf_split sand = brdf_split(&cases[9].m); /* schlick r = 0.6: all diffuse */
+    CHECK(t, sand.has_diffuse && !sand.has_specular && !sand.lambertian);
+}
+
 void test_brdf(struct check *t)
 {
     RUN_TEST(t, test_brdf_pdf_matches_samples);
@@ -689,4 +728,5 @@ void test_brdf(struct check *t)
     RUN_TEST(t, test_brdf_glass_optics);
     RUN_TEST(t, test_brdf_extreme_directions_stay_finite);
     RUN_TEST(t, test_brdf_below_surface_and_kinds);
+    RUN_TEST(t, test_brdf_split_sums_to_whole);
 }

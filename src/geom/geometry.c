@@ -38,6 +38,7 @@ struct shape {
     const struct shape_ops *ops;  /* borrowed: static operations table             */
     void *data;                   /* owned: released by ops->free                   */
     int id;
+    int material;                 /* the material it was added with (its first one)  */
 };
 
 struct geometry {
@@ -150,8 +151,8 @@ int geometry_add_shape(struct geometry *g, const struct shape_ops *ops, void *sh
         return -1;
     g->shapes = reserve(g->shapes, &g->cap_shapes, g->n_shapes + 1, sizeof *g->shapes, "shapes");
     struct shape *s = &g->shapes[g->n_shapes++];
-    (void)material;   /* a shape reports its own materials in struct hit (shape_ops) */
     s->ops = ops;
+    s->material = material; /* hits report the shape's own materials (shape_ops) */
     s->data = shape;
     s->id = (int)g->n_prims;
     return (int)g->n_prims++;
@@ -415,32 +416,30 @@ size_t geometry_bytes(const struct geometry *g)
     return bytes;
 }
 
-/* Every primitive's box, degenerate ones included (their points are still in the scene);
- * lo = +inf, hi = -inf when there is none. */
-struct aabb geometry_bounds(const struct geometry *g)
+/* The box of every primitive of a material (material < 0: of every primitive),
+ * degenerate ones included (their points are still in the scene); lo = +inf, hi = -inf
+ * when there is none. */
+struct aabb geometry_material_bounds(const struct geometry *g, int material)
 {
     struct aabb box;
     box.lo = vec3(INFINITY, INFINITY, INFINITY);
     box.hi = vec3(-INFINITY, -INFINITY, -INFINITY);
-    for (size_t i = 0; i < g->n_spheres; i++) {
-        struct aabb b = sphere_bounds(&g->spheres[i]);
-        box.lo = vec3_min(box.lo, b.lo);
-        box.hi = vec3_max(box.hi, b.hi);
-    }
-    for (size_t i = 0; i < g->n_triangles; i++) {
-        struct aabb b = triangle_bounds(&g->triangles[i]);
-        box.lo = vec3_min(box.lo, b.lo);
-        box.hi = vec3_max(box.hi, b.hi);
-    }
-    for (size_t i = 0; i < g->n_quads; i++) {
-        struct aabb b = quad_bounds(&g->quads[i]);
-        box.lo = vec3_min(box.lo, b.lo);
-        box.hi = vec3_max(box.hi, b.hi);
-    }
-    for (size_t i = 0; i < g->n_shapes; i++) {
-        struct aabb b = g->shapes[i].ops->bounds(g->shapes[i].data);
-        box.lo = vec3_min(box.lo, b.lo);
-        box.hi = vec3_max(box.hi, b.hi);
-    }
+    for (size_t i = 0; i < g->n_spheres; i++)
+        if (material < 0 || g->spheres[i].material == material)
+            box = aabb_union(box, sphere_bounds(&g->spheres[i]));
+    for (size_t i = 0; i < g->n_triangles; i++)
+        if (material < 0 || g->triangles[i].material == material)
+            box = aabb_union(box, triangle_bounds(&g->triangles[i]));
+    for (size_t i = 0; i < g->n_quads; i++)
+        if (material < 0 || g->quads[i].material == material)
+            box = aabb_union(box, quad_bounds(&g->quads[i]));
+    for (size_t i = 0; i < g->n_shapes; i++)
+        if (material < 0 || g->shapes[i].material == material)
+            box = aabb_union(box, g->shapes[i].ops->bounds(g->shapes[i].data));
     return box;
+}
+
+struct aabb geometry_bounds(const struct geometry *g)
+{
+    return geometry_material_bounds(g, -1);
 }

@@ -66,6 +66,9 @@ int geometry_occluded(const struct geometry *g, struct ray ray, double tmax);
 size_t geometry_primitive_count(const struct geometry *g);
 size_t geometry_bvh_nodes(const struct geometry *g);
 size_t geometry_bytes(const struct geometry *g); /* primitives + BVH + shapes' own bytes */
-struct aabb geometry_bounds(const struct geometry *g);
+struct aabb geometry_bounds(const struct geometry *g); /* every primitive's box */
+/* The box around the primitives added with this material (a shape counts by the material
+ * it was added with); lo = +inf, hi = -inf when there is none. */
+struct aabb geometry_material_bounds(const struct geometry *g, int material);
 
 #endif

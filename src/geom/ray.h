@@ -25,6 +25,15 @@ struct aabb {
     struct vec3 lo, hi; /* lo <= hi componentwise for a non-empty box */
 };
 
+/* The smallest box holding both. */
+static inline struct aabb aabb_union(struct aabb a, struct aabb b)
+{
+    struct aabb u;
+    u.lo = vec3_min(a.lo, b.lo);
+    u.hi = vec3_max(a.hi, b.hi);
+    return u;
+}
+
 /* What an intersection reports: the shading record of DESIGN.md. */
 struct hit {
     double t;        /* ray parameter of the hit, in (0, tmax)                              */

@@ -22,14 +22,6 @@ static struct aabb disc_box(const struct hit_point *hp)
     return box;
 }
 
-static struct aabb box_union(struct aabb a, struct aabb b)
-{
-    struct aabb u;
-    u.lo = vec3_min(a.lo, b.lo);
-    u.hi = vec3_max(a.hi, b.hi);
-    return u;
-}
-
 static int box_contains(struct aabb box, struct vec3 p)
 {
     return p.x >= box.lo.x && p.x <= box.hi.x && p.y >= box.lo.y && p.y <= box.hi.y &&
@@ -104,9 +96,9 @@ static struct aabb refit_range(struct hit_point_tree *tree, size_t lo, size_t hi
     size_t m = lo + (hi - lo) / 2;
     struct aabb box = disc_box(&tree->points[tree->index[m]]);
     if (m > lo)
-        box = box_union(box, refit_range(tree, lo, m));
+        box = aabb_union(box, refit_range(tree, lo, m));
     if (m + 1 < hi)
-        box = box_union(box, refit_range(tree, m + 1, hi));
+        box = aabb_union(box, refit_range(tree, m + 1, hi));
     tree->bounds[m] = box;
     return box;
 }

@@ -210,3 +210,61 @@ int brdf_has_delta(const struct material *m)
     return m->kind == MATERIAL_MIRROR || m->kind == MATERIAL_GLASS ||
            (m->kind == MATERIAL_SCHLICK && m->roughness < 0.5); /* Schlick's c > 0 (schlick.c) */
 }
+
+/* m's Lambertian term rho / pi as a material of its own. */
+static struct material lambertian_part(const struct material *m, struct vec3 rho)
+{
+    struct material part = *m;
+    part.kind = MATERIAL_LAMBERT;
+    part.rho = rho;
+    part.emission = vec3_zero();
+    return part;
+}
+
+/* m without its Lambertian term (phong and ward: the glossy lobe alone). */
+static struct material without_lambertian(const struct material *m)
+{
+    struct material part = *m;
+    part.rho = vec3_zero();
+    part.emission = vec3_zero();
+    return part;
+}
+
+struct brdf_split brdf_split(const struct material *m)
+{
+    struct brdf_split s;
+    s.diffuse = lambertian_part(m, vec3_zero());
+    s.specular = without_lambertian(m);
+    s.lambertian = 1;
+    switch (m->kind) {
+    case MATERIAL_LAMBERT:
+        s.diffuse = lambertian_part(m, m->rho);
+        break;
+    case MATERIAL_MIRROR:
+    case MATERIAL_GLASS:
+        s.specular = *m;
+        s.specular.emission = vec3_zero();
+        break;
+    case MATERIAL_PHONG:
+    case MATERIAL_WARD:
+        s.diffuse = lambertian_part(m, m->rho);
+        break;
+    case MATERIAL_SCHLICK:
+        if (m->roughness >= 0.5) {
+            s.diffuse = *m;
+            s.diffuse.emission = vec3_zero();
+            s.lambertian = m->roughness == 1; /* no glossy term: b = 4 r (1 - r) = 0 */
+            s.specular = lambertian_part(m, vec3_zero());
+        } else {
+            s.specular = *m;
+            s.specular.emission = vec3_zero();
+        }
+        break;
+    }
+    s.has_diffuse = channel_mean(s.diffuse.rho) > 0;
+    s.has_specular = m->kind == MATERIAL_GLASS ||
+                     (s.specular.kind == MATERIAL_PHONG || s.specular.kind == MATERIAL_WARD
+                          ? channel_mean(s.specular.rho_s) > 0
+                          : channel_mean(s.specular.rho) > 0);
+    return s;
+}

@@ -88,6 +88,27 @@ int brdf_sample(const struct material *m, const struct shading_frame *f, struct 
 struct vec3 brdf_albedo(const struct material *m, const struct shading_frame *f,
                         struct vec3 wo);
 
+/* Jensen 1996, Eq. 2: f_r = f_r,d + f_r,s, a diffuse part ("from Lambertian to slightly
+ * glossy"), which photon-map estimates and irradiance caching handle, and a specular part
+ * ("highly glossy and ideal specular"), which Monte Carlo ray tracing samples. Each part
+ * is a material of its own, so the rest of this interface serves both. The split by model:
+ *   lambert       all diffuse
+ *   mirror, glass all specular
+ *   phong, ward   diffuse: the Lambertian term rho / pi; specular: the glossy lobe
+ *   schlick       r >= 1/2 (a Lambertian and a broad glossy term): all diffuse;
+ *                 r < 1/2 (a narrower lobe and a mirror term): all specular
+ * The parts carry no emission; brdf_eval() of the two parts sums to the material's. */
+struct brdf_split {
+    struct material diffuse;  /* f_r,d (meaningful when has_diffuse)                     */
+    struct material specular; /* f_r,s (meaningful when has_specular)                    */
+    int has_diffuse;          /* whether f_r,d reflects anything                         */
+    int has_specular;         /* whether f_r,s reflects anything                         */
+    int lambertian;           /* whether f_r,d is rho / pi: its reflection is rho / pi
+                                 times the irradiance, which an irradiance cache holds   */
+};
+
+struct brdf_split brdf_split(const struct material *m);
+
 /* Whether every direction the material scatters into is an ideal specular one (mirror,
  * glass, Schlick with r = 0); such materials never hold photons. */
 int brdf_is_delta(const struct material *m);
