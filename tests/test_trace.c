@@ -637,7 +637,7 @@ static double point_over_plane_ratio(const struct scene *scene, size_t n, size_t
     struct nearest *nn = nearest_create(k);
     struct vec3 up = vec3(0, 1, 0);
     struct shading_frame frame = shading_frame_from_normal(up, 1, TRANSPORT_RADIANCE);
-    struct estimate_settings es = {k, HUGE_VAL, 0};
+    struct estimate_settings es = {k, HUGE_VAL, 0, 0};
     double sum = 0;
     for (int i = 0; i < 17 * 17; i++) {
         struct vec3 x = vec3(-2 + 0.25 * (i % 17), 0, -2 + 0.25 * (i / 17));
@@ -711,7 +711,7 @@ static void test_cone_filter_uniform(struct check *t)
     struct shading_frame frame = shading_frame_from_normal(up, 1, TRANSPORT_RADIANCE);
     double truth = rho * (n * power) / PI;
     for (int cone = 0; cone < 2; cone++) {
-        struct estimate_settings es = {k, HUGE_VAL, cone ? 1.0 : 0.0};
+        struct estimate_settings es = {k, HUGE_VAL, cone ? 1.0 : 0.0, 0};
         struct tally m = {0, 0, 441};
         for (int i = 0; i < 441; i++) {
             struct vec3 x = vec3(0.1 + 0.04 * (i % 21), 0.1 + 0.04 * (i / 21), 0);
@@ -741,7 +741,7 @@ static void test_estimate_boundaries(struct check *t)
     struct vec3 up = vec3(0, 0, 1);
     struct shading_frame frame = shading_frame_from_normal(up, 1, TRANSPORT_RADIANCE);
     struct estimate_point at = {vec3(0, 0, 0), up, up, &scene->materials[0], &frame};
-    struct estimate_settings es = {10, HUGE_VAL, 1.0};
+    struct estimate_settings es = {10, HUGE_VAL, 1.0, 0};
     struct nearest *nn = nearest_create(10);
     struct kdtree *empty = balance_kdtree(NULL, 0);
     CHECK(t, vec3_length2(radiance_estimate(empty, &at, &es, nn)) == 0);

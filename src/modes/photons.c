@@ -152,6 +152,7 @@ struct render_result render_photons(const struct scene *scene, const struct rend
     pm.es.k = ps->gather;
     pm.es.max_r2 = stats->max_radius * stats->max_radius;
     pm.es.cone_k = ps->cone_k;
+    pm.es.kinds = 0;
     pm.nn = nearest_create(ps->gather);
     pm.max_depth = rs->max_depth;
     struct radiance_estimator estimator;

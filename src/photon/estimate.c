@@ -18,7 +18,14 @@ struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_po
                               const struct estimate_settings *es, struct nearest *nn)
 {
     assert(es->cone_k == 0 || es->cone_k >= 1);
-    locate_photons(map, at->x, es->max_r2, es->k, nn); /* sets found, photon[], d2[], r2 */
+    struct photon_query q;
+    q.x = at->x;
+    q.max_r2 = es->max_r2;
+    q.k = es->k;
+    q.normal = vec3_zero();
+    q.max_plane_distance = 0;
+    q.kinds = es->kinds;
+    locate_photons_in_disc(map, &q, nn); /* sets found, photon[], d2[], r2 */
     if (nn->found == 0 || !(nn->r2 > 0))
         return vec3_zero(); /* no photons, or all exactly at x: no area */
     struct vec3 sum = vec3_zero();

@@ -39,6 +39,7 @@ struct estimate_settings {
     double cone_k; /* 0: the plain estimate (Eq. 3); >= 1: the cone filter's constant k
                       (Eq. 4-5; Jensen 1996 uses 1). Values in (0, 1) are refused by
                       whoever reads them: the normalisation would not be the cone's.   */
+    unsigned kinds; /* only photons with one of these PHOTON_* flags; 0: all         */
 };
 
 /* Radiance (W / (m^2 sr) per channel, in the map's power units over length^2) leaving

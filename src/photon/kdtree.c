@@ -227,6 +227,7 @@ struct search {
     double x[3];                /* the query point                            */
     double normal[3];           /* disc filter's plane normal                 */
     double max_plane_distance;  /* 0: no disc filter                          */
+    unsigned kinds;             /* 0: no kind filter                          */
     size_t k;                   /* photons wanted                             */
     struct nearest *nn;         /* results so far                             */
 };
@@ -238,10 +239,12 @@ static double squared_distance(const double x[3], const struct photon *p, double
     return delta[0] * delta[0] + delta[1] * delta[1] + delta[2] * delta[2];
 }
 
-static int inside_disc(const struct search *s, const double delta[3])
+/* Whether the filters keep photon p at offset delta from x. */
+static int selected(const struct search *s, const struct photon *p, const double delta[3])
 {
     double h = delta[0] * s->normal[0] + delta[1] * s->normal[1] + delta[2] * s->normal[2];
-    return s->max_plane_distance == 0 || fabs(h) <= s->max_plane_distance;
+    return (s->max_plane_distance == 0 || fabs(h) <= s->max_plane_distance) &&
+           (s->kinds == 0 || (p->flags & s->kinds) != 0);
 }
 
 /* Offers photon p to the search. bound is exclusive: p is wanted iff d2 < bound. Until
@@ -251,7 +254,7 @@ static double offer_photon(const struct search *s, const struct photon *p, doubl
 {
     double delta[3];
     double d2 = squared_distance(s->x, p, delta);
-    if (!(d2 < bound) || !inside_disc(s, delta))
+    if (!(d2 < bound) || !selected(s, p, delta))
         return bound;
     struct nearest *nn = s->nn;
     if (nn->found < s->k) {
@@ -331,6 +334,7 @@ void locate_photons_in_disc(const struct kdtree *map, const struct photon_query 
     s.normal[1] = q->normal.y;
     s.normal[2] = q->normal.z;
     s.max_plane_distance = q->max_plane_distance;
+    s.kinds = q->kinds;
     s.k = q->k;
     s.nn = nn;
     nn->found = 0;
@@ -351,6 +355,7 @@ void locate_photons(const struct kdtree *map, struct vec3 x, double max_r2, size
     q.k = k;
     q.normal = vec3_zero();
     q.max_plane_distance = 0;
+    q.kinds = 0;
     locate_photons_in_disc(map, &q, nn);
 }
 

@@ -51,6 +51,7 @@ struct photon_hit {
 
 /* The path a photon has taken so far. */
 struct photon_path {
+    int light;         /* the light that emitted it          */
     struct vec3 power; /* Delta Phi it carries, W per channel */
     int specular_only; /* whether every bounce so far was a delta lobe (L S* so far) */
 };
@@ -78,9 +79,10 @@ static int holds_photons(const struct photon_hit *h)
 
 /* The photon stored at h: what the tracer hands to its sink. */
 static struct photon_event photon_event_at(const struct photon_hit *h, struct vec3 power,
-                                           unsigned kind)
+                                           unsigned kind, int light)
 {
     struct photon_event e;
+    e.light = light;
     e.position = h->p;
     e.normal = h->ng;
     e.wi = h->wi;
@@ -120,7 +122,7 @@ static int pack_photon(void *context, const struct photon_event *e)
 /* Picks a light and emits photon i's ray and power from it. 0 when it carries nothing
  * (no lights, a black light, a degenerate emission). */
 static int emit_photon(const struct scene *scene, const struct trace_settings *ts,
-                       struct rng *rng, struct ray *ray, struct vec3 *power)
+                       struct rng *rng, struct ray *ray, struct photon_path *path)
 {
     double pick;
     int index = scene_pick_light(scene, rng_uniform(rng), &pick);
@@ -129,6 +131,7 @@ static int emit_photon(const struct scene *scene, const struct trace_settings *t
         u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
     if (index < 0)
         return 0;
+    path->light = index;
     const struct light *l = &scene->lights[index];
     struct emission e;
     int emitted = ts->targets == NULL ? light_emit(l, u, &e)
@@ -136,18 +139,18 @@ static int emit_photon(const struct scene *scene, const struct trace_settings *t
     if (!emitted)
         return 0;
     /* Phi_l weight / (p_pick N): pick > 0 (scene_pick_light), N >= 1 (a photon exists) */
-    *power = vec3_scale(light_power(l), e.weight / (pick * (double)ts->n_emit));
+    path->power = vec3_scale(light_power(l), e.weight / (pick * (double)ts->n_emit));
     struct vec3 origin = vec3_length2(e.normal) > 0 ? offset_origin(e.origin, e.normal)
                                                     : e.origin;
     *ray = make_ray(origin, e.dir);
-    return vec3_max_component(*power) > 0;
+    return vec3_max_component(path->power) > 0;
 }
 
 /* Jensen and Christensen 1995: the emitted ray followed on through the surfaces behind
  * its first hit (at most max_depth of them), a zero-power shadow photon at each one that
  * holds photons. ray: the emitted ray; first: its first hit. -1 when the map is full. */
 static int store_shadow_photons(const struct scene *scene, const struct trace_settings *ts,
-                                struct ray ray, const struct photon_hit *first,
+                                struct ray ray, const struct photon_hit *first, int light,
                                 const struct photon_sink *sink, unsigned long long *rays)
 {
     struct photon_hit h = *first;
@@ -159,7 +162,7 @@ static int store_shadow_photons(const struct scene *scene, const struct trace_se
             return 0;
         h = photon_hit_at(scene, &hit, ray.dir);
         if (holds_photons(&h)) {
-            struct photon_event e = photon_event_at(&h, vec3_zero(), PHOTON_SHADOW);
+            struct photon_event e = photon_event_at(&h, vec3_zero(), PHOTON_SHADOW, light);
             if (sink->store(sink->context, &e) < 0)
                 return -1;
         }
@@ -202,9 +205,9 @@ static int trace_photon(const struct scene *scene, const struct trace_settings *
                         const struct photon_sink *sink, unsigned long long *rays)
 {
     struct rng rng = rng_stream(ts->seed, STREAM_PHOTON, ts->pass, i);
-    struct photon_path path = {{0, 0, 0}, 1};
+    struct photon_path path = {-1, {0, 0, 0}, 1};
     struct ray ray;
-    if (!emit_photon(scene, ts, &rng, &ray, &path.power))
+    if (!emit_photon(scene, ts, &rng, &ray, &path))
         return 0;
     for (int depth = 0;; depth++) {
         struct hit hit;
@@ -213,12 +216,12 @@ static int trace_photon(const struct scene *scene, const struct trace_settings *
             return 0;
         struct photon_hit h = photon_hit_at(scene, &hit, ray.dir);
         if (depth == 0 && (ts->store & PHOTON_SHADOW) &&
-            store_shadow_photons(scene, ts, ray, &h, sink, rays) < 0)
+            store_shadow_photons(scene, ts, ray, &h, path.light, sink, rays) < 0)
             return -1;
         unsigned kind = depth == 0 ? PHOTON_DIRECT
                                    : path.specular_only ? PHOTON_CAUSTIC : PHOTON_INDIRECT;
         if ((ts->store & kind) && holds_photons(&h)) {
-            struct photon_event e = photon_event_at(&h, path.power, kind);
+            struct photon_event e = photon_event_at(&h, path.power, kind, path.light);
             if (sink->store(sink->context, &e) < 0)
                 return -1;
         }

@@ -81,6 +81,7 @@ struct photon_event {
     struct vec3 wi;       /* unit, back towards where it came from                      */
     struct vec3 power;    /* W per channel, the 1 / N already in (zero for shadow ones) */
     unsigned kind;        /* one of PHOTON_DIRECT, _CAUSTIC, _INDIRECT, _SHADOW          */
+    int light;            /* the light that emitted it (index into scene->lights)       */
 };
 
 /* Where stored photons go: a photon map packs them (trace_photons), progressive photon

@@ -1,0 +1,112 @@
+/*
+ * photon/irradiance_cache.h -- Ward's irradiance cache (Ward, Rubinstein and Clear 1988,
+ * "A ray tracing solution for diffuse interreflection") with irradiance gradients (Ward
+ * and Heckbert 1992, "Irradiance gradients").
+ *
+ * Irradiance on diffuse surfaces changes slowly, so it is computed (by a final gather over
+ * the hemisphere) at a sparse set of points and interpolated in between. A gather at p
+ * samples the hemisphere in m x n strata of equal projected solid angle; the strata's mean
+ * radiances give the irradiance E, their distances give R, the harmonic mean distance to
+ * the surroundings (the scale over which E can change, Ward 1988's "split sphere"), and
+ * the differences between neighbouring strata give how E changes as the point moves
+ * (translational gradient) and as the normal turns (rotational gradient). A record (p, n,
+ * E, R, gradients) is usable at a point p' with normal n' when Ward's error estimate
+ *   epsilon_i(p', n') = |p' - p_i| / R_i + sqrt(1 - n' . n_i)
+ * is below the accuracy a; the estimate at p' is the mean of the usable records'
+ * values, each moved to (p', n') by its gradients and weighted by w_i = 1 / epsilon_i.
+ *
+ * Life of a cache: irradiance_cache_create() over the scene's box; a renderer asks
+ * irradiance_cache_lookup() at each diffuse point and, when no record is usable, gathers,
+ * makes a record with irradiance_record_make() and adds it with irradiance_cache_add();
+ * lookups and additions may alternate freely. irradiance_cache_free() releases it. The
+ * cache copies what it is given, so samples and records stay the caller's.
+ * The spatial index (a loose octree) is described at the top of irradiance_cache.c.
+ */
+#ifndef PHOTON_IRRADIANCE_CACHE_H
+#define PHOTON_IRRADIANCE_CACHE_H
+
+#include <stddef.h>
+
+#include "../base/vec3.h"
+#include "../geom/ray.h" /* struct aabb */
+
+/* Ward and Heckbert's strata: the hemisphere above a surface split into m rings of equal
+ * projected solid angle (sin^2 theta from j/m to (j+1)/m) times n sectors in phi (2 pi k/n
+ * to 2 pi (k+1)/n), so each stratum subtends projected solid angle pi / (m n). Local
+ * coordinates: z along the normal, phi measured from x towards y.
+ * STRATA_MAX: the most strata (m * n) a record may be made from, so that a renderer can
+ * size its sample scratch once per render and options can refuse more; 4096 is 64 x 64,
+ * twice the finest hemisphere sampling Ward and Heckbert report using. */
+#define STRATA_MAX 4096
+
+/* Direction in stratum (j, k) (0 <= j < m, 0 <= k < n), cosine-distributed within it,
+ * from u1, u2 in [0, 1): sin^2 theta = (j + u1) / m, phi = 2 pi (k + u2) / n. Unit up to
+ * rounding, z > 0 always (local coordinates). */
+struct vec3 stratum_direction(int m, int n, int j, int k, double u1, double u2);
+
+/* The stratum (*j, *k) holding a local direction with z >= 0 (need not be unit, must not
+ * be zero); directions on a boundary or just outside the hemisphere are clamped into
+ * range. The inverse of stratum_direction() away from stratum boundaries. */
+void stratum_of(int m, int n, struct vec3 local, int *j, int *k);
+
+/* What a final gather found in one stratum. */
+struct stratum_sample {
+    struct vec3 radiance; /* L_jk: mean radiance arriving through the stratum (W/(m^2 sr)) */
+    double distance;      /* r_jk: distance to the nearest surface hit by its rays, >= 0;
+                             INFINITY when all escaped                                    */
+};
+
+struct irradiance_record {
+    struct vec3 p;         /* p_i, position                                               */
+    struct vec3 n;         /* n_i, unit normal                                            */
+    struct vec3 e;         /* E_i, irradiance per channel (W/m^2)                         */
+    double r;              /* R_i: harmonic mean distance of the strata, clamped; > 0     */
+    struct vec3 grad_r[3]; /* rotational gradient of channel c (R, G, B), world space:
+                              dE_c ~ (n_i x n) . grad_r[c]; perpendicular to n_i          */
+    struct vec3 grad_t[3]; /* translational gradient of channel c, world space:
+                              dE_c ~ (p - p_i) . grad_t[c]; in the tangent plane of n_i   */
+};
+
+/* A record from the m x n_phi strata samples (samples[j * n_phi + k] holds stratum
+ * (j, k)) gathered at p in the frame (t, b, n): orthonormal, right-handed, n the unit
+ * normal; local x = t, y = b, z = n. 1 <= m, n_phi; m * n_phi <= STRATA_MAX;
+ * 0 < r_min <= r_max.
+ *   E = pi / (m n) sum L_jk;
+ *   R = harmonic mean of r_jk (escaped strata count as infinitely far, adding 0 to the
+ *       sum of 1 / r; R = r_max when all escaped), clamped to [r_min, r_max];
+ *   the rotational and translational gradients of Ward and Heckbert 1992 (formulas in
+ *   irradiance_cache.c). Allocates nothing. */
+struct irradiance_record irradiance_record_make(struct vec3 p, struct vec3 t, struct vec3 b,
+                                                struct vec3 n, int m, int n_phi,
+                                                const struct stratum_sample *samples,
+                                                double r_min, double r_max);
+
+struct irradiance_cache; /* owns its records and its octree */
+
+/* An empty cache over bounds (the scene's box; lo <= hi, finite; records outside it are
+ * accepted too, at a cost: see irradiance_cache.c) with Ward's accuracy a > 0 (e.g.
+ * 0.15; below 1, records on surfaces facing away, n . n_i <= 0, are never usable). */
+struct irradiance_cache *irradiance_cache_create(struct aabb bounds, double accuracy);
+void irradiance_cache_free(struct irradiance_cache *cache); /* NULL is a no-op */
+
+/* Adds a copy of the record (finite p, unit n, r > 0). Amortised O(depth). */
+void irradiance_cache_add(struct irradiance_cache *cache,
+                          const struct irradiance_record *record);
+
+/* Ward's interpolation at p with unit normal n:
+ *   E(p, n) = sum_i w_i (E_i + (n_i x n) . grad_r + (p - p_i) . grad_t) / sum_i w_i,
+ * each channel clamped to >= 0, over the records i that are usable (epsilon_i < a,
+ * w_i = 1 / epsilon_i) and not in front of p (see irradiance_cache.c). Returns 1 with *e
+ * filled when at least one record is usable, else 0 with *e untouched. Never NaN: a
+ * record at (p, n) itself has its weight capped and gives its own E. The result depends
+ * only on the records and the order in which they were added. Allocates nothing. */
+int irradiance_cache_lookup(const struct irradiance_cache *cache, struct vec3 p,
+                            struct vec3 n, struct vec3 *e);
+
+size_t irradiance_cache_records(const struct irradiance_cache *cache);
+size_t irradiance_cache_bytes(const struct irradiance_cache *cache); /* for --stats */
+
+/* 1 when the octree satisfies the invariants stated in irradiance_cache.c, else 0. */
+int irradiance_cache_check(const struct irradiance_cache *cache);
+
+#endif
