@@ -14,6 +14,7 @@
 #include "image/compare.h"
 #include "image/plot.h"
 #include "modes/direct.h"
+#include "modes/jensen1996.h"
 #include "modes/photons.h"
 #include "modes/ppm2008.h"
 #include "modes/pt.h"
@@ -29,6 +30,7 @@ struct run {
     struct render_result result;
     struct photon_stats photon_stats; /* --mode photons only */
     struct ppm_stats ppm_stats;       /* --mode 2008 only */
+    struct jensen1996_stats j96_stats; /* --mode 1996 only */
     clock_t start;
     double seconds_build;
 };
@@ -157,6 +159,27 @@ static void print_ppm_stats(const struct ppm_stats *ps)
             ps->mean_radius);
 }
 
+static void print_jensen1996_stats(const struct jensen1996_stats *js)
+{
+    unsigned long long tests = js->shadow_rays + js->shadow_rays_avoided;
+    fprintf(stderr, "photons_emitted=%zu\nphoton_rays=%llu\n", js->photons_emitted,
+            js->photon_rays);
+    fprintf(stderr, "photons_global=%zu\nphotons_caustic=%zu\nphotons_shadow=%zu\n",
+            js->photons_global, js->photons_caustic, js->photons_shadow);
+    fprintf(stderr, "bytes_global_map=%zu\nbytes_caustic_map=%zu\nbytes_visibility_maps=%zu\n",
+            js->bytes_global_map, js->bytes_caustic_map, js->bytes_visibility_maps);
+    fprintf(stderr, "seconds_photons=%.3f\nseconds_cache=%.3f\nseconds_render=%.3f\n",
+            js->seconds_photons, js->seconds_cache, js->seconds_render);
+    fprintf(stderr, "shadow_rays=%llu\nshadow_rays_avoided=%llu\n", js->shadow_rays,
+            js->shadow_rays_avoided);
+    fprintf(stderr, "shadow_rays_avoided_fraction=%.4f\n",
+            tests > 0 ? (double)js->shadow_rays_avoided / (double)tests : 0.0);
+    fprintf(stderr, "cache_records=%zu\nbytes_cache=%zu\ngathers=%llu\ngather_fallbacks=%llu\n",
+            js->cache_records, js->bytes_cache, js->gathers, js->gather_fallbacks);
+    fprintf(stderr, "gather_rays=%llu\nstrata=%dx%d\n", js->gather_rays, js->strata_theta,
+            js->strata_phi);
+}
+
 static void print_stats(const struct run *run)
 {
     const struct scene *scene = run->scene;
@@ -174,6 +197,8 @@ static void print_stats(const struct run *run)
         print_photon_stats(&run->photon_stats);
     if (run->o.mode == MODE_PPM2008)
         print_ppm_stats(&run->ppm_stats);
+    if (run->o.mode == MODE_JENSEN1996)
+        print_jensen1996_stats(&run->j96_stats);
 }
 
 /* Renders with the chosen mode; the image is NULL (and *err filled) on failure. */
@@ -184,6 +209,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
     int want_variance = run->o.variance != NULL;
     struct photon_settings ps;
     struct ppm_settings pp = ppm_settings_default();
+    struct jensen1996_settings js = jensen1996_settings_default();
     struct checkpoint snapshot = {write_snapshot, &run->o};
     switch (run->o.mode) {
     case MODE_PT:
@@ -195,6 +221,23 @@ static struct render_result render_mode(struct run *run, struct error *err)
         ps.cone_k = run->o.cone;
         return render_photons(run->scene, &run->rs, &ps, want_variance, checkpoint,
                               &run->counters, &run->photon_stats, err);
+    case MODE_JENSEN1996:
+        js.global_photons = (size_t)run->o.photons;
+        js.caustic_photons = (size_t)run->o.caustic_photons;
+        js.global_gather = (size_t)run->o.gather;
+        js.caustic_gather = (size_t)run->o.caustic_gather;
+        js.max_radius = run->o.max_radius;
+        js.cone_k = run->o.cone;
+        js.gather_rays = run->o.gather_rays;
+        js.glossy_rays = run->o.glossy_rays;
+        js.cache_accuracy = run->o.cache_accuracy;
+        js.accurate_distance = run->o.accurate_distance;
+        js.accurate_weight = run->o.accurate_weight;
+        js.shadow_photons = run->o.shadow_photons;
+        js.one_map = run->o.one_map;
+        js.report = checkpoint;
+        return render_jensen1996(run->scene, &run->rs, &js, want_variance, &run->counters,
+                                 &run->j96_stats, err);
     case MODE_PPM2008:
         pp.photons_per_pass = (size_t)run->o.photons_per_pass;
         pp.passes = run->o.passes;

@@ -21,6 +21,7 @@ int main(void)
     test_photon(&t);
     test_trace(&t);
     test_ppm(&t);
+    test_cache(&t);
     test_render(&t);
     test_pt(&t);
     test_report(&t);

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "../image/image.h"
+#include "../modes/jensen1996.h"
 #include "../modes/photons.h"
 #include "../modes/ppm2008.h"
 #include "../modes/render.h"
@@ -33,7 +34,7 @@ struct option_spec {
 
 static const struct option_spec specs[] = {
     {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME",
-     "rendering mode: direct, pt, photons or 2008 (default direct)"},
+     "rendering mode: direct, pt, photons, 1996 or 2008 (default direct)"},
     {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm",
      "output image; FILE.ppm is written beside it (default: SCENE's name, .pfm)"},
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)"},
@@ -61,7 +62,27 @@ static const struct option_spec specs[] = {
     {"--max-radius", OPT_REAL, FIELD(max_radius), 0, 1e30, "R",
      "photon modes: largest gathering radius (default: 1/10 of the scene's diagonal)"},
     {"--cone", OPT_REAL, FIELD(cone), 0, 1e6, "K",
-     "photon modes: cone filter constant k >= 1 (Jensen 1996 Eq. 4); 0 = none (default)"},
+     "photon modes: cone filter constant k >= 1 (Jensen 1996 Eq. 4); 0 = none (default: "
+     "photons 0, 1996 1 on caustics)"},
+    {"--caustic-photons", OPT_INT, FIELD(caustic_photons), 0, MAX_PHOTONS, "N",
+     "1996: photons emitted towards specular objects for the caustic map (default 100000)"},
+    {"--caustic-gather", OPT_INT, FIELD(caustic_gather), 1, MAX_GATHER, "K",
+     "1996: photons in each caustic estimate (default 60)"},
+    {"--gather-rays", OPT_INT, FIELD(gather_rays), 2, J96_MAX_GATHER_RAYS, "N",
+     "1996: rays of one final gather: half stratified, half by photon importance (default 256)"},
+    {"--glossy-rays", OPT_INT, FIELD(glossy_rays), 1, 1000, "N",
+     "1996: rays sampling a glossy surface seen accurately (default 6, the paper's)"},
+    {"--cache-accuracy", OPT_REAL, FIELD(cache_accuracy), 0, 10, "A",
+     "1996: irradiance cache accuracy a (Ward 1988); 0 = gather at every point (default 0.15)"},
+    {"--accurate-distance", OPT_REAL, FIELD(accurate_distance), 0, 1e6, "F",
+     "1996: gather rays shorter than F radii of the estimate they reach are evaluated "
+     "accurately (default 1)"},
+    {"--accurate-weight", OPT_REAL, FIELD(accurate_weight), 0, 1, "W",
+     "1996: rays with throughput below W are evaluated approximately (default 0.1)"},
+    {"--no-shadow-photons", OPT_FLAG, FIELD(shadow_photons), 0, 0, "",
+     "1996: cast every shadow ray instead of deciding from shadow photons"},
+    {"--one-map", OPT_FLAG, FIELD(one_map), 0, 0, "",
+     "1996: one global map of as many photons instead of a caustic and a global map"},
     {"--passes", OPT_INT, FIELD(passes), 1, MAX_PASSES, "N",
      "2008: photon passes (default 64; --time-limit may stop sooner)"},
     {"--photons-per-pass", OPT_INT, FIELD(photons_per_pass), 1, MAX_PHOTONS, "N",
@@ -88,6 +109,8 @@ const char *mode_name(enum mode mode)
         return "pt";
     case MODE_PHOTONS:
         return "photons";
+    case MODE_JENSEN1996:
+        return "1996";
     case MODE_PPM2008:
         return "2008";
     }
@@ -124,6 +147,16 @@ static void set_defaults(struct options *o)
     o->passes = PPM_DEFAULT_PASSES;
     o->photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
     o->alpha = PPM_DEFAULT_ALPHA;
+    o->cone = -1;
+    struct jensen1996_settings js = jensen1996_settings_default();
+    o->caustic_photons = (int)js.caustic_photons;
+    o->caustic_gather = (int)js.caustic_gather;
+    o->gather_rays = js.gather_rays;
+    o->glossy_rays = js.glossy_rays;
+    o->cache_accuracy = js.cache_accuracy;
+    o->accurate_distance = js.accurate_distance;
+    o->accurate_weight = js.accurate_weight;
+    o->shadow_photons = 1;
 }
 
 /* A number from text: whole (integer != 0) or real, within [min, max]. */
@@ -158,13 +191,14 @@ static int read_seed(const char *text, uint64_t *seed, struct error *err)
 
 static int read_mode(const char *text, enum mode *mode, struct error *err)
 {
-    static const enum mode modes[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_PPM2008};
+    static const enum mode modes[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1996,
+                                      MODE_PPM2008};
     for (size_t i = 0; text != NULL && i < sizeof modes / sizeof modes[0]; i++)
         if (strcmp(text, mode_name(modes[i])) == 0) {
             *mode = modes[i];
             return 0;
         }
-    return error_set(err, "", 0, "--mode: unknown mode '%s' (available: direct, pt, photons, 2008)",
+    return error_set(err, "", 0, "--mode: unknown mode '%s' (available: direct, pt, photons, 1996, 2008)",
                      text != NULL ? text : "nothing");
 }
 
@@ -282,6 +316,8 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         return error_set(err, "", 0, "--reference and --report go together");
     if (o->cone > 0 && o->cone < 1)
         return error_set(err, "", 0, "--cone: k must be 0 (no filter) or at least 1");
+    if (o->cone < 0)
+        o->cone = o->mode == MODE_JENSEN1996 ? 1.0 : 0.0;
     if (!(o->alpha > 0 && o->alpha < 1))
         return error_set(err, "", 0, "--alpha: expected a number strictly between 0 and 1");
     if (o->spp == 0)

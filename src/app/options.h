@@ -14,7 +14,7 @@
 #define PHOTON_VERSION "0.1.0"
 #define OUTPUT_PATH_MAX 1024
 
-enum mode { MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_PPM2008 };
+enum mode { MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1996, MODE_PPM2008 };
 
 struct options {
     const char *scene_path;       /* the scene file (borrowed from argv)           */
@@ -35,7 +35,17 @@ struct options {
     int photons;                  /* photon modes: photons emitted                 */
     int gather;                   /* photon modes: photons per radiance estimate   */
     double max_radius;            /* photon modes: gathering radius; 0 = default   */
-    double cone;                  /* photon modes: cone filter k; 0 = none         */
+    double cone;                  /* photon modes: cone filter k; 0 = none, -1 = the
+                                     mode's default (photons 0, 1996 1)            */
+    int caustic_photons;          /* 1996: photons emitted for the caustic map     */
+    int caustic_gather;           /* 1996: photons in each caustic estimate        */
+    int gather_rays;              /* 1996: rays of one final gather                */
+    int glossy_rays;              /* 1996: rays sampling a glossy part             */
+    double cache_accuracy;        /* 1996: Ward's a; 0 = no irradiance cache       */
+    double accurate_distance;     /* 1996: corner threshold, in estimate radii     */
+    double accurate_weight;       /* 1996: throughput below which rays go rough    */
+    int shadow_photons;           /* 1996: decide visibility from shadow photons   */
+    int one_map;                  /* 1996: one map for global and caustic photons  */
     int passes;                   /* 2008: photon passes                           */
     int photons_per_pass;         /* 2008: photons traced in each pass             */
     double alpha;                 /* 2008: Eq. 7's alpha, in (0, 1)                */

@@ -30,20 +30,14 @@ static struct vec3 direct_lighting(const struct scene *scene, const struct surfa
     struct vec3 sum = vec3_zero();
     for (size_t i = 0; i < scene->n_lights; i++) {
         struct light_sample ls;
+        struct vec3 contribution;
         double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
-        if (!light_sample(&scene->lights[i], s->p, u1, u2, &ls))
-            continue;
-        double cos_theta = vec3_dot(s->ns, ls.wi);
-        if (cos_theta <= 0 || vec3_dot(s->ng, ls.wi) <= 0)
-            continue; /* the light is behind the surface */
-        struct vec3 fr = brdf_eval(s->material, frame, s->wo, ls.wi);
-        if (vec3_max_component(fr) <= 0)
+        if (!light_contribution(&scene->lights[i], s, s->material, frame, u1, u2, &ls,
+                                &contribution))
             continue;
         counters->rays++;
-        if (scene_occluded(scene, offset_origin(s->p, s->ng), ls.wi, ls.distance))
-            continue;
-        /* pdf > 0 when sampled */
-        sum = vec3_add(sum, vec3_scale(vec3_mul(fr, ls.li), cos_theta / ls.pdf));
+        if (!light_blocked(scene, s, &ls))
+            sum = vec3_add(sum, contribution);
     }
     return sum;
 }

@@ -343,7 +343,7 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     ppm.width = rs->x1 - rs->x0;
     ppm.height = rs->y1 - rs->y0;
     ppm.seen = xcalloc((size_t)ppm.width * (size_t)ppm.height, sizeof *ppm.seen, "ppm pixels");
-    ppm.footprint_per_distance = 2.0 * scene->camera.tan_half / scene->camera.height; /* >= 1 */
+    ppm.footprint_per_distance = camera_footprint(&scene->camera);
     ppm.unnormalise = (double)ps->photons_per_pass;
     clock_t start = clock();
     ray_tracing_pass(&ppm);

@@ -72,16 +72,56 @@ static inline int specular_bounce(const struct surface *s, const struct shading_
     return 1;
 }
 
-/* Russian roulette on a camera path after ROULETTE_DEPTH bounces, with survival odds
- * q = min(1, largest channel of the throughput *beta): 0 ends the path; otherwise *beta
- * is divided by q, so the estimate stays unbiased. */
+/* One sample of light l seen from s, with uniform numbers u1, u2: *contribution is the
+ * radiance reflected towards s->wo through m's non-delta part if nothing blocks the light,
+ * f_r Li cos / pdf, and *ls the sample (wi and distance: the shadow ray's segment).
+ * Returns 0 when the sample can bring nothing: the light is behind the surface or cannot
+ * see s, or f_r is zero there. */
+static inline int light_contribution(const struct light *l, const struct surface *s,
+                                     const struct material *m,
+                                     const struct shading_frame *frame, double u1, double u2,
+                                     struct light_sample *ls, struct vec3 *contribution)
+{
+    if (!light_sample(l, s->p, u1, u2, ls))
+        return 0;
+    double cos_theta = vec3_dot(s->ns, ls->wi);
+    if (cos_theta <= 0 || vec3_dot(s->ng, ls->wi) <= 0)
+        return 0; /* the light is behind the surface */
+    struct vec3 fr = brdf_eval(m, frame, s->wo, ls->wi);
+    if (vec3_max_component(fr) <= 0)
+        return 0;
+    *contribution = vec3_scale(vec3_mul(fr, ls->li), cos_theta / ls->pdf); /* pdf > 0 */
+    return 1;
+}
+
+/* Whether the shadow ray of light sample ls from s is blocked. */
+static inline int light_blocked(const struct scene *scene, const struct surface *s,
+                                const struct light_sample *ls)
+{
+    return scene_occluded(scene, offset_origin(s->p, s->ng), ls->wi, ls->distance);
+}
+
+/* Russian roulette's survival odds for a camera path with throughput beta after depth
+ * bounces: 1 before ROULETTE_DEPTH, then q = min(1, largest channel of beta) (0 for a
+ * zero or NaN throughput). */
+static inline double roulette_odds(struct vec3 beta, int depth)
+{
+    if (depth < ROULETTE_DEPTH)
+        return 1.0;
+    double q = fmin(1.0, vec3_max_component(beta));
+    return q > 0 ? q : 0.0;
+}
+
+/* Russian roulette on a camera path with the odds above: 0 ends the path; otherwise
+ * *beta is divided by q, so the estimate stays unbiased. A number is drawn only once
+ * roulette applies. */
 static inline int survives_roulette(struct vec3 *beta, int depth, struct rng *rng)
 {
     if (depth < ROULETTE_DEPTH)
         return 1;
-    double q = fmin(1.0, vec3_max_component(*beta));
+    double q = roulette_odds(*beta, depth);
     if (!(rng_uniform(rng) < q))
-        return 0; /* also ends paths whose throughput is 0 or NaN */
+        return 0;
     *beta = vec3_scale(*beta, 1.0 / q); /* q > 0 here: a uniform number was below it */
     return 1;
 }

@@ -11,24 +11,21 @@
  * and sector k spans phi in [2 pi k / n, 2 pi (k + 1) / n].
  *
  * The index: a loose octree over a cube (side = the largest extent of the bounds given
- * to irradiance_cache_create()). A node at depth d has side s = side / 2^d; its records
- * lie inside its box and reach at most half its side, a R_i <= s / 2 (a record is usable
- * only within a R_i of p_i), except at the depth limit, where records of any reach stay.
- * So a record usable at p sits in a node whose box, grown by half the node's side on
- * every face, contains p, and a lookup visits exactly those nodes (Ward 1988 stores
+ * to irradiance_cache_create()). A node at depth d has side s = side / 2^d. A record is
+ * usable only within a R_i of p_i, and goes into the deepest node that contains p_i and
+ * is at least 2 a R_i wide, at most MAX_DEPTH levels down; so it reaches at most half
+ * its node's side beyond the node's box, and a lookup at p visits exactly the nodes
+ * whose box, grown by half the node's side on every face, contains p (Ward 1988 kept
  * records in an octree the same way; Radiance's ambient.c grows each box by its whole
- * side). A record goes into the deepest node containing p_i whose side is at least
- * 2 a R_i; records outside the cube (or whose p_i does not fit it) stay in the root,
- * whose list every lookup reads whole: correct for any placement, slow only if a
- * renderer puts many records outside the bounds it gave.
- * Invariants (irradiance_cache_check()):
- *   (1) every record of a node other than the root lies in the node's box, and
- *       2 a R_i <= the node's side unless the node is at MAX_DEPTH;
- *   (2) a root record lies outside the cube or has 2 a R_i > side / 2 (the root is the
- *       deepest node for it), the same rule for deeper nodes: 2 a R_i > s / 2 or the
- *       child is absent only because of (1)... checked as "the record could not go one
- *       level deeper";
- *   (3) the children of node i have larger indices than i (nodes are appended).
+ * side). Records outside the cube stay in the root, whose list every lookup reads
+ * whole: correct wherever records lie, slow only if a renderer puts many records
+ * outside the bounds it gave. Invariants (irradiance_cache_check()):
+ *   (1) a record of a node other than the root lies in the node's box, and
+ *       2 a R_i <= the node's side;
+ *   (2) a record inside the cube could not go one level deeper: its node is at depth
+ *       MAX_DEPTH, or the node's children are narrower than 2 a R_i;
+ *   (3) children come after their parents in nodes[], and no node is deeper than
+ *       MAX_DEPTH; every record is counted in n_records.
  * Ownership: the cache owns nodes[] and every node's records[]; nodes refer to their
  * children by index, so growing nodes[] by realloc moves nothing that is pointed at.
  */
@@ -40,25 +37,10 @@
 
 #include "../base/alloc.h"
 
-/* MAX_DEPTH: 20 levels take the side down by 2^20 ~ 1e6, below any record's reach in a
- * scene modelled in double; a record of smaller reach stays at depth 20, which is
- * correct (it reaches less than half the node's side), only less selective. */
+/* MAX_DEPTH: 20 levels take the side down by 2^20 ~ 1e6, finer than the records of any
+ * sensible r_min; records of smaller reach still go no deeper than 20, which is correct
+ * (they reach less than half the node's side), only less selective. */
 #define MAX_DEPTH 20
-
-/* FRONT_TOLERANCE: Ward 1988 leaves out a record "in front of" p, one with
- *   d_i(p) = (p - p_i) . (n + n_i) / 2 < 0,
- * since the surface it was made on may shadow p. We allow d_i down to -0.05 R_i: E
- * changes over distances of order R_i (that is what R_i measures), so a record that
- * close in front errs by a few percent, less than the accuracy a the cache is run at,
- * while rounding and the difference between shading and geometric normals cannot
- * exclude records that lie on p's own surface. */
-#define FRONT_TOLERANCE 0.05
-
-/* EPSILON_MIN: Ward's weight 1 / epsilon_i is infinite when the query is the record's
- * own point and normal; epsilon_i below 1e-12 counts as 1e-12. The capped weight 1e12 is
- * 1e11 times that of any record near the edge of its reach (1 / a), so the record's own
- * E is returned to 11 digits, and w E stays far from overflow. */
-#define EPSILON_MIN 1e-12
 
 #define RECORDS_INITIAL 4 /* first capacity of a node's record array */
 #define NODES_INITIAL 64  /* first capacity of the node array        */
@@ -137,14 +119,18 @@ static void gradient_to_world(struct vec3 gx, struct vec3 gy, struct vec3 t, str
         grad[c] = vec3_add(vec3_scale(t, vec3_get(gx, c)), vec3_scale(b, vec3_get(gy, c)));
 }
 
-/* Ward and Heckbert's rotational gradient: turning the normal towards the tangent v
- * changes E = int L cos theta dw by int L sin theta (w . v) dw, which over strata of
- * projected solid angle pi / (m n) (dw = pi / (m n cos theta)) becomes
+/* Ward and Heckbert's rotational gradient. Turning the normal by a small angle delta
+ * about an axis a (so that n_i x n = delta a) moves it by delta (a x n), and
+ * E = int L (w . n) dw changes by delta int L w . (a x n) dw = delta a . int L (n x w) dw;
+ * so grad_r = int L (n x w) dw, and n x w = sin theta v(phi), v(phi) = (-sin phi,
+ * cos phi, 0) locally. Over strata of projected solid angle pi / (m n), where
+ * dw = pi / (m n cos theta):
  *   grad_r E = pi / (m n) sum_k v_k sum_j tan theta_j L_jk,
- * theta_j the middle of ring j, v_k the unit vector at phi_k + pi / 2 with phi_k the
- * middle of sector k (Radiance's dirgradient()). With our sign convention
- * dE = (n_i x n) . grad_r the sum carries +tan theta_j: rotating n by a small angle
- * about the axis x turns it towards -y, and (n_i x n) = angle * x. */
+ * theta_j the middle of ring j, v_k = v at the middle of sector k (Radiance's
+ * dirgradient()). The sign is the one our convention dE = (n_i x n) . grad_r asks for.
+ * The last ring's tan theta runs to infinity, and its value at the ring's middle falls
+ * short of its mean there: the gradient comes out about 0.44 / sqrt(m) short
+ * (test_cache.c measures it). */
 static void rotational_gradient(int m, int n_phi, const struct stratum_sample *samples,
                                 struct vec3 t, struct vec3 b, struct vec3 grad_r[3])
 {
@@ -172,23 +158,25 @@ static double inverse_boundary_distance(double r_a, double r_b, double r_min)
     return 1 / fmax(fmin(r_a, r_b), r_min);
 }
 
-/* Ward and Heckbert's translational gradient. Moving the point by dx along the tangent
- * u makes the scene seen at the edge theta_j- between rings j-1 and j slide inwards by
+/* Ward and Heckbert's translational gradient. Moving the point by dx along a tangent u
+ * makes the scene seen at the edge theta_j- between rings j-1 and j slide inwards by
  * dtheta = dx cos theta / r, so ring j-1 gains ring j's radiance over a strip of
- * projected solid angle sin theta cos^2 theta (2 pi / n) dx / r; moving along v (the
- * normal of the edge phi_k between sectors k-1 and k) slides sector k's view into
- * sector k-1 over cos theta sin theta dtheta dx / (r sin theta), integrated over the
- * ring: (sin theta_j+ - sin theta_j-) dx / r. Summed over all edges:
+ * projected solid angle sin theta cos^2 theta (2 pi / n) dx / r. Moving by dx along v,
+ * across the edge phi_k between sectors k-1 and k, slides sector k's view into sector
+ * k-1 over a strip dphi = dx / (r sin theta) wide, of projected solid angle
+ * int cos theta sin theta dtheta dphi = (sin theta_j+ - sin theta_j-) dx / r in ring j.
+ * Summed over all edges:
  *   grad_t E = sum_k [ u_k (2 pi / n) sum_{j=1}^{m-1} sin theta_j- cos^2 theta_j-
  *                          (L_jk - L_{j-1,k}) / min(r_jk, r_{j-1,k})
  *                    + v_k- sum_{j=0}^{m-1} (sin theta_j+ - sin theta_j-)
  *                          (L_jk - L_{j,k-1}) / min(r_jk, r_{j,k-1}) ],
  * k - 1 modulo n, r the nearer of the two strata's distances (the nearer surface moves
- * its edge fastest), v_k- the unit vector at phi_k + pi / 2 (phi_k = 2 pi k / n, the
- * sector edge). Departs from Radiance's posgradient(), which takes u_k at the sector's
- * edge phi_k as well: the ring edge of sector k spans [phi_k, phi_k+1], its outward
- * directions average to the middle phi_k + pi / n, and the edge turns the term by
- * pi / n (a 3 degree turn, 5% of the gradient across it, for n = 64). */
+ * the edge fastest), v_k- the unit vector at phi_k + pi / 2, phi_k = 2 pi k / n the
+ * sector's edge, and u_k the unit vector at the sector's middle, phi_k + pi / n.
+ * Departs from Radiance's posgradient(), which takes u_k at the edge phi_k too: the ring
+ * edge of sector k spans [phi_k, phi_k+1] and its outward directions average to the
+ * middle; the edge turns the ring term by pi / n (2.8 degrees, 5% of it sideways, at
+ * n = 64), which test_cache.c sees on an axis of symmetry. */
 static void translational_gradient(int m, int n_phi, const struct stratum_sample *samples,
                                    double r_min, struct vec3 t, struct vec3 b,
                                    struct vec3 grad_t[3])
@@ -234,12 +222,23 @@ struct irradiance_record irradiance_record_make(struct vec3 p, struct vec3 t, st
         sum = vec3_add(sum, samples[i].radiance);
     record.e = vec3_scale(sum, PI / ((double)m * n_phi)); /* E = pi / (m n) sum L_jk */
     record.r = harmonic_mean_distance(m * n_phi, samples, r_min, r_max);
-    rotational_gradient(m, n_phi, samples, t, b, record.grad_r);
-    translational_gradient(m, n_phi, samples, r_min, t, b, record.grad_t);
+    if (n_phi > 1) {
+        rotational_gradient(m, n_phi, samples, t, b, record.grad_r);
+        translational_gradient(m, n_phi, samples, r_min, t, b, record.grad_t);
+    } else { /* one sector cannot tell one tangent direction from another */
+        for (int c = 0; c < 3; c++)
+            record.grad_r[c] = record.grad_t[c] = vec3_zero();
+    }
     return record;
 }
 
 /* ---- The octree -------------------------------------------------------------------- */
+
+static struct cache_node empty_node(void)
+{
+    struct cache_node node = {{0, 0, 0, 0, 0, 0, 0, 0}, NULL, 0, 0};
+    return node;
+}
 
 struct irradiance_cache *irradiance_cache_create(struct aabb bounds, double accuracy)
 {
@@ -251,8 +250,9 @@ struct irradiance_cache *irradiance_cache_create(struct aabb bounds, double accu
     cache->side = side > 0 ? side : 1;
     cache->accuracy = accuracy;
     cache->capacity = NODES_INITIAL;
-    cache->nodes = xcalloc(cache->capacity, sizeof *cache->nodes, "irradiance cache nodes");
-    cache->n_nodes = 1; /* the root, empty */
+    cache->nodes = xmalloc(cache->capacity, sizeof *cache->nodes, "irradiance cache nodes");
+    cache->nodes[0] = empty_node(); /* the root */
+    cache->n_nodes = 1;
     cache->n_records = 0;
     return cache;
 }
@@ -273,14 +273,18 @@ static int box_contains(struct vec3 lo, double side, struct vec3 p)
            p.z >= lo.z && p.z <= lo.z + side;
 }
 
-/* The octant of the node at lo with the given side that holds p, and its corner. */
-static int octant(struct vec3 lo, double side, struct vec3 p, struct vec3 *child_lo)
+/* The lower corner of octant i of the node at lo whose children have side half. */
+static struct vec3 child_corner(struct vec3 lo, double half, int i)
+{
+    return vec3(i & 1 ? lo.x + half : lo.x, i & 2 ? lo.y + half : lo.y,
+                i & 4 ? lo.z + half : lo.z);
+}
+
+/* The octant of the node at lo with the given side that holds p. */
+static int octant(struct vec3 lo, double side, struct vec3 p)
 {
     double half = side / 2;
-    struct vec3 mid = vec3(lo.x + half, lo.y + half, lo.z + half);
-    int i = (p.x >= mid.x) | (p.y >= mid.y) << 1 | (p.z >= mid.z) << 2;
-    *child_lo = vec3(i & 1 ? mid.x : lo.x, i & 2 ? mid.y : lo.y, i & 4 ? mid.z : lo.z);
-    return i;
+    return (p.x >= lo.x + half) | (p.y >= lo.y + half) << 1 | (p.z >= lo.z + half) << 2;
 }
 
 static size_t new_node(struct irradiance_cache *cache)
@@ -290,8 +294,7 @@ static size_t new_node(struct irradiance_cache *cache)
         cache->nodes = xrealloc(cache->nodes, cache->capacity, sizeof *cache->nodes,
                                 "irradiance cache nodes");
     }
-    struct cache_node empty = {{0, 0, 0, 0, 0, 0, 0, 0}, NULL, 0, 0};
-    cache->nodes[cache->n_nodes] = empty;
+    cache->nodes[cache->n_nodes] = empty_node();
     return cache->n_nodes++;
 }
 
@@ -311,7 +314,8 @@ void irradiance_cache_add(struct irradiance_cache *cache,
     double side = cache->side;
     if (box_contains(lo, side, record->p)) {
         for (int depth = 0; goes_deeper(cache, side, depth, record->r); depth++) {
-            int i = octant(lo, side, record->p, &lo);
+            int i = octant(lo, side, record->p);
+            lo = child_corner(lo, side / 2, i);
             if (cache->nodes[node].child[i] == 0) {
                 size_t child = new_node(cache); /* before taking &nodes[node] again */
                 cache->nodes[node].child[i] = child;
@@ -340,27 +344,25 @@ struct weighted_sum {
     double weight;    /* sum of weights, 0 while none used */
 };
 
-/* Adds record i's extrapolated value if it is usable at the query. */
+/* Adds the record's value, moved to the query by its gradients, if it is usable there. */
 static void add_record(struct weighted_sum *ws, const struct irradiance_record *ri)
 {
     struct vec3 d = vec3_sub(ws->p, ri->p);
-    /* Ward 1988: d_i = (p - p_i) . (n + n_i) / 2 < 0 is "in front"; see FRONT_TOLERANCE */
-    if (vec3_dot(d, vec3_add(ws->n, ri->n)) / 2 < -FRONT_TOLERANCE * ri->r)
+    /* Ward 1988: d_i = (p - p_i) . (n + n_i) / 2 < 0 is "in front"; see CACHE_FRONT_TOLERANCE */
+    if (vec3_dot(d, vec3_add(ws->n, ri->n)) / 2 < -CACHE_FRONT_TOLERANCE * ri->r)
         return;
     /* Ward 1988: epsilon_i = |p - p_i| / R_i + sqrt(1 - n . n_i); rounding can push
      * n . n_i just above 1, hence fmax. */
     double epsilon = vec3_length(d) / ri->r + sqrt(fmax(0, 1 - vec3_dot(ws->n, ri->n)));
     if (!(epsilon < ws->a))
         return;
-    double w = 1 / fmax(epsilon, EPSILON_MIN); /* w_i = 1 / epsilon_i, capped */
+    double w = 1 / fmax(epsilon, CACHE_EPSILON_MIN); /* w_i = 1 / epsilon_i, capped */
     /* Ward and Heckbert 1992: E_i + (n_i x n) . grad_r + (p - p_i) . grad_t */
     struct vec3 turn = vec3_cross(ri->n, ws->n);
-    for (int c = 0; c < 3; c++) {
-        double e = vec3_get(ri->e, c) + vec3_dot(turn, ri->grad_r[c]) +
-                   vec3_dot(d, ri->grad_t[c]);
-        double *sum_c = c == 0 ? &ws->sum.x : c == 1 ? &ws->sum.y : &ws->sum.z;
-        *sum_c += w * e;
-    }
+    struct vec3 change = vec3(vec3_dot(turn, ri->grad_r[0]) + vec3_dot(d, ri->grad_t[0]),
+                              vec3_dot(turn, ri->grad_r[1]) + vec3_dot(d, ri->grad_t[1]),
+                              vec3_dot(turn, ri->grad_r[2]) + vec3_dot(d, ri->grad_t[2]));
+    ws->sum = vec3_madd(ws->sum, vec3_add(ri->e, change), w);
     ws->weight += w;
 }
 
@@ -381,20 +383,22 @@ static void visit_node(const struct irradiance_cache *cache, size_t node, struct
     for (int i = 0; i < 8; i++) {
         if (at->child[i] == 0)
             continue;
-        struct vec3 child_lo = vec3(i & 1 ? lo.x + half : lo.x, i & 2 ? lo.y + half : lo.y,
-                                    i & 4 ? lo.z + half : lo.z);
+        struct vec3 child_lo = child_corner(lo, half, i);
         if (within_reach(child_lo, half, ws->p))
             visit_node(cache, at->child[i], child_lo, half, ws);
     }
 }
 
 int irradiance_cache_lookup(const struct irradiance_cache *cache, struct vec3 p,
-                            struct vec3 n, struct vec3 *e)
+                            struct vec3 n, double accuracy, struct vec3 *e)
 {
+    /* A stricter accuracy only shrinks every record's reach, so the octree, placed by the
+     * cache's own a, still holds every record that can be usable. */
+    assert(accuracy > 0 && accuracy <= cache->accuracy);
     struct weighted_sum ws;
     ws.p = p;
     ws.n = n;
-    ws.a = cache->accuracy;
+    ws.a = accuracy;
     ws.sum = vec3_zero();
     ws.weight = 0;
     /* The root is read whole: it also holds the records outside the cube. */
@@ -421,32 +425,41 @@ size_t irradiance_cache_bytes(const struct irradiance_cache *cache)
 
 /* ---- The checker ------------------------------------------------------------------- */
 
-/* Checks node and its subtree (at lo with side, depth) against invariants (1)-(3);
- * adds the records seen to *count. */
-static int check_node(const struct irradiance_cache *cache, size_t node, struct vec3 lo,
-                      double side, int depth, size_t *count)
+static int aabb_contains(struct aabb box, struct vec3 p)
+{
+    return p.x >= box.lo.x && p.x <= box.hi.x && p.y >= box.lo.y && p.y <= box.hi.y &&
+           p.z >= box.lo.z && p.z <= box.hi.z;
+}
+
+/* Checks the subtree of node (its box, at depth) against invariants (1)-(3), adding the
+ * records it holds to *count. The boxes are made as irradiance_cache_add() splits them:
+ * a child's lower corner is child_corner(), its upper one the parent's middle or upper
+ * corner, so a record on a face is judged by the same roundings that placed it. */
+static int check_node(const struct irradiance_cache *cache, size_t node, struct aabb box,
+                      int depth, size_t *count)
 {
     const struct cache_node *at = &cache->nodes[node];
+    double side = ldexp(cache->side, -depth); /* halving is exact */
     *count += at->n_records;
     for (size_t r = 0; r < at->n_records; r++) {
         const struct irradiance_record *ri = &at->records[r];
-        int inside = box_contains(lo, side, ri->p);
-        if (node != 0 && !inside)
-            return 0;
-        if (node != 0 && depth < MAX_DEPTH && side < 2 * cache->accuracy * ri->r)
+        int inside = aabb_contains(box, ri->p);
+        if (node != 0 && (!inside || side < 2 * cache->accuracy * ri->r))
             return 0;
         if (inside && goes_deeper(cache, side, depth, ri->r))
             return 0;
     }
-    double half = side / 2;
     for (int i = 0; i < 8; i++) {
         size_t child = at->child[i];
         if (child == 0)
             continue;
-        struct vec3 child_lo = vec3(i & 1 ? lo.x + half : lo.x, i & 2 ? lo.y + half : lo.y,
-                                    i & 4 ? lo.z + half : lo.z);
+        struct aabb child_box;
+        child_box.lo = child_corner(box.lo, side / 2, i);
+        child_box.hi = vec3(i & 1 ? box.hi.x : child_box.lo.x + side / 2,
+                            i & 2 ? box.hi.y : child_box.lo.y + side / 2,
+                            i & 4 ? box.hi.z : child_box.lo.z + side / 2);
         if (child <= node || child >= cache->n_nodes || depth >= MAX_DEPTH ||
-            !check_node(cache, child, child_lo, half, depth + 1, count))
+            !check_node(cache, child, child_box, depth + 1, count))
             return 0;
     }
     return 1;
@@ -454,7 +467,10 @@ static int check_node(const struct irradiance_cache *cache, size_t node, struct 
 
 int irradiance_cache_check(const struct irradiance_cache *cache)
 {
+    struct aabb root;
+    root.lo = cache->origin;
+    root.hi = vec3(root.lo.x + cache->side, root.lo.y + cache->side, root.lo.z + cache->side);
     size_t count = 0;
-    return check_node(cache, 0, cache->origin, cache->side, 0, &count) &&
+    return check_node(cache, 0, root, 0, &count) &&
            count == cache->n_records;
 }

@@ -91,23 +91,14 @@ static struct photon_event photon_event_at(const struct photon_hit *h, struct ve
     return e;
 }
 
-/* trace_photons()' sink: packs the photon into 20 bytes and appends it, growing the
- * array; -1 when that would exceed max_stored. */
-struct packing_sink {
-    struct photon_trace *out;
-    size_t max_stored;
-};
-
-static int pack_photon(void *context, const struct photon_event *e)
+int photon_trace_store(struct photon_trace *out, size_t max_stored, const struct photon_event *e)
 {
-    struct packing_sink *ps = context;
-    struct photon_trace *out = ps->out;
     if (out->n_photons == out->capacity) {
-        if (out->capacity >= ps->max_stored)
+        if (out->capacity >= max_stored)
             return -1;
         size_t grown = out->capacity < INITIAL_CAPACITY / 2 ? INITIAL_CAPACITY
                                                             : 2 * out->capacity;
-        grown = grown < ps->max_stored ? grown : ps->max_stored;
+        grown = grown < max_stored ? grown : max_stored;
         out->photons = xrealloc(out->photons, grown, sizeof *out->photons, "photon map");
         out->capacity = grown;
     }
@@ -117,6 +108,18 @@ static int pack_photon(void *context, const struct photon_event *e)
     out->n_indirect += (e->kind & PHOTON_INDIRECT) != 0;
     out->n_shadow += (e->kind & PHOTON_SHADOW) != 0;
     return 0;
+}
+
+/* trace_photons()' sink: one array, at most max_stored photons. */
+struct packing_sink {
+    struct photon_trace *out;
+    size_t max_stored;
+};
+
+static int pack_photon(void *context, const struct photon_event *e)
+{
+    struct packing_sink *ps = context;
+    return photon_trace_store(ps->out, ps->max_stored, e);
 }
 
 /* Picks a light and emits photon i's ray and power from it. 0 when it carries nothing

@@ -99,6 +99,12 @@ struct photon_sink {
 int trace_photons_into(const struct scene *scene, const struct trace_settings *ts,
                        const struct photon_sink *sink, unsigned long long *rays);
 
+/* Packs photon e into out (which starts zeroed: memset 0) and counts it by class,
+ * growing the array; -1 (nothing stored) when out already holds max_stored photons.
+ * trace_photons() stores with it; a sink that splits photons among several maps calls
+ * it for each. */
+int photon_trace_store(struct photon_trace *out, size_t max_stored, const struct photon_event *e);
+
 /* Traces ts->n_emit photons through the scene (finished; it need not have lights: then
  * nothing is stored) and fills *out, which the caller releases with
  * photon_trace_free(). Fails with -1, *err filled and *out empty when more than

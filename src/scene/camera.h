@@ -28,6 +28,13 @@ int camera_is_valid(const struct camera *c);
 /* Derives the frame for an image of width x height pixels; the camera must be valid. */
 void camera_setup(struct camera *c, int width, int height);
 
+/* The width of a pixel at distance 1 from the camera (at the image's centre): a surface
+ * at distance d along a camera ray is seen d times this wide through one pixel. */
+static inline double camera_footprint(const struct camera *c)
+{
+    return 2.0 * c->tan_half / c->height;
+}
+
 /* The unit-direction ray through image-plane point (px, py), in pixels from the top left. */
 struct ray camera_ray(const struct camera *c, double px, double py);
 

@@ -21,6 +21,24 @@
 #include "emit.h"
 
 #include "brdf_models.h"
+#include "scene.h"
+
+size_t specular_targets(const struct scene *scene, struct bounding_sphere *spheres)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < scene->n_materials; i++) {
+        if (!brdf_has_delta(&scene->materials[i]))
+            continue;
+        struct aabb box = geometry_material_bounds(scene->geometry, (int)i);
+        if (!(box.lo.x <= box.hi.x))
+            continue; /* no primitive is made of it */
+        spheres[n].centre = vec3_scale(vec3_add(box.lo, box.hi), 0.5);
+        double half_diagonal = 0.5 * vec3_length(vec3_sub(box.hi, box.lo));
+        /* a point-sized box still needs a sphere of positive radius */
+        spheres[n++].radius = fmax(half_diagonal, 1e-9 * fmax(1.0, vec3_max_abs(box.lo)));
+    }
+    return n;
+}
 
 /* Uniform direction on the unit sphere (Archimedes: z uniform in [-1, 1]); the radius of
  * the circle at z is written 2 sqrt(u (1 - u)) = sqrt(1 - z^2) without cancellation. */

@@ -53,6 +53,17 @@ struct emission {
                            expectation is the fraction of Phi_l sent into the cones     */
 };
 
+struct scene;
+
+/* The targets of a caustic map's directed emission (Jensen 1996, Sec. 3: "emitting
+ * photons towards the specular objects"): one sphere per material with a delta lobe
+ * (brdf_has_delta) around the box of the primitives made of it. spheres has room for
+ * scene->n_materials; returns how many it filled, 0 when nothing in the scene is
+ * specular (then no caustic map is needed). One sphere per material rather than per
+ * primitive keeps emission cheap for meshes; two far-apart objects of one material get
+ * one large sphere, which costs photons, never correctness. */
+size_t specular_targets(const struct scene *scene, struct bounding_sphere *spheres);
+
 /* Emits one photon from l with four uniform numbers in [0, 1): u[0], u[1] choose the
  * origin (unused by a point light), u[2], u[3] the direction. Returns 1 and fills *e
  * (weight 1), or 0 for a light with no area (a degenerate quad or triangle). */

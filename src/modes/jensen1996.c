@@ -1,0 +1,816 @@
+/*
+ * modes/jensen1996.c -- `--mode 1996`: Jensen 1996, "Global illumination using photon
+ * maps", Sec. 3-5, in the paper's order.
+ *
+ * Pass 1 (Sec. 3) traces two photon maps: a caustic map of photons emitted towards the
+ * specular objects and stored on diffuse surfaces after specular bounces only (L S+ D),
+ * and a global map of photons emitted towards everything and stored at every diffuse hit,
+ * with shadow photons behind each first hit (Jensen and Christensen 1995).
+ *
+ * Pass 2 (Sec. 4) is distribution ray tracing of Eq. 2,
+ *   Lr = int f_r L_l cos + int f_r,s (L_c + L_d) cos + int f_r,d L_c cos + int f_r,d L_d cos,
+ * the light split into direct (l), caustic (c: via specular surfaces only) and soft
+ * indirect (d: reflected diffusely at least once), the BRDF into a diffuse and a specular
+ * part (brdf_split(), scene/brdf.h). Each term is evaluated accurately or approximately:
+ *   accurate     at surfaces seen from the eye directly or through specular (and glossy)
+ *                reflections while the ray's weight is at least --accurate-weight:
+ *                direct light by light sampling, with shadow rays only where the shadow
+ *                photons nearby disagree (4.1); the specular part by Monte Carlo with
+ *                BRDF importance sampling (4.2); caustics from the caustic map with the
+ *                cone filter (4.3); soft indirect light by a final gather guided by the
+ *                global map's photons, through Ward's irradiance cache on Lambertian
+ *                surfaces (4.4);
+ *   corner       at the end of a gather ray shorter than --accurate-distance radii of the
+ *                global estimate there ("otherwise we might risk inaccurate colour
+ *                bleeding effects in corners"): as accurate, except that the soft
+ *                indirect light is the global map's estimate from its indirect photons;
+ *   approximate  after a diffuse bounce or at low weight: the global map's radiance
+ *                estimate of the diffuse part, and still the specular part by Monte Carlo.
+ *
+ * Counting every path once. Direct light at accurate and corner points is light sampling
+ * through the whole non-delta BRDF, so a ray sampled there by the specular part must not
+ * add the emission it hits next; caustics at accurate points come from the caustic map,
+ * so a gather ray must not add emission reached through delta bounces either; and the
+ * global estimate holds all light reflected by the diffuse part, so after an approximate
+ * point only the specular part's rays continue, and what they hit counts in full. The
+ * rule each ray carries (enum emission_rule) says which emission it may add.
+ *
+ * Determinism. Every random number comes from the camera sample's stream (or, in the
+ * cache's pre-pass, from rng_stream(seed, STREAM_CACHE, pixel, 0)). The irradiance cache
+ * is filled by a pre-pass over the whole image in scanline order before the final pass,
+ * which only reads it; where no record is usable the final pass gathers on the spot and
+ * keeps nothing. So a pixel depends on nothing but the scene and the settings, and a crop
+ * equals the same window of the whole image.
+ */
+#include "jensen1996.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "../base/alloc.h"
+#include "../photon/estimate.h"
+#include "../photon/irradiance_cache.h"
+#include "../photon/trace.h"
+#include "../scene/brdf.h"
+#include "../scene/emit.h"
+#include "photons.h"
+#include "surface.h"
+
+#define CAUSTIC_RADIUS_FRACTION 0.25 /* caustic estimates reach this much of the global
+                                        ones: caustic photons are dense where they are,
+                                        and a wide search would blur them over edges    */
+#define CACHE_FILL_STRICTNESS 0.5  /* the pre-pass makes records where none is usable
+                                        with this fraction of Ward's a                  */
+#define CACHE_MIN_REACH 1.5          /* a record's R is at least what makes its reach a R
+                                        this many pixel footprints (Tabellion and
+                                        Lamorlette 2004 bound R in screen space): records
+                                        never crowd into corners below pixel size        */
+#define CACHE_R_MAX 0.2              /* and at most this fraction of the scene's diagonal */
+
+struct jensen1996_settings jensen1996_settings_default(void)
+{
+    struct jensen1996_settings js;
+    js.global_photons = PHOTONS_DEFAULT_N;
+    js.caustic_photons = J96_DEFAULT_CAUSTIC_PHOTONS;
+    js.global_gather = PHOTONS_DEFAULT_GATHER;
+    js.caustic_gather = J96_DEFAULT_CAUSTIC_GATHER;
+    js.max_radius = 0;
+    js.cone_k = 1.0;
+    js.gather_rays = J96_DEFAULT_GATHER_RAYS;
+    js.glossy_rays = J96_DEFAULT_GLOSSY_RAYS;
+    js.cache_accuracy = J96_DEFAULT_CACHE_ACCURACY;
+    js.accurate_distance = J96_DEFAULT_ACCURATE_DISTANCE;
+    js.accurate_weight = J96_DEFAULT_ACCURATE_WEIGHT;
+    js.shadow_photons = 1;
+    js.one_map = 0;
+    js.report = NULL;
+    return js;
+}
+
+static double cpu_seconds(clock_t start)
+{
+    return (double)(clock() - start) / CLOCKS_PER_SEC;
+}
+
+/* ---- Sec. 3, pass 1: constructing the photon maps ---- */
+
+struct photon_maps {
+    struct kdtree *global;      /* L (S|D)* D, without shadow photons                     */
+    struct kdtree *caustic;     /* L S+ D; NULL without specular objects or with one_map  */
+    struct kdtree **visibility; /* per light, its direct and shadow photons; NULL without
+                                   shadow photons                                         */
+    size_t n_lights;
+};
+
+/* Where the global trace's photons go: every photon but the shadow ones to the global
+ * map, and the direct and shadow photons also to their light's visibility map, since a
+ * direct photon of one light says nothing about another's shadow. */
+struct global_sink {
+    struct photon_trace global;
+    struct photon_trace *visibility; /* n_lights of them, or NULL */
+};
+
+static int store_global(void *context, const struct photon_event *e)
+{
+    struct global_sink *gs = context;
+    if (e->kind != PHOTON_SHADOW && photon_trace_store(&gs->global, MAX_PHOTONS, e) < 0)
+        return -1;
+    if (gs->visibility != NULL && (e->kind & (PHOTON_DIRECT | PHOTON_SHADOW)) &&
+        photon_trace_store(&gs->visibility[e->light], MAX_PHOTONS, e) < 0)
+        return -1;
+    return 0;
+}
+
+static struct kdtree *balance_trace(struct photon_trace *traced)
+{
+    struct kdtree *map = balance_kdtree(traced->photons, traced->n_photons); /* takes them */
+    traced->photons = NULL;
+    photon_trace_free(traced);
+    return map;
+}
+
+static struct trace_settings photon_pass(const struct render_settings *rs, uint64_t pass,
+                                         size_t n_emit, unsigned store)
+{
+    struct trace_settings ts;
+    memset(&ts, 0, sizeof ts);
+    ts.seed = rs->seed;
+    ts.pass = pass;
+    ts.n_emit = n_emit;
+    ts.max_stored = MAX_PHOTONS;
+    ts.store = store;
+    ts.max_depth = rs->max_depth;
+    ts.targets = NULL;
+    return ts;
+}
+
+static int too_many_photons(struct error *err)
+{
+    return error_set(err, "", 0,
+                     "photon map: more than %d photons would be stored; emit fewer photons or "
+                     "follow fewer bounces (--max-depth)",
+                     MAX_PHOTONS);
+}
+
+/* The global map "emitting photons towards all objects", and the visibility maps. With
+ * one_map the caustic photons' share is emitted here too, so both variants spend the
+ * same photons. */
+static int build_global_map(const struct scene *scene, const struct render_settings *rs,
+                            const struct jensen1996_settings *js, struct photon_maps *maps,
+                            struct jensen1996_stats *stats, struct error *err)
+{
+    size_t n_emit = js->global_photons + (js->one_map ? js->caustic_photons : 0);
+    unsigned store = PHOTON_MAP_GLOBAL | (js->shadow_photons ? PHOTON_SHADOW : 0);
+    struct trace_settings ts = photon_pass(rs, 0, n_emit < MAX_PHOTONS ? n_emit : MAX_PHOTONS,
+                                           store);
+    struct global_sink gs;
+    memset(&gs, 0, sizeof gs);
+    gs.global.photons = NULL;
+    gs.visibility = NULL;
+    if (js->shadow_photons && scene->n_lights > 0)
+        gs.visibility = xcalloc(scene->n_lights, sizeof *gs.visibility, "visibility maps");
+    struct photon_sink sink = {store_global, &gs};
+    int failed = trace_photons_into(scene, &ts, &sink, &stats->photon_rays) < 0;
+    stats->photons_emitted += ts.n_emit;
+    maps->global = balance_trace(&gs.global);
+    stats->photons_global = maps->global->n_photons;
+    stats->bytes_global_map = kdtree_bytes(maps->global);
+    if (gs.visibility != NULL) {
+        maps->visibility = xcalloc(scene->n_lights, sizeof *maps->visibility, "visibility");
+        maps->n_lights = scene->n_lights;
+        for (size_t l = 0; l < scene->n_lights; l++) {
+            stats->photons_shadow += gs.visibility[l].n_shadow;
+            maps->visibility[l] = balance_trace(&gs.visibility[l]);
+            stats->bytes_visibility_maps += kdtree_bytes(maps->visibility[l]);
+        }
+        free(gs.visibility);
+    }
+    return failed ? too_many_photons(err) : 0;
+}
+
+/* The caustic map, "emitting photons towards the specular objects in the scene and
+ * storing these as they hit diffuse surfaces"; not built when nothing is specular. */
+static int build_caustic_map(const struct scene *scene, const struct render_settings *rs,
+                             const struct jensen1996_settings *js, struct photon_maps *maps,
+                             struct jensen1996_stats *stats, struct error *err)
+{
+    if (js->one_map || js->caustic_photons == 0 || scene->n_materials == 0)
+        return 0;
+    struct bounding_sphere *spheres = xmalloc(scene->n_materials, sizeof *spheres, "targets");
+    struct emission_targets targets = {spheres, specular_targets(scene, spheres)};
+    int status = 0;
+    if (targets.n_spheres > 0) {
+        struct trace_settings ts = photon_pass(rs, 1, js->caustic_photons, PHOTON_MAP_CAUSTIC);
+        ts.targets = &targets;
+        struct photon_trace traced;
+        status = trace_photons(scene, &ts, &traced, err);
+        if (status == 0) {
+            stats->photon_rays += traced.rays;
+            stats->photons_emitted += traced.n_emitted;
+            maps->caustic = balance_trace(&traced);
+            stats->photons_caustic = maps->caustic->n_photons;
+            stats->bytes_caustic_map = kdtree_bytes(maps->caustic);
+        }
+    }
+    free(spheres);
+    return status;
+}
+
+static void photon_maps_free(struct photon_maps *maps)
+{
+    kdtree_free(maps->global);
+    kdtree_free(maps->caustic);
+    for (size_t l = 0; maps->visibility != NULL && l < maps->n_lights; l++)
+        kdtree_free(maps->visibility[l]);
+    free(maps->visibility);
+}
+
+/* ---- Sec. 4, pass 2: rendering ---- */
+
+enum evaluation { ACCURATE, CORNER, APPROXIMATE };
+
+/* Which emission a ray may add where it lands (see the top of the file). */
+enum emission_rule {
+    EMISSION_COUNTED,     /* all of it: camera rays, and rays after approximate points  */
+    EMISSION_SKIP_DIRECT, /* none at its first hit (light sampling had it); counted again
+                             after a delta bounce (L S G: not sampled, not a caustic)   */
+    EMISSION_SKIP_ALL     /* none through any chain of delta bounces: a gather ray, whose
+                             L S+ paths the caustic map holds                           */
+};
+
+struct path {
+    struct vec3 beta;        /* throughput from the camera                               */
+    double distance;         /* length from the camera to the surface it reaches         */
+    int depth;               /* bounces so far                                           */
+    enum evaluation eval;    /* how the surface it reaches is evaluated                  */
+    enum emission_rule rule; /* which emission it may add                               */
+};
+
+/* The render's scratch and tallies: one per render, reached through the const mode. */
+struct scratch {
+    struct nearest *nn;              /* for every photon search                        */
+    double *importance;              /* per stratum: photon flux times f_r,d            */
+    int *rays_in;                    /* per stratum: rays allotted                      */
+    struct stratum_sample *strata;   /* per stratum: what its rays found                */
+    struct vec3 *reflected;          /* per stratum: mean f_r,d L (non-Lambertian)      */
+    struct jensen1996_stats *stats;
+};
+
+struct j96 {
+    const struct scene *scene;
+    const struct jensen1996_settings *js;
+    struct photon_maps maps;
+    struct irradiance_cache *cache; /* NULL with --cache-accuracy 0                     */
+    int filling_cache;              /* the pre-pass: add records where none is usable  */
+    struct estimate_settings global_es, caustic_es;
+    double diagonal;                /* of the scene's box                               */
+    int strata_theta, strata_phi;   /* the final gather's strata (m x n)                */
+    int max_depth;
+    struct scratch *scratch;
+};
+
+static struct vec3 trace(const struct j96 *m, struct ray ray, struct path path, struct rng *rng,
+                         struct render_counters *counters);
+
+static struct vec3 emitted(const struct surface *s, enum emission_rule rule)
+{
+    return rule == EMISSION_COUNTED ? surface_emission(s) : vec3_zero();
+}
+
+/* Eq. 3 (Eq. 5 with the cone filter) through material at s. *r2 receives the squared
+ * radius of the photons used. */
+static struct vec3 photon_estimate(const struct j96 *m, const struct kdtree *map,
+                                   const struct estimate_settings *es, const struct surface *s,
+                                   const struct material *material,
+                                   const struct shading_frame *frame, double *r2)
+{
+    struct estimate_point at;
+    at.x = s->p;
+    at.ng = s->ng;
+    at.wo = s->wo;
+    at.material = material;
+    at.frame = frame;
+    struct vec3 l = radiance_estimate(map, &at, es, m->scratch->nn);
+    *r2 = m->scratch->nn->r2;
+    return l;
+}
+
+/* -- 4.1 direct illumination -- */
+
+enum visibility { VISIBLE, OCCLUDED, UNDECIDED };
+
+/* Jensen and Christensen 1995: the light's nearest direct and shadow photons on this
+ * side of the surface. All direct: the light is visible; all shadow: it is blocked;
+ * a mixture, or fewer than half of J96_VISIBILITY_PHOTONS within reach: a shadow ray. */
+static enum visibility visibility_from_photons(const struct j96 *m, size_t light,
+                                               const struct surface *s)
+{
+    if (m->maps.visibility == NULL)
+        return UNDECIDED;
+    struct nearest *nn = m->scratch->nn;
+    locate_photons(m->maps.visibility[light], s->p, m->global_es.max_r2,
+                   J96_VISIBILITY_PHOTONS, nn);
+    size_t direct = 0, shadow = 0;
+    for (size_t i = 0; i < nn->found; i++) {
+        if (!(vec3_dot(photon_direction(nn->photon[i]), s->ng) > 0))
+            continue; /* arrived at the other side of a thin wall */
+        if (nn->photon[i]->flags & PHOTON_SHADOW)
+            shadow++;
+        else
+            direct++;
+    }
+    if (2 * (direct + shadow) < J96_VISIBILITY_PHOTONS || (direct > 0 && shadow > 0))
+        return UNDECIDED;
+    return shadow == 0 ? VISIBLE : OCCLUDED;
+}
+
+/* The first term of Eq. 2 at an accurate point: one sample of each light through the
+ * whole non-delta BRDF; a shadow ray only where the shadow photons leave it open. */
+static struct vec3 direct_illumination(const struct j96 *m, const struct surface *s,
+                                       const struct shading_frame *frame, struct rng *rng,
+                                       struct render_counters *counters)
+{
+    struct jensen1996_stats *stats = m->scratch->stats;
+    struct vec3 sum = vec3_zero();
+    for (size_t i = 0; i < m->scene->n_lights; i++) {
+        struct light_sample ls;
+        struct vec3 contribution;
+        double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
+        if (!light_contribution(&m->scene->lights[i], s, s->material, frame, u1, u2, &ls,
+                                &contribution))
+            continue;
+        enum visibility v = visibility_from_photons(m, i, s);
+        if (v != UNDECIDED) {
+            stats->shadow_rays_avoided++;
+        } else {
+            stats->shadow_rays++;
+            counters->rays++;
+            v = light_blocked(m->scene, s, &ls) ? OCCLUDED : VISIBLE;
+        }
+        if (v == VISIBLE)
+            sum = vec3_add(sum, contribution);
+    }
+    return sum;
+}
+
+/* -- 4.2 specular reflection -- */
+
+/* The second term of Eq. 2: Monte Carlo through the specular part, importance-sampled by
+ * the BRDF; glossy_rays rays at an accurate point with a glossy lobe, else one. */
+static struct vec3 specular_reflection(const struct j96 *m, const struct surface *s,
+                                       const struct brdf_split *split,
+                                       const struct shading_frame *frame, struct path path,
+                                       struct rng *rng, struct render_counters *counters)
+{
+    if (path.depth >= m->max_depth)
+        return vec3_zero();
+    int glossy = brdf_has_diffuse(&split->specular); /* a non-delta lobe */
+    int n_rays = path.eval == ACCURATE && glossy ? m->js->glossy_rays : 1;
+    struct vec3 sum = vec3_zero();
+    for (int r = 0; r < n_rays; r++) {
+        double u[3];
+        for (int k = 0; k < 3; k++)
+            u[k] = rng_uniform(rng);
+        struct brdf_sample bs;
+        if (!brdf_sample(&split->specular, frame, s->wo, u, &bs))
+            continue;
+        struct path next;
+        next.beta = vec3_mul(path.beta, bs.weight);
+        next.depth = path.depth + 1;
+        double q = roulette_odds(next.beta, path.depth);
+        if (q < 1 && !(rng_uniform(rng) < q))
+            continue;
+        next.eval = path.eval == ACCURATE && vec3_luminance(next.beta) >= m->js->accurate_weight
+                        ? ACCURATE
+                        : APPROXIMATE;
+        if (bs.delta)
+            next.rule = path.rule == EMISSION_SKIP_DIRECT ? EMISSION_COUNTED : path.rule;
+        else
+            next.rule = path.eval == APPROXIMATE ? EMISSION_COUNTED : EMISSION_SKIP_DIRECT;
+        next.beta = vec3_scale(next.beta, 1.0 / (q * n_rays));
+        struct vec3 li = trace(m, surface_ray(s, bs.wi, bs.transmitted), next, rng, counters);
+        sum = vec3_add(sum, vec3_mul(vec3_scale(bs.weight, 1.0 / (q * n_rays)), li));
+    }
+    return sum;
+}
+
+/* -- 4.3 caustics -- */
+
+/* The third term of Eq. 2: the caustic map's estimate through f_r,d, seen directly. */
+static struct vec3 caustics(const struct j96 *m, const struct surface *s,
+                            const struct brdf_split *split, const struct shading_frame *frame)
+{
+    const struct kdtree *map = m->js->one_map ? m->maps.global : m->maps.caustic;
+    double r2;
+    if (map == NULL)
+        return vec3_zero();
+    return photon_estimate(m, map, &m->caustic_es, s, &split->diffuse, frame, &r2);
+}
+
+/* -- 4.4 soft indirect illumination: the final gather -- */
+
+/* Radiance arriving along a gather ray that hit s at distance d: the global map's
+ * estimate, unless the ray is shorter than --accurate-distance radii of that estimate,
+ * where the estimate's disc reaches back towards the gathering point. */
+static struct vec3 gathered_radiance(const struct j96 *m, const struct surface *s, double d,
+                                     struct path path, struct rng *rng,
+                                     struct render_counters *counters);
+
+/* Jensen 1995's importance from the photon map on Ward and Heckbert's strata: the flux of
+ * the nearest global photons arriving through each stratum, times f_r,d there. */
+static double stratum_importance(const struct j96 *m, const struct surface *s,
+                                 const struct material *diffuse,
+                                 const struct shading_frame *frame)
+{
+    int mn = m->strata_theta * m->strata_phi;
+    double *importance = m->scratch->importance;
+    for (int i = 0; i < mn; i++)
+        importance[i] = 0.0;
+    struct nearest *nn = m->scratch->nn;
+    locate_photons(m->maps.global, s->p, m->global_es.max_r2, m->global_es.k, nn);
+    double total = 0.0;
+    for (size_t i = 0; i < nn->found; i++) {
+        struct vec3 wi = photon_direction(nn->photon[i]);
+        if (!(vec3_dot(wi, s->ng) > 0) || !(vec3_dot(wi, frame->n) > 0))
+            continue;
+        struct vec3 local = vec3(vec3_dot(wi, frame->t), vec3_dot(wi, frame->b),
+                                 vec3_dot(wi, frame->n));
+        int j, k;
+        stratum_of(m->strata_theta, m->strata_phi, local, &j, &k);
+        double w = vec3_luminance(vec3_mul(photon_power(nn->photon[i]),
+                                           brdf_eval(diffuse, frame, s->wo, wi)));
+        importance[j * m->strata_phi + k] += w;
+        total += w;
+    }
+    return total;
+}
+
+/* Every stratum gets one ray, so the estimate stays unbiased where photons are missing
+ * and the gradients see every stratum; the other rays go in proportion to importance,
+ * rounded by largest remainder (ties to the lower index, so the split is deterministic),
+ * or evenly where no photon arrived. Each stratum's mean is then an unbiased estimate of
+ * its own integral: this is importance sampling by stratified allocation. */
+static void allot_rays(const struct j96 *m, double total)
+{
+    int mn = m->strata_theta * m->strata_phi;
+    int extra = m->js->gather_rays - mn;
+    int *rays_in = m->scratch->rays_in;
+    double *share = m->scratch->importance;
+    int given = 0;
+    for (int i = 0; i < mn; i++) {
+        double exact = total > 0 ? extra * share[i] / total : (double)extra / mn;
+        rays_in[i] = (int)exact;
+        share[i] = exact - rays_in[i]; /* the remainder */
+        given += rays_in[i];
+    }
+    for (; given < extra; given++) {
+        int best = 0;
+        for (int i = 1; i < mn; i++)
+            best = share[i] > share[best] ? i : best;
+        rays_in[best]++;
+        share[best] = -1.0;
+    }
+    for (int i = 0; i < mn; i++)
+        rays_in[i]++;
+}
+
+/* The final gather at s: the strata's mean radiances and distances (and, for a diffuse
+ * part that is not Lambertian, the strata's mean f_r,d L). */
+static void final_gather(const struct j96 *m, const struct surface *s,
+                         const struct material *diffuse, int lambertian,
+                         const struct shading_frame *frame, struct path path, struct rng *rng,
+                         struct render_counters *counters)
+{
+    struct scratch *sc = m->scratch;
+    allot_rays(m, stratum_importance(m, s, diffuse, frame));
+    struct path gather = path;
+    gather.depth = path.depth + 1;
+    gather.rule = EMISSION_SKIP_ALL;
+    sc->stats->gathers++;
+    for (int j = 0; j < m->strata_theta; j++) {
+        for (int k = 0; k < m->strata_phi; k++) {
+            int i = j * m->strata_phi + k;
+            struct vec3 sum = vec3_zero(), reflected = vec3_zero();
+            double nearest = INFINITY;
+            for (int r = 0; r < sc->rays_in[i]; r++) {
+                double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
+                struct vec3 local = stratum_direction(m->strata_theta, m->strata_phi, j, k, u1, u2);
+                struct vec3 wi = vec3_add(vec3_add(vec3_scale(frame->t, local.x),
+                                                   vec3_scale(frame->b, local.y)),
+                                          vec3_scale(frame->n, local.z));
+                if (!(vec3_dot(wi, s->ng) > 0))
+                    continue; /* below the geometric surface: no light arrives */
+                struct hit hit;
+                counters->rays++;
+                sc->stats->gather_rays++;
+                struct vec3 li = m->scene->background;
+                if (scene_intersect(m->scene, surface_ray(s, wi, 0), INFINITY, &hit)) {
+                    struct surface at = surface_at(m->scene, &hit, vec3_neg(wi));
+                    li = gathered_radiance(m, &at, hit.t, gather, rng, counters);
+                    nearest = fmin(nearest, hit.t);
+                }
+                sum = vec3_add(sum, li);
+                if (!lambertian)
+                    reflected = vec3_add(reflected, vec3_mul(brdf_eval(diffuse, frame, s->wo,
+                                                                       wi), li));
+            }
+            sc->strata[i].radiance = vec3_scale(sum, 1.0 / sc->rays_in[i]);
+            sc->strata[i].distance = nearest;
+            sc->reflected[i] = vec3_scale(reflected, 1.0 / sc->rays_in[i]);
+        }
+    }
+}
+
+/* Irradiance at s from a final gather, as an irradiance record. */
+static struct irradiance_record gathered_record(const struct j96 *m, const struct surface *s,
+                                                const struct material *diffuse,
+                                                const struct shading_frame *frame,
+                                                struct path path, struct rng *rng,
+                                                struct render_counters *counters)
+{
+    final_gather(m, s, diffuse, 1, frame, path, rng, counters);
+    /* A pixel seen at an angle covers 1 / cos more of the surface (up to 10 times). */
+    double slant = fmax(fabs(vec3_dot(s->wo, frame->n)), 0.1);
+    double footprint = path.distance * camera_footprint(&m->scene->camera) / slant;
+    double a = m->cache != NULL ? m->js->cache_accuracy : 1.0; /* no cache: R is unused */
+    double r_min = CACHE_MIN_REACH * footprint / a;
+    double r_max = fmax(r_min, CACHE_R_MAX * m->diagonal);
+    return irradiance_record_make(s->p, frame->t, frame->b, frame->n, m->strata_theta,
+                                  m->strata_phi, m->scratch->strata, r_min, r_max);
+}
+
+/* The fourth term of Eq. 2 at an accurate point. Lambertian: rho / pi times the
+ * irradiance, interpolated from the cache where a record is usable (Ward 1988), else
+ * gathered (and kept, in the pre-pass). Otherwise: the gather's mean f_r,d L per stratum,
+ * each stratum weighing pi / (m n) of projected solid angle. */
+static struct vec3 soft_indirect(const struct j96 *m, const struct surface *s,
+                                 const struct brdf_split *split,
+                                 const struct shading_frame *frame, struct path path,
+                                 struct rng *rng, struct render_counters *counters)
+{
+    int mn = m->strata_theta * m->strata_phi;
+    if (split->lambertian) {
+        struct vec3 e;
+        /* The pre-pass asks with a stricter a than the final pass reads with, so that the
+         * final pass's jittered points find the records made at pixel centres. */
+        double a = m->js->cache_accuracy * (m->filling_cache ? CACHE_FILL_STRICTNESS : 1.0);
+        if (m->cache == NULL || !irradiance_cache_lookup(m->cache, s->p, frame->n, a, &e)) {
+            struct irradiance_record record =
+                gathered_record(m, s, &split->diffuse, frame, path, rng, counters);
+            if (m->cache != NULL && m->filling_cache)
+                irradiance_cache_add(m->cache, &record);
+            else if (m->cache != NULL)
+                m->scratch->stats->gather_fallbacks++;
+            e = record.e;
+        }
+        return vec3_scale(vec3_mul(split->diffuse.rho, e), 1.0 / PI);
+    }
+    final_gather(m, s, &split->diffuse, 0, frame, path, rng, counters);
+    struct vec3 sum = vec3_zero();
+    for (int i = 0; i < mn; i++)
+        sum = vec3_add(sum, m->scratch->reflected[i]);
+    return vec3_scale(sum, PI / mn);
+}
+
+/* -- a surface, term by term -- */
+
+/* Radiance leaving s towards s->wo, Eq. 2 evaluated as path.eval says. */
+static struct vec3 surface_radiance(const struct j96 *m, const struct surface *s,
+                                    struct path path, struct rng *rng,
+                                    struct render_counters *counters)
+{
+    struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
+    struct brdf_split split = brdf_split(s->material);
+    struct vec3 l = emitted(s, path.rule);
+    double r2;
+    if (path.eval == APPROXIMATE) {
+        if (split.has_diffuse)
+            l = vec3_add(l, photon_estimate(m, m->maps.global, &m->global_es, s,
+                                            &split.diffuse, &frame, &r2));
+    } else {
+        if (brdf_has_diffuse(s->material))
+            l = vec3_add(l, direct_illumination(m, s, &frame, rng, counters));
+        if (split.has_diffuse) {
+            l = vec3_add(l, caustics(m, s, &split, &frame));
+            if (path.eval == ACCURATE) {
+                l = vec3_add(l, soft_indirect(m, s, &split, &frame, path, rng, counters));
+            } else {
+                struct estimate_settings indirect = m->global_es;
+                indirect.kinds = PHOTON_INDIRECT;
+                l = vec3_add(l, photon_estimate(m, m->maps.global, &indirect, s,
+                                                &split.diffuse, &frame, &r2));
+            }
+        }
+    }
+    if (split.has_specular)
+        l = vec3_add(l, specular_reflection(m, s, &split, &frame, path, rng, counters));
+    return l;
+}
+
+static struct vec3 gathered_radiance(const struct j96 *m, const struct surface *s, double d,
+                                     struct path path, struct rng *rng,
+                                     struct render_counters *counters)
+{
+    struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
+    struct brdf_split split = brdf_split(s->material);
+    double r2 = 0.0;
+    struct vec3 estimate = vec3_zero();
+    if (split.has_diffuse)
+        estimate = photon_estimate(m, m->maps.global, &m->global_es, s, &split.diffuse,
+                                   &frame, &r2);
+    double reach = m->js->accurate_distance;
+    if (split.has_diffuse && d * d < reach * reach * r2) {
+        path.eval = CORNER;
+        return surface_radiance(m, s, path, rng, counters);
+    }
+    path.eval = APPROXIMATE;
+    struct vec3 l = vec3_add(emitted(s, path.rule), estimate);
+    if (split.has_specular)
+        l = vec3_add(l, specular_reflection(m, s, &split, &frame, path, rng, counters));
+    return l;
+}
+
+static struct vec3 trace(const struct j96 *m, struct ray ray, struct path path, struct rng *rng,
+                         struct render_counters *counters)
+{
+    struct hit hit;
+    counters->rays++;
+    if (!scene_intersect(m->scene, ray, INFINITY, &hit))
+        return m->scene->background;
+    struct surface s = surface_at(m->scene, &hit, vec3_neg(ray.dir));
+    path.distance += hit.t;
+    return surface_radiance(m, &s, path, rng, counters);
+}
+
+static struct path camera_path(void)
+{
+    struct path path;
+    path.beta = vec3(1.0, 1.0, 1.0);
+    path.distance = 0.0;
+    path.depth = 0;
+    path.eval = ACCURATE;
+    path.rule = EMISSION_COUNTED;
+    return path;
+}
+
+static struct vec3 j96_radiance(const void *mode, struct ray ray, struct rng *rng,
+                                struct render_counters *counters)
+{
+    return trace(mode, ray, camera_path(), rng, counters);
+}
+
+/* ---- the irradiance cache's pre-pass ---- */
+
+/* One path through the centre of every pixel of the whole image, in scanline order, with
+ * records added wherever an accurate Lambertian point finds none usable. The radiance it
+ * computes is thrown away; only the records stay. */
+static void fill_irradiance_cache(struct j96 *m, const struct render_settings *rs,
+                                  struct render_counters *counters)
+{
+    const struct scene *scene = m->scene;
+    m->filling_cache = 1;
+    for (int y = 0; y < scene->height; y++) {
+        for (int x = 0; x < scene->width; x++) {
+            uint64_t pixel = (uint64_t)y * (uint64_t)scene->width + (uint64_t)x;
+            struct rng rng = rng_stream(rs->seed, STREAM_CACHE, pixel, 0);
+            struct ray ray = camera_ray(&scene->camera, x + 0.5, y + 0.5);
+            trace(m, ray, camera_path(), &rng, counters);
+        }
+        if (rs->progress)
+            fprintf(stderr, "\rirradiance cache: row %d of %d, %zu records", y + 1,
+                    scene->height, irradiance_cache_records(m->cache));
+    }
+    if (rs->progress)
+        fprintf(stderr, "\n");
+    m->filling_cache = 0;
+}
+
+/* ---- putting it together ---- */
+
+/* Ward and Heckbert's strata for a gather of n rays: half the rays make the strata (one
+ * each), m x n with n about pi m as in their paper; the other half follow importance. */
+static void choose_strata(int gather_rays, int *m, int *n)
+{
+    int strata = gather_rays / 2 > 1 ? gather_rays / 2 : 1;
+    *m = (int)floor(sqrt(strata / PI) + 0.5);
+    *m = *m < 1 ? 1 : *m;
+    *n = strata / *m;
+    *n = *n < 1 ? 1 : *n;
+}
+
+/* A checkpoint that adds the photon pass's and the pre-pass's seconds to the render's,
+ * and counts work as photons emitted plus gather rays so far. */
+struct j96_checkpoint {
+    const struct checkpoint *inner;      /* borrowed */
+    double seconds;                      /* added to every checkpoint's time */
+    const struct jensen1996_stats *stats; /* borrowed */
+};
+
+static double j96_checkpoint_at(void *context, const struct image *mean, long long work,
+                                double seconds)
+{
+    const struct j96_checkpoint *jc = context;
+    (void)work;
+    long long spent = (long long)jc->stats->photons_emitted + (long long)jc->stats->gather_rays;
+    return jc->inner->at(jc->inner->context, mean, spent, seconds + jc->seconds);
+}
+
+static struct scratch *scratch_create(const struct j96 *m, struct jensen1996_stats *stats)
+{
+    size_t k = m->js->global_gather > m->js->caustic_gather ? m->js->global_gather
+                                                            : m->js->caustic_gather;
+    k = k > J96_VISIBILITY_PHOTONS ? k : J96_VISIBILITY_PHOTONS;
+    size_t mn = (size_t)m->strata_theta * (size_t)m->strata_phi;
+    struct scratch *sc = xmalloc(1, sizeof *sc, "render scratch");
+    sc->nn = nearest_create(k);
+    sc->importance = xmalloc(mn, sizeof *sc->importance, "strata");
+    sc->rays_in = xmalloc(mn, sizeof *sc->rays_in, "strata");
+    sc->strata = xmalloc(mn, sizeof *sc->strata, "strata");
+    sc->reflected = xmalloc(mn, sizeof *sc->reflected, "strata");
+    sc->stats = stats;
+    return sc;
+}
+
+static void scratch_free(struct scratch *sc)
+{
+    nearest_free(sc->nn);
+    free(sc->importance);
+    free(sc->rays_in);
+    free(sc->strata);
+    free(sc->reflected);
+    free(sc);
+}
+
+/* The mode's settings from the scene and the user's. */
+static void set_up(struct j96 *m, const struct scene *scene, const struct render_settings *rs,
+                   const struct jensen1996_settings *js)
+{
+    struct aabb box = geometry_bounds(scene->geometry);
+    double diagonal = vec3_length(vec3_sub(box.hi, box.lo));
+    m->scene = scene;
+    m->js = js;
+    m->diagonal = isfinite(diagonal) && diagonal > 0 ? diagonal : 1.0;
+    double max_radius = js->max_radius > 0 ? js->max_radius
+                                           : PHOTONS_RADIUS_FRACTION * m->diagonal;
+    m->global_es.k = js->global_gather;
+    m->global_es.max_r2 = max_radius * max_radius;
+    m->global_es.cone_k = 0;
+    m->global_es.kinds = 0;
+    m->caustic_es.k = js->caustic_gather;
+    m->caustic_es.max_r2 = m->global_es.max_r2 * CAUSTIC_RADIUS_FRACTION *
+                           CAUSTIC_RADIUS_FRACTION;
+    m->caustic_es.cone_k = js->cone_k;
+    m->caustic_es.kinds = js->one_map ? PHOTON_CAUSTIC : 0;
+    choose_strata(js->gather_rays, &m->strata_theta, &m->strata_phi);
+    m->max_depth = rs->max_depth;
+    m->filling_cache = 0;
+    m->cache = NULL;
+    if (js->cache_accuracy > 0 && isfinite(box.lo.x))
+        m->cache = irradiance_cache_create(box, js->cache_accuracy);
+}
+
+struct render_result render_jensen1996(const struct scene *scene,
+                                       const struct render_settings *rs,
+                                       const struct jensen1996_settings *js, int want_variance,
+                                       struct render_counters *counters,
+                                       struct jensen1996_stats *stats, struct error *err)
+{
+    struct render_result result = {NULL, NULL, 0.0};
+    memset(stats, 0, sizeof *stats);
+    struct j96 m;
+    memset(&m, 0, sizeof m);
+    m.maps.global = NULL;
+    m.maps.caustic = NULL;
+    m.maps.visibility = NULL;
+    clock_t start = clock();
+    if (build_global_map(scene, rs, js, &m.maps, stats, err) < 0 ||
+        build_caustic_map(scene, rs, js, &m.maps, stats, err) < 0) {
+        photon_maps_free(&m.maps);
+        return result;
+    }
+    stats->seconds_photons = cpu_seconds(start);
+    set_up(&m, scene, rs, js);
+    stats->strata_theta = m.strata_theta;
+    stats->strata_phi = m.strata_phi;
+    m.scratch = scratch_create(&m, stats);
+    start = clock();
+    if (m.cache != NULL)
+        fill_irradiance_cache(&m, rs, counters);
+    stats->seconds_cache = cpu_seconds(start);
+    stats->cache_records = m.cache != NULL ? irradiance_cache_records(m.cache) : 0;
+    stats->bytes_cache = m.cache != NULL ? irradiance_cache_bytes(m.cache) : 0;
+    struct radiance_estimator estimator = {j96_radiance, &m};
+    double before = stats->seconds_photons + stats->seconds_cache;
+    struct j96_checkpoint jc = {js->report, before, stats};
+    struct checkpoint report = {j96_checkpoint_at, &jc};
+    result = render_pixels(scene, rs, estimator, want_variance,
+                           js->report != NULL ? &report : NULL, counters);
+    stats->seconds_render = result.seconds;
+    result.seconds += before;
+    scratch_free(m.scratch);
+    irradiance_cache_free(m.cache);
+    photon_maps_free(&m.maps);
+    return result;
+}

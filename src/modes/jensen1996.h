@@ -1,0 +1,85 @@
+/*
+ * modes/jensen1996.h -- `--mode 1996`: global illumination using photon maps (Jensen
+ * 1996): a caustic map and a global map with shadow photons, then distribution ray
+ * tracing that takes from the maps what each term of Eq. 2 needs.
+ */
+#ifndef PHOTON_JENSEN1996_H
+#define PHOTON_JENSEN1996_H
+
+#include <stddef.h>
+
+#include "../base/error.h"
+#include "render.h"
+
+#define J96_DEFAULT_CAUSTIC_PHOTONS 100000 /* --caustic-photons                          */
+#define J96_DEFAULT_CAUSTIC_GATHER 60      /* photons in a caustic estimate               */
+#define J96_DEFAULT_GATHER_RAYS 256        /* --gather-rays: final gather rays per record */
+#define J96_DEFAULT_GLOSSY_RAYS 6          /* --glossy-rays: the paper's "maximum of 6"   */
+#define J96_DEFAULT_CACHE_ACCURACY 0.15    /* --cache-accuracy: Ward's a                  */
+#define J96_DEFAULT_ACCURATE_DISTANCE 1.0  /* --accurate-distance (see jensen1996.c)      */
+#define J96_DEFAULT_ACCURATE_WEIGHT 0.1    /* --accurate-weight (see jensen1996.c)        */
+#define J96_VISIBILITY_PHOTONS 16          /* photons that decide a light's visibility    */
+#define J96_MAX_GATHER_RAYS 65536          /* documented limit on --gather-rays           */
+
+struct jensen1996_settings {
+    size_t global_photons;    /* photons emitted for the global map, 1..MAX_PHOTONS       */
+    size_t caustic_photons;   /* photons emitted towards specular objects; 0: no caustic
+                                 map (caustics are then missing from the image)          */
+    size_t global_gather;     /* k of the global map's estimates, 1..MAX_GATHER          */
+    size_t caustic_gather;    /* k of the caustic map's estimates, 1..MAX_GATHER         */
+    double max_radius;        /* > 0: the global estimates' largest radius; <= 0: the
+                                 photons mode's default (1/10 of the scene's diagonal);
+                                 caustic estimates reach a quarter of it                 */
+    double cone_k;            /* cone filter of the caustic estimate (Eq. 4-5); 0: none */
+    int gather_rays;          /* rays of one final gather, 2..J96_MAX_GATHER_RAYS        */
+    int glossy_rays;          /* rays sampling a glossy specular part at an accurate
+                                 point, 1..1000                                          */
+    double cache_accuracy;    /* Ward's a, > 0; 0 turns the irradiance cache off: every
+                                 accurate Lambertian point gathers                       */
+    double accurate_distance; /* a gather ray shorter than this many radii of the global
+                                 estimate at its end is evaluated accurately (>= 0)      */
+    double accurate_weight;   /* a ray whose throughput falls below this is evaluated
+                                 approximately, in [0, 1]                                */
+    int shadow_photons;       /* 1: decide visibility from shadow photons where they
+                                 agree (Jensen & Christensen 1995); 0: a ray every time  */
+    int one_map;              /* 1: one global map of global + caustic photons, caustics
+                                 from its caustic photons (the comparison of Sec. 3)     */
+    const struct checkpoint *report; /* borrowed or NULL: rows after 1, 2, 4, ... samples
+                                 per pixel, work = photons emitted + gather rays so far   */
+};
+
+/* What the render did, for --stats. */
+struct jensen1996_stats {
+    size_t photons_global;            /* stored in the global map                         */
+    size_t photons_caustic;           /* stored in the caustic map (0 without one)         */
+    size_t photons_shadow;            /* shadow photons, in the lights' visibility maps    */
+    size_t bytes_global_map, bytes_caustic_map, bytes_visibility_maps;
+    size_t photons_emitted;           /* for both maps                                     */
+    unsigned long long photon_rays;   /* rays cast tracing photons                         */
+    double seconds_photons;           /* CPU seconds tracing and balancing the maps        */
+    double seconds_cache;             /* CPU seconds of the irradiance cache's pre-pass    */
+    double seconds_render;            /* CPU seconds of the final pass                     */
+    unsigned long long shadow_rays;   /* shadow rays cast at accurate points               */
+    unsigned long long shadow_rays_avoided; /* light tests the shadow photons decided      */
+    size_t cache_records;             /* records made by the pre-pass                     */
+    size_t bytes_cache;
+    unsigned long long gathers;       /* final gathers (records, fallbacks, non-Lambertian) */
+    unsigned long long gather_fallbacks; /* gathers of the final pass where no record was
+                                           usable (computed, used once, not stored)       */
+    unsigned long long gather_rays;   /* rays cast by final gathers                        */
+    int strata_theta, strata_phi;     /* the gather's strata                              */
+};
+
+/* The defaults above, with the photons mode's --photons and --gather. */
+struct jensen1996_settings jensen1996_settings_default(void);
+
+/* Renders the window of rs: pass 1 (the maps), the irradiance cache's pre-pass over the
+ * whole image, then rs->spp camera samples per pixel. On failure (more than MAX_PHOTONS
+ * photons would be stored) returns a result with image NULL and *err filled. */
+struct render_result render_jensen1996(const struct scene *scene,
+                                       const struct render_settings *rs,
+                                       const struct jensen1996_settings *js, int want_variance,
+                                       struct render_counters *counters,
+                                       struct jensen1996_stats *stats, struct error *err);
+
+#endif
