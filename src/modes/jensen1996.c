@@ -22,7 +22,8 @@
  *                surfaces (4.4);
  *   corner       at the end of a gather ray shorter than --accurate-distance radii of the
  *                global estimate there ("otherwise we might risk inaccurate colour
- *                bleeding effects in corners"): as accurate, except that the soft
+ *                bleeding effects in corners"), and at surfaces seen through a glossy
+ *                reflection (whose blur hides the map's): as accurate, except that the soft
  *                indirect light is the global map's estimate from its indirect photons;
  *   approximate  after a diffuse bounce or at low weight: the global map's radiance
  *                estimate of the diffuse part, and still the specular part by Monte Carlo.
@@ -382,9 +383,12 @@ static struct vec3 specular_reflection(const struct j96 *m, const struct surface
         double q = roulette_odds(next.beta, path.depth);
         if (q < 1 && !(rng_uniform(rng) < q))
             continue;
-        next.eval = path.eval == ACCURATE && vec3_luminance(next.beta) >= m->js->accurate_weight
-                        ? ACCURATE
-                        : APPROXIMATE;
+        /* Seen through a glossy lobe, whose blur hides the global map's, a surface gets
+         * the corner evaluation: no gather for every ray of every glossy sample. */
+        if (path.eval != ACCURATE || vec3_luminance(next.beta) < m->js->accurate_weight)
+            next.eval = APPROXIMATE;
+        else
+            next.eval = bs.delta ? ACCURATE : CORNER;
         if (bs.delta)
             next.rule = path.rule == EMISSION_SKIP_DIRECT ? EMISSION_COUNTED : path.rule;
         else

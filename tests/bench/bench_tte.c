@@ -3,8 +3,9 @@
  * needs to reach a given relmse against a scene's converged reference, beside the path
  * tracer, on the Cornell boxes whose references are in reference/.
  *
- * For each scene: --mode 2008 at its defaults (256 x 256, 4 eye rays, 64 passes of 100,000
- * photons) sets the target, the relmse it ends with, and its seconds to reach it; pt then
+ * For each scene and each photon mode at its defaults (2008: 256 x 256, 4 eye rays, 64
+ * passes of 100,000 photons; 1996: 16 samples per pixel, the maps, the irradiance cache),
+ * the mode sets the target, the relmse it ends with, and its seconds to reach it; pt then
  * renders, with checkpoints after 1, 2, 4, ... samples per pixel, until it reaches the target
  * or has run four times as long. pt's time to the target is read off its checkpoints
  * (log-log interpolation between the two around it) or, when it did not get there, from
@@ -17,6 +18,7 @@
 #include <stdio.h>
 
 #include "../../src/image/compare.h"
+#include "../../src/modes/jensen1996.h"
 #include "../../src/modes/ppm2008.h"
 #include "../../src/modes/pt.h"
 
@@ -69,45 +71,67 @@ static double error_at(const struct curve *c, double t)
     return c->relmse[c->n - 1] * c->seconds[c->n - 1] / t; /* pt's 1 / time beyond its end */
 }
 
-static void time_to_error_on(const char *name, const char *scene_path,
+/* Renders scene (finished) at --mode 2008's defaults, its checkpoints into at. */
+static void render_2008(const struct scene *scene, const struct checkpoint *at)
+{
+    struct render_settings rs = render_settings_whole(scene, 1, PPM_DEFAULT_SPP, MAX_DEPTH_LIMIT);
+    struct ppm_settings ps = ppm_settings_default();
+    struct render_counters counters = {0, 0, 0};
+    struct ppm_stats stats;
+    ps.report = at;
+    struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
+    render_result_free(&result);
+}
+
+/* Renders scene (finished) at --mode 1996's defaults, its checkpoints into at. */
+static void render_1996(const struct scene *scene, const struct checkpoint *at)
+{
+    struct render_settings rs = render_settings_whole(scene, 1, DEFAULT_SPP, MAX_DEPTH_LIMIT);
+    struct jensen1996_settings js = jensen1996_settings_default();
+    struct render_counters counters = {0, 0, 0};
+    struct jensen1996_stats stats;
+    struct error err;
+    js.report = at;
+    struct render_result result = render_jensen1996(scene, &rs, &js, 0, &counters, &stats, &err);
+    render_result_free(&result);
+}
+
+static void time_to_error_on(const char *mode,
+                             void (*render)(const struct scene *, const struct checkpoint *),
+                             const char *name, const char *scene_path,
                              const char *reference_path)
 {
     struct error err;
     struct image *reference = pfm_read(reference_path, &err);
     struct scene *scene = reference != NULL ? scene_load(scene_path, &err) : NULL;
     if (scene == NULL) {
-        fprintf(stderr, "bench: tte.%s skipped: ", name);
+        fprintf(stderr, "bench: tte.%s.%s skipped: ", mode, name);
         error_print(&err);
         image_free(reference);
         return;
     }
     scene_finish(scene, reference->width, reference->height);
-    struct render_settings rs = render_settings_whole(scene, 1, PPM_DEFAULT_SPP, MAX_DEPTH_LIMIT);
-    struct ppm_settings ps = ppm_settings_default();
-    struct curve ppm = {reference, {0}, {0}, 0}, pt = {reference, {0}, {0}, 0};
-    struct checkpoint at_ppm = {record, &ppm}, at_pt = {record, &pt};
+    struct curve photon = {reference, {0}, {0}, 0}, pt = {reference, {0}, {0}, 0};
+    struct checkpoint at_photon = {record, &photon}, at_pt = {record, &pt};
+    render(scene, &at_photon);
+    double target = photon.relmse[photon.n - 1], photon_seconds = time_to(&photon, target);
+    struct render_settings rs = render_settings_whole(scene, 1, MAX_SPP, MAX_DEPTH_LIMIT);
     struct render_counters counters = {0, 0, 0};
-    struct ppm_stats stats;
-    ps.report = &at_ppm;
-    struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
-    render_result_free(&result);
-    double target = ppm.relmse[ppm.n - 1], ppm_seconds = time_to(&ppm, target);
-    rs.spp = MAX_SPP;
-    rs.time_limit = 4 * ppm_seconds;
-    result = render_pt(scene, &rs, 0, &at_pt, &counters);
+    rs.time_limit = 4 * photon_seconds;
+    struct render_result result = render_pt(scene, &rs, 0, &at_pt, &counters);
     render_result_free(&result);
     double pt_seconds = time_to(&pt, target);
     int extrapolated = pt_seconds < 0;
     if (extrapolated)
         pt_seconds = pt.seconds[pt.n - 1] * pt.relmse[pt.n - 1] / target;
-    printf("tte.2008.%s.relmse=%.6g\n", name, target);
-    printf("tte.2008.%s.seconds=%.3f\n", name, ppm_seconds);
-    printf("tte.pt.%s.seconds=%.3f\n", name, pt_seconds);
+    printf("tte.%s.%s.relmse=%.6g\n", mode, name, target);
+    printf("tte.%s.%s.seconds=%.3f\n", mode, name, photon_seconds);
+    printf("tte.pt.%s.seconds_to_%s_relmse=%.3f\n", name, mode, pt_seconds);
     printf("tte.pt.%s.extrapolated=%d\n", name, extrapolated);
-    printf("tte.2008.%s.ratio_to_pt=%.4g\n", name, ppm_seconds / pt_seconds);
-    printf("tte.pt.%s.relmse_at_2008_seconds=%.6g\n", name, error_at(&pt, ppm_seconds));
-    printf("tte.2008.%s.relmse_ratio_equal_time=%.4g\n", name,
-           target / error_at(&pt, ppm_seconds));
+    printf("tte.%s.%s.ratio_to_pt=%.4g\n", mode, name, photon_seconds / pt_seconds);
+    printf("tte.pt.%s.relmse_at_%s_seconds=%.6g\n", name, mode, error_at(&pt, photon_seconds));
+    printf("tte.%s.%s.relmse_ratio_equal_time=%.4g\n", mode, name,
+           target / error_at(&pt, photon_seconds));
     fflush(stdout);
     scene_free(scene);
     image_free(reference);
@@ -115,7 +139,12 @@ static void time_to_error_on(const char *name, const char *scene_path,
 
 void bench_tte(void)
 {
-    time_to_error_on("cornell", "scenes/cornell.scene", "reference/cornell-pt.pfm");
-    time_to_error_on("cornell-specular", "scenes/cornell-specular.scene",
-                     "reference/cornell-specular-pt.pfm");
+    static const char *const names[2] = {"cornell", "cornell-specular"};
+    static const char *const scenes[2] = {"scenes/cornell.scene", "scenes/cornell-specular.scene"};
+    static const char *const references[2] = {"reference/cornell-pt.pfm",
+                                              "reference/cornell-specular-pt.pfm"};
+    for (int i = 0; i < 2; i++) {
+        time_to_error_on("1996", render_1996, names[i], scenes[i], references[i]);
+        time_to_error_on("2008", render_2008, names[i], scenes[i], references[i]);
+    }
 }
