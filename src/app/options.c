@@ -56,7 +56,7 @@ static const struct option_spec specs[] = {
     {"--variance", OPT_FILE, FIELD(variance), 0, 0, "FILE.pfm",
      "also write each pixel's variance of the mean (needs --spp >= 2)"},
     {"--photons", OPT_INT, FIELD(photons), 1, MAX_PHOTONS, "N",
-     "photon modes: photons emitted (default 200000)"},
+     "photon modes: photons emitted (default: photons 200000, 1996 1000000 for the global map)"},
     {"--gather", OPT_INT, FIELD(gather), 1, MAX_GATHER, "K",
      "photon modes: photons in each radiance estimate (default 100)"},
     {"--max-radius", OPT_REAL, FIELD(max_radius), 0, 1e30, "R",
@@ -142,7 +142,7 @@ static void set_defaults(struct options *o)
     o->max_depth = -1;
     o->progress = -1;
     o->exposure = 1.0;
-    o->photons = PHOTONS_DEFAULT_N;
+    o->photons = 0; /* the mode's default, set after parsing */
     o->gather = PHOTONS_DEFAULT_GATHER;
     o->passes = PPM_DEFAULT_PASSES;
     o->photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
@@ -318,6 +318,8 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         return error_set(err, "", 0, "--cone: k must be 0 (no filter) or at least 1");
     if (o->cone < 0)
         o->cone = o->mode == MODE_JENSEN1996 ? 1.0 : 0.0;
+    if (o->photons == 0)
+        o->photons = o->mode == MODE_JENSEN1996 ? J96_DEFAULT_PHOTONS : PHOTONS_DEFAULT_N;
     if (!(o->alpha > 0 && o->alpha < 1))
         return error_set(err, "", 0, "--alpha: expected a number strictly between 0 and 1");
     if (o->spp == 0)

@@ -73,7 +73,7 @@
 struct jensen1996_settings jensen1996_settings_default(void)
 {
     struct jensen1996_settings js;
-    js.global_photons = PHOTONS_DEFAULT_N;
+    js.global_photons = J96_DEFAULT_PHOTONS;
     js.caustic_photons = J96_DEFAULT_CAUSTIC_PHOTONS;
     js.global_gather = PHOTONS_DEFAULT_GATHER;
     js.caustic_gather = J96_DEFAULT_CAUSTIC_GATHER;

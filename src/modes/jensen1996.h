@@ -11,6 +11,8 @@
 #include "../base/error.h"
 #include "render.h"
 
+#define J96_DEFAULT_PHOTONS 1000000        /* --photons: searches cost log N, so a large
+                                              global map is cheap and blurs less          */
 #define J96_DEFAULT_CAUSTIC_PHOTONS 100000 /* --caustic-photons                          */
 #define J96_DEFAULT_CAUSTIC_GATHER 60      /* photons in a caustic estimate               */
 #define J96_DEFAULT_GATHER_RAYS 256        /* --gather-rays: final gather rays per record */
@@ -70,7 +72,7 @@ struct jensen1996_stats {
     int strata_theta, strata_phi;     /* the gather's strata                              */
 };
 
-/* The defaults above, with the photons mode's --photons and --gather. */
+/* The defaults above, with the photons mode's --gather. */
 struct jensen1996_settings jensen1996_settings_default(void);
 
 /* Renders the window of rs: pass 1 (the maps), the irradiance cache's pre-pass over the
