@@ -24,6 +24,7 @@ int main(void)
     test_cache(&t);
     test_render(&t);
     test_pt(&t);
+    test_jensen1996(&t);
     test_report(&t);
     test_cli(&t);
     printf("%d passed, %d failed\n", t.passed, t.failed);

@@ -247,6 +247,7 @@ struct path {
     int depth;               /* bounces so far                                           */
     enum evaluation eval;    /* how the surface it reaches is evaluated                  */
     enum emission_rule rule; /* which emission it may add                               */
+    int split;               /* whether it already branched into glossy_rays rays        */
 };
 
 /* The render's scratch and tallies: one per render, reached through the const mode. */
@@ -259,6 +260,13 @@ struct scratch {
     struct jensen1996_stats *stats;
 };
 
+/* A final gather's size: m x n strata (Ward and Heckbert's), one ray each, and the rest
+ * of its rays spread by importance. */
+struct gather_plan {
+    int theta, phi; /* m rings, n sectors */
+    int rays;       /* >= theta * phi     */
+};
+
 struct j96 {
     const struct scene *scene;
     const struct jensen1996_settings *js;
@@ -267,7 +275,11 @@ struct j96 {
     int filling_cache;              /* the pre-pass: add records where none is usable  */
     struct estimate_settings global_es, caustic_es;
     double diagonal;                /* of the scene's box                               */
-    int strata_theta, strata_phi;   /* the final gather's strata (m x n)                */
+    struct gather_plan cached;      /* a gather that makes an irradiance record         */
+    struct gather_plan per_sample;  /* a gather for one camera sample at a surface whose
+                                       diffuse part is not Lambertian (no cache): the
+                                       rays of one record shared among DEFAULT_SPP
+                                       samples, as distribution ray tracing spreads them */
     int max_depth;
     struct scratch *scratch;
 };
@@ -359,7 +371,9 @@ static struct vec3 direct_illumination(const struct j96 *m, const struct surface
 /* -- 4.2 specular reflection -- */
 
 /* The second term of Eq. 2: Monte Carlo through the specular part, importance-sampled by
- * the BRDF; glossy_rays rays at an accurate point with a glossy lobe, else one. */
+ * the BRDF; glossy_rays rays at the first accurate point of a path with a glossy lobe,
+ * else one (a path that branched at every glossy hit of a sphere flake would grow
+ * exponentially). */
 static struct vec3 specular_reflection(const struct j96 *m, const struct surface *s,
                                        const struct brdf_split *split,
                                        const struct shading_frame *frame, struct path path,
@@ -368,7 +382,7 @@ static struct vec3 specular_reflection(const struct j96 *m, const struct surface
     if (path.depth >= m->max_depth)
         return vec3_zero();
     int glossy = brdf_has_diffuse(&split->specular); /* a non-delta lobe */
-    int n_rays = path.eval == ACCURATE && glossy ? m->js->glossy_rays : 1;
+    int n_rays = path.eval == ACCURATE && glossy && !path.split ? m->js->glossy_rays : 1;
     struct vec3 sum = vec3_zero();
     for (int r = 0; r < n_rays; r++) {
         double u[3];
@@ -380,6 +394,8 @@ static struct vec3 specular_reflection(const struct j96 *m, const struct surface
         struct path next;
         next.beta = vec3_mul(path.beta, bs.weight);
         next.depth = path.depth + 1;
+        next.split = path.split || n_rays > 1;
+        next.distance = path.distance;
         double q = roulette_odds(next.beta, path.depth);
         if (q < 1 && !(rng_uniform(rng) < q))
             continue;
@@ -424,11 +440,11 @@ static struct vec3 gathered_radiance(const struct j96 *m, const struct surface *
 
 /* Jensen 1995's importance from the photon map on Ward and Heckbert's strata: the flux of
  * the nearest global photons arriving through each stratum, times f_r,d there. */
-static double stratum_importance(const struct j96 *m, const struct surface *s,
-                                 const struct material *diffuse,
+static double stratum_importance(const struct j96 *m, const struct gather_plan *plan,
+                                 const struct surface *s, const struct material *diffuse,
                                  const struct shading_frame *frame)
 {
-    int mn = m->strata_theta * m->strata_phi;
+    int mn = plan->theta * plan->phi;
     double *importance = m->scratch->importance;
     for (int i = 0; i < mn; i++)
         importance[i] = 0.0;
@@ -442,10 +458,10 @@ static double stratum_importance(const struct j96 *m, const struct surface *s,
         struct vec3 local = vec3(vec3_dot(wi, frame->t), vec3_dot(wi, frame->b),
                                  vec3_dot(wi, frame->n));
         int j, k;
-        stratum_of(m->strata_theta, m->strata_phi, local, &j, &k);
+        stratum_of(plan->theta, plan->phi, local, &j, &k);
         double w = vec3_luminance(vec3_mul(photon_power(nn->photon[i]),
                                            brdf_eval(diffuse, frame, s->wo, wi)));
-        importance[j * m->strata_phi + k] += w;
+        importance[j * plan->phi + k] += w;
         total += w;
     }
     return total;
@@ -456,10 +472,10 @@ static double stratum_importance(const struct j96 *m, const struct surface *s,
  * rounded by largest remainder (ties to the lower index, so the split is deterministic),
  * or evenly where no photon arrived. Each stratum's mean is then an unbiased estimate of
  * its own integral: this is importance sampling by stratified allocation. */
-static void allot_rays(const struct j96 *m, double total)
+static void allot_rays(const struct j96 *m, const struct gather_plan *plan, double total)
 {
-    int mn = m->strata_theta * m->strata_phi;
-    int extra = m->js->gather_rays - mn;
+    int mn = plan->theta * plan->phi;
+    int extra = plan->rays - mn;
     int *rays_in = m->scratch->rays_in;
     double *share = m->scratch->importance;
     int given = 0;
@@ -482,25 +498,25 @@ static void allot_rays(const struct j96 *m, double total)
 
 /* The final gather at s: the strata's mean radiances and distances (and, for a diffuse
  * part that is not Lambertian, the strata's mean f_r,d L). */
-static void final_gather(const struct j96 *m, const struct surface *s,
-                         const struct material *diffuse, int lambertian,
+static void final_gather(const struct j96 *m, const struct gather_plan *plan,
+                         const struct surface *s, const struct material *diffuse, int lambertian,
                          const struct shading_frame *frame, struct path path, struct rng *rng,
                          struct render_counters *counters)
 {
     struct scratch *sc = m->scratch;
-    allot_rays(m, stratum_importance(m, s, diffuse, frame));
+    allot_rays(m, plan, stratum_importance(m, plan, s, diffuse, frame));
     struct path gather = path;
     gather.depth = path.depth + 1;
     gather.rule = EMISSION_SKIP_ALL;
     sc->stats->gathers++;
-    for (int j = 0; j < m->strata_theta; j++) {
-        for (int k = 0; k < m->strata_phi; k++) {
-            int i = j * m->strata_phi + k;
+    for (int j = 0; j < plan->theta; j++) {
+        for (int k = 0; k < plan->phi; k++) {
+            int i = j * plan->phi + k;
             struct vec3 sum = vec3_zero(), reflected = vec3_zero();
             double nearest = INFINITY;
             for (int r = 0; r < sc->rays_in[i]; r++) {
                 double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
-                struct vec3 local = stratum_direction(m->strata_theta, m->strata_phi, j, k, u1, u2);
+                struct vec3 local = stratum_direction(plan->theta, plan->phi, j, k, u1, u2);
                 struct vec3 wi = vec3_add(vec3_add(vec3_scale(frame->t, local.x),
                                                    vec3_scale(frame->b, local.y)),
                                           vec3_scale(frame->n, local.z));
@@ -534,48 +550,63 @@ static struct irradiance_record gathered_record(const struct j96 *m, const struc
                                                 struct path path, struct rng *rng,
                                                 struct render_counters *counters)
 {
-    final_gather(m, s, diffuse, 1, frame, path, rng, counters);
+    final_gather(m, &m->cached, s, diffuse, 1, frame, path, rng, counters);
     /* A pixel seen at an angle covers 1 / cos more of the surface (up to 10 times). */
     double slant = fmax(fabs(vec3_dot(s->wo, frame->n)), 0.1);
     double footprint = path.distance * camera_footprint(&m->scene->camera) / slant;
     double a = m->cache != NULL ? m->js->cache_accuracy : 1.0; /* no cache: R is unused */
     double r_min = CACHE_MIN_REACH * footprint / a;
     double r_max = fmax(r_min, CACHE_R_MAX * m->diagonal);
-    return irradiance_record_make(s->p, frame->t, frame->b, frame->n, m->strata_theta,
-                                  m->strata_phi, m->scratch->strata, r_min, r_max);
+    return irradiance_record_make(s->p, frame->t, frame->b, frame->n, m->cached.theta,
+                                  m->cached.phi, m->scratch->strata, r_min, r_max);
+}
+
+/* pi / (m n) times the sum over the plan's strata of their mean radiance (irradiance) or,
+ * when reflected, of their mean f_r,d L (reflected radiance). */
+static struct vec3 strata_sum(const struct j96 *m, const struct gather_plan *plan,
+                              int reflected)
+{
+    int mn = plan->theta * plan->phi;
+    struct vec3 sum = vec3_zero();
+    for (int i = 0; i < mn; i++)
+        sum = vec3_add(sum, reflected ? m->scratch->reflected[i] : m->scratch->strata[i].radiance);
+    return vec3_scale(sum, PI / mn);
 }
 
 /* The fourth term of Eq. 2 at an accurate point. Lambertian: rho / pi times the
  * irradiance, interpolated from the cache where a record is usable (Ward 1988), else
- * gathered (and kept, in the pre-pass). Otherwise: the gather's mean f_r,d L per stratum,
- * each stratum weighing pi / (m n) of projected solid angle. */
+ * gathered: in the pre-pass into a new record, without a cache as one too; in the final
+ * pass (a point no record covers, seen through glass or a curved mirror, say) with the
+ * camera sample's share of the rays, kept nowhere. Not Lambertian: no cache can hold
+ * it (it depends on wo), so each camera sample gathers its share, the mean f_r,d L per
+ * stratum. */
 static struct vec3 soft_indirect(const struct j96 *m, const struct surface *s,
                                  const struct brdf_split *split,
                                  const struct shading_frame *frame, struct path path,
                                  struct rng *rng, struct render_counters *counters)
 {
-    int mn = m->strata_theta * m->strata_phi;
-    if (split->lambertian) {
-        struct vec3 e;
-        /* The pre-pass asks with a stricter a than the final pass reads with, so that the
-         * final pass's jittered points find the records made at pixel centres. */
-        double a = m->js->cache_accuracy * (m->filling_cache ? CACHE_FILL_STRICTNESS : 1.0);
-        if (m->cache == NULL || !irradiance_cache_lookup(m->cache, s->p, frame->n, a, &e)) {
-            struct irradiance_record record =
-                gathered_record(m, s, &split->diffuse, frame, path, rng, counters);
-            if (m->cache != NULL && m->filling_cache)
-                irradiance_cache_add(m->cache, &record);
-            else if (m->cache != NULL)
-                m->scratch->stats->gather_fallbacks++;
-            e = record.e;
-        }
-        return vec3_scale(vec3_mul(split->diffuse.rho, e), 1.0 / PI);
+    if (!split->lambertian) {
+        final_gather(m, &m->per_sample, s, &split->diffuse, 0, frame, path, rng, counters);
+        return strata_sum(m, &m->per_sample, 1);
     }
-    final_gather(m, s, &split->diffuse, 0, frame, path, rng, counters);
-    struct vec3 sum = vec3_zero();
-    for (int i = 0; i < mn; i++)
-        sum = vec3_add(sum, m->scratch->reflected[i]);
-    return vec3_scale(sum, PI / mn);
+    struct vec3 e;
+    /* The pre-pass asks with a stricter a than the final pass reads with, so that the
+     * final pass's jittered points find the records made at pixel centres. */
+    double a = m->js->cache_accuracy * (m->filling_cache ? CACHE_FILL_STRICTNESS : 1.0);
+    if (m->cache != NULL && irradiance_cache_lookup(m->cache, s->p, frame->n, a, &e))
+        return vec3_scale(vec3_mul(split->diffuse.rho, e), 1.0 / PI);
+    if (m->cache == NULL || m->filling_cache) {
+        struct irradiance_record record =
+            gathered_record(m, s, &split->diffuse, frame, path, rng, counters);
+        if (m->cache != NULL)
+            irradiance_cache_add(m->cache, &record);
+        e = record.e;
+    } else {
+        m->scratch->stats->gather_fallbacks++;
+        final_gather(m, &m->per_sample, s, &split->diffuse, 1, frame, path, rng, counters);
+        e = strata_sum(m, &m->per_sample, 0);
+    }
+    return vec3_scale(vec3_mul(split->diffuse.rho, e), 1.0 / PI);
 }
 
 /* -- a surface, term by term -- */
@@ -654,6 +685,7 @@ static struct path camera_path(void)
     path.beta = vec3(1.0, 1.0, 1.0);
     path.distance = 0.0;
     path.depth = 0;
+    path.split = 0;
     path.eval = ACCURATE;
     path.rule = EMISSION_COUNTED;
     return path;
@@ -695,13 +727,16 @@ static void fill_irradiance_cache(struct j96 *m, const struct render_settings *r
 
 /* Ward and Heckbert's strata for a gather of n rays: half the rays make the strata (one
  * each), m x n with n about pi m as in their paper; the other half follow importance. */
-static void choose_strata(int gather_rays, int *m, int *n)
+static struct gather_plan gather_plan_of(int gather_rays)
 {
+    struct gather_plan plan;
     int strata = gather_rays / 2 > 1 ? gather_rays / 2 : 1;
-    *m = (int)floor(sqrt(strata / PI) + 0.5);
-    *m = *m < 1 ? 1 : *m;
-    *n = strata / *m;
-    *n = *n < 1 ? 1 : *n;
+    plan.theta = (int)floor(sqrt(strata / PI) + 0.5);
+    plan.theta = plan.theta < 1 ? 1 : plan.theta;
+    plan.phi = strata / plan.theta;
+    plan.phi = plan.phi < 1 ? 1 : plan.phi;
+    plan.rays = gather_rays > 2 ? gather_rays : 2;
+    return plan;
 }
 
 /* A checkpoint that adds the photon pass's and the pre-pass's seconds to the render's,
@@ -726,7 +761,7 @@ static struct scratch *scratch_create(const struct j96 *m, struct jensen1996_sta
     size_t k = m->js->global_gather > m->js->caustic_gather ? m->js->global_gather
                                                             : m->js->caustic_gather;
     k = k > J96_VISIBILITY_PHOTONS ? k : J96_VISIBILITY_PHOTONS;
-    size_t mn = (size_t)m->strata_theta * (size_t)m->strata_phi;
+    size_t mn = (size_t)m->cached.theta * (size_t)m->cached.phi; /* the larger plan */
     struct scratch *sc = xmalloc(1, sizeof *sc, "render scratch");
     sc->nn = nearest_create(k);
     sc->importance = xmalloc(mn, sizeof *sc->importance, "strata");
@@ -767,7 +802,8 @@ static void set_up(struct j96 *m, const struct scene *scene, const struct render
                            CAUSTIC_RADIUS_FRACTION;
     m->caustic_es.cone_k = js->cone_k;
     m->caustic_es.kinds = js->one_map ? PHOTON_CAUSTIC : 0;
-    choose_strata(js->gather_rays, &m->strata_theta, &m->strata_phi);
+    m->cached = gather_plan_of(js->gather_rays);
+    m->per_sample = gather_plan_of(js->gather_rays / DEFAULT_SPP);
     m->max_depth = rs->max_depth;
     m->filling_cache = 0;
     m->cache = NULL;
@@ -796,8 +832,8 @@ struct render_result render_jensen1996(const struct scene *scene,
     }
     stats->seconds_photons = cpu_seconds(start);
     set_up(&m, scene, rs, js);
-    stats->strata_theta = m.strata_theta;
-    stats->strata_phi = m.strata_phi;
+    stats->strata_theta = m.cached.theta;
+    stats->strata_phi = m.cached.phi;
     m.scratch = scratch_create(&m, stats);
     start = clock();
     if (m.cache != NULL)

@@ -22,10 +22,9 @@ struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_po
     q.x = at->x;
     q.max_r2 = es->max_r2;
     q.k = es->k;
-    q.normal = at->ng;
+    q.normal = vec3_zero();
     q.max_plane_distance = 0;
     q.kinds = es->kinds;
-    q.facing = 1; /* only photons that arrived at this side count, so only they fill k */
     locate_photons_in_disc(map, &q, nn); /* sets found, photon[], d2[], r2 */
     if (nn->found == 0 || !(nn->r2 > 0))
         return vec3_zero(); /* no photons, or all exactly at x: no area */
@@ -33,6 +32,8 @@ struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_po
     for (size_t i = 0; i < nn->found; i++) {
         const struct photon *p = nn->photon[i];
         struct vec3 wi = photon_direction(p);
+        if (!(vec3_dot(wi, at->ng) > 0))
+            continue; /* arrived at the other side: a thin wall's back, not this surface */
         struct vec3 fr = brdf_eval(at->material, at->frame, at->wo, wi);
         double w = 1.0;
         if (es->cone_k > 0) /* Eq. 4: w_p = max(0, 1 - d_p / (k r)) */

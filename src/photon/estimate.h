@@ -11,9 +11,6 @@
  * k: blurred where light changes over r, and with r the k-th photon's distance it
  * overestimates a uniform density by k / (k - 1); the cone filter with constant 1 has
  * no such bias (see estimate.c). The map must not hold shadow photons (trace.h).
- * Only photons that arrived from the side of the surface being seen are searched for
- * (the kd-tree's facing filter), so the k are all this surface's: photons on the back of
- * a thin wall, or on a ball's underside just above a floor, neither count nor widen r.
  */
 #ifndef PHOTON_ESTIMATE_H
 #define PHOTON_ESTIMATE_H
@@ -27,7 +24,7 @@
 struct estimate_point {
     struct vec3 x;                     /* the point on the surface                      */
     struct vec3 ng;                    /* unit geometric normal on the side of wo: only
-                                          photons that arrived from this side are found */
+                                          photons that arrived from this side count     */
     struct vec3 wo;                    /* unit, from x towards the viewer               */
     const struct material *material;   /* borrowed                                      */
     const struct shading_frame *frame; /* borrowed; around the shading normal, on wo's

@@ -228,7 +228,6 @@ struct search {
     double normal[3];           /* disc filter's plane normal                 */
     double max_plane_distance;  /* 0: no disc filter                          */
     unsigned kinds;             /* 0: no kind filter                          */
-    int facing;                 /* 0: no facing filter                        */
     size_t k;                   /* photons wanted                             */
     struct nearest *nn;         /* results so far                             */
 };
@@ -244,13 +243,8 @@ static double squared_distance(const double x[3], const struct photon *p, double
 static int selected(const struct search *s, const struct photon *p, const double delta[3])
 {
     double h = delta[0] * s->normal[0] + delta[1] * s->normal[1] + delta[2] * s->normal[2];
-    if (!(s->max_plane_distance == 0 || fabs(h) <= s->max_plane_distance) ||
-        !(s->kinds == 0 || (p->flags & s->kinds) != 0))
-        return 0;
-    if (!s->facing)
-        return 1;
-    struct vec3 wi = photon_direction(p);
-    return wi.x * s->normal[0] + wi.y * s->normal[1] + wi.z * s->normal[2] > 0;
+    return (s->max_plane_distance == 0 || fabs(h) <= s->max_plane_distance) &&
+           (s->kinds == 0 || (p->flags & s->kinds) != 0);
 }
 
 /* Offers photon p to the search. bound is exclusive: p is wanted iff d2 < bound. Until
@@ -341,7 +335,6 @@ void locate_photons_in_disc(const struct kdtree *map, const struct photon_query 
     s.normal[2] = q->normal.z;
     s.max_plane_distance = q->max_plane_distance;
     s.kinds = q->kinds;
-    s.facing = q->facing;
     s.k = q->k;
     s.nn = nn;
     nn->found = 0;
@@ -363,7 +356,6 @@ void locate_photons(const struct kdtree *map, struct vec3 x, double max_r2, size
     q.normal = vec3_zero();
     q.max_plane_distance = 0;
     q.kinds = 0;
-    q.facing = 0;
     locate_photons_in_disc(map, &q, nn);
 }
 

@@ -68,10 +68,6 @@ struct photon_query {
     struct vec3 normal;        /* unit normal of the disc's plane (filter on only)   */
     double max_plane_distance; /* keep |(p - x) . normal| <= this; 0 turns it off    */
     unsigned kinds;            /* keep photons with (flags & kinds) != 0; 0 keeps all */
-    int facing;                /* 1: keep photons that arrived from normal's side,
-                                  photon_direction(p) . normal > 0 (a radiance estimate
-                                  must not let photons on another surface close by, a
-                                  ball's underside over a floor, widen its disc); 0 off */
 };
 
 /* Finds the k photons nearest to x with |p - x|^2 <= max_r2 (all of those if fewer),
@@ -83,7 +79,7 @@ void locate_photons(const struct kdtree *map, struct vec3 x, double max_r2, size
                     struct nearest *nn);
 
 /* locate_photons() with the filters of q (the disc filter off when q->max_plane_distance
- * is 0, the kind filter when q->kinds is 0, the facing filter when q->facing is 0). */
+ * is 0, the kind filter when q->kinds is 0). */
 void locate_photons_in_disc(const struct kdtree *map, const struct photon_query *q,
                             struct nearest *nn);
 
