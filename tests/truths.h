@@ -1,11 +1,12 @@
 /*
  * tests/truths.h -- closed forms and fixtures that several test rooms share: Lambert's
- * polygon irradiance (test_scene.c, test_pt.c) and loading a test scene (test_render.c,
+ * polygon irradiance (test_scene.c, test_pt.c), the point light over a plane, and loading a test scene (test_render.c,
  * test_pt.c).
  */
 #ifndef PHOTON_TEST_TRUTHS_H
 #define PHOTON_TEST_TRUTHS_H
 
+#include "../src/image/image.h"
 #include "../src/scene/scene.h"
 
 /* Lambert's formula for a polygon of constant radiance le seen from p with normal n
@@ -13,6 +14,14 @@
  * r_i = v_i - p, beta_i the angle between r_i and r_i+1. v: count corners in order. */
 double polygon_irradiance(const struct vec3 *v, int count, struct vec3 p, struct vec3 n,
                           double le);
+
+/* Whether every pixel of image, a render of scenes/analytic/point-over-plane.scene
+ * (finished, same size), lies within the closed form L = rho Phi h / (4 pi^2 d^3) over its
+ * square: a pixel is the mean of L there, so it must lie between the least and the
+ * greatest L on the square (taken on a 9 x 9 grid with the corners; L is smooth and
+ * monotone across a pixel), widened by 1e-12 relative for rounding (test_render.c,
+ * test_jensen1996.c). */
+int within_point_over_plane(const struct scene *scene, const struct image *image);
 
 /* Loads and finishes the scene at path for width x height (0: the file's own size); the
  * caller frees it with scene_free. NULL, with the error printed, when it cannot be read. */
