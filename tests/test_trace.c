@@ -22,6 +22,8 @@
 #include "../src/photon/trace.h"
 #include "../src/scene/emit.h"
 #include "check.h"
+#include "tests.h"
+#include "truths.h"
 
 #define SEED 11            /* every trace in this file */
 #define TEST_MAX_DEPTH 1000 /* bounces: roulette ends paths long before */
@@ -48,19 +50,6 @@ static double tally_se(const struct tally *t)
         return 0;
     double var = (t->sum2 - t->sum * t->sum / t->n) / (t->n - 1);
     return sqrt(fmax(0.0, t->n * var));
-}
-
-/* Loads and finishes a scene at width x height (0 x 0: the file's own size). */
-static struct scene *load_scene(const char *path, int width, int height)
-{
-    struct error err;
-    struct scene *scene = scene_load(path, &err);
-    if (scene == NULL) {
-        error_print(&err);
-        return NULL;
-    }
-    scene_finish(scene, width > 0 ? width : scene->width, height > 0 ? height : scene->height);
-    return scene;
 }
 
 /* Gives a scene built in code a camera (any valid one: these scenes are only traced)
@@ -443,7 +432,7 @@ static void trace_paths(const struct scene *scene, size_t n, struct tally total[
  *   the choice of q is not what this tests.) */
 static void test_closed_box_flux(struct check *t)
 {
-    struct scene *scene = load_scene("scenes/analytic/closed-box.scene", 0, 0);
+    struct scene *scene = load_test_scene("scenes/analytic/closed-box.scene", 0, 0);
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
@@ -575,7 +564,7 @@ static void test_shadow_photons(struct check *t)
  *   next, powers depending on anything but N. */
 static void test_trace_determinism(struct check *t)
 {
-    struct scene *scene = load_scene("scenes/cornell.scene", 0, 0);
+    struct scene *scene = load_test_scene("scenes/cornell.scene", 0, 0);
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
@@ -605,7 +594,7 @@ static void test_trace_determinism(struct check *t)
  *   failure that leaks the array. */
 static void test_trace_refuses_overflow(struct check *t)
 {
-    struct scene *scene = load_scene("scenes/analytic/closed-box.scene", 0, 0);
+    struct scene *scene = load_test_scene("scenes/analytic/closed-box.scene", 0, 0);
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
@@ -663,7 +652,7 @@ static double point_over_plane_ratio(const struct scene *scene, size_t n, size_t
  *   direction (rejected by the front test), k photons with the wrong radius. */
 static void test_point_over_plane_estimate(struct check *t)
 {
-    struct scene *scene = load_scene("scenes/analytic/point-over-plane.scene", 0, 0);
+    struct scene *scene = load_test_scene("scenes/analytic/point-over-plane.scene", 0, 0);
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
@@ -801,7 +790,7 @@ static void test_estimate_boundaries(struct check *t)
 static void test_photons_mode_cornell(struct check *t)
 {
     struct error err;
-    struct scene *scene = load_scene("scenes/cornell.scene", 32, 32);
+    struct scene *scene = load_test_scene("scenes/cornell.scene", 32, 32);
     struct image *ref = pfm_read("reference/cornell-pt.pfm", &err);
     CHECK(t, scene != NULL && ref != NULL && ref->width == 256);
     if (scene == NULL || ref == NULL || ref->width != 256) {
