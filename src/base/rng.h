@@ -22,7 +22,8 @@ enum stream {
     STREAM_PHOTON = 2,   /* index = pass, sub = photon number within the pass            */
     STREAM_CACHE = 3,    /* index = record or pixel, sub = sample: irradiance-cache work */
     STREAM_TEST = 4,     /* tests and benches                                            */
-    STREAM_SCENE = 5     /* procedural geometry (noise permutations)                      */
+    STREAM_SCENE = 5,    /* procedural geometry (noise permutations)                      */
+    STREAM_PIXEL = 6     /* index = pixel: the digital shift of its camera samples       */
 };
 
 struct rng {

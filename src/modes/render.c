@@ -13,6 +13,7 @@
 #include <time.h>
 
 #include "../base/alloc.h"
+#include "../base/sequence02.h"
 
 struct accumulator {
     int width, height; /* of the window                         */
@@ -42,10 +43,12 @@ struct ray camera_sample(const struct scene *scene, uint64_t seed, int x, int y,
                          struct rng *rng)
 {
     uint64_t pixel = (uint64_t)y * (uint64_t)scene->width + (uint64_t)x;
+    struct rng pixel_shift = rng_stream(seed, STREAM_PIXEL, pixel, 0);
+    uint64_t shift = rng_next(&pixel_shift);
+    double u, v;
+    sequence02_point((uint32_t)s, (uint32_t)shift, (uint32_t)(shift >> 32), &u, &v);
     *rng = rng_stream(seed, STREAM_CAMERA, pixel, (uint64_t)s);
-    double px = x + rng_uniform(rng);
-    double py = y + rng_uniform(rng);
-    return camera_ray(&scene->camera, px, py);
+    return camera_ray(&scene->camera, x + u, y + v);
 }
 
 /* Adds sample s of every pixel in the window. A non-finite sample (a bug upstream) counts

@@ -2,8 +2,8 @@
  * modes/render.h -- the pixel loop every camera-driven mode shares.
  *
  * A pixel's value is the mean radiance over the pixel's square: camera rays through
- * uniformly jittered points of the pixel (a box filter), each estimated independently by
- * the mode. Sample s of pixel (x, y) draws every random number of its path from
+ * stratified points of the pixel (a box filter; camera_sample), each estimated by the
+ * mode. Sample s of pixel (x, y) draws every other random number of its path from
  * rng_stream(seed, STREAM_CAMERA, y * width + x, s), (x, y) in the whole image, so a
  * pixel's value depends on nothing but the scene, the settings and its place: a crop
  * equals the same window of the whole image, bit for bit.
@@ -62,7 +62,9 @@ struct render_result {
     struct image *image;    /* owned: mean radiance over each pixel                       */
     struct image *variance; /* owned or NULL: per pixel and channel, the variance of the
                                mean, s^2 / n from the samples' own second moment (0 when
-                               fewer than two samples)                                     */
+                               fewer than two samples); it treats the stratified camera
+                               points as independent, so at edges it is typically an
+                               over-estimate                                               */
     double seconds;         /* CPU seconds rendering, checkpoint work excluded            */
 };
 
@@ -71,10 +73,13 @@ struct render_result {
 struct render_settings render_settings_whole(const struct scene *scene, uint64_t seed, int spp,
                                              int max_depth);
 
-/* Camera sample s of pixel (x, y) of the whole image: *rng becomes the sample's stream,
- * rng_stream(seed, STREAM_CAMERA, y * width + x, s), and the ray goes through a uniformly
- * jittered point of the pixel's square drawn from it; the rest of the stream is the
- * sample's to use. */
+/* Camera sample s of pixel (x, y) of the whole image. The ray goes through point s of the
+ * (0,2)-sequence in the pixel's square, digitally shifted by the pixel's own random word
+ * from rng_stream(seed, STREAM_PIXEL, y * width + x, 0) (sequence02.h): each point is
+ * uniform, and the first 1, 2, 4, ... samples of a pixel are stratified, which keeps the
+ * light's outline and other edges from aliasing at low sample counts. *rng becomes the
+ * sample's stream, rng_stream(seed, STREAM_CAMERA, y * width + x, s), all the sample's
+ * to use. */
 struct ray camera_sample(const struct scene *scene, uint64_t seed, int x, int y, int s,
                          struct rng *rng);
 

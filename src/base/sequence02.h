@@ -1,0 +1,23 @@
+/*
+ * base/sequence02.h -- the (0,2)-sequence in base 2, randomised by a digital shift.
+ *
+ * Point i is (van der Corput of i, Sobol's second dimension of i) (Kollig & Keller 2002,
+ * "Efficient multidimensional sampling"). Its first 2^k points are a (0,k,2)-net: each
+ * elementary interval [a/2^j, (a+1)/2^j) x [b/2^(k-j), (b+1)/2^(k-j)) holds exactly one
+ * of them, for every j. Camera samples taken in this order are stratified after any
+ * power-of-two number of samples, so a progressive render stopped at 1, 2, 4, ... samples
+ * per pixel has them all stratified.
+ *
+ * XOR-ing each coordinate's 32 bits with a random word (a random digital shift) maps
+ * elementary intervals onto elementary intervals, so the net property survives, and
+ * makes every single point uniform on the 2^-32 grid: estimates stay unbiased.
+ */
+#ifndef PHOTON_SEQUENCE02_H
+#define PHOTON_SEQUENCE02_H
+
+#include <stdint.h>
+
+/* Point i of the sequence shifted by (shift_x, shift_y), in [0, 1)^2. */
+void sequence02_point(uint32_t i, uint32_t shift_x, uint32_t shift_y, double *x, double *y);
+
+#endif
