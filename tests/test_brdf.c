@@ -595,6 +595,73 @@ static void test_brdf_glass_optics(struct check *t)
     check_refraction(t, &in, 20.0, 5.0);
 }
 
+/* Each lobe of brdf_delta_lobes() against the mean weight brdf_sample() gives it. */
+static void check_lobes_against_samples(struct check *t, const struct material *m,
+                                        const struct shading_frame *f, struct vec3 wo,
+                                        uint64_t key)
+{
+    struct brdf_sample lobes[2];
+    int n_lobes = brdf_delta_lobes(m, f, wo, lobes);
+    struct rng rng = rng_stream(SEED, STREAM_TEST, key, 0);
+    const long n = 200000;
+    double sum[2] = {0, 0}, sum2[2] = {0, 0};
+    int same_direction = 1;
+    for (long i = 0; i < n; i++) {
+        struct brdf_sample s;
+        double u0 = rng_uniform(&rng);
+        if (!sample_with(m, f, wo, u0, 0.5, 0.5, &s))
+            continue;
+        int lobe = n_lobes == 2 && s.transmitted == lobes[1].transmitted;
+        same_direction &= vec3_max_abs(vec3_sub(s.wi, lobes[lobe].wi)) == 0;
+        sum[lobe] += s.weight.x;
+        sum2[lobe] += s.weight.x * s.weight.x;
+    }
+    CHECK(t, same_direction);
+    for (int k = 0; k < n_lobes; k++) {
+        double mean = sum[k] / n, var = fmax(0.0, sum2[k] / n - mean * mean);
+        CHECK_CLOSE(t, lobes[k].weight.x, mean, 5 * sqrt(var / n) + 1e-15);
+        CHECK(t, lobes[k].pdf == 1 && lobes[k].delta);
+    }
+}
+
+/* truth: the closed forms of the lobes (Hecht): for glass of index 1.5, reflection F (the
+ *   Fresnel equations: 0.04 at normal incidence, 0.0891867128 at 60 degrees) and
+ *   refraction (1 - F) / eta^2 for radiance; under total internal reflection one lobe of
+ *   weight 1; the mirror one lobe of weight rho. Brute force: the mean weight of
+ *   brdf_sample() per lobe over n random u equals that lobe's weight.
+ * tolerance: 1e-10 for closed forms (the values are quoted to 10 digits); 5 standard
+ *   errors for the sampled means (deterministic seed).
+ * catches: the probability not folded in (glass's weights would be 1 and 1/eta^2), a lobe
+ *   counted twice (the mirror, TIR), the refraction lobe missing, directions other than
+ *   brdf_sample()'s. */
+static void test_brdf_delta_lobes(struct check *t)
+{
+    struct material glass = material_of(MATERIAL_GLASS, vec3_zero());
+    glass.ior = 1.5;
+    struct shading_frame out = test_frame(TRANSPORT_RADIANCE);
+    struct shading_frame in = shading_frame_from_normal(out.n, 0, TRANSPORT_RADIANCE);
+    struct brdf_sample lobes[2];
+    CHECK(t, brdf_delta_lobes(&glass, &out, out.n, lobes) == 2);
+    CHECK_CLOSE(t, lobes[0].weight.x, 0.04, 1e-12);
+    CHECK_CLOSE(t, lobes[1].weight.x, 0.96 / 2.25, 1e-12);
+    CHECK(t, !lobes[0].transmitted && lobes[1].transmitted);
+    struct vec3 at_60 = frame_direction(&out, 0.5, 1.0);
+    CHECK(t, brdf_delta_lobes(&glass, &out, at_60, lobes) == 2);
+    CHECK_CLOSE(t, lobes[0].weight.x, 0.0891867128, 1e-10);
+    CHECK_CLOSE(t, lobes[1].weight.x, (1 - 0.0891867128) / 2.25, 1e-10);
+    struct vec3 beyond_critical = frame_direction(&in, cos(45 * PI / 180), 2.0);
+    CHECK(t, brdf_delta_lobes(&glass, &in, beyond_critical, lobes) == 1);
+    CHECK(t, !lobes[0].transmitted && lobes[0].weight.x == 1);
+    struct material mirror = material_of(MATERIAL_MIRROR, vec3(0.9, 0.5, 0.2));
+    CHECK(t, brdf_delta_lobes(&mirror, &out, at_60, lobes) == 1);
+    CHECK(t, vec3_max_abs(vec3_sub(lobes[0].weight, vec3(0.9, 0.5, 0.2))) == 0);
+    CHECK(t, brdf_delta_lobes(&glass, &out, vec3_scale(out.n, -1), lobes) == 0);
+    check_lobes_against_samples(t, &glass, &out, at_60, 1);
+    check_lobes_against_samples(t, &glass, &in, frame_direction(&in, 0.9, 0.5), 2);
+    check_lobes_against_samples(t, &glass, &in, beyond_critical, 3);
+    check_lobes_against_samples(t, &mirror, &out, at_60, 4);
+}
+
 /* Every model once, the delta ones included. */
 static int all_cases(struct model_case *cases)
 {
@@ -726,6 +793,7 @@ void test_brdf(struct check *t)
     RUN_TEST(t, test_brdf_albedo_at_most_one);
     RUN_TEST(t, test_brdf_white_furnace);
     RUN_TEST(t, test_brdf_glass_optics);
+    RUN_TEST(t, test_brdf_delta_lobes);
     RUN_TEST(t, test_brdf_extreme_directions_stay_finite);
     RUN_TEST(t, test_brdf_below_surface_and_kinds);
     RUN_TEST(t, test_brdf_split_sums_to_whole);

@@ -170,6 +170,26 @@ int brdf_sample(const struct material *m, const struct shading_frame *f, struct 
     return 1;
 }
 
+int brdf_delta_lobes(const struct material *m, const struct shading_frame *f, struct vec3 wo,
+                     struct brdf_sample lobes[2])
+{
+    assert(brdf_is_delta(m));
+    /* u[0] = 0 picks the first lobe and the largest double below 1 the last (glass:
+     * reflection below the Fresnel reflectance, refraction above), so both lobes come
+     * from brdf_sample() itself; they coincide for the mirror and under total internal
+     * reflection. */
+    const double first[3] = {0.0, 0.0, 0.0}, last[3] = {1.0 - DBL_EPSILON / 2, 0.0, 0.0};
+    int n = brdf_sample(m, f, wo, first, &lobes[0]);
+    if (brdf_sample(m, f, wo, last, &lobes[n]) &&
+        (n == 0 || lobes[1].transmitted != lobes[0].transmitted))
+        n++;
+    for (int i = 0; i < n; i++) {
+        lobes[i].weight = vec3_scale(lobes[i].weight, lobes[i].pdf);
+        lobes[i].pdf = 1.0;
+    }
+    return n;
+}
+
 struct vec3 brdf_albedo(const struct material *m, const struct shading_frame *f,
                         struct vec3 wo)
 {

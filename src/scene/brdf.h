@@ -79,6 +79,15 @@ double brdf_pdf(const struct material *m, const struct shading_frame *f, struct 
 int brdf_sample(const struct material *m, const struct shading_frame *f, struct vec3 wo,
                 const double u[3], struct brdf_sample *s);
 
+/* Every lobe of an all-delta material (brdf_is_delta()) towards wo, for a tracer that
+ * follows them all instead of choosing one (Whitted 1980): the mirror's one lobe, glass's
+ * reflection and refraction (only the reflection under total internal reflection). Each
+ * lobe's weight is its reflectance, with the probability brdf_sample() would have chosen
+ * it folded in (pdf = 1): the weights sum to brdf_sample()'s expected weight. Returns
+ * the number of lobes, 0 when wo is below the surface or the material is black. */
+int brdf_delta_lobes(const struct material *m, const struct shading_frame *f, struct vec3 wo,
+                     struct brdf_sample lobes[2]);
+
 /* Directional albedo towards wo: the integral of f cos_i over wi including delta lobes,
  * i.e. the expected brdf_sample() weight under TRANSPORT_IMPORTANCE. Exact for lambert
  * (rho), mirror (rho), glass (1), phong (closed form in azimuth, Gauss-Legendre in the
