@@ -370,10 +370,46 @@ static struct vec3 direct_illumination(const struct j96 *m, const struct surface
 
 /* -- 4.2 specular reflection -- */
 
+/* Follows one direction out of the specular part: the path after the bounce (its
+ * evaluation and emission rule) and Russian roulette. share: the part of the estimate the
+ * direction stands for (1 / rays for one of several samples, 1 for a whole lobe); split:
+ * whether the path has branched into glossy rays. */
+static struct vec3 follow_specular(const struct j96 *m, const struct surface *s,
+                                   const struct brdf_sample *bs, double share, int split,
+                                   struct path path, struct rng *rng,
+                                   struct render_counters *counters)
+{
+    struct path next;
+    next.beta = vec3_mul(path.beta, bs->weight);
+    next.depth = path.depth + 1;
+    next.split = split;
+    next.distance = path.distance;
+    double q = roulette_odds(next.beta, path.depth);
+    if (q < 1 && !(rng_uniform(rng) < q))
+        return vec3_zero();
+    /* Seen through a glossy lobe, whose blur hides the global map's, a surface gets the
+     * corner evaluation: no gather for every ray of every glossy sample. */
+    if (path.eval != ACCURATE || vec3_luminance(next.beta) < m->js->accurate_weight)
+        next.eval = APPROXIMATE;
+    else
+        next.eval = bs->delta ? ACCURATE : CORNER;
+    if (bs->delta)
+        next.rule = path.rule == EMISSION_SKIP_DIRECT ? EMISSION_COUNTED : path.rule;
+    else
+        next.rule = path.eval == APPROXIMATE ? EMISSION_COUNTED : EMISSION_SKIP_DIRECT;
+    next.beta = vec3_scale(next.beta, share / q);
+    struct vec3 li = trace(m, surface_ray(s, bs->wi, bs->transmitted), next, rng, counters);
+    return vec3_mul(vec3_scale(bs->weight, share / q), li);
+}
+
 /* The second term of Eq. 2: Monte Carlo through the specular part, importance-sampled by
  * the BRDF; glossy_rays rays at the first accurate point of a path with a glossy lobe,
  * else one (a path that branched at every glossy hit of a sphere flake would grow
- * exponentially). */
+ * exponentially). An ideal specular surface evaluated accurately has nothing to sample:
+ * its reflected and refracted rays are both followed, as in Whitted's ray tracer (1980),
+ * so a glass ball seen directly shows no noise from choosing between them. A lobe whose
+ * path weight falls below --accurate-weight turns approximate and stops branching, which
+ * bounds the number of rays. */
 static struct vec3 specular_reflection(const struct j96 *m, const struct surface *s,
                                        const struct brdf_split *split,
                                        const struct shading_frame *frame, struct path path,
@@ -381,37 +417,26 @@ static struct vec3 specular_reflection(const struct j96 *m, const struct surface
 {
     if (path.depth >= m->max_depth)
         return vec3_zero();
+    struct vec3 sum = vec3_zero();
+    if (path.eval == ACCURATE && brdf_is_delta(&split->specular)) {
+        struct brdf_sample lobes[2];
+        int n_lobes = brdf_delta_lobes(&split->specular, frame, s->wo, lobes);
+        for (int k = 0; k < n_lobes; k++)
+            sum = vec3_add(sum, follow_specular(m, s, &lobes[k], 1.0, path.split, path, rng,
+                                                counters));
+        return sum;
+    }
     int glossy = brdf_has_diffuse(&split->specular); /* a non-delta lobe */
     int n_rays = path.eval == ACCURATE && glossy && !path.split ? m->js->glossy_rays : 1;
-    struct vec3 sum = vec3_zero();
     for (int r = 0; r < n_rays; r++) {
         double u[3];
         for (int k = 0; k < 3; k++)
             u[k] = rng_uniform(rng);
         struct brdf_sample bs;
-        if (!brdf_sample(&split->specular, frame, s->wo, u, &bs))
-            continue;
-        struct path next;
-        next.beta = vec3_mul(path.beta, bs.weight);
-        next.depth = path.depth + 1;
-        next.split = path.split || n_rays > 1;
-        next.distance = path.distance;
-        double q = roulette_odds(next.beta, path.depth);
-        if (q < 1 && !(rng_uniform(rng) < q))
-            continue;
-        /* Seen through a glossy lobe, whose blur hides the global map's, a surface gets
-         * the corner evaluation: no gather for every ray of every glossy sample. */
-        if (path.eval != ACCURATE || vec3_luminance(next.beta) < m->js->accurate_weight)
-            next.eval = APPROXIMATE;
-        else
-            next.eval = bs.delta ? ACCURATE : CORNER;
-        if (bs.delta)
-            next.rule = path.rule == EMISSION_SKIP_DIRECT ? EMISSION_COUNTED : path.rule;
-        else
-            next.rule = path.eval == APPROXIMATE ? EMISSION_COUNTED : EMISSION_SKIP_DIRECT;
-        next.beta = vec3_scale(next.beta, 1.0 / (q * n_rays));
-        struct vec3 li = trace(m, surface_ray(s, bs.wi, bs.transmitted), next, rng, counters);
-        sum = vec3_add(sum, vec3_mul(vec3_scale(bs.weight, 1.0 / (q * n_rays)), li));
+        if (brdf_sample(&split->specular, frame, s->wo, u, &bs))
+            sum = vec3_add(sum, follow_specular(m, s, &bs, 1.0 / n_rays,
+                                                path.split || n_rays > 1, path, rng,
+                                                counters));
     }
     return sum;
 }
