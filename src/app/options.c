@@ -323,7 +323,9 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
     if (!(o->alpha > 0 && o->alpha < 1))
         return error_set(err, "", 0, "--alpha: expected a number strictly between 0 and 1");
     if (o->spp == 0)
-        o->spp = o->mode == MODE_PPM2008 ? PPM_DEFAULT_SPP : DEFAULT_SPP;
+        o->spp = o->mode == MODE_PPM2008     ? PPM_DEFAULT_SPP
+                 : o->mode == MODE_JENSEN1996 ? J96_DEFAULT_SPP
+                                              : DEFAULT_SPP;
     if (o->mode == MODE_PPM2008 && o->variance != NULL)
         return error_set(err, "", 0, "--variance: not available with --mode 2008, whose "
                                      "pixels are not means of independent samples");

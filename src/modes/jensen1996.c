@@ -278,8 +278,9 @@ struct j96 {
     struct gather_plan cached;      /* a gather that makes an irradiance record         */
     struct gather_plan per_sample;  /* a gather for one camera sample at a surface whose
                                        diffuse part is not Lambertian (no cache): the
-                                       rays of one record shared among DEFAULT_SPP
-                                       samples, as distribution ray tracing spreads them */
+                                       rays of one record shared among the --spp
+                                       samples of a pixel, as distribution ray tracing
+                                       spreads them                                     */
     int max_depth;
     struct scratch *scratch;
 };
@@ -828,7 +829,7 @@ static void set_up(struct j96 *m, const struct scene *scene, const struct render
     m->caustic_es.cone_k = js->cone_k;
     m->caustic_es.kinds = js->one_map ? PHOTON_CAUSTIC : 0;
     m->cached = gather_plan_of(js->gather_rays);
-    m->per_sample = gather_plan_of(js->gather_rays / DEFAULT_SPP);
+    m->per_sample = gather_plan_of(js->gather_rays / rs->spp);
     m->max_depth = rs->max_depth;
     m->filling_cache = 0;
     m->cache = NULL;

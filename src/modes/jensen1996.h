@@ -13,6 +13,8 @@
 
 #define J96_DEFAULT_PHOTONS 1000000        /* --photons: searches cost log N, so a large
                                               global map is cheap and blurs less          */
+#define J96_DEFAULT_SPP 64                 /* --spp: the final pass costs little beside
+                                              the maps and the cache all samples share   */
 #define J96_DEFAULT_CAUSTIC_PHOTONS 100000 /* --caustic-photons                          */
 #define J96_DEFAULT_CAUSTIC_GATHER 60      /* photons in a caustic estimate               */
 #define J96_DEFAULT_GATHER_RAYS 256        /* --gather-rays: final gather rays per record */
