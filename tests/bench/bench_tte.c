@@ -4,7 +4,7 @@
  * tracer, on the Cornell boxes whose references are in reference/.
  *
  * For each scene and each photon mode at its defaults (2008: 256 x 256, 4 eye rays, 64
- * passes of 100,000 photons; 1996: 16 samples per pixel, the maps, the irradiance cache),
+ * passes of 100,000 photons; 1996: 64 samples per pixel, the maps, the irradiance cache),
  * the mode sets the target, the relmse it ends with, and its seconds to reach it; pt then
  * renders, with checkpoints after 1, 2, 4, ... samples per pixel, until it reaches the target
  * or has run four times as long. pt's time to the target is read off its checkpoints
@@ -86,7 +86,7 @@ static void render_2008(const struct scene *scene, const struct checkpoint *at)
 /* Renders scene (finished) at --mode 1996's defaults, its checkpoints into at. */
 static void render_1996(const struct scene *scene, const struct checkpoint *at)
 {
-    struct render_settings rs = render_settings_whole(scene, 1, DEFAULT_SPP, MAX_DEPTH_LIMIT);
+    struct render_settings rs = render_settings_whole(scene, 1, J96_DEFAULT_SPP, MAX_DEPTH_LIMIT);
     struct jensen1996_settings js = jensen1996_settings_default();
     struct render_counters counters = {0, 0, 0};
     struct jensen1996_stats stats;
