@@ -198,7 +198,8 @@ static int read_mode(const char *text, enum mode *mode, struct error *err)
             *mode = modes[i];
             return 0;
         }
-    return error_set(err, "", 0, "--mode: unknown mode '%s' (available: direct, pt, photons, 1996, 2008)",
+    return error_set(err, "", 0,
+                     "--mode: unknown mode '%s' (available: direct, pt, photons, 1996, 2008)",
                      text != NULL ? text : "nothing");
 }
 
