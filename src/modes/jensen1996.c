@@ -617,7 +617,7 @@ static struct vec3 soft_indirect(const struct j96 *m, const struct surface *s,
     }
     struct vec3 e;
     /* The pre-pass asks with a stricter a than the final pass reads with, so that the
-     * final pass's jittered points find the records made at pixel centres. */
+     * final pass's camera samples find the records made at pixel centres. */
     double a = m->js->cache_accuracy * (m->filling_cache ? CACHE_FILL_STRICTNESS : 1.0);
     if (m->cache != NULL && irradiance_cache_lookup(m->cache, s->p, frame->n, a, &e))
         return vec3_scale(vec3_mul(split->diffuse.rho, e), 1.0 / PI);

@@ -135,7 +135,8 @@ static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct rng *r
     }
 }
 
-/* rs->spp jittered eye rays through every pixel of the window, then the hit points' tree. */
+/* rs->spp stratified eye rays (camera_sample()) through every pixel of the window, then the
+ * hit points' tree. */
 static void ray_tracing_pass(struct ppm *ppm)
 {
     const struct render_settings *rs = ppm->rs;
