@@ -2,31 +2,43 @@
  * tests/run_tests.c -- runs every room's tests and prints "N passed, N failed".
  * Exit status 1 when anything failed. Run from the top of the repository (make test),
  * since tests read scenes/ and run the photon binary (environment PHOTON).
+ * `run_tests ROOM...` runs only the named rooms (e.g. `run_tests trace cache`), for a
+ * quicker loop while working on one of them.
  */
+#include <string.h>
+
 #include "check.h"
 #include "tests.h"
 
-int main(void)
+struct room {
+    const char *name;
+    void (*run)(struct check *t);
+};
+
+static const struct room rooms[] = {
+    {"base", test_base},       {"image", test_image},   {"compare", test_compare},
+    {"plot", test_plot},       {"geom", test_geom},     {"scene", test_scene},
+    {"brdf", test_brdf},       {"shapes", test_shapes}, {"import", test_import},
+    {"photon", test_photon},   {"trace", test_trace},   {"ppm", test_ppm},
+    {"cache", test_cache},     {"render", test_render}, {"pt", test_pt},
+    {"jensen1996", test_jensen1996}, {"report", test_report}, {"cli", test_cli},
+};
+
+/* Whether the command line asks for room (no names: every room). */
+static int wanted(const char *room, int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++)
+        if (strcmp(argv[i], room) == 0)
+            return 1;
+    return argc < 2;
+}
+
+int main(int argc, char **argv)
 {
     struct check t = {0, 0, 0, 0};
-    test_base(&t);
-    test_image(&t);
-    test_compare(&t);
-    test_plot(&t);
-    test_geom(&t);
-    test_scene(&t);
-    test_brdf(&t);
-    test_shapes(&t);
-    test_import(&t);
-    test_photon(&t);
-    test_trace(&t);
-    test_ppm(&t);
-    test_cache(&t);
-    test_render(&t);
-    test_pt(&t);
-    test_jensen1996(&t);
-    test_report(&t);
-    test_cli(&t);
+    for (size_t i = 0; i < sizeof rooms / sizeof rooms[0]; i++)
+        if (wanted(rooms[i].name, argc, argv))
+            rooms[i].run(&t);
     printf("%d passed, %d failed\n", t.passed, t.failed);
     return t.failed == 0 ? 0 : 1;
 }

@@ -289,13 +289,26 @@ static void test_map_free(struct test_map *m)
     free(m->scan);
 }
 
-/* Runs q on m's map and checks it against the scan (already in m->scan_d2, n_scan). */
+/* Whether nn's photons are in order of distance, nearest first. */
+static int nearest_first(const struct nearest *nn)
+{
+    for (size_t i = 1; i < nn->found; i++)
+        if (nn->d2[i] < nn->d2[i - 1])
+            return 0;
+    return 1;
+}
+
+/* Runs q on m's map and checks it against the scan (already in m->scan_d2, n_scan);
+ * then nearest_sort() must order the same photons, each still at its distance. */
 static int search_matches_scan(struct test_map *m, const struct photon_query *q,
                                size_t n_scan)
 {
     locate_photons_in_disc(m->map, q, m->nn);
-    return matches_scan(m->nn, q, m->scan_d2, n_scan, m->sorted)
-           && found_photons_consistent(m->map, m->nn, q->x, m->seen);
+    int ok = matches_scan(m->nn, q, m->scan_d2, n_scan, m->sorted) &&
+             found_photons_consistent(m->map, m->nn, q->x, m->seen);
+    nearest_sort(m->nn);
+    return ok && nearest_first(m->nn) && matches_scan(m->nn, q, m->scan_d2, n_scan, m->sorted) &&
+           found_photons_consistent(m->map, m->nn, q->x, m->seen);
 }
 
 static const size_t test_sizes[] = {0, 1, 2, 3, 4, 5, 7, 8, 9, 100, 1000, 1025};
@@ -399,7 +412,8 @@ static int all_searches_match(struct test_map *m, uint64_t j)
  *   not photon identities, are compared, so ties cannot fail a correct tree; the found
  *   photons must also be distinct photons of the map at their reported distances.
  * catches: pruning with < for <= (max_r2 = 0 with queries exactly on photons), a subtree
- *   never visited, a missing right child entered, the heap losing its top, k > n, r2
+ *   never visited, nearest_sort() losing, duplicating or misordering photons, a
+ *   missing right child entered, the heap losing its top, k > n, r2
  *   not as documented, a far query or duplicates defeating the search. */
 static void test_locate_photons_matches_linear_scan(struct check *t)
 {

@@ -47,3 +47,44 @@ struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_po
         area *= 1.0 - 2.0 / (3.0 * es->cone_k);
     return vec3_scale(sum, 1.0 / area);
 }
+
+/* The energy photon p adds at a surface with normal n: all of it when it landed on a
+ * surface facing the same way (its stored normal . n > 0), else none (Sec. 3.3's
+ * rejection: a photon on the other side of a thin wall, or around a corner). */
+static struct vec3 accepted_energy(const struct photon *p, struct vec3 n)
+{
+    return vec3_dot(photon_direction(p), n) > 0 ? photon_power(p) : vec3_zero();
+}
+
+struct vec3 irradiance_estimate(const struct kdtree *map, struct vec3 x, struct vec3 n,
+                                const struct irradiance_settings *is, struct nearest *nn)
+{
+    struct photon_query q;
+    q.x = x;
+    q.max_r2 = is->max_r2;
+    q.k = is->n;
+    q.normal = vec3_zero();
+    q.max_plane_distance = 0;
+    q.kinds = is->kinds;
+    locate_photons_in_disc(map, &q, nn);
+    nearest_sort(nn);
+    struct vec3 sum = vec3_zero(), e = vec3_zero();
+    double previous = 0.0; /* luminance of E_{j-1}; 0 before the first with area */
+    int rising = 0, falling = 0;
+    for (size_t j = 0; j < nn->found; j++) {
+        sum = vec3_add(sum, accepted_energy(nn->photon[j], n));
+        if (!(nn->d2[j] > 0))
+            continue; /* photons exactly at x: no disc yet */
+        e = vec3_scale(sum, 1.0 / (PI * nn->d2[j])); /* E_j = sum e_i / (pi r_j^2) */
+        double now = vec3_luminance(e);
+        rising = now > previous ? rising + 1 : 0;
+        falling = now < previous ? falling + 1 : 0;
+        previous = now;
+        if (is->run > 0 && j + 1 >= 2 * (size_t)is->run &&
+            (rising >= is->run || falling >= is->run))
+            return e; /* differential checking: a monotonic run, an edge */
+    }
+    if (nn->found < is->n && nn->r2 > 0) /* fewer than n within max_r2: its whole disc */
+        e = vec3_scale(sum, 1.0 / (PI * nn->r2));
+    return e;
+}

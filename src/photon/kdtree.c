@@ -359,6 +359,24 @@ void locate_photons(const struct kdtree *map, struct vec3 x, double max_r2, size
     locate_photons_in_disc(map, &q, nn);
 }
 
+void nearest_sort(struct nearest *nn)
+{
+    size_t count = nn->found;
+    for (size_t i = count / 2; i-- > 0;)
+        sift_down(nn, i, count); /* a max-heap on d2[] */
+    while (count > 1) {
+        /* the farthest left moves to the end of the unsorted part */
+        count--;
+        const struct photon *p = nn->photon[0];
+        double d2 = nn->d2[0];
+        nn->photon[0] = nn->photon[count];
+        nn->d2[0] = nn->d2[count];
+        nn->photon[count] = p;
+        nn->d2[count] = d2;
+        sift_down(nn, 0, count);
+    }
+}
+
 /* ---- the fixed-radius search ---- */
 
 /* Visits the subtree at node (which exists) with the same skips as search_tree();

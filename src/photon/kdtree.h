@@ -83,6 +83,12 @@ void locate_photons(const struct kdtree *map, struct vec3 x, double max_r2, size
 void locate_photons_in_disc(const struct kdtree *map, const struct photon_query *q,
                             struct nearest *nn);
 
+/* Puts the last search's photons in order of distance, nearest first (photon[] moved
+ * with d2[]): for estimates that add photons one by one outwards, like the differential
+ * checking of Jensen and Christensen 1994 (estimate.h). Heapsort: O(found log found),
+ * in place, allocates nothing. Photons at equal distance keep a deterministic order. */
+void nearest_sort(struct nearest *nn);
+
 /* Calls visit(context, p, d2) for every photon p with d2 = |p - x|^2 <= r2 (r2 >= 0),
  * in the tree's order (deterministic for a given map), and returns how many it visited.
  * For fixed-radius gathering (progressive photon mapping). Allocates nothing. */
