@@ -56,6 +56,7 @@
 #include "../photon/trace.h"
 #include "../scene/brdf.h"
 #include "../scene/emit.h"
+#include "cache_pass.h"
 #include "photons.h"
 #include "surface.h"
 
@@ -64,11 +65,6 @@
                                         and a wide search would blur them over edges    */
 #define CACHE_FILL_STRICTNESS 0.5  /* the pre-pass makes records where none is usable
                                         with this fraction of Ward's a                  */
-#define CACHE_MIN_REACH 1.5          /* a record's R is at least what makes its reach a R
-                                        this many pixel footprints (Tabellion and
-                                        Lamorlette 2004 bound R in screen space): records
-                                        never crowd into corners below pixel size        */
-#define CACHE_R_MAX 0.2              /* and at most this fraction of the scene's diagonal */
 
 struct jensen1996_settings jensen1996_settings_default(void)
 {
@@ -577,12 +573,10 @@ static struct irradiance_record gathered_record(const struct j96 *m, const struc
                                                 struct render_counters *counters)
 {
     final_gather(m, &m->cached, s, diffuse, 1, frame, path, rng, counters);
-    /* A pixel seen at an angle covers 1 / cos more of the surface (up to 10 times). */
-    double slant = fmax(fabs(vec3_dot(s->wo, frame->n)), 0.1);
-    double footprint = path.distance * camera_footprint(&m->scene->camera) / slant;
     double a = m->cache != NULL ? m->js->cache_accuracy : 1.0; /* no cache: R is unused */
-    double r_min = CACHE_MIN_REACH * footprint / a;
-    double r_max = fmax(r_min, CACHE_R_MAX * m->diagonal);
+    double r_min, r_max;
+    record_radius_bounds(&m->scene->camera, path.distance, fabs(vec3_dot(s->wo, frame->n)), a,
+                         m->diagonal, &r_min, &r_max);
     return irradiance_record_make(s->p, frame->t, frame->b, frame->n, m->cached.theta,
                                   m->cached.phi, m->scratch->strata, r_min, r_max);
 }
@@ -723,32 +717,6 @@ static struct vec3 j96_radiance(const void *mode, struct ray ray, struct rng *rn
     return trace(mode, ray, camera_path(), rng, counters);
 }
 
-/* ---- the irradiance cache's pre-pass ---- */
-
-/* One path through the centre of every pixel of the whole image, in scanline order, with
- * records added wherever an accurate Lambertian point finds none usable. The radiance it
- * computes is thrown away; only the records stay. */
-static void fill_irradiance_cache(struct j96 *m, const struct render_settings *rs,
-                                  struct render_counters *counters)
-{
-    const struct scene *scene = m->scene;
-    m->filling_cache = 1;
-    for (int y = 0; y < scene->height; y++) {
-        for (int x = 0; x < scene->width; x++) {
-            uint64_t pixel = (uint64_t)y * (uint64_t)scene->width + (uint64_t)x;
-            struct rng rng = rng_stream(rs->seed, STREAM_CACHE, pixel, 0);
-            struct ray ray = camera_ray(&scene->camera, x + 0.5, y + 0.5);
-            trace(m, ray, camera_path(), &rng, counters);
-        }
-        if (rs->progress)
-            fprintf(stderr, "\rirradiance cache: row %d of %d, %zu records", y + 1,
-                    scene->height, irradiance_cache_records(m->cache));
-    }
-    if (rs->progress)
-        fprintf(stderr, "\n");
-    m->filling_cache = 0;
-}
-
 /* ---- putting it together ---- */
 
 /* Ward and Heckbert's strata for a gather of n rays: half the rays make the strata (one
@@ -862,8 +830,12 @@ struct render_result render_jensen1996(const struct scene *scene,
     stats->strata_phi = m.cached.phi;
     m.scratch = scratch_create(&m, stats);
     start = clock();
-    if (m.cache != NULL)
-        fill_irradiance_cache(&m, rs, counters);
+    if (m.cache != NULL) {
+        struct radiance_estimator filler = {j96_radiance, &m};
+        m.filling_cache = 1;
+        fill_cache_pass(scene, rs->seed, filler, m.cache, rs->progress, counters);
+        m.filling_cache = 0;
+    }
     stats->seconds_cache = cpu_seconds(start);
     stats->cache_records = m.cache != NULL ? irradiance_cache_records(m.cache) : 0;
     stats->bytes_cache = m.cache != NULL ? irradiance_cache_bytes(m.cache) : 0;

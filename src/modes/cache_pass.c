@@ -1,0 +1,34 @@
+/*
+ * modes/cache_pass.c -- the irradiance cache's pre-pass and a record's radius bounds
+ * (cache_pass.h).
+ */
+#include "cache_pass.h"
+
+#include <stdio.h>
+
+void fill_cache_pass(const struct scene *scene, uint64_t seed,
+                     struct radiance_estimator estimator, const struct irradiance_cache *cache,
+                     int progress, struct render_counters *counters)
+{
+    for (int y = 0; y < scene->height; y++) {
+        for (int x = 0; x < scene->width; x++) {
+            uint64_t pixel = (uint64_t)y * (uint64_t)scene->width + (uint64_t)x;
+            struct rng rng = rng_stream(seed, STREAM_CACHE, pixel, 0);
+            struct ray ray = camera_ray(&scene->camera, x + 0.5, y + 0.5);
+            estimator.radiance(estimator.mode, ray, &rng, counters);
+        }
+        if (progress)
+            fprintf(stderr, "\rirradiance cache: row %d of %d, %zu records", y + 1,
+                    scene->height, irradiance_cache_records(cache));
+    }
+    if (progress)
+        fprintf(stderr, "\n");
+}
+
+void record_radius_bounds(const struct camera *camera, double distance, double cos_view,
+                          double accuracy, double diagonal, double *r_min, double *r_max)
+{
+    double footprint = distance * camera_footprint(camera) / fmax(cos_view, 0.1);
+    *r_min = CACHE_MIN_REACH * footprint / accuracy;
+    *r_max = fmax(*r_min, CACHE_R_MAX * diagonal);
+}

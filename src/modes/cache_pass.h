@@ -1,0 +1,40 @@
+/*
+ * modes/cache_pass.h -- Ward's irradiance cache as the camera-driven photon modes fill
+ * it: Jensen and Christensen 1994 (Sec. 4.0.3, "the irradiance gradient method") and
+ * Jensen 1996 (Sec. 4.4) both cache the irradiance of their Lambertian surfaces.
+ *
+ * A cache filled while pixels render makes a pixel depend on which pixels came before
+ * it, so a crop would differ from the same window of the whole image. Both modes
+ * therefore fill their cache in a pre-pass over the whole image, in one fixed order,
+ * before the final pass, which only reads it. The cache itself (records, gradients,
+ * lookups) lives in photon/irradiance_cache.h.
+ */
+#ifndef PHOTON_CACHE_PASS_H
+#define PHOTON_CACHE_PASS_H
+
+#include "../photon/irradiance_cache.h"
+#include "render.h"
+
+#define CACHE_MIN_REACH 1.5 /* a record's R is at least what makes its reach a R this many
+                               pixel footprints (Tabellion and Lamorlette 2004 bound R in
+                               screen space): records never crowd into corners below
+                               pixel size                                                */
+#define CACHE_R_MAX 0.2     /* and at most this fraction of the scene's diagonal         */
+
+/* Traces one camera path through the centre of every pixel of the whole image, in
+ * scanline order, with estimator; path (x, y) draws from rng_stream(seed, STREAM_CACHE,
+ * y * width + x, 0). The radiance is thrown away: the mode's estimator adds records to
+ * cache as it goes (cache is read here only for the progress line). */
+void fill_cache_pass(const struct scene *scene, uint64_t seed,
+                     struct radiance_estimator estimator, const struct irradiance_cache *cache,
+                     int progress, struct render_counters *counters);
+
+/* Where a record's radius must lie. distance: from the camera along the path to the
+ * record's point; cos_view: |wo . n| there; accuracy: the a the cache is read with;
+ * diagonal: the scene's. A pixel seen at an angle covers 1 / cos more of the surface (up
+ * to 10 times). Fills *r_min (CACHE_MIN_REACH footprints over a) and *r_max
+ * (CACHE_R_MAX diagonals, at least r_min). */
+void record_radius_bounds(const struct camera *camera, double distance, double cos_view,
+                          double accuracy, double diagonal, double *r_min, double *r_max);
+
+#endif
