@@ -14,6 +14,7 @@
 #include "image/compare.h"
 #include "image/plot.h"
 #include "modes/direct.h"
+#include "modes/jensen1994.h"
 #include "modes/jensen1996.h"
 #include "modes/photons.h"
 #include "modes/ppm2008.h"
@@ -30,6 +31,7 @@ struct run {
     struct render_result result;
     struct photon_stats photon_stats; /* --mode photons only */
     struct ppm_stats ppm_stats;       /* --mode 2008 only */
+    struct jensen1994_stats j94_stats; /* --mode 1994 only */
     struct jensen1996_stats j96_stats; /* --mode 1996 only */
     clock_t start;
     double seconds_build;
@@ -180,6 +182,24 @@ static void print_jensen1996_stats(const struct jensen1996_stats *js)
             js->strata_phi);
 }
 
+/* The paper's Fig. 9 (photons stored, light rays, irradiance-gradient rays, shadow rays,
+ * times) and the rest of the render's figures. */
+static void print_jensen1994_stats(const struct jensen1994_stats *js)
+{
+    fprintf(stderr, "photons_emitted=%zu\nphoton_rays=%llu\n", js->photons_emitted,
+            js->photon_rays);
+    fprintf(stderr, "photons_stored=%zu\nphotons_caustic=%zu\nbytes_photon_map=%zu\n",
+            js->photons_stored, js->photons_caustic, js->bytes_photon_map);
+    fprintf(stderr, "bytes_per_photon=%.1f\n",
+            js->photons_stored > 0 ? (double)js->bytes_photon_map / js->photons_stored : 0.0);
+    fprintf(stderr, "seconds_photons=%.3f\nseconds_cache=%.3f\nseconds_render=%.3f\n",
+            js->seconds_photons, js->seconds_cache, js->seconds_render);
+    fprintf(stderr, "cache_records=%zu\nbytes_cache=%zu\ngradient_rays=%llu\n",
+            js->cache_records, js->bytes_cache, js->gradient_rays);
+    fprintf(stderr, "gather_fallbacks=%llu\nshadow_rays=%llu\nstrata=%dx%d\n",
+            js->gather_fallbacks, js->shadow_rays, js->strata_theta, js->strata_phi);
+}
+
 static void print_stats(const struct run *run)
 {
     const struct scene *scene = run->scene;
@@ -197,6 +217,8 @@ static void print_stats(const struct run *run)
         print_photon_stats(&run->photon_stats);
     if (run->o.mode == MODE_PPM2008)
         print_ppm_stats(&run->ppm_stats);
+    if (run->o.mode == MODE_JENSEN1994)
+        print_jensen1994_stats(&run->j94_stats);
     if (run->o.mode == MODE_JENSEN1996)
         print_jensen1996_stats(&run->j96_stats);
 }
@@ -210,6 +232,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
     struct photon_settings ps;
     struct ppm_settings pp = ppm_settings_default();
     struct jensen1996_settings js = jensen1996_settings_default();
+    struct jensen1994_settings j94 = jensen1994_settings_default();
     struct checkpoint snapshot = {write_snapshot, &run->o};
     switch (run->o.mode) {
     case MODE_PT:
@@ -221,6 +244,16 @@ static struct render_result render_mode(struct run *run, struct error *err)
         ps.cone_k = run->o.cone;
         return render_photons(run->scene, &run->rs, &ps, want_variance, checkpoint,
                               &run->counters, &run->photon_stats, err);
+    case MODE_JENSEN1994:
+        j94.n_photons = (size_t)run->o.photons;
+        j94.gather = (size_t)run->o.gather;
+        j94.max_radius = run->o.max_radius;
+        j94.differential_run = run->o.differential_run;
+        j94.gather_rays = run->o.gather_rays;
+        j94.cache_accuracy = run->o.cache_accuracy;
+        j94.light_samples = run->o.light_samples;
+        return render_jensen1994(run->scene, &run->rs, &j94, want_variance, &run->counters,
+                                 &run->j94_stats, err);
     case MODE_JENSEN1996:
         js.global_photons = (size_t)run->o.photons;
         js.caustic_photons = (size_t)run->o.caustic_photons;

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "../image/image.h"
+#include "../modes/jensen1994.h"
 #include "../modes/jensen1996.h"
 #include "../modes/photons.h"
 #include "../modes/ppm2008.h"
@@ -34,7 +35,7 @@ struct option_spec {
 
 static const struct option_spec specs[] = {
     {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME",
-     "rendering mode: direct, pt, photons, 1996 or 2008 (default direct)"},
+     "rendering mode: direct, pt, photons, 1994, 1996 or 2008 (default direct)"},
     {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm",
      "output image; FILE.ppm is written beside it (default: SCENE's name, .pfm)"},
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)"},
@@ -56,9 +57,10 @@ static const struct option_spec specs[] = {
     {"--variance", OPT_FILE, FIELD(variance), 0, 0, "FILE.pfm",
      "also write each pixel's variance of the mean (needs --spp >= 2)"},
     {"--photons", OPT_INT, FIELD(photons), 1, MAX_PHOTONS, "N",
-     "photon modes: photons emitted (default: photons 200000, 1996 1000000 for the global map)"},
+     "photon modes: photons emitted (default: photons and 1994 200000, 1996 1000000 for the "
+     "global map)"},
     {"--gather", OPT_INT, FIELD(gather), 1, MAX_GATHER, "K",
-     "photon modes: photons in each radiance estimate (default 100)"},
+     "photon modes: photons in each radiance or irradiance estimate (default 100)"},
     {"--max-radius", OPT_REAL, FIELD(max_radius), 0, 1e30, "R",
      "photon modes: largest gathering radius (default: 1/10 of the scene's diagonal)"},
     {"--cone", OPT_REAL, FIELD(cone), 0, 1e6, "K",
@@ -69,11 +71,13 @@ static const struct option_spec specs[] = {
     {"--caustic-gather", OPT_INT, FIELD(caustic_gather), 1, MAX_GATHER, "K",
      "1996: photons in each caustic estimate (default 60)"},
     {"--gather-rays", OPT_INT, FIELD(gather_rays), 2, J96_MAX_GATHER_RAYS, "N",
-     "1996: rays of one final gather: half stratified, half by photon importance (default 256)"},
+     "1994, 1996: rays of one final gather (1994: one per stratum; 1996: half stratified, "
+     "half by photon importance; default 256)"},
     {"--glossy-rays", OPT_INT, FIELD(glossy_rays), 1, 1000, "N",
      "1996: rays sampling a glossy surface seen accurately (default 6, the paper's)"},
     {"--cache-accuracy", OPT_REAL, FIELD(cache_accuracy), 0, 10, "A",
-     "1996: irradiance cache accuracy a (Ward 1988); 0 = gather at every point (default 0.15)"},
+     "1994, 1996: irradiance cache accuracy a (Ward 1988); 1996 only: 0 = gather at every "
+     "point (default 0.15)"},
     {"--accurate-distance", OPT_REAL, FIELD(accurate_distance), 0, 1e6, "F",
      "1996: gather rays shorter than F radii of the estimate they reach are evaluated "
      "accurately (default 1)"},
@@ -83,6 +87,11 @@ static const struct option_spec specs[] = {
      "1996: cast every shadow ray instead of deciding from shadow photons"},
     {"--one-map", OPT_FLAG, FIELD(one_map), 0, 0, "",
      "1996: one global map of as many photons instead of a caustic and a global map"},
+    {"--differential", OPT_INT, FIELD(differential_run), 0, 100000, "R",
+     "1994: stop an irradiance estimate after R additions that all raise or all lower it "
+     "(differential checking); 0 = off (default 10)"},
+    {"--light-samples", OPT_INT, FIELD(light_samples), 1, J94_MAX_LIGHT_SAMPLES, "N",
+     "1994: stratified samples of each light, rounded down to a square (default 4)"},
     {"--passes", OPT_INT, FIELD(passes), 1, MAX_PASSES, "N",
      "2008: photon passes (default 64; --time-limit may stop sooner)"},
     {"--photons-per-pass", OPT_INT, FIELD(photons_per_pass), 1, MAX_PHOTONS, "N",
@@ -109,6 +118,8 @@ const char *mode_name(enum mode mode)
         return "pt";
     case MODE_PHOTONS:
         return "photons";
+    case MODE_JENSEN1994:
+        return "1994";
     case MODE_JENSEN1996:
         return "1996";
     case MODE_PPM2008:
@@ -157,6 +168,9 @@ static void set_defaults(struct options *o)
     o->accurate_distance = js.accurate_distance;
     o->accurate_weight = js.accurate_weight;
     o->shadow_photons = 1;
+    struct jensen1994_settings j94 = jensen1994_settings_default();
+    o->differential_run = j94.differential_run;
+    o->light_samples = j94.light_samples;
 }
 
 /* A number from text: whole (integer != 0) or real, within [min, max]. */
@@ -191,15 +205,15 @@ static int read_seed(const char *text, uint64_t *seed, struct error *err)
 
 static int read_mode(const char *text, enum mode *mode, struct error *err)
 {
-    static const enum mode modes[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1996,
-                                      MODE_PPM2008};
+    static const enum mode modes[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1994,
+                                      MODE_JENSEN1996, MODE_PPM2008};
     for (size_t i = 0; text != NULL && i < sizeof modes / sizeof modes[0]; i++)
         if (strcmp(text, mode_name(modes[i])) == 0) {
             *mode = modes[i];
             return 0;
         }
     return error_set(err, "", 0,
-                     "--mode: unknown mode '%s' (available: direct, pt, photons, 1996, 2008)",
+                     "--mode: unknown mode '%s' (available: direct, pt, photons, 1994, 1996, 2008)",
                      text != NULL ? text : "nothing");
 }
 
@@ -320,7 +334,12 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
     if (o->cone < 0)
         o->cone = o->mode == MODE_JENSEN1996 ? 1.0 : 0.0;
     if (o->photons == 0)
-        o->photons = o->mode == MODE_JENSEN1996 ? J96_DEFAULT_PHOTONS : PHOTONS_DEFAULT_N;
+        o->photons = o->mode == MODE_JENSEN1996   ? J96_DEFAULT_PHOTONS
+                     : o->mode == MODE_JENSEN1994 ? J94_DEFAULT_PHOTONS
+                                                  : PHOTONS_DEFAULT_N;
+    if (o->mode == MODE_JENSEN1994 && o->cache_accuracy == 0)
+        return error_set(err, "", 0, "--cache-accuracy: mode 1994 needs its irradiance "
+                                     "cache, a > 0");
     if (!(o->alpha > 0 && o->alpha < 1))
         return error_set(err, "", 0, "--alpha: expected a number strictly between 0 and 1");
     if (o->spp == 0)

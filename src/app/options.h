@@ -14,7 +14,7 @@
 #define PHOTON_VERSION "0.1.0"
 #define OUTPUT_PATH_MAX 1024
 
-enum mode { MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1996, MODE_PPM2008 };
+enum mode { MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1994, MODE_JENSEN1996, MODE_PPM2008 };
 
 struct options {
     const char *scene_path;       /* the scene file (borrowed from argv)           */
@@ -46,6 +46,8 @@ struct options {
     double accurate_weight;       /* 1996: throughput below which rays go rough    */
     int shadow_photons;           /* 1996: decide visibility from shadow photons   */
     int one_map;                  /* 1996: one map for global and caustic photons  */
+    int differential_run;         /* 1994: differential checking's run; 0 = off    */
+    int light_samples;            /* 1994: stratified samples of each light        */
     int passes;                   /* 2008: photon passes                           */
     int photons_per_pass;         /* 2008: photons traced in each pass             */
     double alpha;                 /* 2008: Eq. 7's alpha, in (0, 1)                */

@@ -1,0 +1,414 @@
+/*
+ * modes/jensen1994.c -- `--mode 1994`: Jensen and Christensen 1994, "Photon maps in
+ * bidirectional Monte Carlo ray tracing of complex objects", Sec. 2-4, in the paper's
+ * order.
+ *
+ * Pass 1 (Sec. 3), light path tracing: light rays leave the lights, and "every time the
+ * ray hits an object the energy carried by the ray is deposited"; Russian roulette
+ * decides whether it is absorbed or reflected (photon/trace.h). Every deposit is a
+ * photon (Sec. 3.3) holding position, normal, energy and a bit saying whether it is part
+ * of a caustic (CP: only specular reflections since the light) or not (DP).
+ *
+ * Pass 2 (Sec. 4), Monte Carlo ray tracing of
+ *   L_p = L_e + L_r,   L_r = L_r,s + L_r,d,   L_r,d = L_r,d,l + L_r,d,s + L_r,d,d,
+ * with the BRDF split into a specular-like part f_r,s (mirror, glass, glossy lobes:
+ * highly directional) and a diffuse-like part f_r,d (brdf_split(), scene/brdf.h):
+ *   L_r,s    recursive Monte Carlo ray tracing, one ray sampled from f_r,s;
+ *   L_r,d,l  direct light: stratified samples of each light through f_r,d (4.0.1);
+ *   L_r,d,s  caustics: f_r,d times the irradiance of the CP photons alone (4.0.2);
+ *   L_r,d,d  multiple diffuse reflections: f_r,d times the irradiance of Ward's cache
+ *            with gradients (Ward and Heckbert 1992), whose records gather over the
+ *            hemisphere; each gather ray reads the irradiance of ALL photons where it
+ *            lands instead of recursing (4.0.3: "all secondary diffuse reflections are
+ *            fetched directly from the irradiance maps"), after following specular
+ *            surfaces (the L_r,d,s paths with diffuse reflections after the specular
+ *            one).
+ * Counting every path once: the eye's rays and the rays of f_r,s add the emission they
+ * reach, since direct light is sampled through f_r,d alone; gather rays add none, at
+ * their first surface (direct light) or through specular ones (caustics, held by CP).
+ * The diffuse-like part reflects irradiance as its directional albedo over pi: exact
+ * for a Lambertian part, the paper's only diffuse-like kind.
+ *
+ * Determinism: every random number comes from the camera sample's stream, or in the
+ * cache's pre-pass from rng_stream(seed, STREAM_CACHE, pixel, 0); the pre-pass fills the
+ * cache over the whole image before the final pass, which only reads it (a point no
+ * record covers gathers on the spot and keeps nothing). So a crop equals the same window
+ * of the whole image.
+ */
+#include "jensen1994.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "../base/alloc.h"
+#include "../photon/estimate.h"
+#include "../photon/trace.h"
+#include "cache_pass.h"
+#include "photons.h"
+#include "surface.h"
+
+#define CACHE_FILL_STRICTNESS 0.5 /* the pre-pass makes records where none is usable
+                                     with this fraction of Ward's a, so that the final
+                                     pass's samples find records made at pixel centres */
+
+struct jensen1994_settings jensen1994_settings_default(void)
+{
+    struct jensen1994_settings js;
+    js.n_photons = J94_DEFAULT_PHOTONS;
+    js.gather = J94_DEFAULT_GATHER;
+    js.max_radius = 0;
+    js.differential_run = DIFFERENTIAL_RUN;
+    js.gather_rays = J94_DEFAULT_GATHER_RAYS;
+    js.cache_accuracy = J94_DEFAULT_CACHE_ACCURACY;
+    js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;
+    return js;
+}
+
+static double cpu_seconds(clock_t start)
+{
+    return (double)(clock() - start) / CLOCKS_PER_SEC;
+}
+
+/* ---- Sec. 3, pass 1: light path tracing into the photon map ---- */
+
+/* Sec. 3.3: "with every photon we store the intersection point, the normal, the energy
+ * and a bit saying whether it is a caustic photon". The 20-byte record (photon.h) keeps
+ * the normal where 1996 keeps the direction, and the caustic bit among its flags. */
+static int store_with_normal(void *context, const struct photon_event *e)
+{
+    struct photon_event deposit = *e;
+    deposit.wi = e->normal;
+    return photon_trace_store(context, MAX_PHOTONS, &deposit);
+}
+
+static struct kdtree *trace_photon_map(const struct scene *scene,
+                                       const struct render_settings *rs,
+                                       const struct jensen1994_settings *js,
+                                       struct jensen1994_stats *stats, struct error *err)
+{
+    struct trace_settings ts;
+    memset(&ts, 0, sizeof ts);
+    ts.seed = rs->seed;
+    ts.n_emit = js->n_photons;
+    ts.max_stored = MAX_PHOTONS;
+    ts.store = PHOTON_MAP_GLOBAL; /* every deposit: direct, caustic and indirect */
+    ts.max_depth = rs->max_depth;
+    ts.targets = NULL;
+    struct photon_trace traced;
+    memset(&traced, 0, sizeof traced);
+    struct photon_sink sink = {store_with_normal, &traced};
+    if (trace_photons_into(scene, &ts, &sink, &stats->photon_rays) < 0) {
+        photon_trace_free(&traced);
+        error_set(err, "", 0,
+                  "photon map: more than %d photons would be stored; emit fewer photons or "
+                  "follow fewer bounces (--max-depth)", MAX_PHOTONS);
+        return NULL;
+    }
+    stats->photons_emitted = ts.n_emit;
+    stats->photons_caustic = traced.n_caustic;
+    struct kdtree *map = balance_kdtree(traced.photons, traced.n_photons); /* takes them */
+    stats->photons_stored = map->n_photons;
+    stats->bytes_photon_map = kdtree_bytes(map);
+    return map;
+}
+
+/* ---- Sec. 4, pass 2: Monte Carlo ray tracing ---- */
+
+/* A path from the eye, or from a gather (whose surfaces read the irradiance stores). */
+struct path {
+    struct vec3 beta; /* throughput since the eye or the gathering point                */
+    double distance;  /* length from the camera (eye paths: a record's radius bounds)   */
+    int depth;        /* bounces so far                                                  */
+    int secondary;    /* 1 on a gather ray: read the photon map, add no emission         */
+};
+
+struct j94 {
+    const struct scene *scene;
+    const struct jensen1994_settings *js;
+    struct kdtree *map;
+    struct irradiance_settings all_photons, caustic_photons;
+    struct irradiance_cache *cache;
+    int filling_cache;               /* the pre-pass: records where none is usable      */
+    int strata_theta, strata_phi;    /* a record's m x n strata, one ray each            */
+    int light_strata;                /* each light sampled on light_strata^2 strata      */
+    double diagonal;                 /* of the scene's box                               */
+    int max_depth;                   /* longest chain of bounces followed                */
+    struct nearest *nn;              /* scratch for every photon search                  */
+    struct stratum_sample *strata;   /* scratch of a gather                              */
+    struct jensen1994_stats *stats;
+};
+
+static struct vec3 trace(const struct j94 *m, struct ray ray, struct path path, struct rng *rng,
+                         struct render_counters *counters);
+static struct vec3 trace_from(const struct j94 *m, const struct surface *s, struct path path,
+                              struct rng *rng, struct render_counters *counters);
+
+/* Radiance that the diffuse-like part reflects from irradiance e: albedo / pi times e. */
+static struct vec3 diffuse_reflection(const struct surface *s, const struct material *diffuse,
+                                      const struct shading_frame *frame, struct vec3 e)
+{
+    return vec3_mul(brdf_albedo(diffuse, frame, s->wo), vec3_scale(e, 1.0 / PI));
+}
+
+/* -- 4.0.1 L_r,d,l: direct light -- */
+
+/* Each light sampled on a k x k grid of jittered strata of its sample space, through the
+ * diffuse-like part, with a shadow ray per sample. */
+static struct vec3 direct_light(const struct j94 *m, const struct surface *s,
+                                const struct material *diffuse,
+                                const struct shading_frame *frame, struct rng *rng,
+                                struct render_counters *counters)
+{
+    int k = m->light_strata;
+    struct vec3 sum = vec3_zero();
+    for (size_t i = 0; i < m->scene->n_lights; i++) {
+        for (int j = 0; j < k * k; j++) {
+            double u1 = (j % k + rng_uniform(rng)) / k, u2 = (j / k + rng_uniform(rng)) / k;
+            struct light_sample ls;
+            struct vec3 contribution;
+            if (!light_contribution(&m->scene->lights[i], s, diffuse, frame, u1, u2, &ls,
+                                    &contribution))
+                continue;
+            m->stats->shadow_rays++;
+            counters->rays++;
+            if (!light_blocked(m->scene, s, &ls))
+                sum = vec3_add(sum, vec3_scale(contribution, 1.0 / (k * k)));
+        }
+    }
+    return sum;
+}
+
+/* -- 4.0.2 L_r,d,s: caustics, from the CP photons alone -- */
+
+static struct vec3 caustic_light(const struct j94 *m, const struct surface *s,
+                                 const struct material *diffuse,
+                                 const struct shading_frame *frame)
+{
+    struct vec3 e = irradiance_estimate(m->map, s->p, s->ng, &m->caustic_photons, m->nn);
+    return diffuse_reflection(s, diffuse, frame, e);
+}
+
+/* -- L_r,s: the specular-like part by recursive Monte Carlo ray tracing -- */
+
+/* One ray sampled from f_r,s, with Russian roulette after ROULETTE_DEPTH bounces. */
+static struct vec3 specular_light(const struct j94 *m, const struct surface *s,
+                                  const struct material *specular,
+                                  const struct shading_frame *frame, struct path path,
+                                  struct rng *rng, struct render_counters *counters)
+{
+    double u[3];
+    for (int k = 0; k < 3; k++)
+        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+    struct brdf_sample bs;
+    if (path.depth >= m->max_depth || !brdf_sample(specular, frame, s->wo, u, &bs))
+        return vec3_zero();
+    path.beta = vec3_mul(path.beta, bs.weight);
+    double q = roulette_odds(path.beta, path.depth);
+    if (q < 1 && !(rng_uniform(rng) < q))
+        return vec3_zero(); /* absorbed (always when q = 0) */
+    path.beta = vec3_scale(path.beta, 1.0 / q);
+    path.depth++;
+    struct vec3 li = trace(m, surface_ray(s, bs.wi, bs.transmitted), path, rng, counters);
+    return vec3_mul(vec3_scale(bs.weight, 1.0 / q), li);
+}
+
+/* -- 4.0.3 L_r,d,d: multiple diffuse reflections by irradiance gradients -- */
+
+/* Ward and Heckbert's gather at s: one cosine-distributed ray per stratum, each bringing
+ * the radiance a secondary path finds (the irradiance stores where it lands). Fills
+ * m->strata; returns the record with its radius bounded as cache_pass.h says. */
+static struct irradiance_record gather_record(const struct j94 *m, const struct surface *s,
+                                              const struct shading_frame *frame,
+                                              struct path path, struct rng *rng,
+                                              struct render_counters *counters)
+{
+    struct path gather = {vec3(1, 1, 1), path.distance, path.depth + 1, 1};
+    for (int j = 0; j < m->strata_theta; j++) {
+        for (int k = 0; k < m->strata_phi; k++) {
+            double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
+            struct vec3 local = stratum_direction(m->strata_theta, m->strata_phi, j, k, u1, u2);
+            struct vec3 wi = vec3_add(vec3_add(vec3_scale(frame->t, local.x),
+                                               vec3_scale(frame->b, local.y)),
+                                      vec3_scale(frame->n, local.z));
+            struct stratum_sample *sample = &m->strata[j * m->strata_phi + k];
+            sample->radiance = vec3_zero();
+            sample->distance = INFINITY;
+            if (!(vec3_dot(wi, s->ng) > 0))
+                continue; /* below the geometric surface: no light arrives */
+            struct hit hit;
+            m->stats->gradient_rays++;
+            counters->rays++;
+            if (!scene_intersect(m->scene, surface_ray(s, wi, 0), INFINITY, &hit)) {
+                sample->radiance = m->scene->background;
+                continue;
+            }
+            struct surface at = surface_at(m->scene, &hit, vec3_neg(wi));
+            sample->radiance = trace_from(m, &at, gather, rng, counters);
+            sample->distance = hit.t;
+        }
+    }
+    double r_min, r_max;
+    record_radius_bounds(&m->scene->camera, path.distance, fabs(vec3_dot(s->wo, frame->n)),
+                         m->js->cache_accuracy, m->diagonal, &r_min, &r_max);
+    return irradiance_record_make(s->p, frame->t, frame->b, frame->n, m->strata_theta,
+                                  m->strata_phi, m->strata, r_min, r_max);
+}
+
+/* The irradiance of multiple diffuse reflections at s: interpolated from the cache where
+ * a record is usable (Ward 1988); else gathered, and in the pre-pass kept as a record. */
+static struct vec3 diffuse_interreflection(const struct j94 *m, const struct surface *s,
+                                           const struct shading_frame *frame, struct path path,
+                                           struct rng *rng, struct render_counters *counters)
+{
+    struct vec3 e;
+    double a = m->js->cache_accuracy * (m->filling_cache ? CACHE_FILL_STRICTNESS : 1.0);
+    if (irradiance_cache_lookup(m->cache, s->p, frame->n, a, &e))
+        return e;
+    struct irradiance_record record = gather_record(m, s, frame, path, rng, counters);
+    if (m->filling_cache)
+        irradiance_cache_add(m->cache, &record);
+    else
+        m->stats->gather_fallbacks++;
+    return record.e;
+}
+
+/* -- a surface, term by term -- */
+
+/* Radiance leaving s towards s->wo on a path from the eye: L_e + L_r,s + L_r,d. */
+static struct vec3 eye_radiance(const struct j94 *m, const struct surface *s, struct path path,
+                                struct rng *rng, struct render_counters *counters)
+{
+    struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
+    struct brdf_split split = brdf_split(s->material);
+    struct vec3 l = surface_emission(s);
+    if (split.has_diffuse) {
+        l = vec3_add(l, direct_light(m, s, &split.diffuse, &frame, rng, counters));
+        l = vec3_add(l, caustic_light(m, s, &split.diffuse, &frame));
+        struct vec3 e = diffuse_interreflection(m, s, &frame, path, rng, counters);
+        l = vec3_add(l, diffuse_reflection(s, &split.diffuse, &frame, e));
+    }
+    if (split.has_specular)
+        l = vec3_add(l, specular_light(m, s, &split.specular, &frame, path, rng, counters));
+    return l;
+}
+
+/* Radiance leaving s towards s->wo on a gather ray (Sec. 4.0.3): the diffuse-like part
+ * reflects the irradiance of all photons, read from the photon map; the specular-like
+ * part is followed on; no emission. */
+static struct vec3 secondary_radiance(const struct j94 *m, const struct surface *s,
+                                      struct path path, struct rng *rng,
+                                      struct render_counters *counters)
+{
+    struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
+    struct brdf_split split = brdf_split(s->material);
+    struct vec3 l = vec3_zero();
+    if (split.has_diffuse) {
+        struct vec3 e = irradiance_estimate(m->map, s->p, s->ng, &m->all_photons, m->nn);
+        l = diffuse_reflection(s, &split.diffuse, &frame, e);
+    }
+    if (split.has_specular)
+        l = vec3_add(l, specular_light(m, s, &split.specular, &frame, path, rng, counters));
+    return l;
+}
+
+static struct vec3 trace_from(const struct j94 *m, const struct surface *s, struct path path,
+                              struct rng *rng, struct render_counters *counters)
+{
+    return path.secondary ? secondary_radiance(m, s, path, rng, counters)
+                          : eye_radiance(m, s, path, rng, counters);
+}
+
+static struct vec3 trace(const struct j94 *m, struct ray ray, struct path path, struct rng *rng,
+                         struct render_counters *counters)
+{
+    struct hit hit;
+    counters->rays++;
+    if (!scene_intersect(m->scene, ray, INFINITY, &hit))
+        return m->scene->background;
+    struct surface s = surface_at(m->scene, &hit, vec3_neg(ray.dir));
+    path.distance += hit.t;
+    return trace_from(m, &s, path, rng, counters);
+}
+
+static struct vec3 j94_radiance(const void *mode, struct ray ray, struct rng *rng,
+                                struct render_counters *counters)
+{
+    struct path eye = {vec3(1, 1, 1), 0.0, 0, 0};
+    return trace(mode, ray, eye, rng, counters);
+}
+
+/* ---- putting it together ---- */
+
+/* The mode's state from the scene and the settings: estimates, strata, cache, scratch. */
+static void set_up(struct j94 *m, const struct scene *scene, const struct render_settings *rs,
+                   const struct jensen1994_settings *js)
+{
+    struct aabb box = geometry_bounds(scene->geometry);
+    double diagonal = vec3_length(vec3_sub(box.hi, box.lo));
+    m->scene = scene;
+    m->js = js;
+    m->max_depth = rs->max_depth;
+    m->diagonal = isfinite(diagonal) && diagonal > 0 ? diagonal : 1.0;
+    double max_radius = js->max_radius > 0 ? js->max_radius
+                                           : PHOTONS_RADIUS_FRACTION * m->diagonal;
+    struct irradiance_settings all = {js->gather, max_radius * max_radius, 0,
+                                      js->differential_run};
+    m->all_photons = all;
+    m->caustic_photons = all;
+    m->caustic_photons.kinds = PHOTON_CAUSTIC;
+    /* Ward and Heckbert's strata, m x n with n about pi m, one ray each */
+    m->strata_theta = (int)floor(sqrt(js->gather_rays / PI) + 0.5);
+    m->strata_theta = m->strata_theta < 1 ? 1 : m->strata_theta;
+    m->strata_phi = js->gather_rays / m->strata_theta;
+    m->light_strata = (int)floor(sqrt((double)js->light_samples));
+    m->filling_cache = 0;
+    m->cache = irradiance_cache_create(isfinite(box.lo.x) ? box : (struct aabb){vec3_zero(),
+                                                                               vec3_zero()},
+                                       js->cache_accuracy);
+    m->nn = nearest_create(js->gather);
+    m->strata = xmalloc((size_t)m->strata_theta * (size_t)m->strata_phi, sizeof *m->strata,
+                        "strata");
+}
+
+static void tear_down(struct j94 *m)
+{
+    free(m->strata);
+    nearest_free(m->nn);
+    irradiance_cache_free(m->cache);
+    kdtree_free(m->map);
+}
+
+struct render_result render_jensen1994(const struct scene *scene,
+                                       const struct render_settings *rs,
+                                       const struct jensen1994_settings *js, int want_variance,
+                                       struct render_counters *counters,
+                                       struct jensen1994_stats *stats, struct error *err)
+{
+    struct render_result result = {NULL, NULL, 0.0};
+    memset(stats, 0, sizeof *stats);
+    struct j94 m;
+    memset(&m, 0, sizeof m);
+    m.stats = stats;
+    clock_t start = clock();
+    m.map = trace_photon_map(scene, rs, js, stats, err);
+    if (m.map == NULL)
+        return result;
+    stats->seconds_photons = cpu_seconds(start);
+    set_up(&m, scene, rs, js);
+    stats->strata_theta = m.strata_theta;
+    stats->strata_phi = m.strata_phi;
+    start = clock();
+    struct radiance_estimator estimator = {j94_radiance, &m};
+    m.filling_cache = 1;
+    fill_cache_pass(scene, rs->seed, estimator, m.cache, rs->progress, counters);
+    m.filling_cache = 0;
+    stats->seconds_cache = cpu_seconds(start);
+    stats->cache_records = irradiance_cache_records(m.cache);
+    stats->bytes_cache = irradiance_cache_bytes(m.cache);
+    result = render_pixels(scene, rs, estimator, want_variance, NULL, counters);
+    stats->seconds_render = result.seconds;
+    result.seconds += stats->seconds_photons + stats->seconds_cache;
+    tear_down(&m);
+    return result;
+}

@@ -1,0 +1,66 @@
+/*
+ * modes/jensen1994.h -- `--mode 1994`: Jensen and Christensen 1994, "Photon maps in
+ * bidirectional Monte Carlo ray tracing of complex objects" (jensen1994.c).
+ */
+#ifndef PHOTON_JENSEN1994_H
+#define PHOTON_JENSEN1994_H
+
+#include <stddef.h>
+
+#include "../base/error.h"
+#include "render.h"
+
+#define J94_DEFAULT_PHOTONS 200000     /* --photons: light rays of pass 1                 */
+#define J94_DEFAULT_GATHER 100         /* --gather: photons in an irradiance estimate (the
+                                          paper used 40 on the desk, 80 on the landscape,
+                                          200 for its Fig. 8)                            */
+#define J94_DEFAULT_GATHER_RAYS 256    /* --gather-rays: irradiance-gradient rays of one
+                                          cache record (Ward and Heckbert's strata)      */
+#define J94_DEFAULT_LIGHT_SAMPLES 4    /* --light-samples: stratified samples of each light
+                                          at a surface (2 x 2)                           */
+#define J94_DEFAULT_CACHE_ACCURACY 0.15 /* --cache-accuracy: Ward's a                     */
+#define J94_MAX_LIGHT_SAMPLES 1024     /* documented limit on --light-samples            */
+
+struct jensen1994_settings {
+    size_t n_photons;      /* light rays emitted in pass 1, 1..MAX_PHOTONS (trace.h)        */
+    size_t gather;         /* n, photons in each irradiance estimate, 1..MAX_GATHER         */
+    double max_radius;     /* > 0: the estimates' largest radius; <= 0: 1/10 of the
+                              scene's diagonal (as the photons mode)                        */
+    int differential_run;  /* differential checking's run (estimate.h); 0: off              */
+    int gather_rays;       /* rays of one irradiance record, 2..J96_MAX_GATHER_RAYS         */
+    double cache_accuracy; /* Ward's a, > 0                                                 */
+    int light_samples;     /* stratified samples of each light, 1..J94_MAX_LIGHT_SAMPLES    */
+};
+
+/* What the render did, for --stats (the paper's Fig. 9 and more). */
+struct jensen1994_stats {
+    size_t photons_emitted;          /* light rays of pass 1                             */
+    unsigned long long photon_rays;  /* rays cast tracing them                           */
+    size_t photons_stored;           /* in the photon map: CP + DP                       */
+    size_t photons_caustic;          /* CP                                               */
+    size_t bytes_photon_map;
+    double seconds_photons;          /* pass 1, tracing and balancing                     */
+    double seconds_cache;            /* the irradiance cache's pre-pass                   */
+    double seconds_render;           /* the final pass                                    */
+    size_t cache_records;
+    size_t bytes_cache;
+    unsigned long long gradient_rays; /* rays of the irradiance records (IG rays)          */
+    unsigned long long gather_fallbacks; /* records made in the final pass and not kept    */
+    unsigned long long shadow_rays;
+    int strata_theta, strata_phi;    /* the records' strata                               */
+};
+
+struct jensen1994_settings jensen1994_settings_default(void);
+
+/* Renders the settings' window of the scene (finished) in two passes: the photon map,
+ * then Monte Carlo ray tracing with an irradiance cache filled by a pre-pass over the
+ * whole image (jensen1994.c), so a crop equals the same window of the whole render.
+ * Fails (result.image NULL, *err filled) when more than MAX_PHOTONS photons would be
+ * stored. The result's seconds include both passes and the pre-pass. */
+struct render_result render_jensen1994(const struct scene *scene,
+                                       const struct render_settings *rs,
+                                       const struct jensen1994_settings *js, int want_variance,
+                                       struct render_counters *counters,
+                                       struct jensen1994_stats *stats, struct error *err);
+
+#endif
