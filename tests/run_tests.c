@@ -21,6 +21,7 @@ static const struct room rooms[] = {
     {"brdf", test_brdf},       {"shapes", test_shapes}, {"import", test_import},
     {"photon", test_photon},   {"trace", test_trace},   {"ppm", test_ppm},
     {"cache", test_cache},     {"render", test_render}, {"pt", test_pt},
+    {"jensen1994", test_jensen1994},
     {"jensen1996", test_jensen1996}, {"report", test_report}, {"cli", test_cli},
 };
 

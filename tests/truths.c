@@ -57,3 +57,59 @@ int within_point_over_plane(const struct scene *scene, const struct image *image
         }
     return inside;
 }
+
+/* The window (x0 y0 x1 y1) of img as an image of its own. */
+struct image *crop_image(const struct image *img, const int *window)
+{
+    struct image *out = image_create(window[2] - window[0], window[3] - window[1]);
+    for (int y = 0; y < out->height; y++)
+        for (int x = 0; x < out->width; x++)
+            image_set(out, x, y, image_get(img, x + window[0], y + window[1]));
+    return out;
+}
+
+/* The reference at path averaged over factor x factor blocks, cut to window (in the
+ * small image's pixels); NULL when it cannot be read. */
+struct image *reference_window(const char *path, int factor, const int *window)
+{
+    struct error err;
+    struct image *ref = pfm_read(path, &err);
+    if (ref == NULL) {
+        error_print(&err);
+        return NULL;
+    }
+    struct image *small = image_create(ref->width / factor, ref->height / factor);
+    for (int y = 0; y < small->height; y++)
+        for (int x = 0; x < small->width; x++) {
+            struct vec3 sum = vec3_zero();
+            for (int j = 0; j < factor; j++)
+                for (int i = 0; i < factor; i++)
+                    sum = vec3_add(sum, image_get(ref, x * factor + i, y * factor + j));
+            image_set(small, x, y, vec3_scale(sum, 1.0 / (factor * factor)));
+        }
+    struct image *out = crop_image(small, window);
+    image_free(small);
+    image_free(ref);
+    return out;
+}
+
+double mean_luminance(const struct image *img)
+{
+    double sum = 0;
+    size_t n = (size_t)img->width * (size_t)img->height;
+    for (size_t i = 0; i < n; i++)
+        sum += vec3_luminance(img->pixels[i]);
+    return sum / (double)n;
+}
+
+/* Whether every channel of every pixel is finite and not negative. */
+int finite_and_positive(const struct image *img)
+{
+    size_t n = (size_t)img->width * (size_t)img->height;
+    for (size_t i = 0; i < n; i++) {
+        struct vec3 v = img->pixels[i];
+        if (!(isfinite(v.x) && isfinite(v.y) && isfinite(v.z)) || v.x < 0 || v.y < 0 || v.z < 0)
+            return 0;
+    }
+    return 1;
+}

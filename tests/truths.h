@@ -1,7 +1,8 @@
 /*
  * tests/truths.h -- closed forms and fixtures that several test rooms share: Lambert's
- * polygon irradiance (test_scene.c, test_pt.c), the point light over a plane, and loading a test scene (test_render.c,
- * test_pt.c).
+ * polygon irradiance (test_scene.c, test_pt.c), the point light over a plane, loading a
+ * test scene (test_render.c, test_pt.c), and the block-averaged references the photon
+ * modes are compared with.
  */
 #ifndef PHOTON_TEST_TRUTHS_H
 #define PHOTON_TEST_TRUTHS_H
@@ -26,5 +27,20 @@ int within_point_over_plane(const struct scene *scene, const struct image *image
 /* Loads and finishes the scene at path for width x height (0: the file's own size); the
  * caller frees it with scene_free. NULL, with the error printed, when it cannot be read. */
 struct scene *load_test_scene(const char *path, int width, int height);
+
+/* The window (x0 y0 x1 y1) of img as an image of its own; the caller frees it. */
+struct image *crop_image(const struct image *img, const int *window);
+
+/* The reference at path averaged over factor x factor blocks, cut to window (in the
+ * small image's pixels): the reference of a render at 1/factor the size, exact in
+ * expectation, since a pixel is the mean radiance over its square (render.h) and the
+ * camera maps the same film to any size. NULL, with the error printed, when it cannot
+ * be read (test_jensen1994.c, test_jensen1996.c). */
+struct image *reference_window(const char *path, int factor, const int *window);
+
+double mean_luminance(const struct image *img);
+
+/* Whether every channel of every pixel is finite and not negative. */
+int finite_and_positive(const struct image *img);
 
 #endif

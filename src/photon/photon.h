@@ -6,7 +6,10 @@
  * RGBE shared-exponent format (4 bytes), the direction as two angles of 256 steps each,
  * plus one byte for the kd-tree's split axis and one for flags. Only photon.c packs
  * and unpacks these bytes; everything else calls photon_pack() and the three getters,
- * which compute in double.
+ * which compute in double. The two direction bytes hold whatever unit direction the
+ * map's mode gives: the incoming direction wi in the 1996 and photons modes' maps, the
+ * surface normal in mode 1994's (its record is position, normal, energy and a caustic
+ * bit, Jensen and Christensen 1994, Sec. 3.3).
  *
  * Accuracy of the round trip photon_pack() -> getters:
  *   position:  each coordinate rounded to the nearest float (relative error <= 2^-24);
