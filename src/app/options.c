@@ -173,8 +173,7 @@ static void set_defaults(struct options *o)
     o->light_samples = j94.light_samples;
 }
 
-/* A number from text: whole (integer != 0) or real, within [min, max]. */
-static int read_number(const char *name, const char *text, double min, double max,
+int read_number(const char *name, const char *text, double min, double max,
                        int integer, double *value, struct error *err)
 {
     char *end = NULL;
@@ -188,7 +187,7 @@ static int read_number(const char *name, const char *text, double min, double ma
     return 0;
 }
 
-static int read_seed(const char *text, uint64_t *seed, struct error *err)
+int read_seed(const char *text, uint64_t *seed, struct error *err)
 {
     char *end = NULL;
     if (text != NULL && text[0] >= '0' && text[0] <= '9') {

@@ -61,4 +61,12 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err);
 
 const char *mode_name(enum mode mode);
 
+/* A number from text: whole (integer != 0) or real, within [min, max]; -1 with *err
+ * naming the option (name) otherwise. Also for the subcommands' options. */
+int read_number(const char *name, const char *text, double min, double max, int integer,
+                double *value, struct error *err);
+
+/* A --seed value: a whole number from 0 to 2^64 - 1; -1 with *err filled otherwise. */
+int read_seed(const char *text, uint64_t *seed, struct error *err);
+
 #endif

@@ -82,18 +82,17 @@ static int store_with_normal(void *context, const struct photon_event *e)
     return photon_trace_store(context, MAX_PHOTONS, &deposit);
 }
 
-static struct kdtree *trace_photon_map(const struct scene *scene,
-                                       const struct render_settings *rs,
-                                       const struct jensen1994_settings *js,
-                                       struct jensen1994_stats *stats, struct error *err)
+struct kdtree *jensen1994_photon_map(const struct scene *scene, uint64_t seed, int max_depth,
+                                     const struct jensen1994_settings *js,
+                                     struct jensen1994_stats *stats, struct error *err)
 {
     struct trace_settings ts;
     memset(&ts, 0, sizeof ts);
-    ts.seed = rs->seed;
+    ts.seed = seed;
     ts.n_emit = js->n_photons;
     ts.max_stored = MAX_PHOTONS;
     ts.store = PHOTON_MAP_GLOBAL; /* every deposit: direct, caustic and indirect */
-    ts.max_depth = rs->max_depth;
+    ts.max_depth = max_depth;
     ts.targets = NULL;
     struct photon_trace traced;
     memset(&traced, 0, sizeof traced);
@@ -391,7 +390,7 @@ struct render_result render_jensen1994(const struct scene *scene,
     memset(&m, 0, sizeof m);
     m.stats = stats;
     clock_t start = clock();
-    m.map = trace_photon_map(scene, rs, js, stats, err);
+    m.map = jensen1994_photon_map(scene, rs->seed, rs->max_depth, js, stats, err);
     if (m.map == NULL)
         return result;
     stats->seconds_photons = cpu_seconds(start);

@@ -6,6 +6,7 @@
 #define PHOTON_JENSEN1994_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "../base/error.h"
 #include "render.h"
@@ -51,6 +52,18 @@ struct jensen1994_stats {
 };
 
 struct jensen1994_settings jensen1994_settings_default(void);
+
+struct kdtree;
+
+/* Pass 1 alone (Sec. 3): js->n_photons light rays from the scene's lights (finished) with
+ * seed, followed for at most max_depth bounces, deposited as photons holding their
+ * surface normal and the caustic bit (CP: PHOTON_CAUSTIC). Returns the balanced map
+ * (the caller frees it with kdtree_free) and fills the photon fields of *stats; NULL with
+ * *err filled when more than MAX_PHOTONS would be stored. The render's first step, and
+ * `photon probe`'s (app/probe.h). */
+struct kdtree *jensen1994_photon_map(const struct scene *scene, uint64_t seed, int max_depth,
+                                     const struct jensen1994_settings *js,
+                                     struct jensen1994_stats *stats, struct error *err);
 
 /* Renders the settings' window of the scene (finished) in two passes: the photon map,
  * then Monte Carlo ray tracing with an irradiance cache filled by a pre-pass over the
