@@ -14,7 +14,7 @@
 
 static struct image *render(const struct scene *scene, const struct render_settings *rs)
 {
-    struct render_counters counters = {0, 0, 0};
+    struct render_counters counters = {0, 0, 0, 0};
     return render_direct(scene, rs, 0, NULL, &counters).image;
 }
 
