@@ -113,8 +113,10 @@ static void render_pass(const struct scene *scene, const struct render_settings 
     for (int y = rs->y0; y < rs->y1; y++)
         for (int x = rs->x0; x < rs->x1; x++) {
             size_t i = (size_t)(y - rs->y0) * (size_t)acc->width + (size_t)(x - rs->x0);
+            /* n[i] < s: stopped earlier (the rule, reading the same sums, would say so
+             * again; this test is cheaper), or the rule stops it now. */
             if (acc->n[i] != s || pixel_stops(acc, i, rs))
-                continue; /* stopped earlier, or stops now */
+                continue;
             struct rng rng;
             struct ray ray = camera_sample(scene, rs->seed, x, y, s, &rng);
             struct vec3 l = est.radiance(est.mode, ray, &rng, counters);
