@@ -19,7 +19,7 @@ void test_photon(struct check *t); /* test_photon.c: photon record, kd-tree     
 void test_trace(struct check *t);  /* test_trace.c: emission, tracing, estimates  */
 void test_ppm(struct check *t);    /* test_ppm.c: progressive photon mapping      */
 void test_cache(struct check *t);  /* test_cache.c: irradiance cache, gradients   */
-void test_render(struct check *t); /* test_render.c: direct mode, crops, scaling  */
+void test_render(struct check *t); /* test_render.c: direct mode, crops, scaling, adaptive */
 void test_pt(struct check *t);     /* test_pt.c: the path tracer, closed forms    */
 void test_jensen1994(struct check *t); /* test_jensen1994.c: --mode 1994             */
 void test_jensen1996(struct check *t); /* test_jensen1996.c: --mode 1996, photon maps */

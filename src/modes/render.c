@@ -1,12 +1,18 @@
 /*
  * modes/render.c -- the shared pixel loop (render.h): sample passes, the running sums of
- * each pixel, checkpoints and the progress line.
+ * each pixel, the adaptive stopping rule, checkpoints and the progress line.
  *
- * Invariant: after pass p, sum[3i + c] holds the sum over samples 0..p-1 of pixel i's
- * channel c, added in sample order, and sum2 (when kept) the sum of their squares.
+ * Invariant: after pass p, pixel i has taken n[i] <= p samples, samples 0..n[i]-1, and
+ * sum[3i + c] holds the sum of their channel c, added in sample order; sum2 (when kept)
+ * the sum of their squares, and lum (when adaptive) their luminance's mean and summed
+ * squared deviation. Without the adaptive rule n[i] = p. A pixel stops only by the rule, and once
+ * n[i] < p it never samples again: pass p samples pixel i exactly when n[i] = p and the
+ * rule, read at n[i], does not stop it.
  */
 #include "render.h"
 
+#include <assert.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,9 +22,15 @@
 #include "../base/sequence02.h"
 
 struct accumulator {
-    int width, height; /* of the window                         */
-    double *sum;       /* owned: 3 per pixel, row-major          */
-    double *sum2;      /* owned or NULL: squares, for variance   */
+    int width, height;       /* of the window                                            */
+    double *sum;             /* owned: 3 per pixel, row-major                            */
+    double *sum2;            /* owned or NULL: squares, for the variance image           */
+    double *lum;             /* owned, or NULL when adaptive sampling is off: 2 per pixel,
+                                the mean m of the samples' luminance y, and the sum of
+                                their (y - m)^2                                          */
+    int *n;                  /* owned: samples taken by each pixel, >= 1 after pass 1    */
+    unsigned long long n_samples; /* sum of n[]                                          */
+    size_t n_active;         /* pixels the last pass sampled                             */
 };
 
 static double cpu_seconds(clock_t start)
@@ -51,14 +63,60 @@ struct ray camera_sample(const struct scene *scene, uint64_t seed, int x, int y,
     return camera_ray(&scene->camera, x + u, y + v);
 }
 
-/* Adds sample s of every pixel in the window. A non-finite sample (a bug upstream) counts
- * as zero and is reported, so no NaN or Inf can reach an image. */
+static int is_power_of_two(int n)
+{
+    return n > 0 && (n & (n - 1)) == 0;
+}
+
+/* The adaptive rule of render.h for pixel i at its n = n[i] samples: whether it stops. It
+ * is read only at powers of two n >= min_spp, so stopping keeps the camera points
+ * stratified; it reads the pixel's own sums alone, so crops see the same decision. */
+static int pixel_stops(const struct accumulator *acc, size_t i, const struct render_settings *rs)
+{
+    int n = acc->n[i];
+    if (acc->lum == NULL || n < rs->min_spp || !is_power_of_two(n))
+        return 0;
+    double m = acc->lum[2 * i];
+    double s2 = fmax(0.0, acc->lum[2 * i + 1]) / (n - 1.0); /* n >= min_spp >= 2 */
+    return sqrt(s2 / n) <= rs->adaptive_error * fmax(m, ADAPTIVE_FLOOR);
+}
+
+/* Adds radiance l as pixel i's next sample. */
+static void add_sample(struct accumulator *acc, size_t i, struct vec3 l)
+{
+    double v[3] = {l.x, l.y, l.z};
+    for (int c = 0; c < 3; c++) {
+        acc->sum[3 * i + c] += v[c];
+        if (acc->sum2 != NULL)
+            acc->sum2[3 * i + c] += v[c] * v[c];
+    }
+    if (acc->lum != NULL) {
+        /* Welford's update of the luminance's mean m and M2 = sum of (y - m)^2: it does not
+         * cancel as sum y^2 - n m^2 would, and leaves M2 exactly 0 while all y are equal. */
+        double y = vec3_luminance(l);
+        double d = y - acc->lum[2 * i];
+        acc->lum[2 * i] += d / (acc->n[i] + 1.0);
+        acc->lum[2 * i + 1] += d * (y - acc->lum[2 * i]);
+    }
+    acc->n[i]++;
+    acc->n_samples++;
+    acc->n_active++;
+}
+
+/* Adds sample s to every pixel in the window that is still sampling. A non-finite sample
+ * (a bug upstream) counts as zero and is reported, so no NaN or Inf can reach an image. */
 static void render_pass(const struct scene *scene, const struct render_settings *rs,
                         struct radiance_estimator est, int s, struct accumulator *acc,
                         struct render_counters *counters)
 {
+    acc->n_active = 0;
     for (int y = rs->y0; y < rs->y1; y++)
         for (int x = rs->x0; x < rs->x1; x++) {
+            size_t i = (size_t)(y - rs->y0) * (size_t)acc->width + (size_t)(x - rs->x0);
+            /* n[i] < s: stopped earlier (the rule, reading the same sums, would say so
+             * again; this test is cheaper), or the rule stops it now. */
+            if (acc->n[i] != s || pixel_stops(acc, i, rs))
+                continue;
             struct rng rng;
             struct ray ray = camera_sample(scene, rs->seed, x, y, s, &rng);
             struct vec3 l = est.radiance(est.mode, ray, &rng, counters);
@@ -66,31 +124,30 @@ static void render_pass(const struct scene *scene, const struct render_settings 
                 counters->nonfinite_samples++;
                 l = vec3_zero();
             }
-            size_t i = 3 * ((size_t)(y - rs->y0) * (size_t)acc->width + (size_t)(x - rs->x0));
-            double v[3] = {l.x, l.y, l.z};
-            for (int c = 0; c < 3; c++) {
-                acc->sum[i + c] += v[c];
-                if (acc->sum2 != NULL)
-                    acc->sum2[i + c] += v[c] * v[c];
-            }
+            add_sample(acc, i, l);
         }
 }
 
-/* The mean of n >= 1 samples per pixel. */
-static void mean_image(const struct accumulator *acc, int n, struct image *mean)
+/* Each pixel's mean over its own n[i] samples; n[i] >= 1 once a pass has run, because no
+ * pixel stops before min_spp >= 2 samples. */
+static void mean_image(const struct accumulator *acc, struct image *mean)
 {
-    for (size_t i = 0; i < (size_t)acc->width * (size_t)acc->height; i++)
+    for (size_t i = 0; i < (size_t)acc->width * (size_t)acc->height; i++) {
+        int n = acc->n[i];
         mean->pixels[i] = vec3(acc->sum[3 * i] / n, acc->sum[3 * i + 1] / n,
                                acc->sum[3 * i + 2] / n);
+    }
 }
 
-/* The variance of the mean of n samples: s^2 / n, s^2 = (sum2 - n mean^2) / (n - 1). */
-static struct image *variance_image(const struct accumulator *acc, int n)
+/* The variance of each pixel's mean of its n = n[i] samples: s^2 / n,
+ * s^2 = (sum2 - n mean^2) / (n - 1); 0 where n < 2. */
+static struct image *variance_image(const struct accumulator *acc)
 {
     struct image *var = image_create(acc->width, acc->height);
-    if (n < 2)
-        return var;
     for (size_t i = 0; i < (size_t)acc->width * (size_t)acc->height; i++) {
+        int n = acc->n[i];
+        if (n < 2)
+            continue;
         double v[3];
         for (int c = 0; c < 3; c++) {
             double mean = acc->sum[3 * i + c] / n;
@@ -102,24 +159,36 @@ static struct image *variance_image(const struct accumulator *acc, int n)
     return var;
 }
 
-static void show_progress(int passes, int spp, double seconds, int done)
+/* The checkpoint's work (render.h): samples per pixel of the window, rounded to nearest. */
+static long long samples_per_pixel(const struct accumulator *acc)
 {
-    double left = passes > 0 ? seconds * (spp - passes) / passes : 0.0;
-    fprintf(stderr, "\rphoton: %d/%d samples per pixel, %.1f s, about %.0f s left   ", passes,
-            spp, seconds, left);
+    unsigned long long pixels = (unsigned long long)acc->width * (unsigned long long)acc->height;
+    return (long long)((2 * acc->n_samples + pixels) / (2 * pixels));
+}
+
+/* Without adaptive sampling: passes and the time left at the rate so far. With it: passes,
+ * and how many pixels the last pass sampled, since the time left cannot be foreseen. */
+static void show_progress(const struct render_settings *rs, const struct accumulator *acc,
+                          int passes, double seconds, int done)
+{
+    if (acc->lum == NULL) {
+        double left = passes > 0 ? seconds * (rs->spp - passes) / passes : 0.0;
+        fprintf(stderr, "\rphoton: %d/%d samples per pixel, %.1f s, about %.0f s left   ",
+                passes, rs->spp, seconds, left);
+    } else {
+        fprintf(stderr, "\rphoton: pass %d of at most %d, %zu of %zu pixels sampling, %.1f s   ",
+                passes, rs->spp, acc->n_active, (size_t)acc->width * (size_t)acc->height,
+                seconds);
+    }
     if (done)
         fputc('\n', stderr);
     fflush(stderr);
 }
 
-static int is_power_of_two(int n)
-{
-    return n > 0 && (n & (n - 1)) == 0;
-}
-
-/* Takes sample passes until spp are done or the time limit has passed, calling the
- * checkpoint after passes 1, 2, 4, ... and after the last. Returns the passes done and
- * the rendering seconds (checkpoint work excluded) in *seconds. */
+/* Takes sample passes until spp are done, every pixel has stopped or the time limit has
+ * passed, calling the checkpoint after passes 1, 2, 4, ... and after the last. Returns the
+ * passes that sampled a pixel and the rendering seconds (checkpoint work excluded) in
+ * *seconds. */
 static int run_passes(const struct scene *scene, const struct render_settings *rs,
                       struct radiance_estimator est, struct accumulator *acc,
                       const struct checkpoint *checkpoint, struct render_counters *counters,
@@ -132,23 +201,28 @@ static int run_passes(const struct scene *scene, const struct render_settings *r
     while (passes < rs->spp &&
            !(passes > 0 && rs->time_limit > 0 && cpu_seconds(start) - excluded >= rs->time_limit)) {
         render_pass(scene, rs, est, passes, acc, counters);
+        if (acc->n_active == 0)
+            break; /* the adaptive rule has stopped every pixel */
         passes++;
         *seconds = cpu_seconds(start) - excluded;
         if (rs->progress && (passes == rs->spp || *seconds - last_shown >= 0.5)) {
-            show_progress(passes, rs->spp, *seconds, passes == rs->spp);
+            show_progress(rs, acc, passes, *seconds, passes == rs->spp);
             last_shown = *seconds;
         }
         int last = passes == rs->spp ||
                    (rs->time_limit > 0 && *seconds >= rs->time_limit);
         if (mean != NULL && (is_power_of_two(passes) || last)) {
-            mean_image(acc, passes, mean);
-            excluded += checkpoint->at(checkpoint->context, mean, passes, *seconds);
+            mean_image(acc, mean);
+            excluded += checkpoint->at(checkpoint->context, mean, samples_per_pixel(acc),
+                                       *seconds);
             checked = passes;
         }
     }
+    if (rs->progress && passes != rs->spp)
+        show_progress(rs, acc, passes, *seconds, 1); /* ended early: end the line */
     if (mean != NULL && checked != passes) {
-        mean_image(acc, passes, mean);
-        checkpoint->at(checkpoint->context, mean, passes, *seconds);
+        mean_image(acc, mean);
+        checkpoint->at(checkpoint->context, mean, samples_per_pixel(acc), *seconds);
     }
     image_free(mean);
     return passes;
@@ -159,19 +233,29 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
                                    const struct checkpoint *checkpoint,
                                    struct render_counters *counters)
 {
+    int adaptive = rs->adaptive_error > 0;
+    assert(!adaptive || (isfinite(rs->adaptive_error) && rs->min_spp >= 2 &&
+                         is_power_of_two(rs->min_spp)));
     struct accumulator acc;
     acc.width = rs->x1 - rs->x0;
     acc.height = rs->y1 - rs->y0;
-    size_t n = 3 * (size_t)acc.width * (size_t)acc.height;
-    acc.sum = xcalloc(n, sizeof *acc.sum, "pixel sums");
-    acc.sum2 = want_variance ? xcalloc(n, sizeof *acc.sum2, "pixel squares") : NULL;
+    size_t n = (size_t)acc.width * (size_t)acc.height;
+    acc.sum = xcalloc(3 * n, sizeof *acc.sum, "pixel sums");
+    acc.sum2 = want_variance ? xcalloc(3 * n, sizeof *acc.sum2, "pixel squares") : NULL;
+    acc.lum = adaptive ? xcalloc(2 * n, sizeof *acc.lum, "pixel luminance sums") : NULL;
+    acc.n = xcalloc(n, sizeof *acc.n, "pixel sample counts");
+    acc.n_samples = 0;
+    acc.n_active = 0;
     struct render_result result;
     result.seconds = 0.0;
     counters->passes = run_passes(scene, rs, estimator, &acc, checkpoint, counters,
                                   &result.seconds);
+    counters->samples += acc.n_samples;
     result.image = image_create(acc.width, acc.height);
-    mean_image(&acc, counters->passes, result.image);
-    result.variance = want_variance ? variance_image(&acc, counters->passes) : NULL;
+    mean_image(&acc, result.image);
+    result.variance = want_variance ? variance_image(&acc) : NULL;
+    free(acc.n);
+    free(acc.lum);
     free(acc.sum2);
     free(acc.sum);
     return result;

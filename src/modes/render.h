@@ -8,10 +8,25 @@
  * pixel's value depends on nothing but the scene, the settings and its place: a crop
  * equals the same window of the whole image, bit for bit.
  *
- * Samples are taken in sample passes: pass s adds sample s to every pixel of the window.
- * Each pixel's samples are summed in the order s = 0, 1, 2, ..., so stopping after any
- * pass gives exactly the image a render with that many samples would give. Checkpoints
- * (for --report) fall after passes 1, 2, 4, 8, ... and after the last.
+ * Samples are taken in sample passes: pass s adds sample s to every pixel of the window
+ * that is still sampling. Each pixel's samples are summed in the order s = 0, 1, 2, ...,
+ * so stopping after any pass gives exactly the image a render with that many samples
+ * would give. Checkpoints (for --report) fall after passes 1, 2, 4, 8, ... and after the
+ * last.
+ *
+ * Adaptive sampling (Jensen & Christensen 1994, Sec. 5: "each pixel has been sampled
+ * adaptively based on the variance of each sample") is off when adaptive_error is 0, and
+ * then every pixel takes every pass. When it is on, a pixel that has taken n samples, n a
+ * power of two with min_spp <= n < spp, takes no more once
+ *     sqrt(s^2 / n) <= adaptive_error * max(m, ADAPTIVE_FLOOR),
+ * m and s^2 = (sum of (y - m)^2) / (n - 1) being the mean and the sample variance of the
+ * luminance y (vec3_luminance) of its n samples: the estimated standard error of its mean
+ * is at most adaptive_error relative to the mean, or, for a pixel darker than the floor,
+ * relative to the floor. A pixel whose samples are all equal (black, or a light seen
+ * directly) has s^2 = 0 exactly and stops at min_spp (or spp, if less). Stopping only at
+ * powers of two leaves each pixel's camera points stratified (camera_sample). The rule
+ * reads nothing but the pixel's own samples, so the crop promise above still holds, and a
+ * pixel that stops after n samples has exactly the value a render with spp = n gives it.
  */
 #ifndef PHOTON_RENDER_H
 #define PHOTON_RENDER_H
@@ -25,6 +40,13 @@
 #define MAX_SPP (1 << 20)    /* documented limit on samples per pixel */
 #define DEFAULT_SPP 16       /* --spp when not given, for the camera-driven modes */
 #define MAX_DEPTH_LIMIT 1000 /* documented limit on --max-depth */
+/* The luminance below which adaptive sampling measures a pixel's error against this floor
+ * instead of its mean. Radiance 1 shows as white at exposure 1 (ppm_write), and one 8-bit
+ * sRGB step near black is 1 / (255 * 12.92) = 3e-4 of it, so a pixel darker than 1e-3 is
+ * within about three steps of black, where no one can see its relative error: without
+ * the floor, nearly black pixels would spend samples on it. The floor is absolute, so it
+ * assumes scenes whose radiance is meant to be seen at an exposure near 1, as ours are. */
+#define ADAPTIVE_FLOOR 1e-3
 
 struct render_settings {
     uint64_t seed;
@@ -33,13 +55,21 @@ struct render_settings {
     int max_depth;      /* longest chain of bounces followed, 0..MAX_DEPTH_LIMIT          */
     int x0, y0, x1, y1; /* the window rendered, [x0, x1) x [y0, y1) of the whole image    */
     int progress;       /* whether to print a progress line on stderr                     */
+    double adaptive_error; /* 0: adaptive sampling off; > 0 (finite): the stopping rule's
+                              bound on each pixel's standard error, relative to its mean */
+    int min_spp;        /* with adaptive_error > 0: the samples every pixel takes before
+                           the rule applies, a power of two >= 2 (it needs a variance)  */
 };
 
 struct render_counters {
     unsigned long long rays;              /* rays cast: camera, secondary and shadow     */
     unsigned long long nonfinite_samples; /* samples dropped for NaN or Inf: always 0
                                              unless a bug lets one through              */
-    int passes;                           /* sample passes completed = spp reached       */
+    unsigned long long samples;           /* camera samples taken, over all pixels of the
+                                             window (added to, like rays): divided by
+                                             the window's pixels, the mean spp          */
+    int passes;                           /* sample passes run: the most samples a pixel
+                                             took (spp reached when adaptive is off)     */
 };
 
 /* Radiance arriving at the camera along ray, estimated by a mode from its own state. */
@@ -49,9 +79,11 @@ struct radiance_estimator {
     const void *mode; /* borrowed; passed back to radiance() */
 };
 
-/* Called at each checkpoint with the current mean image and the work done so far
- * (samples per pixel for camera modes, photons emitted for photon passes); returns the
- * CPU seconds it spent, which the render excludes from its own clock. */
+/* Called at each checkpoint with the current mean image (each pixel the mean of its own
+ * samples) and the work done so far: photons emitted for photon passes; for camera modes
+ * the samples per pixel, that is all samples taken in the window divided by its pixels,
+ * rounded to the nearest integer (the passes run, when adaptive sampling is off). Returns
+ * the CPU seconds it spent, which the render excludes from its own clock. */
 struct checkpoint {
     double (*at)(void *context, const struct image *mean, long long work, double seconds);
     void *context;
@@ -61,15 +93,16 @@ struct checkpoint {
 struct render_result {
     struct image *image;    /* owned: mean radiance over each pixel                       */
     struct image *variance; /* owned or NULL: per pixel and channel, the variance of the
-                               mean, s^2 / n from the samples' own second moment (0 when
-                               fewer than two samples); it treats the stratified camera
-                               points as independent, so at edges it is typically an
-                               over-estimate                                               */
+                               mean, s^2 / n from the samples' own second moment, n the
+                               pixel's own sample count (0 when n < 2); it treats the
+                               stratified camera points as independent, so at edges it
+                               is typically an over-estimate                               */
     double seconds;         /* CPU seconds rendering, checkpoint work excluded            */
 };
 
 /* Settings for the whole image of scene (finished): seed, spp and max_depth as given, no
- * time limit, no progress line. Callers change the window or the rest as they need. */
+ * time limit, no progress line, adaptive sampling off. Callers change the window or the
+ * rest as they need. */
 struct render_settings render_settings_whole(const struct scene *scene, uint64_t seed, int spp,
                                              int max_depth);
 
@@ -83,7 +116,9 @@ struct render_settings render_settings_whole(const struct scene *scene, uint64_t
 struct ray camera_sample(const struct scene *scene, uint64_t seed, int x, int y, int s,
                          struct rng *rng);
 
-/* Renders the settings' window of the scene's image (width x1 - x0, height y1 - y0).
+/* Renders the settings' window of the scene's image (width x1 - x0, height y1 - y0),
+ * each pixel taking up to rs->spp samples (fewer by the adaptive rule or the time limit).
+ * The caller guarantees min_spp as documented when adaptive_error > 0 (asserted).
  * want_variance: also fill result->variance. checkpoint may be NULL. */
 struct render_result render_pixels(const struct scene *scene, const struct render_settings *rs,
                                    struct radiance_estimator estimator, int want_variance,
