@@ -86,6 +86,8 @@ static int prepare_run(struct run *run, struct error *err)
                         : o->mode == MODE_DIRECT ? DIRECT_MAX_DEPTH
                                                  : MAX_DEPTH_LIMIT; /* roulette ends paths */
     run->rs.progress = show_progress(o->progress);
+    run->rs.adaptive_error = o->adaptive;
+    run->rs.min_spp = ADAPTIVE_MIN_SPP;
     if (choose_window(o, width, height, &run->rs, err) < 0)
         return -1;
     double eye_rays = (double)(run->rs.x1 - run->rs.x0) * (run->rs.y1 - run->rs.y0) * o->spp;
@@ -213,6 +215,9 @@ static void print_stats(const struct run *run)
             geometry_bvh_nodes(scene->geometry), geometry_bytes(scene->geometry));
     fprintf(stderr, "width=%d\nheight=%d\nspp=%d\nseed=%llu\n", scene->width, scene->height,
             c->passes, (unsigned long long)run->o.seed);
+    double pixels = (double)(run->rs.x1 - run->rs.x0) * (double)(run->rs.y1 - run->rs.y0);
+    if (run->o.mode != MODE_PPM2008)
+        fprintf(stderr, "samples_per_pixel=%.3f\n", (double)c->samples / pixels);
     if (run->o.mode == MODE_PHOTONS)
         print_photon_stats(&run->photon_stats);
     if (run->o.mode == MODE_PPM2008)

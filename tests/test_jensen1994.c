@@ -263,7 +263,8 @@ static void test_harder_scenes_are_finite(struct check *t)
 
 /* truth: the command-line contract (DESIGN.md): a bad value of a 1994 option exits 2
  *   with a message naming the option and leaves no output; a good run exits 0, writes
- *   the image and prints the paper's Fig. 9 statistics with --stats.
+ *   the image and prints the paper's Fig. 9 statistics with --stats, and the mean
+ *   samples per pixel of adaptive sampling (the rule itself: test_render.c).
  * catches: a limit missing from the option table, an output written before the options
  *   are checked, stats keys renamed or missing. */
 static void test_command_line(struct check *t)
@@ -271,7 +272,8 @@ static void test_command_line(struct check *t)
     static const char *bad[][2] = {
         {"--differential -1", "--differential"}, {"--light-samples 0", "--light-samples"},
         {"--light-samples 1025", "--light-samples"}, {"--cache-accuracy 0", "--cache-accuracy"},
-        {"--gather 0", "--gather"},              {"--gather-rays 1", "--gather-rays"}};
+        {"--gather 0", "--gather"},              {"--gather-rays 1", "--gather-rays"},
+        {"--adaptive -1", "--adaptive"}};
     char args[1024];
     remove(OUT ".pfm");
     remove(OUT ".ppm");
@@ -282,14 +284,15 @@ static void test_command_line(struct check *t)
         CHECK(t, !file_exists(OUT ".pfm") && !file_exists(OUT ".pfm.tmp") &&
                  !file_exists(OUT ".ppm"));
     }
-    CHECK(t, photon_logged("", "--mode 1994 --width 16 --height 16 --spp 1 --photons 5000 "
-                               "--gather-rays 16 --stats --no-progress "
+    CHECK(t, photon_logged("", "--mode 1994 --width 16 --height 16 --spp 8 --photons 5000 "
+                               "--gather-rays 16 --adaptive 1e-9 --stats --no-progress "
                                "-o " OUT ".pfm scenes/cornell-specular.scene",
                            OUT ".log") == 0);
     static const char *keys[] = {"mode=1994\n", "photons_stored=", "photons_caustic=",
                                  "photon_rays=", "bytes_per_photon=20.0\n", "gradient_rays=",
                                  "shadow_rays=", "seconds_photons=", "seconds_cache=",
-                                 "seconds_render=", "cache_records=", "nonfinite_samples=0\n"};
+                                 "seconds_render=", "cache_records=", "nonfinite_samples=0\n",
+                                 "spp=8\n", "samples_per_pixel="};
     for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
         CHECK(t, file_contains(OUT ".log", keys[i]));
     struct error err;

@@ -46,6 +46,10 @@ static const struct option_spec specs[] = {
      "image height (default: scene's)"},
     {"--crop", OPT_CROP, FIELD(crop), 0, MAX_IMAGE_SIDE, "X0 Y0 X1 Y1",
      "render only pixels X0 <= x < X1, Y0 <= y < Y1 of the whole image (0,0 = top left)"},
+    {"--adaptive", OPT_REAL, FIELD(adaptive), 0, 1e6, "E",
+     "stop sampling a pixel (after 4 samples, at powers of two) once its mean's standard "
+     "error is at most E times the mean (Jensen & Christensen 1994); 0 = off (default 0; "
+     "not with 2008)"},
     {"--max-depth", OPT_INT, FIELD(max_depth), 0, MAX_DEPTH_LIMIT, "N",
      "longest chain of bounces followed (default: direct 16, others 1000)"},
     {"--time-limit", OPT_REAL, FIELD(time_limit), 0, 1e9, "SECONDS",
@@ -336,6 +340,9 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         o->photons = o->mode == MODE_JENSEN1996   ? J96_DEFAULT_PHOTONS
                      : o->mode == MODE_JENSEN1994 ? J94_DEFAULT_PHOTONS
                                                   : PHOTONS_DEFAULT_N;
+    if (o->mode == MODE_PPM2008 && o->adaptive > 0)
+        return error_set(err, "", 0, "--adaptive: not available with --mode 2008, whose "
+                                     "pixels are not means of independent samples");
     if (o->mode == MODE_JENSEN1994 && o->cache_accuracy == 0)
         return error_set(err, "", 0, "--cache-accuracy: mode 1994 needs its irradiance "
                                      "cache, a > 0");

@@ -46,6 +46,8 @@ struct options {
     double accurate_weight;       /* 1996: throughput below which rays go rough    */
     int shadow_photons;           /* 1996: decide visibility from shadow photons   */
     int one_map;                  /* 1996: one map for global and caustic photons  */
+    double adaptive;              /* camera modes: adaptive sampling's relative error;
+                                     0 = off                                       */
     int differential_run;         /* 1994: differential checking's run; 0 = off    */
     int light_samples;            /* 1994: stratified samples of each light        */
     int passes;                   /* 2008: photon passes                           */

@@ -47,6 +47,8 @@
  * the floor, nearly black pixels would spend samples on it. The floor is absolute, so it
  * assumes scenes whose radiance is meant to be seen at an exposure near 1, as ours are. */
 #define ADAPTIVE_FLOOR 1e-3
+#define ADAPTIVE_MIN_SPP 4 /* the command line's min_spp: the paper's "average of 4 samples
+                              pr. pixel" is where its adaptive sampling settled            */
 
 struct render_settings {
     uint64_t seed;
