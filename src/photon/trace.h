@@ -43,6 +43,8 @@
 #define PHOTON_MAP_GLOBAL (PHOTON_DIRECT | PHOTON_CAUSTIC | PHOTON_INDIRECT)
 #define PHOTON_MAP_CAUSTIC PHOTON_CAUSTIC
 
+struct projection_maps;
+
 struct trace_settings {
     uint64_t seed;                          /* the run's seed                             */
     uint64_t pass;                          /* photon i uses rng_stream(seed,
@@ -60,6 +62,10 @@ struct trace_settings {
     const struct emission_targets *targets; /* borrowed; NULL: emit into all directions
                                                (light_emit); else directed emission
                                                towards these spheres (light_emit_towards)  */
+    const struct projection_maps *projection; /* borrowed; NULL: as targets says; else
+                                               emission through these maps, built for this
+                                               scene (projection_emit, Jensen and
+                                               Christensen 1994), and targets is unused    */
 };
 
 /* The traced photons and what it took to make them. */
