@@ -20,6 +20,7 @@ int main(void)
     test_import(&t);
     test_photon(&t);
     test_trace(&t);
+    test_projection(&t);
     test_ppm(&t);
     test_cache(&t);
     test_render(&t);
