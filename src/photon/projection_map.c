@@ -30,9 +30,11 @@
  *       F_c hold exactly at every y) and moves w by at most angle(n, n_y) <= beta. So the
  *       cone is widened to alpha + beta.
  *   (3) a cell is marked when the angle from the cone's axis to the cell's centre
- *       direction is below alpha + beta + h, h a bound on the angle from the centre
+ *       direction is below alpha + beta + h, h the largest angle from the centre
  *       direction to any direction of the cell (cell_half_diagonal()): if the cone meets
  *       the cell at w, the triangle inequality puts the centre within alpha + beta + h.
+ *       The test is Sec. 3.1's "maximum radius of the circle" made exact for cells that
+ *       are not circles; it marks more than the cells the cone meets, never fewer.
  * rho also holds the ray offset (ray.h) that moves the traced ray off the light, so the
  * marks hold for the rays actually traced. Objects are primitives (a procedural shape is
  * one: its whole box), each bounded by the sphere around its box, widened by the offset
@@ -127,10 +129,28 @@ struct object {
     double specularity; /* 0 for a diffuse object */
 };
 
-static struct grid grid_of(const struct projection_settings *ps, const struct patch *p)
+/* A cone of directions from a patch towards an object, in its map's coordinates. */
+struct cone {
+    struct vec3 axis;   /* unit                                        */
+    double alpha;       /* half-angle in radians; >= pi: every direction */
+    double specularity; /* the object's                                */
+};
+
+/* The cells' centre directions and angular radii, the same in every map (a hemisphere's
+ * rows are the first n_theta of a sphere's 2 n_theta), worked out once per build so that
+ * marking costs a few products per cell. One block, from sin_theta on; freed by whoever
+ * made it with make_cell_table(). */
+struct cell_table {
+    double *sin_theta, *cos_theta; /* per row (2 n_theta): of its middle theta        */
+    double *half_diagonal;         /* per row: h, cell_half_diagonal()                */
+    double *cos_phi, *sin_phi;     /* per column (n_phi): of its middle phi            */
+};
+
+/* The cells of a patch of this shape's map. */
+static struct grid grid_of(const struct projection_settings *ps, enum patch_shape shape)
 {
     struct grid g;
-    g.cosine = p->shape != PATCH_POINT;
+    g.cosine = shape != PATCH_POINT;
     g.n_rows = g.cosine ? ps->n_theta : 2 * ps->n_theta;
     g.n_phi = ps->n_phi;
     g.d_theta = (g.cosine ? 0.5 * PI : PI) / g.n_rows;
@@ -378,6 +398,30 @@ static double cell_half_diagonal(const struct grid *g, int row)
     return cell_radius(theta0, theta0 + g->d_theta, g->d_phi);
 }
 
+/* The table of a point light's sphere of cells, whose first n_theta rows are an area
+ * light's hemisphere. */
+static struct cell_table make_cell_table(const struct projection_settings *ps)
+{
+    struct grid g = grid_of(ps, PATCH_POINT);
+    size_t rows = (size_t)g.n_rows, columns = (size_t)g.n_phi;
+    struct cell_table t;
+    t.sin_theta = xmalloc(3 * rows + 2 * columns, sizeof *t.sin_theta, "projection map");
+    t.cos_theta = t.sin_theta + rows;
+    t.half_diagonal = t.cos_theta + rows;
+    t.cos_phi = t.half_diagonal + rows;
+    t.sin_phi = t.cos_phi + columns;
+    for (int row = 0; row < g.n_rows; row++) {
+        t.sin_theta[row] = sin((row + 0.5) * g.d_theta);
+        t.cos_theta[row] = cos((row + 0.5) * g.d_theta);
+        t.half_diagonal[row] = cell_half_diagonal(&g, row);
+    }
+    for (int column = 0; column < g.n_phi; column++) {
+        t.cos_phi[column] = cos((column + 0.5) * g.d_phi);
+        t.sin_phi[column] = sin((column + 0.5) * g.d_phi);
+    }
+    return t;
+}
+
 /* The columns a cone of half-angle alpha about (theta_a, phi_a) may reach: count of them
  * from first (wrapping around). A cone holding neither pole spans phi_a +- asin(sin alpha /
  * sin theta_a); one holding a pole spans every column. */
@@ -396,47 +440,55 @@ static void cone_columns(const struct grid *g, double theta_a, double phi_a, dou
     }
 }
 
-/* Marks in specularity[] (-1: unmarked) every cell of g that the cone of half-angle alpha
- * about unit axis a (map coordinates) may reach, by (3) at the top of the file, keeping
- * the largest specularity s. Only the rows and columns the cone can reach are tested. */
-static void mark_cone(const struct grid *g, struct vec3 a, double alpha, double s,
+/* Marks in specularity[] (-1: unmarked) every cell of g that cone c may reach, by (3) at
+ * the top of the file, keeping the largest specularity. Only the rows and columns the
+ * cone itself can reach are tested (its directions lie within alpha of its axis in theta,
+ * and within cone_columns() in phi), which keeps the marks conservative. */
+static void mark_cone(const struct grid *g, const struct cell_table *cells, const struct cone *c,
                       double *specularity)
 {
+    struct vec3 a = c->axis;
     double theta_a = atan2(sqrt(a.x * a.x + a.y * a.y), a.z), phi_a = atan2(a.y, a.x);
-    double lowest = floor((theta_a - alpha) / g->d_theta);
+    double lowest = floor((theta_a - c->alpha) / g->d_theta);
     if (lowest >= g->n_rows)
         return; /* the cone lies beyond the map (below an area light's horizon) */
     int row0 = lowest > 0 ? (int)lowest : 0;
-    double highest = floor((theta_a + alpha) / g->d_theta);
+    double highest = floor((theta_a + c->alpha) / g->d_theta);
     int row1 = highest < g->n_rows - 1 ? (int)highest : g->n_rows - 1;
     int first, count;
-    cone_columns(g, theta_a, phi_a, alpha, &first, &count);
+    cone_columns(g, theta_a, phi_a, c->alpha, &first, &count);
     for (int row = row0; row <= row1; row++) {
-        double limit = alpha + cell_half_diagonal(g, row);
-        double cos_limit = cos(limit), theta = (row + 0.5) * g->d_theta;
+        double limit = c->alpha + cells->half_diagonal[row], cos_limit = cos(limit);
+        double across = a.x * cells->sin_theta[row], along = a.y * cells->sin_theta[row];
+        double up = a.z * cells->cos_theta[row];
         for (int k = 0; k < count; k++) {
             int column = ((first + k) % g->n_phi + g->n_phi) % g->n_phi;
-            struct vec3 centre = polar(theta, (column + 0.5) * g->d_phi);
+            /* a . the cell's centre direction */
+            double dot = across * cells->cos_phi[column] + along * cells->sin_phi[column] + up;
             double *cell = &specularity[(size_t)row * g->n_phi + column];
-            if (limit >= PI || vec3_dot(a, centre) > cos_limit)
-                *cell = fmax(*cell, s);
+            if (limit >= PI || dot > cos_limit)
+                *cell = fmax(*cell, c->specularity);
         }
     }
 }
 
 /* Marks object o in the map of patch p: the cone of (1) and (2) at the top of the file. */
-static void mark_object(const struct grid *g, const struct patch *p, const struct object *o,
-                        double *specularity)
+static void mark_object(const struct grid *g, const struct cell_table *cells,
+                        const struct patch *p, const struct object *o, double *specularity)
 {
+    struct cone c;
+    c.specularity = o->specularity;
     struct vec3 to = vec3_sub(o->bound.centre, p->centre);
     double r = o->bound.radius + p->rho, d = vec3_length(to);
     if (!(d > r)) { /* o inside the widened sphere: every direction may meet it */
-        mark_cone(g, vec3(0, 0, 1), PI, o->specularity, specularity);
-        return;
+        c.axis = vec3(0, 0, 1);
+        c.alpha = PI;
+    } else {
+        struct vec3 axis = vec3_scale(to, 1.0 / d); /* d > r > 0 */
+        c.axis = vec3(vec3_dot(axis, p->t), vec3_dot(axis, p->bt), vec3_dot(axis, p->n));
+        c.alpha = asin(r / d) + p->beta;
     }
-    struct vec3 axis = vec3_scale(to, 1.0 / d); /* d > r > 0 */
-    struct vec3 a = vec3(vec3_dot(axis, p->t), vec3_dot(axis, p->bt), vec3_dot(axis, p->n));
-    mark_cone(g, a, asin(r / d) + p->beta, o->specularity, specularity);
+    mark_cone(g, cells, &c, specularity);
 }
 
 /* F_c, the share of a patch's power leaving through a cell of `row` (top of the file):
@@ -456,7 +508,7 @@ static void collect_marked(struct projection_maps *pm, size_t k, double luminanc
                            const double *specularity)
 {
     struct patch *p = &pm->patches[k];
-    struct grid g = grid_of(&pm->settings, p);
+    struct grid g = grid_of(&pm->settings, p->shape);
     size_t n_cells = (size_t)g.n_rows * g.n_phi;
     p->first = pm->n_marked;
     for (size_t c = 0; c < n_cells; c++) {
@@ -491,20 +543,22 @@ struct projection_maps *projection_maps_build(const struct scene *scene,
     make_patches(pm, scene);
     size_t n_objects = geometry_primitive_count(scene->geometry);
     struct object *objects = scene_objects(scene, n_objects);
+    struct cell_table cells = make_cell_table(ps);
     double *specularity = xmalloc(2 * (size_t)ps->n_theta * ps->n_phi, sizeof *specularity,
                                   "projection map");
     for (size_t k = 0; k < pm->n_patches; k++) {
         const struct patch *p = &pm->patches[k];
         const struct light *l = &scene->lights[p->light];
-        struct grid g = grid_of(ps, p);
+        struct grid g = grid_of(ps, p->shape);
         for (size_t c = 0; c < (size_t)g.n_rows * g.n_phi; c++)
             specularity[c] = -1.0;
         for (size_t i = 0; i < n_objects; i++)
             if ((int)i != l->prim) /* the light's own surface: flat or convex */
-                mark_object(&g, p, &objects[i], specularity);
+                mark_object(&g, &cells, p, &objects[i], specularity);
         collect_marked(pm, k, vec3_luminance(light_power(l)), specularity);
     }
     free(specularity);
+    free(cells.sin_theta);
     free(objects);
     return pm;
 }
@@ -620,7 +674,7 @@ int projection_emit(const struct projection_maps *pm, const struct scene *scene,
     const struct patch *p = &pm->patches[c->map];
     const struct light *l = &scene->lights[p->light];
     projection_origin(pm, scene, c->map, u + 1, e);
-    struct grid g = grid_of(&pm->settings, p);
+    struct grid g = grid_of(&pm->settings, p->shape);
     struct vec3 w = cell_direction(&g, c->cell, u[3], u[4]);
     e->dir = vec3_add(vec3_add(vec3_scale(p->t, w.x), vec3_scale(p->bt, w.y)),
                       vec3_scale(p->n, w.z));
@@ -637,13 +691,14 @@ double projection_specularity(const struct projection_maps *pm, size_t map,
                               const struct emission *e)
 {
     const struct patch *p = &pm->patches[map];
-    struct grid g = grid_of(&pm->settings, p);
+    struct grid g = grid_of(&pm->settings, p->shape);
     struct vec3 w = p->shape == PATCH_SPHERE_ZONE ? turn_between(e->dir, e->normal, p->n) : e->dir;
     struct vec3 a = vec3(vec3_dot(w, p->t), vec3_dot(w, p->bt), vec3_dot(w, p->n));
     double theta = atan2(sqrt(a.x * a.x + a.y * a.y), a.z), phi = atan2(a.y, a.x);
     int row = (int)(theta / g.d_theta), column = (int)floor(phi / g.d_phi);
-    if (row >= g.n_rows)
+    if (row >= g.n_rows && g.cosine)
         return -1.0; /* behind an area light's front */
+    row = row < g.n_rows ? row : g.n_rows - 1; /* theta = pi exactly, on a point light's */
     column = (column % g.n_phi + g.n_phi) % g.n_phi;
     uint32_t cell = (uint32_t)row * (uint32_t)g.n_phi + (uint32_t)column;
     size_t lo = p->first, hi = p->first + p->n_marked; /* binary search of invariant (a) */
