@@ -2,8 +2,9 @@
  * photon/trace.h -- photon tracing: shooting photons from the lights, following them
  * through the scene and storing them where they hit (Jensen 1996, Sec. 3).
  *
- * trace_photons() emits N photons, light by light in proportion to power, and follows
- * each one as the paper says: "every time a photon hits a surface it is stored ... and
+ * trace_photons() emits N photons, light by light in proportion to power (or through
+ * projection maps, Jensen and Christensen 1994: projection_map.h), and follows each one
+ * as the paper says: "every time a photon hits a surface it is stored ... and
  * Russian roulette is used to determine whether the photon is absorbed or reflected".
  * The result is an array of 20-byte photons (photon.h) in the order they were stored,
  * ready for balance_kdtree(). Photon i of a trace draws every random number from
