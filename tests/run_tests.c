@@ -16,13 +16,13 @@ struct room {
 };
 
 static const struct room rooms[] = {
-    {"base", test_base},       {"image", test_image},   {"compare", test_compare},
-    {"plot", test_plot},       {"geom", test_geom},     {"scene", test_scene},
-    {"brdf", test_brdf},       {"shapes", test_shapes}, {"import", test_import},
-    {"photon", test_photon},   {"trace", test_trace},   {"ppm", test_ppm},
-    {"cache", test_cache},     {"render", test_render}, {"pt", test_pt},
-    {"jensen1994", test_jensen1994},
-    {"jensen1996", test_jensen1996}, {"report", test_report}, {"cli", test_cli},
+    {"base", test_base},         {"image", test_image},         {"compare", test_compare},
+    {"plot", test_plot},         {"geom", test_geom},           {"scene", test_scene},
+    {"brdf", test_brdf},         {"shapes", test_shapes},       {"import", test_import},
+    {"photon", test_photon},     {"projection", test_projection}, {"trace", test_trace},
+    {"ppm", test_ppm},           {"cache", test_cache},         {"render", test_render},
+    {"pt", test_pt},             {"jensen1994", test_jensen1994}, {"jensen1996", test_jensen1996},
+    {"report", test_report},     {"cli", test_cli},
 };
 
 /* Whether the command line asks for room (no names: every room). */

@@ -11,6 +11,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "../src/base/alloc.h"
 #include "../src/base/rng.h"
@@ -358,6 +359,51 @@ static void test_bvh_matches_brute_force(struct check *t)
         brute_free(&b);
         CHECK(t, b.n_freed == b.n_balls);   /* geometry_free released every shape once */
     }
+}
+
+/* Whether geometry reports every primitive's box and material as the plain list has them
+ * (a ball's box is its sphere's; its material the one it was added with). */
+static int brute_records_agree(const struct brute *b)
+{
+    int agree = 1;
+    for (size_t i = 0; i < b->n; i++) {
+        const struct brute_prim *p = &b->prims[i];
+        struct aabb box = p->kind == BRUTE_TRIANGLE ? triangle_bounds(&p->triangle)
+                          : p->kind == BRUTE_QUAD   ? quad_bounds(&p->quad)
+                                                    : sphere_bounds(&p->sphere);
+        int material = p->kind == BRUTE_TRIANGLE ? p->triangle.material
+                       : p->kind == BRUTE_QUAD   ? p->quad.material
+                                                 : p->sphere.material;
+        struct aabb got = geometry_primitive_bounds(b->g, (int)i);
+        agree &= memcmp(&got, &box, sizeof box) == 0;
+        agree &= geometry_primitive_material(b->g, (int)i) == material;
+    }
+    return agree;
+}
+
+/* truth: brute force, the plain list's own records.
+ * tolerance: none (the same functions on the same numbers).
+ * catches: an id naming another primitive's record after geometry_build() permutes the
+ *   arrays into leaf order (or after more adds and a rebuild), degenerate primitives
+ *   (left out of the BVH) losing their place, a shape's box or material not its own. */
+static void test_primitive_bounds_and_material(struct check *t)
+{
+    struct rng r = rng_stream(TEST_SEED, STREAM_TEST, 5, 0);
+    struct brute b;
+    brute_init(&b);
+    struct vec3 flat[3] = {{1, 1, 1}, {2, 2, 2}, {3, 3, 3}}; /* degenerate: no area */
+    CHECK(t, brute_triangle(&b, flat, NULL, 3));
+    for (int i = 0; i < 300; i++)
+        CHECK(t, add_random_primitive(&b, &r));
+    CHECK(t, brute_records_agree(&b)); /* before any build */
+    geometry_build(b.g);
+    CHECK(t, brute_records_agree(&b));
+    for (int i = 0; i < 100; i++)
+        CHECK(t, add_random_primitive(&b, &r));
+    CHECK(t, brute_records_agree(&b)); /* adds after a build */
+    geometry_build(b.g);
+    CHECK(t, brute_records_agree(&b));
+    brute_free(&b);
 }
 
 /* truth: brute force again, on scenes built to corner the builder and the slab test: every
@@ -1020,6 +1066,7 @@ void test_geom(struct check *t)
     RUN_TEST(t, test_empty_and_single_primitives);
     RUN_TEST(t, test_rebuild_after_more_adds);
     RUN_TEST(t, test_bvh_matches_brute_force);
+    RUN_TEST(t, test_primitive_bounds_and_material);
     RUN_TEST(t, test_bvh_hard_cases);
     RUN_TEST(t, test_bvh_check_detects_damage);
     RUN_TEST(t, test_degenerate_primitives);

@@ -99,6 +99,7 @@ static struct photon_trace trace(const struct scene *scene, size_t n, unsigned s
     ts.store = store;
     ts.max_depth = TEST_MAX_DEPTH;
     ts.targets = targets;
+    ts.projection = NULL;
     struct photon_trace out;
     struct error err;
     if (trace_photons(scene, &ts, &out, &err) < 0)
@@ -599,7 +600,7 @@ static void test_trace_refuses_overflow(struct check *t)
     if (scene == NULL)
         return;
     struct photon_trace full = trace(scene, 100, PHOTON_MAP_GLOBAL, 0, NULL);
-    struct trace_settings ts = {SEED, 0, 100, 0, PHOTON_MAP_GLOBAL, TEST_MAX_DEPTH, NULL};
+    struct trace_settings ts = {SEED, 0, 100, 0, PHOTON_MAP_GLOBAL, TEST_MAX_DEPTH, NULL, NULL};
     struct photon_trace out;
     struct error err;
     ts.max_stored = full.n_photons;

@@ -96,6 +96,8 @@ static const struct option_spec specs[] = {
      "(differential checking); 0 = off (default 10)"},
     {"--light-samples", OPT_INT, FIELD(light_samples), 1, J94_MAX_LIGHT_SAMPLES, "N",
      "1994: stratified samples of each light, rounded down to a square (default 4)"},
+    {"--no-projection-maps", OPT_FLAG, FIELD(projection_maps), 0, 0, "",
+     "1994: emit photons into all directions instead of through projection maps"},
     {"--passes", OPT_INT, FIELD(passes), 1, MAX_PASSES, "N",
      "2008: photon passes (default 64; --time-limit may stop sooner)"},
     {"--photons-per-pass", OPT_INT, FIELD(photons_per_pass), 1, MAX_PHOTONS, "N",
@@ -175,6 +177,7 @@ static void set_defaults(struct options *o)
     struct jensen1994_settings j94 = jensen1994_settings_default();
     o->differential_run = j94.differential_run;
     o->light_samples = j94.light_samples;
+    o->projection_maps = j94.projection_maps;
 }
 
 int read_number(const char *name, const char *text, double min, double max,

@@ -7,7 +7,10 @@
  * area, are left out) and then
  *   (1) refs[k] names the BVH's k-th item in leaf order as (kind << REF_KIND_SHIFT) | index;
  *   (2) each kind's array is permuted into that leaf order, so a leaf reads consecutive
- *       records, and the records the BVH left out follow at the end of their array.
+ *       records, and the records the BVH left out follow at the end of their array;
+ *   (3) id_refs[id] names primitive id's record the same way, whether or not the BVH holds
+ *       it, at every moment: each add appends its entry, and geometry_build() rewrites them
+ *       all once (2) has moved the records (geometry_primitive_bounds() reads it).
  * A leaf test dispatches on the kind with a switch: spheres, triangles and quads by direct
  * calls, shapes through their struct shape_ops. During traversal a primitive reports only
  * t and its surface parameters; the shading record of the closest one is completed once,
@@ -19,6 +22,7 @@
  */
 #include "geometry.h"
 
+#include <assert.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -53,6 +57,8 @@ struct geometry {
     struct vec3 *normals;         /* owned: vertex normals, three per triangle given them */
     size_t n_normals, cap_normals;
     size_t n_prims;               /* ids handed out: 0 .. n_prims - 1                */
+    uint32_t *id_refs;            /* owned: invariant (3); n_prims used of cap_id_refs */
+    size_t cap_id_refs;
     uint32_t *refs;               /* owned: invariant (1); NULL before geometry_build() */
     struct bvh *bvh;              /* owned; NULL before geometry_build()             */
 };
@@ -74,6 +80,7 @@ struct geometry *geometry_create(void)
     g->quads = NULL;
     g->shapes = NULL;
     g->normals = NULL;
+    g->id_refs = NULL;
     g->refs = NULL;
     g->bvh = NULL;
     return g;
@@ -90,6 +97,7 @@ void geometry_free(struct geometry *g)
     free(g->quads);
     free(g->shapes);
     free(g->normals);
+    free(g->id_refs);
     free(g->refs);
     bvh_free(g->bvh);
     free(g);
@@ -105,6 +113,20 @@ static void *reserve(void *p, size_t *cap, size_t need, size_t size, const char 
     return xrealloc(p, *cap, size, what);
 }
 
+static uint32_t make_ref(enum kind kind, size_t index)
+{
+    return ((uint32_t)kind << REF_KIND_SHIFT) | (uint32_t)index;
+}
+
+/* Hands out the next id to the record of `kind` just appended at `index` (invariant (3)). */
+static int next_id(struct geometry *g, enum kind kind, size_t index)
+{
+    g->id_refs = reserve(g->id_refs, &g->cap_id_refs, g->n_prims + 1, sizeof *g->id_refs,
+                         "primitive ids");
+    g->id_refs[g->n_prims] = make_ref(kind, index);
+    return (int)g->n_prims++;
+}
+
 int geometry_add_sphere(struct geometry *g, struct vec3 centre, double radius, int material)
 {
     if (g->n_prims >= MAX_PRIMITIVES)
@@ -112,7 +134,7 @@ int geometry_add_sphere(struct geometry *g, struct vec3 centre, double radius, i
     g->spheres = reserve(g->spheres, &g->cap_spheres, g->n_spheres + 1, sizeof *g->spheres,
                          "spheres");
     g->spheres[g->n_spheres++] = sphere_make(centre, radius, material, (int)g->n_prims);
-    return (int)g->n_prims++;
+    return next_id(g, KIND_SPHERE, g->n_spheres - 1);
 }
 
 int geometry_add_triangle(struct geometry *g, const struct vec3 v[3], const struct vec3 *normals,
@@ -132,7 +154,7 @@ int geometry_add_triangle(struct geometry *g, const struct vec3 v[3], const stru
     g->triangles = reserve(g->triangles, &g->cap_triangles, g->n_triangles + 1,
                            sizeof *g->triangles, "triangles");
     g->triangles[g->n_triangles++] = triangle_make(v, first_normal, material, (int)g->n_prims);
-    return (int)g->n_prims++;
+    return next_id(g, KIND_TRIANGLE, g->n_triangles - 1);
 }
 
 int geometry_add_quad(struct geometry *g, struct vec3 p0, struct vec3 e1, struct vec3 e2,
@@ -142,7 +164,7 @@ int geometry_add_quad(struct geometry *g, struct vec3 p0, struct vec3 e1, struct
         return -1;
     g->quads = reserve(g->quads, &g->cap_quads, g->n_quads + 1, sizeof *g->quads, "quads");
     g->quads[g->n_quads++] = quad_make(p0, e1, e2, material, (int)g->n_prims);
-    return (int)g->n_prims++;
+    return next_id(g, KIND_QUAD, g->n_quads - 1);
 }
 
 int geometry_add_shape(struct geometry *g, const struct shape_ops *ops, void *shape, int material)
@@ -155,15 +177,10 @@ int geometry_add_shape(struct geometry *g, const struct shape_ops *ops, void *sh
     s->material = material; /* hits report the shape's own materials (shape_ops) */
     s->data = shape;
     s->id = (int)g->n_prims;
-    return (int)g->n_prims++;
+    return next_id(g, KIND_SHAPE, g->n_shapes - 1);
 }
 
 /* ---- building ---- */
-
-static uint32_t make_ref(enum kind kind, size_t index)
-{
-    return ((uint32_t)kind << REF_KIND_SHIFT) | (uint32_t)index;
-}
 
 /* Appends the box and ref of every primitive of one kind that can be hit. */
 static size_t collect_kind(const struct geometry *g, enum kind kind, struct aabb *bounds,
@@ -257,6 +274,19 @@ static void *permute_kind(struct geometry *g, enum kind kind, uint32_t *leaf_ref
     return sorted;
 }
 
+/* Invariant (3) again after permute_kind() has moved the records. */
+static void index_ids(struct geometry *g)
+{
+    for (size_t i = 0; i < g->n_spheres; i++)
+        g->id_refs[g->spheres[i].id] = make_ref(KIND_SPHERE, i);
+    for (size_t i = 0; i < g->n_triangles; i++)
+        g->id_refs[g->triangles[i].id] = make_ref(KIND_TRIANGLE, i);
+    for (size_t i = 0; i < g->n_quads; i++)
+        g->id_refs[g->quads[i].id] = make_ref(KIND_QUAD, i);
+    for (size_t i = 0; i < g->n_shapes; i++)
+        g->id_refs[g->shapes[i].id] = make_ref(KIND_SHAPE, i);
+}
+
 void geometry_build(struct geometry *g)
 {
     bvh_free(g->bvh);
@@ -282,6 +312,7 @@ void geometry_build(struct geometry *g)
     g->cap_quads = g->n_quads;
     g->shapes = permute_kind(g, KIND_SHAPE, g->refs, n);
     g->cap_shapes = g->n_shapes;
+    index_ids(g);
 }
 
 /* ---- queries ---- */
@@ -408,7 +439,8 @@ size_t geometry_bytes(const struct geometry *g)
 {
     size_t bytes = sizeof *g + g->cap_spheres * sizeof *g->spheres
                    + g->cap_triangles * sizeof *g->triangles + g->cap_quads * sizeof *g->quads
-                   + g->cap_shapes * sizeof *g->shapes + g->cap_normals * sizeof *g->normals;
+                   + g->cap_shapes * sizeof *g->shapes + g->cap_normals * sizeof *g->normals
+                   + g->cap_id_refs * sizeof *g->id_refs;
     if (g->bvh != NULL)
         bytes += bvh_bytes(g->bvh) + g->bvh->n_items * sizeof *g->refs;
     for (size_t i = 0; i < g->n_shapes; i++)
@@ -442,4 +474,38 @@ struct aabb geometry_material_bounds(const struct geometry *g, int material)
 struct aabb geometry_bounds(const struct geometry *g)
 {
     return geometry_material_bounds(g, -1);
+}
+
+struct aabb geometry_primitive_bounds(const struct geometry *g, int prim)
+{
+    assert(prim >= 0 && (size_t)prim < g->n_prims);
+    uint32_t ref = g->id_refs[prim];
+    size_t index = ref & REF_INDEX_MASK;
+    switch ((enum kind)(ref >> REF_KIND_SHIFT)) {
+    case KIND_SPHERE:
+        return sphere_bounds(&g->spheres[index]);
+    case KIND_TRIANGLE:
+        return triangle_bounds(&g->triangles[index]);
+    case KIND_QUAD:
+        return quad_bounds(&g->quads[index]);
+    default:
+        return g->shapes[index].ops->bounds(g->shapes[index].data);
+    }
+}
+
+int geometry_primitive_material(const struct geometry *g, int prim)
+{
+    assert(prim >= 0 && (size_t)prim < g->n_prims);
+    uint32_t ref = g->id_refs[prim];
+    size_t index = ref & REF_INDEX_MASK;
+    switch ((enum kind)(ref >> REF_KIND_SHIFT)) {
+    case KIND_SPHERE:
+        return g->spheres[index].material;
+    case KIND_TRIANGLE:
+        return g->triangles[index].material;
+    case KIND_QUAD:
+        return g->quads[index].material;
+    default:
+        return g->shapes[index].material;
+    }
 }

@@ -71,4 +71,13 @@ struct aabb geometry_bounds(const struct geometry *g); /* every primitive's box 
  * it was added with); lo = +inf, hi = -inf when there is none. */
 struct aabb geometry_material_bounds(const struct geometry *g, int material);
 
+/* The box of primitive prim (an id from geometry_add_*(), 0 <= prim < the count), valid
+ * before and after geometry_build(). A procedural shape is one primitive: its whole box.
+ * A degenerate primitive (never hit) still has the box of its points. */
+struct aabb geometry_primitive_bounds(const struct geometry *g, int prim);
+
+/* The material primitive prim was added with. A shape's hits may report others (a sphere
+ * flake has one per depth, shape_ops): this is the one it was added with. */
+int geometry_primitive_material(const struct geometry *g, int prim);
+
 #endif

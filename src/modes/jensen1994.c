@@ -3,9 +3,12 @@
  * bidirectional Monte Carlo ray tracing of complex objects", Sec. 2-4, in the paper's
  * order.
  *
- * Pass 1 (Sec. 3), light path tracing: light rays leave the lights, and "every time the
- * ray hits an object the energy carried by the ray is deposited"; Russian roulette
- * decides whether it is absorbed or reflected (photon/trace.h). Every deposit is a
+ * Pass 1 (Sec. 3), light path tracing: light rays leave the lights through projection
+ * maps (Sec. 3.1, photon/projection_map.h: stratified over the directions in which some
+ * object lies, more towards specular ones, powers weighted so the expected flux is
+ * exact), and "every time the ray hits an object the energy carried by the ray is
+ * deposited"; Russian roulette decides whether it is absorbed or reflected
+ * (photon/trace.h). Every deposit is a
  * photon (Sec. 3.3) holding position, normal, energy and a bit saying whether it is part
  * of a caustic (CP: only specular reflections since the light) or not (DP).
  *
@@ -43,6 +46,7 @@
 
 #include "../base/alloc.h"
 #include "../photon/estimate.h"
+#include "../photon/projection_map.h"
 #include "../photon/trace.h"
 #include "cache_pass.h"
 #include "photons.h"
@@ -62,6 +66,7 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.gather_rays = J94_DEFAULT_GATHER_RAYS;
     js.cache_accuracy = J94_DEFAULT_CACHE_ACCURACY;
     js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;
+    js.projection_maps = 1;
     return js;
 }
 
@@ -94,10 +99,22 @@ struct kdtree *jensen1994_photon_map(const struct scene *scene, uint64_t seed, i
     ts.store = PHOTON_MAP_GLOBAL; /* every deposit: direct, caustic and indirect */
     ts.max_depth = max_depth;
     ts.targets = NULL;
+    struct projection_settings ps = {PROJECTION_N_THETA_DEFAULT, PROJECTION_N_PHI_DEFAULT,
+                                     PROJECTION_BOOST_DEFAULT};
+    struct projection_maps *maps = js->projection_maps ? projection_maps_build(scene, &ps) : NULL;
+    ts.projection = maps;
     struct photon_trace traced;
     memset(&traced, 0, sizeof traced);
     struct photon_sink sink = {store_with_normal, &traced};
-    if (trace_photons_into(scene, &ts, &sink, &stats->photon_rays) < 0) {
+    int failed = trace_photons_into(scene, &ts, &sink, &stats->photon_rays) < 0;
+    if (maps != NULL) {
+        struct projection_stats pst = projection_maps_stats(maps);
+        stats->projection_maps = pst.n_maps;
+        stats->projection_marked = pst.marked_fraction;
+        stats->bytes_projection_maps = pst.bytes;
+    }
+    projection_maps_free(maps);
+    if (failed) {
         photon_trace_free(&traced);
         error_set(err, "", 0,
                   "photon map: more than %d photons would be stored; emit fewer photons or "

@@ -31,6 +31,8 @@ struct jensen1994_settings {
     int gather_rays;       /* rays of one irradiance record, 2..J96_MAX_GATHER_RAYS         */
     double cache_accuracy; /* Ward's a, > 0                                                 */
     int light_samples;     /* stratified samples of each light, 1..J94_MAX_LIGHT_SAMPLES    */
+    int projection_maps;   /* 1: emit through projection maps (Sec. 3.1, photon/
+                              projection_map.h, default cells and boost); 0: light_emit() */
 };
 
 /* What the render did, for --stats (the paper's Fig. 9 and more). */
@@ -40,6 +42,9 @@ struct jensen1994_stats {
     size_t photons_stored;           /* in the photon map: CP + DP                       */
     size_t photons_caustic;          /* CP                                               */
     size_t bytes_photon_map;
+    size_t projection_maps;          /* emission positions over all lights (0: maps off)  */
+    double projection_marked;        /* share of the lights' power the maps emit          */
+    size_t bytes_projection_maps;
     double seconds_photons;          /* pass 1, tracing and balancing                     */
     double seconds_cache;            /* the irradiance cache's pre-pass                   */
     double seconds_render;           /* the final pass                                    */

@@ -140,6 +140,7 @@ static struct trace_settings photon_pass(const struct render_settings *rs, uint6
     ts.store = store;
     ts.max_depth = rs->max_depth;
     ts.targets = NULL;
+    ts.projection = NULL;
     return ts;
 }
 

@@ -102,6 +102,7 @@ static struct kdtree *build_global_map(const struct scene *scene,
     ts.store = PHOTON_MAP_GLOBAL;
     ts.max_depth = rs->max_depth;
     ts.targets = NULL;
+    ts.projection = NULL;
     clock_t start = clock();
     struct photon_trace traced;
     if (trace_photons(scene, &ts, &traced, err) < 0)

@@ -192,6 +192,7 @@ static void photon_tracing_pass(struct ppm *ppm, long pass, struct ppm_stats *st
     ts.store = PHOTON_MAP_GLOBAL;
     ts.max_depth = ppm->rs->max_depth;
     ts.targets = NULL;
+    ts.projection = NULL;
     struct photon_sink sink = {add_photon, ppm};
     trace_photons_into(ppm->scene, &ts, &sink, &stats->photon_rays); /* the sink never stops it */
     ppm->photons_emitted += ts.n_emit;

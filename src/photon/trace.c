@@ -23,6 +23,12 @@
  * channel c the N photons carry sum_l n_l Phi_l,c / (p_l N) with (n_l) multinomial,
  * which is Phi_total,c in expectation, not in every trace.
  *
+ * With projection maps (trace_settings.projection; Jensen and Christensen 1994, Sec. 3)
+ * the maps pick the light, its patch and a cell of directions together, from photon i's
+ * stratified number (i + xi) / N, and the photon leaves with Phi_l weight / N, the
+ * choice of light folded into the weight (projection_map.h). Photons go only where they
+ * can hit something, so N photons carry the marked share of the lights' power.
+ *
  * Departs from Sec. 3: a surface whose albedo is zero in every channel (the black
  * emitter the `light` keyword makes) holds no photons: they could add nothing to its own
  * estimates and would only join a neighbour's (the Cornell light hangs 0.1 mm below the
@@ -37,6 +43,7 @@
 #include "../base/alloc.h"
 #include "../base/rng.h"
 #include "../scene/brdf.h"
+#include "projection_map.h"
 
 #define INITIAL_CAPACITY 4096 /* records; the array doubles from here up to max_stored */
 
@@ -122,27 +129,32 @@ static int pack_photon(void *context, const struct photon_event *e)
     return photon_trace_store(ps->out, ps->max_stored, e);
 }
 
-/* Picks a light and emits photon i's ray and power from it. 0 when it carries nothing
- * (no lights, a black light, a degenerate emission). */
+/* Emits a photon's ray and power with its first six uniform numbers: u[0] picks the light
+ * (with projection maps: the cell, stratified by the caller), u[1..5] the emission. 0 when
+ * it carries nothing (no lights, a black light, a degenerate emission, nothing marked). */
 static int emit_photon(const struct scene *scene, const struct trace_settings *ts,
-                       struct rng *rng, struct ray *ray, struct photon_path *path)
+                       const double u[6], struct ray *ray, struct photon_path *path)
 {
-    double pick;
-    int index = scene_pick_light(scene, rng_uniform(rng), &pick);
-    double u[5];
-    for (int k = 0; k < 5; k++)
-        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
-    if (index < 0)
-        return 0;
-    path->light = index;
-    const struct light *l = &scene->lights[index];
     struct emission e;
-    int emitted = ts->targets == NULL ? light_emit(l, u, &e)
-                                      : light_emit_towards(l, ts->targets, u, &e);
-    if (!emitted)
-        return 0;
+    double pick = 1.0; /* projection maps fold the choice of light into e.weight */
+    int index;
+    if (ts->projection != NULL) {
+        index = projection_emit(ts->projection, scene, u, &e);
+        if (index < 0)
+            return 0;
+    } else {
+        index = scene_pick_light(scene, u[0], &pick);
+        if (index < 0)
+            return 0;
+        const struct light *l = &scene->lights[index];
+        if (!(ts->targets == NULL ? light_emit(l, u + 1, &e)
+                                  : light_emit_towards(l, ts->targets, u + 1, &e)))
+            return 0;
+    }
+    path->light = index;
     /* Phi_l weight / (p_pick N): pick > 0 (scene_pick_light), N >= 1 (a photon exists) */
-    path->power = vec3_scale(light_power(l), e.weight / (pick * (double)ts->n_emit));
+    path->power = vec3_scale(light_power(&scene->lights[index]),
+                             e.weight / (pick * (double)ts->n_emit));
     struct vec3 origin = vec3_length2(e.normal) > 0 ? offset_origin(e.origin, e.normal)
                                                     : e.origin;
     *ray = make_ray(origin, e.dir);
@@ -210,7 +222,12 @@ static int trace_photon(const struct scene *scene, const struct trace_settings *
     struct rng rng = rng_stream(ts->seed, STREAM_PHOTON, ts->pass, i);
     struct photon_path path = {-1, {0, 0, 0}, 1};
     struct ray ray;
-    if (!emit_photon(scene, ts, &rng, &ray, &path))
+    double u[6];
+    for (int k = 0; k < 6; k++)
+        u[k] = rng_uniform(&rng); /* one by one: an initializer list's order is unspecified */
+    if (ts->projection != NULL) /* Sec. 3 (Jensen and Christensen 1994): stratified */
+        u[0] = ((double)i + u[0]) / (double)ts->n_emit; /* i < N */
+    if (!emit_photon(scene, ts, u, &ray, &path))
         return 0;
     for (int depth = 0;; depth++) {
         struct hit hit;

@@ -2,8 +2,9 @@
  * photon/trace.h -- photon tracing: shooting photons from the lights, following them
  * through the scene and storing them where they hit (Jensen 1996, Sec. 3).
  *
- * trace_photons() emits N photons, light by light in proportion to power, and follows
- * each one as the paper says: "every time a photon hits a surface it is stored ... and
+ * trace_photons() emits N photons, light by light in proportion to power (or through
+ * projection maps, Jensen and Christensen 1994: projection_map.h), and follows each one
+ * as the paper says: "every time a photon hits a surface it is stored ... and
  * Russian roulette is used to determine whether the photon is absorbed or reflected".
  * The result is an array of 20-byte photons (photon.h) in the order they were stored,
  * ready for balance_kdtree(). Photon i of a trace draws every random number from
@@ -43,6 +44,8 @@
 #define PHOTON_MAP_GLOBAL (PHOTON_DIRECT | PHOTON_CAUSTIC | PHOTON_INDIRECT)
 #define PHOTON_MAP_CAUSTIC PHOTON_CAUSTIC
 
+struct projection_maps;
+
 struct trace_settings {
     uint64_t seed;                          /* the run's seed                             */
     uint64_t pass;                          /* photon i uses rng_stream(seed,
@@ -60,6 +63,10 @@ struct trace_settings {
     const struct emission_targets *targets; /* borrowed; NULL: emit into all directions
                                                (light_emit); else directed emission
                                                towards these spheres (light_emit_towards)  */
+    const struct projection_maps *projection; /* borrowed; NULL: as targets says; else
+                                               emission through these maps, built for this
+                                               scene (projection_emit, Jensen and
+                                               Christensen 1994), and targets is unused    */
 };
 
 /* The traced photons and what it took to make them. */
