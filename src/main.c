@@ -10,6 +10,7 @@
 #include <time.h>
 
 #include "app/options.h"
+#include "app/probe.h"
 #include "app/report.h"
 #include "image/compare.h"
 #include "image/plot.h"
@@ -323,6 +324,8 @@ int main(int argc, char **argv)
         return compare_command(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "plot") == 0)
         return plot_command(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "probe") == 0)
+        return probe_command(argc - 1, argv + 1);
     struct run run;
     struct error err;
     memset(&run, 0, sizeof run);

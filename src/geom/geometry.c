@@ -509,3 +509,34 @@ int geometry_primitive_material(const struct geometry *g, int prim)
         return g->shapes[index].material;
     }
 }
+
+int geometry_primitive_plane(const struct geometry *g, int prim, struct vec3 *point,
+                             struct vec3 *normal)
+{
+    assert(prim >= 0 && (size_t)prim < g->n_prims);
+    uint32_t ref = g->id_refs[prim];
+    size_t index = ref & REF_INDEX_MASK;
+    struct vec3 n = vec3_zero();
+    switch ((enum kind)(ref >> REF_KIND_SHIFT)) {
+    case KIND_TRIANGLE: {
+        const struct triangle *t = &g->triangles[index];
+        struct vec3 v0 = vec3(t->v[0][0], t->v[0][1], t->v[0][2]);
+        struct vec3 v1 = vec3(t->v[1][0], t->v[1][1], t->v[1][2]);
+        struct vec3 v2 = vec3(t->v[2][0], t->v[2][1], t->v[2][2]);
+        *point = v0;
+        n = vec3_cross(vec3_sub(v1, v0), vec3_sub(v2, v0));
+        break;
+    }
+    case KIND_QUAD:
+        *point = g->quads[index].p0;
+        n = g->quads[index].ng;
+        break;
+    default:
+        return 0; /* spheres and procedural shapes are not flat */
+    }
+    double length = vec3_length(n);
+    if (!(length > 0))
+        return 0; /* degenerate: no plane */
+    *normal = vec3_scale(n, 1.0 / length);
+    return 1;
+}

@@ -80,4 +80,11 @@ struct aabb geometry_primitive_bounds(const struct geometry *g, int prim);
  * flake has one per depth, shape_ops): this is the one it was added with. */
 int geometry_primitive_material(const struct geometry *g, int prim);
 
+/* Whether primitive prim is flat (a quad or triangle that is not degenerate); then
+ * *point is one of its corners and *normal the unit normal of its front side (struct
+ * hit's ng). Spheres and procedural shapes return 0. For exact solutions that reflect a
+ * light in a flat mirror (`photon probe`'s image sources). */
+int geometry_primitive_plane(const struct geometry *g, int prim, struct vec3 *point,
+                             struct vec3 *normal);
+
 #endif
