@@ -66,7 +66,7 @@ check:
 	$(MAKE) --no-print-directory BUILD=build/tcc BIN=build/tcc/photon CC=tcc test
 	$(MAKE) --no-print-directory BUILD=build/asan BIN=build/asan/photon CC=gcc OPT="-O1 -g" \
 	    EXTRA="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" test
-	@for m in direct pt photons 1996 2008; do for b in gcc clang tcc asan; do \
+	@for m in direct pt photons 1994 1996 2008; do for b in gcc clang tcc asan; do \
 	    build/$$b/photon --no-progress --mode $$m --width 48 --height 32 --spp 2 \
 	        --photons 20000 --passes 2 --photons-per-pass 20000 \
 	        --caustic-photons 20000 --gather-rays 32 \
