@@ -26,51 +26,6 @@
 
 /* ---- helpers ---- */
 
-/* Sums of independent contributions, for the standard error of their total. */
-struct tally {
-    double sum, sum2; /* of the contributions (zeros add nothing) */
-    double n;         /* how many contributions, zeros included   */
-};
-
-static void tally_add(struct tally *t, double x)
-{
-    t->sum += x;
-    t->sum2 += x * x;
-}
-
-/* The standard error of the total of t->n iid contributions: sqrt(n s^2). */
-static double tally_se(const struct tally *t)
-{
-    if (t->n < 2)
-        return 0;
-    double var = (t->sum2 - t->sum * t->sum / t->n) / (t->n - 1);
-    return sqrt(fmax(0.0, t->n * var));
-}
-
-static int add_material(struct scene *scene, enum material_kind kind, struct vec3 rho,
-                        struct vec3 emission)
-{
-    struct material m;
-    memset(&m, 0, sizeof m);
-    sprintf(m.name, "m%zu", scene->n_materials);
-    m.kind = kind;
-    m.rho = rho;
-    m.ior = 1.5;
-    m.emission = emission;
-    return scene_add_material(scene, &m);
-}
-
-/* A camera (any valid one: these scenes are only traced), then scene_finish(). */
-static void finish_scene(struct scene *scene)
-{
-    scene->camera.from = vec3(0, 5, -5);
-    scene->camera.at = vec3(0, 0, 0);
-    scene->camera.up = vec3(0, 1, 0);
-    scene->camera.fov = 60;
-    scene->has_camera = 1;
-    scene_finish(scene, 8, 8);
-}
-
 static struct projection_settings settings(double boost)
 {
     struct projection_settings ps;
@@ -140,21 +95,21 @@ static struct wall_flux wall_flux(const struct scene *scene, const struct projec
 static struct scene *wall_scene(int area_lights)
 {
     struct scene *scene = scene_create();
-    int wall = add_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
-    int chrome = add_material(scene, MATERIAL_MIRROR, vec3(0.8, 0.8, 0.8), vec3_zero());
+    int wall = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
+    int chrome = add_test_material(scene, MATERIAL_MIRROR, vec3(0.8, 0.8, 0.8), vec3_zero());
     scene_add_point_light(scene, vec3_zero(), vec3(1, 2, 3));
     scene_add_quad(scene, vec3(-1, -1, WALL_Z), vec3(0, 2, 0), vec3(2, 0, 0), wall);
     scene_add_quad(scene, vec3(-0.5, -0.5, -1), vec3(1, 0, 0), vec3(0, 1, 0), chrome);
     if (area_lights) {
-        int quad = add_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(3, 2, 1));
-        int ball = add_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(1, 2, 3));
-        int tri = add_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(8, 8, 4));
+        int quad = add_test_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(3, 2, 1));
+        int ball = add_test_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(1, 2, 3));
+        int tri = add_test_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(8, 8, 4));
         scene_add_quad(scene, vec3(-0.3, -1.8, 0), vec3(0.6, 0, 0), vec3(0, 0.6, 0), quad);
         scene_add_sphere(scene, vec3(0, 1.5, 0.5), 0.2, ball);
         struct vec3 v[3] = {{-1.5, 0, 0.5}, {-1.0, 0, 0.5}, {-1.5, 0.5, 0.5}};
         scene_add_triangle(scene, v, NULL, tri);
     }
-    finish_scene(scene);
+    finish_test_scene(scene);
     return scene;
 }
 
@@ -258,10 +213,10 @@ static const double map_scene_specularity[] = {0.0, 0.7, 1.0, 0.0};
 static struct scene *map_scene(struct aim aims[7])
 {
     struct scene *scene = scene_create();
-    int diffuse = add_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
-    int mirror = add_material(scene, MATERIAL_MIRROR, vec3(0.7, 0.6, 0.5), vec3_zero());
-    int glass = add_material(scene, MATERIAL_GLASS, vec3_zero(), vec3_zero());
-    int glow = add_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(5, 5, 5));
+    int diffuse = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
+    int mirror = add_test_material(scene, MATERIAL_MIRROR, vec3(0.7, 0.6, 0.5), vec3_zero());
+    int glass = add_test_material(scene, MATERIAL_GLASS, vec3_zero(), vec3_zero());
+    int glow = add_test_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(5, 5, 5));
     for (int tile = 0; tile < 16; tile++)
         scene_add_quad(scene, vec3(-5 + 2.5 * (tile % 4), 0, -5 + 2.5 * (tile / 4)),
                        vec3(0, 0, 2.5), vec3(2.5, 0, 0), diffuse);
@@ -282,7 +237,7 @@ static struct scene *map_scene(struct aim aims[7])
     struct vec3 shard[3] = {{1.3, 0.3, 1}, {1.7, 0.5, 1.1}, {1.4, 0.7, 0.9}};
     scene_add_triangle(scene, shard, NULL, mirror);
     memcpy(aims, balls, sizeof balls);
-    finish_scene(scene);
+    finish_test_scene(scene);
     return scene;
 }
 
@@ -397,8 +352,8 @@ static void test_maps_miss_nothing(struct check *t)
 static struct scene *lone_light_scene(int kind)
 {
     struct scene *scene = scene_create();
-    int diffuse = add_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
-    int glow = add_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(1, 1, 1));
+    int diffuse = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
+    int glow = add_test_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(1, 1, 1));
     struct vec3 tri[3] = {{0, 0, 0}, {4, 0, 0}, {1, 3, 0}};
     if (kind == 0)
         scene_add_quad(scene, vec3_zero(), vec3(4, 0, 0), vec3(0, 2, 0), glow);
@@ -407,7 +362,7 @@ static struct scene *lone_light_scene(int kind)
     else
         scene_add_sphere(scene, vec3(1, 1, 0), 1, glow);
     scene_add_sphere(scene, vec3(1, 1, 3), 0.1, diffuse);
-    finish_scene(scene);
+    finish_test_scene(scene);
     return scene;
 }
 
@@ -496,10 +451,10 @@ static int sum_direct(void *context, const struct photon_event *e)
 static struct scene *lone_sphere_scene(void)
 {
     struct scene *scene = scene_create();
-    int diffuse = add_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
+    int diffuse = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
     scene_add_point_light(scene, vec3_zero(), vec3(1, 1, 1));
     scene_add_sphere(scene, vec3(2.4, 0, 1.8), 0.5, diffuse);
-    finish_scene(scene);
+    finish_test_scene(scene);
     return scene;
 }
 
@@ -617,14 +572,14 @@ static double uniform_cell_flux(int row)
 static struct scene *three_spheres_scene(void)
 {
     struct scene *scene = scene_create();
-    int diffuse = add_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
-    int mirror = add_material(scene, MATERIAL_MIRROR, vec3(0.8, 0.5, 0.2), vec3_zero());
-    int glass = add_material(scene, MATERIAL_GLASS, vec3_zero(), vec3_zero());
+    int diffuse = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
+    int mirror = add_test_material(scene, MATERIAL_MIRROR, vec3(0.8, 0.5, 0.2), vec3_zero());
+    int glass = add_test_material(scene, MATERIAL_GLASS, vec3_zero(), vec3_zero());
     scene_add_point_light(scene, vec3_zero(), vec3(1, 1, 1));
     scene_add_sphere(scene, vec3(2, 1, 1.2), 0.3, mirror);
     scene_add_sphere(scene, vec3(-2, 1, -0.5), 0.3, glass);
     scene_add_sphere(scene, vec3(0.5, -2, 0.3), 0.3, diffuse);
-    finish_scene(scene);
+    finish_test_scene(scene);
     return scene;
 }
 
@@ -755,11 +710,11 @@ static void test_projection_boundaries(struct check *t)
 {
     struct projection_settings ps = settings(PROJECTION_BOOST_DEFAULT);
     struct scene *scene = scene_create();
-    int black = add_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3_zero());
+    int black = add_test_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3_zero());
     scene_add_point_light(scene, vec3_zero(), vec3(1, 1, 1));
     scene_add_point_light(scene, vec3(1, 0, 0), vec3_zero());
     scene_add_sphere(scene, vec3(0, 0, -5), 1, black); /* behind nothing: it is marked */
-    finish_scene(scene);
+    finish_test_scene(scene);
     struct projection_maps *pm = projection_maps_build(scene, &ps);
     struct projection_stats s = projection_maps_stats(pm);
     CHECK(t, s.n_maps == 1 && s.n_cells == (size_t)ROWS * COLUMNS && s.n_marked > 0);
@@ -769,7 +724,7 @@ static void test_projection_boundaries(struct check *t)
 
     scene = scene_create();
     scene_add_point_light(scene, vec3_zero(), vec3(1, 1, 1));
-    finish_scene(scene);
+    finish_test_scene(scene);
     pm = projection_maps_build(scene, &ps);
     s = projection_maps_stats(pm);
     double u[5] = {0.5, 0.5, 0.5, 0.5, 0.5};

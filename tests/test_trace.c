@@ -31,52 +31,6 @@
 
 /* ---- helpers ---- */
 
-/* Sums of independent contributions, for the standard error of their total. */
-struct tally {
-    double sum, sum2; /* of the contributions (zeros add nothing) */
-    double n;         /* how many contributions, zeros included   */
-};
-
-static void tally_add(struct tally *t, double x)
-{
-    t->sum += x;
-    t->sum2 += x * x;
-}
-
-/* The standard error of the total of t->n iid contributions: sqrt(n s^2). */
-static double tally_se(const struct tally *t)
-{
-    if (t->n < 2)
-        return 0;
-    double var = (t->sum2 - t->sum * t->sum / t->n) / (t->n - 1);
-    return sqrt(fmax(0.0, t->n * var));
-}
-
-/* Gives a scene built in code a camera (any valid one: these scenes are only traced)
- * and finishes it. */
-static void finish_scene(struct scene *scene)
-{
-    scene->camera.from = vec3(0, 5, -5);
-    scene->camera.at = vec3(0, 0, 0);
-    scene->camera.up = vec3(0, 1, 0);
-    scene->camera.fov = 60;
-    scene->has_camera = 1;
-    scene_finish(scene, 8, 8);
-}
-
-static int add_material(struct scene *scene, enum material_kind kind, struct vec3 rho,
-                        struct vec3 emission)
-{
-    struct material m;
-    memset(&m, 0, sizeof m);
-    sprintf(m.name, "m%zu", scene->n_materials);
-    m.kind = kind;
-    m.rho = rho;
-    m.ior = 1.5;
-    m.emission = emission;
-    return scene_add_material(scene, &m);
-}
-
 /* The square |x - cx|, |z - cz| <= half in the plane y, its front facing +y (up) or -y. */
 static void add_square(struct scene *scene, struct vec3 centre, double half, int up, int m)
 {
@@ -213,15 +167,15 @@ static void add_closed_box(struct scene *scene, int floor, int wall)
 static void test_emission_flux_per_channel(struct check *t)
 {
     struct scene *scene = scene_create();
-    int floor = add_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0.3, 0.1, 0.05));
-    int wall = add_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0));
-    int glow = add_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0.1, 2, 0.4));
+    int floor = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0.3, 0.1, 0.05));
+    int wall = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0));
+    int glow = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0.1, 2, 0.4));
     add_closed_box(scene, floor, wall);
     scene_add_sphere(scene, vec3(0.5, 0.6, 0.5), 0.1, glow);
     struct vec3 tri[3] = {vec3(0.2, 0.2, 0.2), vec3(0.4, 0.2, 0.2), vec3(0.2, 0.4, 0.3)};
     scene_add_triangle(scene, tri, NULL, glow);
     scene_add_point_light(scene, vec3(0.7, 0.3, 0.6), vec3(1, 0.5, 3));
-    finish_scene(scene);
+    finish_test_scene(scene);
     struct vec3 phi = vec3_zero();
     for (size_t l = 0; l < scene->n_lights; l++)
         phi = vec3_add(phi, light_power(&scene->lights[l]));
@@ -325,16 +279,16 @@ static void test_directed_emission_flux(struct check *t)
 static struct scene *glass_ball_scene(int area)
 {
     struct scene *scene = scene_create();
-    int floor = add_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
-    int glass = add_material(scene, MATERIAL_GLASS, vec3_zero(), vec3_zero());
-    int light = add_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(50, 50, 50));
+    int floor = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
+    int glass = add_test_material(scene, MATERIAL_GLASS, vec3_zero(), vec3_zero());
+    int light = add_test_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(50, 50, 50));
     add_square(scene, vec3(0, 0, 0), 50, 1, floor);
     scene_add_sphere(scene, vec3(0, 1, 0), 0.5, glass);
     if (area)
         add_square(scene, vec3(0.3, 3, 0.1), 0.2, 0, light);
     else
         scene_add_point_light(scene, vec3(0.3, 3, 0.1), vec3(100, 100, 100));
-    finish_scene(scene);
+    finish_test_scene(scene);
     return scene;
 }
 
@@ -463,13 +417,13 @@ static void test_closed_box_flux(struct check *t)
 static struct scene *mirror_scene(int mirror)
 {
     struct scene *scene = scene_create();
-    int floor = add_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
-    int chrome = add_material(scene, MATERIAL_MIRROR, vec3(0.8, 0.8, 0.8), vec3_zero());
+    int floor = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
+    int chrome = add_test_material(scene, MATERIAL_MIRROR, vec3(0.8, 0.8, 0.8), vec3_zero());
     add_square(scene, vec3(0, 0, 0), 100, 1, floor);
     if (mirror)
         add_square(scene, vec3(0, 2, 0), 0.5, 0, chrome);
     scene_add_point_light(scene, vec3(0, 1, 0), vec3(1000, 1000, 1000));
-    finish_scene(scene);
+    finish_test_scene(scene);
     return scene;
 }
 
@@ -525,12 +479,12 @@ static void test_mirror_caustic_classes(struct check *t)
 static void test_shadow_photons(struct check *t)
 {
     struct scene *scene = scene_create();
-    int grey = add_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
+    int grey = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
     add_square(scene, vec3(0, 0, 0), 100, 1, grey);
     add_square(scene, vec3(0, 1, 0), 0.25, 1, grey);
     struct vec3 light = vec3(0, 2, 0);
     scene_add_point_light(scene, light, vec3(10, 10, 10));
-    finish_scene(scene);
+    finish_test_scene(scene);
     struct photon_trace tr = trace(scene, 50000, PHOTON_MAP_GLOBAL | PHOTON_SHADOW, 0, NULL);
     size_t on_occluder = 0;
     CHECK(t, tr.n_shadow > 100);
@@ -696,7 +650,7 @@ static void test_cone_filter_uniform(struct check *t)
     struct kdtree *map = uniform_square_map(n, power);
     struct nearest *nn = nearest_create(k);
     struct scene *scene = scene_create();
-    add_material(scene, MATERIAL_LAMBERT, vec3(rho, rho, rho), vec3_zero());
+    add_test_material(scene, MATERIAL_LAMBERT, vec3(rho, rho, rho), vec3_zero());
     struct vec3 up = vec3(0, 0, 1);
     struct shading_frame frame = shading_frame_from_normal(up, 1, TRANSPORT_RADIANCE);
     double truth = rho * (n * power) / PI;
@@ -727,7 +681,7 @@ static void test_cone_filter_uniform(struct check *t)
 static void test_estimate_boundaries(struct check *t)
 {
     struct scene *scene = scene_create();
-    add_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
+    add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
     struct vec3 up = vec3(0, 0, 1);
     struct shading_frame frame = shading_frame_from_normal(up, 1, TRANSPORT_RADIANCE);
     struct estimate_point at = {vec3(0, 0, 0), up, up, &scene->materials[0], &frame};
@@ -976,8 +930,8 @@ static void test_photons_mode_cornell(struct check *t)
 static struct scene *mirror_view_scene(void)
 {
     struct scene *scene = scene_create();
-    int plane = add_material(scene, MATERIAL_LAMBERT, vec3(MV_RHO, MV_RHO, MV_RHO), vec3_zero());
-    int chrome = add_material(scene, MATERIAL_MIRROR, vec3(MV_MIRROR, MV_MIRROR, MV_MIRROR),
+    int plane = add_test_material(scene, MATERIAL_LAMBERT, vec3(MV_RHO, MV_RHO, MV_RHO), vec3_zero());
+    int chrome = add_test_material(scene, MATERIAL_MIRROR, vec3(MV_MIRROR, MV_MIRROR, MV_MIRROR),
                               vec3_zero());
     add_square(scene, vec3(0, 0, 0), 100, 1, plane);
     scene_add_quad(scene, vec3(3, 0, -2), vec3(0, 0, 4), vec3(0, 2, 0), chrome); /* -x */

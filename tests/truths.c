@@ -3,7 +3,11 @@
  */
 #include "truths.h"
 
+#include "files.h"
+
 #include <math.h>
+#include <stdio.h>
+#include <string.h>
 
 double polygon_irradiance(const struct vec3 *v, int count, struct vec3 p, struct vec3 n,
                           double le)
@@ -112,4 +116,80 @@ int finite_and_positive(const struct image *img)
             return 0;
     }
     return 1;
+}
+
+void tally_add(struct tally *t, double x)
+{
+    t->sum += x;
+    t->sum2 += x * x;
+}
+
+double tally_se(const struct tally *t)
+{
+    if (t->n < 2)
+        return 0;
+    double var = (t->sum2 - t->sum * t->sum / t->n) / (t->n - 1);
+    return sqrt(fmax(0.0, t->n * var));
+}
+
+int add_test_material(struct scene *scene, enum material_kind kind, struct vec3 rho,
+                      struct vec3 emission)
+{
+    struct material m;
+    memset(&m, 0, sizeof m);
+    sprintf(m.name, "m%zu", scene->n_materials);
+    m.kind = kind;
+    m.rho = rho;
+    m.ior = 1.5;
+    m.emission = emission;
+    return scene_add_material(scene, &m);
+}
+
+void finish_test_scene(struct scene *scene)
+{
+    scene->camera.from = vec3(0, 5, -5);
+    scene->camera.at = vec3(0, 0, 0);
+    scene->camera.up = vec3(0, 1, 0);
+    scene->camera.fov = 60;
+    scene->has_camera = 1;
+    scene_finish(scene, 8, 8);
+}
+
+int same_pixels(const struct image *a, const struct image *b)
+{
+    return a->width == b->width && a->height == b->height &&
+           memcmp(a->pixels, b->pixels,
+                  (size_t)a->width * (size_t)a->height * sizeof *a->pixels) == 0;
+}
+
+int crop_is_window(const struct image *whole, const struct image *crop, const int *window)
+{
+    struct image *same_window = crop_image(whole, window);
+    int same = same_pixels(same_window, crop);
+    image_free(same_window);
+    return same;
+}
+
+int refuses_options(const char *mode, const char *const (*bad)[2], size_t n_bad,
+                    const char *out)
+{
+    char args[1024], image[512], ppm[512], tmp[512], log[512];
+    snprintf(image, sizeof image, "%s.pfm", out);
+    snprintf(ppm, sizeof ppm, "%s.ppm", out);
+    snprintf(tmp, sizeof tmp, "%s.pfm.tmp", out);
+    snprintf(log, sizeof log, "%s.log", out);
+    int failed = 0;
+    for (size_t i = 0; i < n_bad; i++) {
+        remove(image);
+        remove(ppm);
+        snprintf(args, sizeof args, "--mode %s %s --width 8 --height 8 -o %s "
+                 "scenes/cornell.scene", mode, bad[i][0], image);
+        if (photon_logged("", args, log) != 2 || !file_contains(log, bad[i][1]) ||
+            file_exists(image) || file_exists(tmp) || file_exists(ppm)) {
+            fprintf(stderr, "refuses_options: '%s' was not refused as documented\n", bad[i][0]);
+            failed++;
+        }
+    }
+    remove(log);
+    return failed;
 }

@@ -43,4 +43,37 @@ double mean_luminance(const struct image *img);
 /* Whether every channel of every pixel is finite and not negative. */
 int finite_and_positive(const struct image *img);
 
+/* Whether a and b have the same size and the same pixels, bit for bit. */
+int same_pixels(const struct image *a, const struct image *b);
+
+/* Whether crop holds exactly the pixels of whole's window (x0 y0 x1 y1), bit for bit. */
+int crop_is_window(const struct image *whole, const struct image *crop, const int *window);
+
+/* Runs `photon --mode MODE OPTION --width 8 --height 8 -o OUT.pfm scenes/cornell.scene`
+ * for each bad[i] = {OPTION, TEXT}: each must exit 2 with TEXT in its message and leave
+ * no OUT.pfm, OUT.pfm.tmp or OUT.ppm. Returns how many did not (each named on stderr). */
+int refuses_options(const char *mode, const char *const (*bad)[2], size_t n_bad,
+                    const char *out);
+
+/* Sums of independent contributions, for the standard error of their total
+ * (test_trace.c, test_projection.c). */
+struct tally {
+    double sum, sum2; /* of the contributions (zeros add nothing) */
+    double n;         /* how many contributions, zeros included   */
+};
+
+void tally_add(struct tally *t, double x);
+
+/* The standard error of the total of t->n iid contributions: sqrt(n s^2). */
+double tally_se(const struct tally *t);
+
+/* Adds a material of kind with albedo (or reflectance) rho and emission, index of
+ * refraction 1.5, named m0, m1, ...; returns its index. */
+int add_test_material(struct scene *scene, enum material_kind kind, struct vec3 rho,
+                      struct vec3 emission);
+
+/* Gives a scene built in code a camera (any valid one: such scenes are only traced) and
+ * finishes it at 8 x 8. */
+void finish_test_scene(struct scene *scene);
+
 #endif

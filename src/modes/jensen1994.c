@@ -252,16 +252,15 @@ static struct irradiance_record gather_record(const struct j94 *m, const struct 
             sample->distance = INFINITY;
             if (!(vec3_dot(wi, s->ng) > 0))
                 continue; /* below the geometric surface: no light arrives */
-            struct hit hit;
+            struct surface at;
+            double t;
             m->stats->gradient_rays++;
-            counters->rays++;
-            if (!scene_intersect(m->scene, surface_ray(s, wi, 0), INFINITY, &hit)) {
+            if (!ray_surface(m->scene, surface_ray(s, wi, 0), counters, &at, &t)) {
                 sample->radiance = m->scene->background;
                 continue;
             }
-            struct surface at = surface_at(m->scene, &hit, vec3_neg(wi));
             sample->radiance = trace_from(m, &at, gather, rng, counters);
-            sample->distance = hit.t;
+            sample->distance = t;
         }
     }
     double r_min, r_max;
@@ -338,12 +337,11 @@ static struct vec3 trace_from(const struct j94 *m, const struct surface *s, stru
 static struct vec3 trace(const struct j94 *m, struct ray ray, struct path path, struct rng *rng,
                          struct render_counters *counters)
 {
-    struct hit hit;
-    counters->rays++;
-    if (!scene_intersect(m->scene, ray, INFINITY, &hit))
+    struct surface s;
+    double t;
+    if (!ray_surface(m->scene, ray, counters, &s, &t))
         return m->scene->background;
-    struct surface s = surface_at(m->scene, &hit, vec3_neg(ray.dir));
-    path.distance += hit.t;
+    path.distance += t;
     return trace_from(m, &s, path, rng, counters);
 }
 

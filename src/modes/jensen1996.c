@@ -691,12 +691,11 @@ static struct vec3 gathered_radiance(const struct j96 *m, const struct surface *
 static struct vec3 trace(const struct j96 *m, struct ray ray, struct path path, struct rng *rng,
                          struct render_counters *counters)
 {
-    struct hit hit;
-    counters->rays++;
-    if (!scene_intersect(m->scene, ray, INFINITY, &hit))
+    struct surface s;
+    double t;
+    if (!ray_surface(m->scene, ray, counters, &s, &t))
         return m->scene->background;
-    struct surface s = surface_at(m->scene, &hit, vec3_neg(ray.dir));
-    path.distance += hit.t;
+    path.distance += t;
     return surface_radiance(m, &s, path, rng, counters);
 }
 

@@ -11,6 +11,7 @@
 #include "../base/rng.h"
 #include "../scene/brdf.h"
 #include "../scene/scene.h"
+#include "render.h"
 
 #define ROULETTE_DEPTH 3 /* bounces before roulette, as in pbrt: short paths are cheap */
 
@@ -37,6 +38,20 @@ static inline struct surface surface_at(const struct scene *scene, const struct 
     s.material = &scene->materials[hit->material];
     s.prim = hit->prim;
     return s;
+}
+
+/* Casts ray, counting it: 1 with *s the surface it reaches (seen back along the ray) and
+ * *t the distance to it, or 0 when it leaves the scene. */
+static inline int ray_surface(const struct scene *scene, struct ray ray,
+                              struct render_counters *counters, struct surface *s, double *t)
+{
+    struct hit hit;
+    counters->rays++;
+    if (!scene_intersect(scene, ray, INFINITY, &hit))
+        return 0;
+    *s = surface_at(scene, &hit, vec3_neg(ray.dir));
+    *t = hit.t;
+    return 1;
 }
 
 /* Radiance the surface emits towards wo: Le on an emitter's front side (and its back
