@@ -16,7 +16,8 @@
  *   L_p = L_e + L_r,   L_r = L_r,s + L_r,d,   L_r,d = L_r,d,l + L_r,d,s + L_r,d,d,
  * with the BRDF split into a specular-like part f_r,s (mirror, glass, glossy lobes:
  * highly directional) and a diffuse-like part f_r,d (brdf_split(), scene/brdf.h):
- *   L_r,s    recursive Monte Carlo ray tracing, one ray sampled from f_r,s;
+ *   L_r,s    recursive ray tracing of f_r,s: every lobe of a mirror or glass, one ray
+ *            sampled from a glossy lobe;
  *   L_r,d,l  direct light: stratified samples of each light through f_r,d (4.0.1);
  *   L_r,d,s  caustics: f_r,d times the irradiance of the CP photons alone (4.0.2);
  *   L_r,d,d  multiple diffuse reflections: f_r,d times the irradiance of Ward's cache
@@ -207,26 +208,47 @@ static struct vec3 caustic_light(const struct j94 *m, const struct surface *s,
 
 /* -- L_r,s: the specular-like part by recursive Monte Carlo ray tracing -- */
 
-/* One ray sampled from f_r,s, with Russian roulette after ROULETTE_DEPTH bounces. */
-static struct vec3 specular_light(const struct j94 *m, const struct surface *s,
-                                  const struct material *specular,
-                                  const struct shading_frame *frame, struct path path,
-                                  struct rng *rng, struct render_counters *counters)
+/* The radiance arriving along lobe bs of f_r,s times its weight, with Russian roulette
+ * after ROULETTE_DEPTH bounces. */
+static struct vec3 follow_lobe(const struct j94 *m, const struct surface *s,
+                               const struct brdf_sample *bs, struct path path, struct rng *rng,
+                               struct render_counters *counters)
 {
-    double u[3];
-    for (int k = 0; k < 3; k++)
-        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
-    struct brdf_sample bs;
-    if (path.depth >= m->max_depth || !brdf_sample(specular, frame, s->wo, u, &bs))
-        return vec3_zero();
-    path.beta = vec3_mul(path.beta, bs.weight);
+    path.beta = vec3_mul(path.beta, bs->weight);
     double q = roulette_odds(path.beta, path.depth);
     if (q < 1 && !(rng_uniform(rng) < q))
         return vec3_zero(); /* absorbed (always when q = 0) */
     path.beta = vec3_scale(path.beta, 1.0 / q);
     path.depth++;
-    struct vec3 li = trace(m, surface_ray(s, bs.wi, bs.transmitted), path, rng, counters);
-    return vec3_mul(vec3_scale(bs.weight, 1.0 / q), li);
+    struct vec3 li = trace(m, surface_ray(s, bs->wi, bs->transmitted), path, rng, counters);
+    return vec3_mul(vec3_scale(bs->weight, 1.0 / q), li);
+}
+
+/* Recursive ray tracing of f_r,s: an ideal mirror's or glass's every lobe (reflection and
+ * refraction both, as Whitted's ray tracer, so glass shows no noise from choosing
+ * between them), else one direction sampled from the glossy lobe. */
+static struct vec3 specular_light(const struct j94 *m, const struct surface *s,
+                                  const struct material *specular,
+                                  const struct shading_frame *frame, struct path path,
+                                  struct rng *rng, struct render_counters *counters)
+{
+    if (path.depth >= m->max_depth)
+        return vec3_zero();
+    struct vec3 sum = vec3_zero();
+    if (brdf_is_delta(specular)) {
+        struct brdf_sample lobes[2];
+        int n_lobes = brdf_delta_lobes(specular, frame, s->wo, lobes);
+        for (int k = 0; k < n_lobes; k++)
+            sum = vec3_add(sum, follow_lobe(m, s, &lobes[k], path, rng, counters));
+        return sum;
+    }
+    double u[3];
+    for (int k = 0; k < 3; k++)
+        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+    struct brdf_sample bs;
+    if (brdf_sample(specular, frame, s->wo, u, &bs))
+        sum = follow_lobe(m, s, &bs, path, rng, counters);
+    return sum;
 }
 
 /* -- 4.0.3 L_r,d,d: multiple diffuse reflections by irradiance gradients -- */
