@@ -62,20 +62,10 @@ static struct j94_run render_case(const struct j94_case *c)
     struct scene *scene = load_test_scene(c->path, c->size, c->size);
     if (scene == NULL)
         return run;
-    struct render_settings rs = render_settings_whole(scene, 1, c->spp, MAX_DEPTH_LIMIT);
-    if (c->window != NULL) {
-        rs.x0 = c->window[0];
-        rs.y0 = c->window[1];
-        rs.x1 = c->window[2];
-        rs.y1 = c->window[3];
-    }
+    struct render_settings rs = case_settings(scene, 1, c->spp, c->window);
     struct error err;
-    struct render_result r = render_jensen1994(scene, &rs, &c->js, 0, &run.counters,
-                                               &run.stats, &err);
-    if (r.image == NULL)
-        error_print(&err);
-    run.image = r.image;
-    image_free(r.variance);
+    run.image = rendered_image(render_jensen1994(scene, &rs, &c->js, 0, &run.counters, &run.stats, &err),
+                               &err);
     scene_free(scene);
     return run;
 }

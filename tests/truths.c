@@ -193,3 +193,24 @@ int refuses_options(const char *mode, const char *const (*bad)[2], size_t n_bad,
     remove(log);
     return failed;
 }
+
+struct render_settings case_settings(const struct scene *scene, uint64_t seed, int spp,
+                                     const int *window)
+{
+    struct render_settings rs = render_settings_whole(scene, seed, spp, MAX_DEPTH_LIMIT);
+    if (window != NULL) {
+        rs.x0 = window[0];
+        rs.y0 = window[1];
+        rs.x1 = window[2];
+        rs.y1 = window[3];
+    }
+    return rs;
+}
+
+struct image *rendered_image(struct render_result r, const struct error *err)
+{
+    if (r.image == NULL)
+        error_print(err);
+    image_free(r.variance);
+    return r.image;
+}

@@ -8,6 +8,7 @@
 #define PHOTON_TEST_TRUTHS_H
 
 #include "../src/image/image.h"
+#include "../src/modes/render.h"
 #include "../src/scene/scene.h"
 
 /* Lambert's formula for a polygon of constant radiance le seen from p with normal n
@@ -42,6 +43,15 @@ double mean_luminance(const struct image *img);
 
 /* Whether every channel of every pixel is finite and not negative. */
 int finite_and_positive(const struct image *img);
+
+/* Render settings for the whole image of scene (seed, spp, every bounce) cut to window
+ * (x0 y0 x1 y1), or the whole image when window is NULL: a test case of a mode. */
+struct render_settings case_settings(const struct scene *scene, uint64_t seed, int spp,
+                                     const int *window);
+
+/* A mode's result as a test keeps it: the image (NULL after a failure, whose error is
+ * printed), the variance freed. */
+struct image *rendered_image(struct render_result r, const struct error *err);
 
 /* Whether a and b have the same size and the same pixels, bit for bit. */
 int same_pixels(const struct image *a, const struct image *b);
