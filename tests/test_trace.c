@@ -19,6 +19,7 @@
 #include "../src/image/image.h"
 #include "../src/modes/photons.h"
 #include "../src/photon/estimate.h"
+#include "../src/photon/illumination_map.h"
 #include "../src/photon/trace.h"
 #include "../src/scene/emit.h"
 #include "check.h"
@@ -855,6 +856,88 @@ static void test_differential_checking_edge(struct check *t)
     kdtree_free(map);
 }
 
+/* ---- illumination maps (Jensen and Christensen 1994, Sec. 3.2) ---- */
+
+/* A scene of a 2 x 0.5 quad, a sphere of radius 0.7 and a triangle (no parameters). */
+static struct scene *illumination_scene(void)
+{
+    struct scene *scene = scene_create();
+    int m = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
+    scene_add_quad(scene, vec3(0, 0, 0), vec3(2, 0, 0), vec3(0, 0, 0.5), m);
+    scene_add_sphere(scene, vec3(0, 2, 0), 0.7, m);
+    struct vec3 v[3] = {vec3(0, 0, 2), vec3(1, 0, 2), vec3(0, 1, 2)};
+    scene_add_triangle(scene, v, NULL, m);
+    finish_test_scene(scene);
+    return scene;
+}
+
+/* truth: closed forms of the area of a (u, v) rectangle: a quad's |e1 x e2| du dv, a
+ *   sphere's r^2 2 pi du (cos pi v0 - cos pi v1); cells of a 7 x 5 grid sum to the whole
+ *   area (1 and 4 pi r^2); a triangle has no parameters (-1, no extent). Then a photon of
+ *   energy equal to its element's area, deposited at each element's centre (DI) and at
+ *   a CI element's centre, makes that element's irradiance exactly 1 after finishing,
+ *   whatever the element's size (the sphere's shrink towards its poles); a caustic
+ *   lookup is 0 where no caustic photon landed; the all-photon lookup is DI plus CI; a
+ *   CI sub-map exists only where a caustic photon landed.
+ * tolerance: 1e-12 relative (a few roundings).
+ * catches: an element's area from the wrong cell, the sphere's area uniform in v, CI
+ *   sub-maps made for every element, caustic photons added to DI, u and v swapped. */
+static void test_illumination_maps(struct check *t)
+{
+    struct scene *scene = illumination_scene();
+    const struct geometry *g = scene->geometry;
+    double lu, lv, sum[2] = {0, 0};
+    for (int k = 0; k < 35; k++)
+        for (int prim = 0; prim < 2; prim++)
+            sum[prim] += geometry_uv_area(g, prim, (k % 7) / 7.0, (k % 7 + 1) / 7.0,
+                                          (k / 7) / 5.0, (k / 7 + 1) / 5.0);
+    CHECK_CLOSE(t, sum[0], 1.0, 1e-12);
+    CHECK_CLOSE(t, sum[1], 4 * PI * 0.49, 1e-12);
+    CHECK_CLOSE(t, geometry_uv_area(g, 1, 0, 0.25, 0, 0.5), 0.49 * 2 * PI * 0.25, 1e-12);
+    CHECK(t, geometry_uv_area(g, 2, 0, 1, 0, 1) == -1 && !geometry_uv_extent(g, 2, &lu, &lv));
+    struct illumination_maps *maps = illumination_maps_create(g, 2.0);
+    CHECK(t, illumination_covers(maps, 0) && illumination_covers(maps, 1) &&
+             !illumination_covers(maps, 2));
+    int n_u[2], n_v[2]; /* elements: about 2 / 64 across */
+    for (int prim = 0; prim < 2; prim++) {
+        geometry_uv_extent(g, prim, &lu, &lv);
+        n_u[prim] = (int)ceil(lu * 32);
+        n_v[prim] = (int)ceil(lv * 32);
+        for (int j = 0; j < n_v[prim]; j++)
+            for (int i = 0; i < n_u[prim]; i++) {
+                double a = geometry_uv_area(g, prim, (double)i / n_u[prim],
+                                            (i + 1.0) / n_u[prim], (double)j / n_v[prim],
+                                            (j + 1.0) / n_v[prim]);
+                illumination_deposit(maps, prim, (i + 0.5) / n_u[prim], (j + 0.5) / n_v[prim],
+                                     vec3(a, 2 * a, 3 * a), 0);
+            }
+    }
+    /* one caustic photon in the CI element (3, 5) of the sphere's DI element (10, 4) */
+    double cu = (10 + 3.5 / 8) / n_u[1], cv = (4 + 5.5 / 8) / n_v[1];
+    double ca = geometry_uv_area(g, 1, (10 + 3.0 / 8) / n_u[1], (10 + 4.0 / 8) / n_u[1],
+                                 (4 + 5.0 / 8) / n_v[1], (4 + 6.0 / 8) / n_v[1]);
+    illumination_deposit(maps, 1, cu, cv, vec3(ca, ca, ca), 1);
+    illumination_maps_finish(maps, g);
+    int exact = 1;
+    for (int prim = 0; prim < 2; prim++)
+        for (int j = 0; j < n_v[prim]; j++)
+            for (int i = 0; i < n_u[prim]; i++) {
+                struct vec3 e = illumination_irradiance(maps, prim, (i + 0.2) / n_u[prim],
+                                                        (j + 0.9) / n_v[prim], 0);
+                exact = exact && fabs(e.x - 1) < 1e-12 && fabs(e.z - 3) < 3e-12;
+            }
+    CHECK(t, exact);
+    CHECK_CLOSE(t, illumination_irradiance(maps, 1, cu, cv, 1).y, 1.0, 1e-12);
+    CHECK_CLOSE(t, illumination_irradiance(maps, 1, cu, cv, 0).y, 3.0, 1e-12);
+    CHECK(t, illumination_irradiance(maps, 1, cu + 0.5 / 8 / n_u[1], cv, 1).y == 0);
+    CHECK(t, illumination_irradiance(maps, 0, 0.5, 0.5, 1).y == 0);
+    struct illumination_stats st = illumination_maps_stats(maps);
+    CHECK(t, st.n_maps == 2 && st.ci_maps == 1 &&
+             st.di_elements == (size_t)(n_u[0] * n_v[0] + n_u[1] * n_v[1]));
+    illumination_maps_free(maps);
+    scene_free(scene);
+}
+
 /* ---- --mode photons ---- */
 
 /* truth: reference/cornell-pt.pfm, the converged path-traced Cornell box. A 32 x 32
@@ -1055,6 +1138,7 @@ void test_trace(struct check *t)
     RUN_TEST(t, test_irradiance_uniform);
     RUN_TEST(t, test_irradiance_rules);
     RUN_TEST(t, test_differential_checking_edge);
+    RUN_TEST(t, test_illumination_maps);
     RUN_TEST(t, test_photons_mode_cornell);
     RUN_TEST(t, test_photons_mode_mirror);
 }

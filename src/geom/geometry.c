@@ -540,3 +540,41 @@ int geometry_primitive_plane(const struct geometry *g, int prim, struct vec3 *po
     *normal = vec3_scale(n, 1.0 / length);
     return 1;
 }
+
+double geometry_uv_area(const struct geometry *g, int prim, double u0, double u1, double v0,
+                        double v1)
+{
+    assert(prim >= 0 && (size_t)prim < g->n_prims);
+    uint32_t ref = g->id_refs[prim];
+    size_t index = ref & REF_INDEX_MASK;
+    switch ((enum kind)(ref >> REF_KIND_SHIFT)) {
+    case KIND_QUAD: /* p0 + u e1 + v e2: area |e1 x e2| du dv */
+        return vec3_length(vec3_cross(g->quads[index].e1, g->quads[index].e2)) * (u1 - u0) *
+               (v1 - v0);
+    case KIND_SPHERE: { /* u = phi / (2 pi), v = theta / pi: area r^2 dphi (cos theta0 - cos theta1) */
+        double r = g->spheres[index].radius;
+        return r * r * 2 * PI * (u1 - u0) * (cos(PI * v0) - cos(PI * v1));
+    }
+    default:
+        return -1; /* triangles and shapes: no map over their surface here */
+    }
+}
+
+int geometry_uv_extent(const struct geometry *g, int prim, double *length_u, double *length_v)
+{
+    assert(prim >= 0 && (size_t)prim < g->n_prims);
+    uint32_t ref = g->id_refs[prim];
+    size_t index = ref & REF_INDEX_MASK;
+    switch ((enum kind)(ref >> REF_KIND_SHIFT)) {
+    case KIND_QUAD:
+        *length_u = vec3_length(g->quads[index].e1);
+        *length_v = vec3_length(g->quads[index].e2);
+        return 1;
+    case KIND_SPHERE:
+        *length_u = 2 * PI * g->spheres[index].radius; /* the equator */
+        *length_v = PI * g->spheres[index].radius;     /* a meridian  */
+        return 1;
+    default:
+        return 0;
+    }
+}

@@ -87,4 +87,18 @@ int geometry_primitive_material(const struct geometry *g, int prim);
 int geometry_primitive_plane(const struct geometry *g, int prim, struct vec3 *point,
                              struct vec3 *normal);
 
+/* The area of the part [u0, u1] x [v0, v1] (0 <= u0 <= u1 <= 1, the same for v) of
+ * primitive prim's surface in the parameters struct hit reports, for illumination maps
+ * over it: a quad p0 + u e1 + v e2, |e1 x e2| (u1 - u0) (v1 - v0); a sphere with
+ * u = phi / (2 pi) and v = theta / pi (theta from +y), r^2 2 pi (u1 - u0)
+ * (cos pi v0 - cos pi v1). -1 for triangles and procedural shapes, which have no such
+ * parameters here. */
+double geometry_uv_area(const struct geometry *g, int prim, double u0, double u1, double v0,
+                        double v1);
+
+/* For the same primitives, the length of the surface's longest line of constant v
+ * (*length_u: a quad's |e1|, a sphere's equator) and of constant u (*length_v: |e2|, a
+ * meridian), and 1; 0 for primitives without parameters. */
+int geometry_uv_extent(const struct geometry *g, int prim, double *length_u, double *length_v);
+
 #endif

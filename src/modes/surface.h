@@ -23,6 +23,7 @@ struct surface {
     int front;                        /* whether wo is on the primitive's front side   */
     const struct material *material;  /* borrowed from the scene                       */
     int prim;                         /* the primitive hit                             */
+    double u, v;                      /* where on it (struct hit)                      */
 };
 
 /* The surface at hit as seen along unit direction wo (pointing away from the surface). */
@@ -37,6 +38,8 @@ static inline struct surface surface_at(const struct scene *scene, const struct 
     s.ns = s.front ? hit->ns : vec3_neg(hit->ns);
     s.material = &scene->materials[hit->material];
     s.prim = hit->prim;
+    s.u = hit->u;
+    s.v = hit->v;
     return s;
 }
 

@@ -54,6 +54,8 @@ struct photon_hit {
     struct vec3 wi;                  /* unit, back towards where the photon came from   */
     struct shading_frame frame;      /* around the shading normal on the side of wi     */
     const struct material *material; /* borrowed from the scene                         */
+    int prim;                        /* the primitive hit, and where on it (struct hit) */
+    double u, v;
 };
 
 /* The path a photon has taken so far. */
@@ -74,6 +76,9 @@ static struct photon_hit photon_hit_at(const struct scene *scene, const struct h
     h.frame = shading_frame_from_normal(front ? hit->ns : vec3_neg(hit->ns), front,
                                         TRANSPORT_IMPORTANCE);
     h.material = &scene->materials[hit->material];
+    h.prim = hit->prim;
+    h.u = hit->u;
+    h.v = hit->v;
     return h;
 }
 
@@ -95,6 +100,9 @@ static struct photon_event photon_event_at(const struct photon_hit *h, struct ve
     e.wi = h->wi;
     e.power = power;
     e.kind = kind;
+    e.prim = h->prim;
+    e.u = h->u;
+    e.v = h->v;
     return e;
 }
 

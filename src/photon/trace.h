@@ -89,6 +89,8 @@ struct photon_event {
     struct vec3 power;    /* W per channel, the 1 / N already in (zero for shadow ones) */
     unsigned kind;        /* one of PHOTON_DIRECT, _CAUSTIC, _INDIRECT, _SHADOW          */
     int light;            /* the light that emitted it (index into scene->lights)       */
+    int prim;             /* the primitive it hit, and where on it: struct hit's u, v   */
+    double u, v;
 };
 
 /* Where stored photons go: a photon map packs them (trace_photons), progressive photon

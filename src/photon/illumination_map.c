@@ -1,0 +1,204 @@
+/*
+ * photon/illumination_map.c -- two-level illumination maps (illumination_map.h).
+ *
+ * Layout: one struct di_map per covered primitive, found through an array indexed by
+ * primitive id (NULL for primitives without parameters). A DI map is res_u x res_v
+ * elements in row-major order (v the row); element (i, j) spans u in [i, i + 1] / res_u
+ * and v in [j, j + 1] / res_v. Its CI sub-map, when there is one, splits that span into
+ * ILLUMINATION_CI_SIDE x ILLUMINATION_CI_SIDE elements the same way. Values are 3
+ * doubles per element: energy while photons arrive, irradiance after finishing.
+ */
+#include "illumination_map.h"
+
+#include <assert.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "../base/alloc.h"
+
+#define CI_ELEMENTS (ILLUMINATION_CI_SIDE * ILLUMINATION_CI_SIDE)
+
+struct di_map {
+    int res_u, res_v; /* elements along u and v, 1..ILLUMINATION_MAX_SIDE        */
+    double *di;       /* owned: 3 res_u res_v values                            */
+    double **ci;      /* owned: res_u res_v sub-maps, each NULL or owned, 3
+                         CI_ELEMENTS values                                     */
+};
+
+struct illumination_maps {
+    struct di_map **maps; /* owned: n_prims entries, NULL where not covered       */
+    size_t n_prims;
+    int finished;
+};
+
+/* Elements along one parameter for an extent of length over elements of side h. */
+static int elements_along(double length, double h)
+{
+    double n = ceil(length / h);
+    return n < 1 ? 1 : n > ILLUMINATION_MAX_SIDE ? ILLUMINATION_MAX_SIDE : (int)n;
+}
+
+/* The DI map of prim, elements about h across along its parameter lines, or NULL when
+ * prim has no parameters. */
+static struct di_map *di_map_create(const struct geometry *g, int prim, double h)
+{
+    double length_u, length_v;
+    if (!geometry_uv_extent(g, prim, &length_u, &length_v))
+        return NULL;
+    struct di_map *d = xmalloc(1, sizeof *d, "illumination map");
+    d->res_u = elements_along(length_u, h);
+    d->res_v = elements_along(length_v, h);
+    size_t n = (size_t)d->res_u * (size_t)d->res_v;
+    d->di = xcalloc(3 * n, sizeof *d->di, "illumination map");
+    d->ci = xcalloc(n, sizeof *d->ci, "illumination map");
+    return d;
+}
+
+struct illumination_maps *illumination_maps_create(const struct geometry *g, double diagonal)
+{
+    assert(diagonal > 0 && isfinite(diagonal));
+    struct illumination_maps *maps = xmalloc(1, sizeof *maps, "illumination maps");
+    maps->n_prims = geometry_primitive_count(g);
+    maps->maps = xcalloc(maps->n_prims > 0 ? maps->n_prims : 1, sizeof *maps->maps,
+                         "illumination maps");
+    maps->finished = 0;
+    double h = diagonal / ILLUMINATION_DI_PER_DIAGONAL;
+    for (size_t i = 0; i < maps->n_prims; i++)
+        maps->maps[i] = di_map_create(g, (int)i, h);
+    return maps;
+}
+
+void illumination_maps_free(struct illumination_maps *maps)
+{
+    if (maps == NULL)
+        return;
+    for (size_t i = 0; i < maps->n_prims; i++) {
+        struct di_map *d = maps->maps[i];
+        if (d == NULL)
+            continue;
+        for (size_t e = 0; e < (size_t)d->res_u * (size_t)d->res_v; e++)
+            free(d->ci[e]);
+        free(d->ci);
+        free(d->di);
+        free(d);
+    }
+    free(maps->maps);
+    free(maps);
+}
+
+int illumination_covers(const struct illumination_maps *maps, int prim)
+{
+    return prim >= 0 && (size_t)prim < maps->n_prims && maps->maps[prim] != NULL;
+}
+
+/* The index of the cell holding t in [0, 1] among n equal cells (t = 1 in the last). */
+static int cell_of(double t, int n)
+{
+    int i = (int)floor(t * n);
+    return i < 0 ? 0 : i >= n ? n - 1 : i;
+}
+
+/* Where (u, v) falls: its DI element and, within it, its CI element. */
+static void locate(const struct di_map *d, double u, double v, size_t *di, size_t *ci)
+{
+    int i = cell_of(u, d->res_u), j = cell_of(v, d->res_v);
+    *di = (size_t)j * (size_t)d->res_u + (size_t)i;
+    int ci_i = cell_of(u * d->res_u - i, ILLUMINATION_CI_SIDE);
+    int ci_j = cell_of(v * d->res_v - j, ILLUMINATION_CI_SIDE);
+    *ci = (size_t)ci_j * ILLUMINATION_CI_SIDE + (size_t)ci_i;
+}
+
+static void add_energy(double *value, struct vec3 energy)
+{
+    value[0] += energy.x;
+    value[1] += energy.y;
+    value[2] += energy.z;
+}
+
+void illumination_deposit(struct illumination_maps *maps, int prim, double u, double v,
+                          struct vec3 energy, int caustic)
+{
+    assert(illumination_covers(maps, prim) && !maps->finished);
+    struct di_map *d = maps->maps[prim];
+    size_t di, ci;
+    locate(d, u, v, &di, &ci);
+    if (!caustic) {
+        add_energy(&d->di[3 * di], energy);
+        return;
+    }
+    if (d->ci[di] == NULL) /* the first caustic photon in this element: its CI sub-map */
+        d->ci[di] = xcalloc(3 * CI_ELEMENTS, sizeof *d->ci[di], "caustic illumination map");
+    add_energy(&d->ci[di][3 * ci], energy);
+}
+
+/* Divides the 3 values at value by area (none when the area is 0). */
+static void to_irradiance(double *value, double area)
+{
+    for (int c = 0; c < 3; c++)
+        value[c] = area > 0 ? value[c] / area : 0.0;
+}
+
+/* Every element of d, the primitive prim's, from energy to irradiance. */
+static void finish_map(struct di_map *d, const struct geometry *g, int prim)
+{
+    double du = 1.0 / d->res_u, dv = 1.0 / d->res_v;
+    double cu = du / ILLUMINATION_CI_SIDE, cv = dv / ILLUMINATION_CI_SIDE;
+    for (int j = 0; j < d->res_v; j++) {
+        for (int i = 0; i < d->res_u; i++) {
+            size_t e = (size_t)j * (size_t)d->res_u + (size_t)i;
+            to_irradiance(&d->di[3 * e],
+                          geometry_uv_area(g, prim, i * du, (i + 1) * du, j * dv, (j + 1) * dv));
+            for (int k = 0; d->ci[e] != NULL && k < CI_ELEMENTS; k++) {
+                double u0 = i * du + (k % ILLUMINATION_CI_SIDE) * cu;
+                double v0 = j * dv + (k / ILLUMINATION_CI_SIDE) * cv;
+                to_irradiance(&d->ci[e][3 * k], geometry_uv_area(g, prim, u0, u0 + cu, v0,
+                                                                  v0 + cv));
+            }
+        }
+    }
+}
+
+void illumination_maps_finish(struct illumination_maps *maps, const struct geometry *g)
+{
+    assert(!maps->finished);
+    for (size_t i = 0; i < maps->n_prims; i++)
+        if (maps->maps[i] != NULL)
+            finish_map(maps->maps[i], g, (int)i);
+    maps->finished = 1;
+}
+
+struct vec3 illumination_irradiance(const struct illumination_maps *maps, int prim, double u,
+                                    double v, int caustic_only)
+{
+    assert(illumination_covers(maps, prim) && maps->finished);
+    const struct di_map *d = maps->maps[prim];
+    size_t di, ci;
+    locate(d, u, v, &di, &ci);
+    struct vec3 e = vec3_zero();
+    if (d->ci[di] != NULL)
+        e = vec3(d->ci[di][3 * ci], d->ci[di][3 * ci + 1], d->ci[di][3 * ci + 2]);
+    if (!caustic_only)
+        e = vec3_add(e, vec3(d->di[3 * di], d->di[3 * di + 1], d->di[3 * di + 2]));
+    return e;
+}
+
+struct illumination_stats illumination_maps_stats(const struct illumination_maps *maps)
+{
+    struct illumination_stats st = {0, 0, 0, sizeof *maps};
+    st.bytes += maps->n_prims * sizeof *maps->maps;
+    for (size_t i = 0; i < maps->n_prims; i++) {
+        const struct di_map *d = maps->maps[i];
+        if (d == NULL)
+            continue;
+        size_t n = (size_t)d->res_u * (size_t)d->res_v;
+        st.n_maps++;
+        st.di_elements += n;
+        st.bytes += sizeof *d + n * (3 * sizeof *d->di + sizeof *d->ci);
+        for (size_t e = 0; e < n; e++)
+            if (d->ci[e] != NULL) {
+                st.ci_maps++;
+                st.bytes += 3 * CI_ELEMENTS * sizeof *d->ci[e];
+            }
+    }
+    return st;
+}

@@ -1,0 +1,74 @@
+/*
+ * photon/illumination_map.h -- illumination maps: irradiance stored as a texture over a
+ * surface that can be parameterised (Arvo 1986), in the two levels of Jensen and
+ * Christensen 1994, Sec. 3.2.
+ *
+ * A primitive whose surface has parameters (u, v) in [0, 1]^2 and an area for every
+ * (u, v) rectangle (geometry_uv_area(): quads and spheres) gets a diffuse illumination
+ * map, DI: a grid of elements over (u, v), holding the energy of the photons that are
+ * not part of a caustic. "CI requires high precision while DI can use a much lower
+ * precision since it is not seen directly by the eye", so each DI element may hold a
+ * caustic sub-map, CI, of ILLUMINATION_CI_SIDE^2 finer elements, created only when a
+ * caustic photon first lands in it ("we avoid this problem by not creating the caustic
+ * maps until caustics are actually occurring"). A photon's energy goes wholly to the
+ * element holding its (u, v): the box kernel the paper used, whose noise it reports.
+ * After the photons, illumination_maps_finish() divides every element's energy by its
+ * area, which makes it irradiance (W / m^2 per channel in the scene's units).
+ *
+ * Resolutions (departs from Sec. 3.2, whose rules, the light sources' relative size for
+ * DI and a pretrace of adjacent pixels for CI, are not given exactly): DI elements about
+ * 1/ILLUMINATION_DI_PER_DIAGONAL of the scene's diagonal across along the surface's
+ * parameter lines (geometry_uv_extent()), at most ILLUMINATION_MAX_SIDE along one;
+ * CI elements ILLUMINATION_CI_SIDE times finer each way, 64 times the elements, within the
+ * paper's "25-100 times the number of elements in DI". Elements along a parameter line
+ * are equal in parameter, so a sphere's shrink towards its poles.
+ */
+#ifndef PHOTON_ILLUMINATION_MAP_H
+#define PHOTON_ILLUMINATION_MAP_H
+
+#include <stddef.h>
+
+#include "../base/vec3.h"
+#include "../geom/geometry.h"
+
+#define ILLUMINATION_DI_PER_DIAGONAL 64 /* DI element side: the scene's diagonal / 64    */
+#define ILLUMINATION_CI_SIDE 8          /* a CI sub-map: 8 x 8 elements per DI element   */
+#define ILLUMINATION_MAX_SIDE 1024      /* DI elements along one parameter, at most      */
+
+struct illumination_maps;
+
+/* What the maps hold, for --stats. */
+struct illumination_stats {
+    size_t n_maps;        /* primitives with a DI map                                   */
+    size_t di_elements;   /* over all DI maps                                           */
+    size_t ci_maps;       /* CI sub-maps created (DI elements a caustic reached)        */
+    size_t bytes;
+};
+
+/* Empty maps for every primitive of g (built) that has surface parameters, with DI
+ * elements about diagonal / ILLUMINATION_DI_PER_DIAGONAL across (diagonal > 0, finite). */
+struct illumination_maps *illumination_maps_create(const struct geometry *g, double diagonal);
+void illumination_maps_free(struct illumination_maps *maps); /* NULL is a no-op */
+
+/* Whether primitive prim has a map (a photon landing on it belongs there). */
+int illumination_covers(const struct illumination_maps *maps, int prim);
+
+/* Adds a photon's energy (W per channel) at (u, v) of prim (covered): to its DI element,
+ * or, for a caustic photon, to the CI element under (u, v), creating the sub-map. Before
+ * illumination_maps_finish() only. */
+void illumination_deposit(struct illumination_maps *maps, int prim, double u, double v,
+                          struct vec3 energy, int caustic);
+
+/* Turns every element's energy into irradiance: energy / the element's area on the
+ * surface (geometry_uv_area()); elements of no area keep 0. Called once. */
+void illumination_maps_finish(struct illumination_maps *maps, const struct geometry *g);
+
+/* Irradiance at (u, v) of prim (covered), after illumination_maps_finish(): of the
+ * caustic photons alone (the CI element; 0 where no caustic reached the DI element), or
+ * of all photons (the DI element plus the CI element). */
+struct vec3 illumination_irradiance(const struct illumination_maps *maps, int prim, double u,
+                                    double v, int caustic_only);
+
+struct illumination_stats illumination_maps_stats(const struct illumination_maps *maps);
+
+#endif
