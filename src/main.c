@@ -197,6 +197,10 @@ static void print_jensen1994_stats(const struct jensen1994_stats *js)
             js->photons_stored > 0 ? (double)js->bytes_photon_map / js->photons_stored : 0.0);
     fprintf(stderr, "projection_maps=%zu\nprojection_marked=%.4f\nbytes_projection_maps=%zu\n",
             js->projection_maps, js->projection_marked, js->bytes_projection_maps);
+    fprintf(stderr, "illumination_maps=%zu\nillumination_di_elements=%zu\n",
+            js->illumination_maps, js->illumination_di_elements);
+    fprintf(stderr, "illumination_ci_maps=%zu\nbytes_illumination_maps=%zu\n",
+            js->illumination_ci_maps, js->bytes_illumination_maps);
     fprintf(stderr, "seconds_photons=%.3f\nseconds_cache=%.3f\nseconds_render=%.3f\n",
             js->seconds_photons, js->seconds_cache, js->seconds_render);
     fprintf(stderr, "cache_records=%zu\nbytes_cache=%zu\ngradient_rays=%llu\n",
@@ -261,6 +265,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         j94.cache_accuracy = run->o.cache_accuracy;
         j94.light_samples = run->o.light_samples;
         j94.projection_maps = run->o.projection_maps;
+        j94.illumination_maps = run->o.illumination_maps;
         return render_jensen1994(run->scene, &run->rs, &j94, want_variance, &run->counters,
                                  &run->j94_stats, err);
     case MODE_JENSEN1996:

@@ -68,8 +68,9 @@ static struct j96_run render_case(const struct j96_case *c)
         return run;
     struct render_settings rs = case_settings(scene, c->seed, c->spp, c->window);
     struct error err;
-    run.image = rendered_image(render_jensen1996(scene, &rs, &c->js, 0, &run.counters, &run.stats, &err),
-                               &err);
+    struct render_result r = render_jensen1996(scene, &rs, &c->js, 0, &run.counters, &run.stats,
+                                               &err);
+    run.image = rendered_image(r, &err);
     scene_free(scene);
     return run;
 }

@@ -168,7 +168,8 @@ static void add_closed_box(struct scene *scene, int floor, int wall)
 static void test_emission_flux_per_channel(struct check *t)
 {
     struct scene *scene = scene_create();
-    int floor = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0.3, 0.1, 0.05));
+    int floor = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5),
+                                  vec3(0.3, 0.1, 0.05));
     int wall = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0));
     int glow = add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0.1, 2, 0.4));
     add_closed_box(scene, floor, wall);
@@ -895,7 +896,8 @@ static void test_illumination_maps(struct check *t)
     CHECK_CLOSE(t, sum[1], 4 * PI * 0.49, 1e-12);
     CHECK_CLOSE(t, geometry_uv_area(g, 1, 0, 0.25, 0, 0.5), 0.49 * 2 * PI * 0.25, 1e-12);
     CHECK(t, geometry_uv_area(g, 2, 0, 1, 0, 1) == -1 && !geometry_uv_extent(g, 2, &lu, &lv));
-    struct illumination_maps *maps = illumination_maps_create(g, 2.0);
+    static const double footprint[3] = {1.0 / 256, 1.0 / 256, 0}; /* CI 8 x 8 per DI */
+    struct illumination_maps *maps = illumination_maps_create(g, 2.0, footprint);
     CHECK(t, illumination_covers(maps, 0) && illumination_covers(maps, 1) &&
              !illumination_covers(maps, 2));
     int n_u[2], n_v[2]; /* elements: about 2 / 64 across */
@@ -1013,7 +1015,8 @@ static void test_photons_mode_cornell(struct check *t)
 static struct scene *mirror_view_scene(void)
 {
     struct scene *scene = scene_create();
-    int plane = add_test_material(scene, MATERIAL_LAMBERT, vec3(MV_RHO, MV_RHO, MV_RHO), vec3_zero());
+    int plane = add_test_material(scene, MATERIAL_LAMBERT, vec3(MV_RHO, MV_RHO, MV_RHO),
+                                  vec3_zero());
     int chrome = add_test_material(scene, MATERIAL_MIRROR, vec3(MV_MIRROR, MV_MIRROR, MV_MIRROR),
                               vec3_zero());
     add_square(scene, vec3(0, 0, 0), 100, 1, plane);

@@ -19,7 +19,7 @@
 #include "../photon/trace.h"
 
 enum option_kind {
-    OPT_FLAG, OPT_INT, OPT_SEED, OPT_REAL, OPT_MODE, OPT_OUTPUT, OPT_FILE, OPT_CROP
+    OPT_FLAG, OPT_INT, OPT_SEED, OPT_REAL, OPT_MODE, OPT_OUTPUT, OPT_FILE, OPT_CROP, OPT_STORE
 };
 
 struct option_spec {
@@ -96,6 +96,9 @@ static const struct option_spec specs[] = {
      "(differential checking); 0 = off (default 10)"},
     {"--light-samples", OPT_INT, FIELD(light_samples), 1, J94_MAX_LIGHT_SAMPLES, "N",
      "1994: stratified samples of each light, rounded down to a square (default 4)"},
+    {"--irradiance-store", OPT_STORE, FIELD(illumination_maps), 0, 0, "photon|illumination",
+     "1994: photon maps everywhere (the paper's Fig. 5), or illumination maps on quads and "
+     "spheres and photon maps elsewhere (Fig. 4) (default photon)"},
     {"--no-projection-maps", OPT_FLAG, FIELD(projection_maps), 0, 0, "",
      "1994: emit photons into all directions instead of through projection maps"},
     {"--passes", OPT_INT, FIELD(passes), 1, MAX_PASSES, "N",
@@ -223,6 +226,17 @@ static int read_mode(const char *text, enum mode *mode, struct error *err)
                      text != NULL ? text : "nothing");
 }
 
+/* --irradiance-store: 0 for photon, 1 for illumination. */
+static int read_store(const char *text, int *illumination, struct error *err)
+{
+    if (text != NULL && (strcmp(text, "photon") == 0 || strcmp(text, "illumination") == 0)) {
+        *illumination = strcmp(text, "illumination") == 0;
+        return 0;
+    }
+    return error_set(err, "", 0, "--irradiance-store: expected photon or illumination, got '%s'",
+                     text != NULL ? text : "nothing");
+}
+
 static int read_output(const char *text, char *output, struct error *err)
 {
     size_t n = text != NULL ? strlen(text) : 0;
@@ -265,6 +279,9 @@ static int apply_option(const struct option_spec *spec, char **argv, int argc, i
     case OPT_OUTPUT:
         (*i)++;
         return read_output(value, field, err);
+    case OPT_STORE:
+        (*i)++;
+        return read_store(value, (int *)field, err);
     case OPT_FILE:
         (*i)++;
         if (value == NULL)

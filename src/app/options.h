@@ -51,6 +51,7 @@ struct options {
     int differential_run;         /* 1994: differential checking's run; 0 = off    */
     int light_samples;            /* 1994: stratified samples of each light        */
     int projection_maps;          /* 1994: emit through projection maps            */
+    int illumination_maps;        /* 1994: --irradiance-store illumination         */
     int passes;                   /* 2008: photon passes                           */
     int photons_per_pass;         /* 2008: photons traced in each pass             */
     double alpha;                 /* 2008: Eq. 7's alpha, in (0, 1)                */

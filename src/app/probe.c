@@ -10,6 +10,7 @@
 #include "../modes/jensen1994.h"
 #include "../modes/photons.h"
 #include "../photon/estimate.h"
+#include "../photon/illumination_map.h"
 #include "../photon/kdtree.h"
 #include "../photon/trace.h"
 #include "../scene/brdf.h"
@@ -181,22 +182,42 @@ static void write_field(FILE *f, double value)
         fprintf(f, ",%.9g", value);
 }
 
+/* The two stores the profile reads: photon maps everywhere, and illumination maps on the
+ * surfaces that have them (the same light rays: the same seed). */
+struct probe_stores {
+    struct irradiance_stores photons, illumination;
+};
+
+/* The caustic irradiance at p from the illumination map of the surface under p (found
+ * by a ray from just above p along -n); NaN when p lies on no surface with a map. */
+static double illumination_caustic(const struct scene *scene, const struct irradiance_stores *st,
+                                   struct vec3 p, struct vec3 n)
+{
+    struct hit hit;
+    double reach = 1e-6 * scene_diagonal(scene);
+    struct vec3 above = vec3_add(p, vec3_scale(n, reach));
+    if (!scene_intersect(scene, make_ray(above, vec3_neg(n)), 2 * reach, &hit) ||
+        !illumination_covers(st->illumination, hit.prim))
+        return NAN;
+    return vec3_luminance(illumination_irradiance(st->illumination, hit.prim, hit.u, hit.v, 1));
+}
+
 /* The profile's rows into f. */
-static void write_profile(FILE *f, const struct scene *scene, const struct kdtree *map,
+static void write_profile(FILE *f, const struct scene *scene, const struct probe_stores *st,
                           const struct probe_args *args, struct nearest *nn)
 {
     struct vec3 a = vec3(args->line[0], args->line[1], args->line[2]);
     struct vec3 b = vec3(args->line[3], args->line[4], args->line[5]);
     struct vec3 n = vec3_normalize(vec3(args->normal[0], args->normal[1], args->normal[2]));
-    double max_r = PHOTONS_RADIUS_FRACTION * vec3_length(vec3_sub(
-                       geometry_bounds(scene->geometry).hi, geometry_bounds(scene->geometry).lo));
+    double max_r = PHOTONS_RADIUS_FRACTION * scene_diagonal(scene);
     struct irradiance_settings checked = {args->js.gather, max_r * max_r, PHOTON_CAUSTIC,
                                           args->js.differential_run};
     struct irradiance_settings unchecked = checked, all = checked;
     unchecked.run = 0;
     all.kinds = 0;
+    const struct kdtree *map = st->photons.photons;
     fputs("x,y,z,exact_direct,exact_caustic,caustic_photons,caustic_photons_unchecked,"
-          "all_photons\n", f);
+          "all_photons,caustic_illumination\n", f);
     for (int i = 0; i < args->samples; i++) {
         struct vec3 p = vec3_add(a, vec3_scale(vec3_sub(b, a), (double)i / (args->samples - 1)));
         fprintf(f, "%.9g,%.9g,%.9g", p.x, p.y, p.z);
@@ -205,12 +226,13 @@ static void write_profile(FILE *f, const struct scene *scene, const struct kdtre
         write_field(f, vec3_luminance(irradiance_estimate(map, p, n, &checked, nn)));
         write_field(f, vec3_luminance(irradiance_estimate(map, p, n, &unchecked, nn)));
         write_field(f, vec3_luminance(irradiance_estimate(map, p, n, &all, nn)));
+        write_field(f, illumination_caustic(scene, &st->illumination, p, n));
         fputc('\n', f);
     }
 }
 
 /* Writes the profile to args->output through a temporary file renamed when complete. */
-static int write_probe(const struct scene *scene, const struct kdtree *map,
+static int write_probe(const struct scene *scene, const struct probe_stores *st,
                        const struct probe_args *args, struct error *err)
 {
     char tmp[OUTPUT_PATH_MAX + 8];
@@ -221,7 +243,7 @@ static int write_probe(const struct scene *scene, const struct kdtree *map,
     if (f == NULL)
         return error_set(err, tmp, 0, "cannot open for writing");
     struct nearest *nn = nearest_create(args->js.gather);
-    write_profile(f, scene, map, args, nn);
+    write_profile(f, scene, st, args, nn);
     nearest_free(nn);
     int failed = ferror(f) | fclose(f);
     if (failed || rename(tmp, args->output) != 0) {
@@ -247,12 +269,21 @@ int probe_command(int argc, char **argv)
     scene_finish(scene, scene->width, scene->height);
     struct jensen1994_stats stats;
     memset(&stats, 0, sizeof stats);
-    struct kdtree *map = jensen1994_photon_map(scene, args.seed, MAX_DEPTH_LIMIT, &args.js,
-                                               &stats, &err);
-    int status = map != NULL && write_probe(scene, map, &args, &err) == 0 ? 0 : 2;
+    struct probe_stores st;
+    memset(&st, 0, sizeof st);
+    struct jensen1994_settings with_maps = args.js;
+    with_maps.illumination_maps = 1;
+    int status = jensen1994_trace(scene, args.seed, MAX_DEPTH_LIMIT, &args.js, &st.photons,
+                                  &stats, &err) == 0 &&
+                         jensen1994_trace(scene, args.seed, MAX_DEPTH_LIMIT, &with_maps,
+                                          &st.illumination, &stats, &err) == 0 &&
+                         write_probe(scene, &st, &args, &err) == 0
+                     ? 0
+                     : 2;
     if (status != 0)
         error_print(&err);
-    kdtree_free(map);
+    irradiance_stores_free(&st.photons);
+    irradiance_stores_free(&st.illumination);
     scene_free(scene);
     return status;
 }

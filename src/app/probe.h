@@ -7,7 +7,8 @@
  *
  * One CSV row per sample point p_i = a + (b - a) i / (N - 1) (the line should lie on a
  * surface facing --normal, default +y), with the header
- *   x,y,z,exact_direct,exact_caustic,caustic_photons,caustic_photons_unchecked,all_photons
+ *   x,y,z,exact_direct,exact_caustic,caustic_photons,caustic_photons_unchecked,all_photons,
+ *   caustic_illumination
  *   exact_direct        irradiance from the point lights (shadow-tested), exact; empty when
  *                       the scene has an area light (no closed form here)
  *   exact_caustic       irradiance of one ideal reflection off planar mirrors (each point
@@ -16,6 +17,9 @@
  *   caustic_photons     mode 1994's caustic estimate (CP photons, differential checking)
  *   caustic_photons_unchecked  the same without differential checking
  *   all_photons         the general estimate (all photons, differential checking)
+ *   caustic_illumination  the caustic illumination map (CI) of the surface under the
+ *                       point, when it has one (quads and spheres), from the same light
+ *                       rays with --irradiance-store illumination; else empty
  * Irradiance is luminance (vec3_luminance) in W / m^2. The photon map is mode 1994's
  * (jensen1994.h) with --photons light rays and --gather photons per estimate (default 200,
  * the paper's Fig. 8). Bad input exits 2 with a message and writes nothing.

@@ -551,7 +551,7 @@ double geometry_uv_area(const struct geometry *g, int prim, double u0, double u1
     case KIND_QUAD: /* p0 + u e1 + v e2: area |e1 x e2| du dv */
         return vec3_length(vec3_cross(g->quads[index].e1, g->quads[index].e2)) * (u1 - u0) *
                (v1 - v0);
-    case KIND_SPHERE: { /* u = phi / (2 pi), v = theta / pi: area r^2 dphi (cos theta0 - cos theta1) */
+    case KIND_SPHERE: { /* u = phi / (2 pi), v = theta / pi: r^2 dphi (cos theta0 - cos theta1) */
         double r = g->spheres[index].radius;
         return r * r * 2 * PI * (u1 - u0) * (cos(PI * v0) - cos(PI * v1));
     }

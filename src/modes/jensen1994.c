@@ -47,6 +47,7 @@
 
 #include "../base/alloc.h"
 #include "../photon/estimate.h"
+#include "../photon/illumination_map.h"
 #include "../photon/projection_map.h"
 #include "../photon/trace.h"
 #include "cache_pass.h"
@@ -68,6 +69,7 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.cache_accuracy = J94_DEFAULT_CACHE_ACCURACY;
     js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;
     js.projection_maps = 1;
+    js.illumination_maps = 0;
     return js;
 }
 
@@ -78,19 +80,101 @@ static double cpu_seconds(clock_t start)
 
 /* ---- Sec. 3, pass 1: light path tracing into the photon map ---- */
 
+/* Where pass 1 deposits: the illumination maps for photons on a surface that has one,
+ * the photon map for the rest. */
+struct deposits {
+    struct photon_trace photons;
+    struct illumination_maps *illumination; /* borrowed; NULL: photon maps everywhere */
+};
+
 /* Sec. 3.3: "with every photon we store the intersection point, the normal, the energy
  * and a bit saying whether it is a caustic photon". The 20-byte record (photon.h) keeps
- * the normal where 1996 keeps the direction, and the caustic bit among its flags. */
-static int store_with_normal(void *context, const struct photon_event *e)
+ * the normal where 1996 keeps the direction, and the caustic bit among its flags. Sec.
+ * 3.2: on a surface with an illumination map, the energy goes to the map instead. */
+static int deposit_photon(void *context, const struct photon_event *e)
 {
-    struct photon_event deposit = *e;
-    deposit.wi = e->normal;
-    return photon_trace_store(context, MAX_PHOTONS, &deposit);
+    struct deposits *d = context;
+    if (d->illumination != NULL && illumination_covers(d->illumination, e->prim)) {
+        illumination_deposit(d->illumination, e->prim, e->u, e->v, e->power,
+                             e->kind == PHOTON_CAUSTIC);
+        return 0;
+    }
+    struct photon_event stored = *e;
+    stored.wi = e->normal;
+    return photon_trace_store(&d->photons, MAX_PHOTONS, &stored);
 }
 
-struct kdtree *jensen1994_photon_map(const struct scene *scene, uint64_t seed, int max_depth,
-                                     const struct jensen1994_settings *js,
-                                     struct jensen1994_stats *stats, struct error *err)
+/* Light rays through projection maps (when on) into d; fills the projection stats. */
+static int trace_light_paths(const struct scene *scene, const struct trace_settings *base,
+                             const struct jensen1994_settings *js, struct deposits *d,
+                             struct jensen1994_stats *stats)
+{
+    struct trace_settings ts = *base;
+    struct projection_settings ps = {PROJECTION_N_THETA_DEFAULT, PROJECTION_N_PHI_DEFAULT,
+                                     PROJECTION_BOOST_DEFAULT};
+    struct projection_maps *maps = js->projection_maps ? projection_maps_build(scene, &ps) : NULL;
+    ts.projection = maps;
+    struct photon_sink sink = {deposit_photon, d};
+    int status = trace_photons_into(scene, &ts, &sink, &stats->photon_rays);
+    if (maps != NULL) {
+        struct projection_stats pst = projection_maps_stats(maps);
+        stats->projection_maps = pst.n_maps;
+        stats->projection_marked = pst.marked_fraction;
+        stats->bytes_projection_maps = pst.bytes;
+    }
+    projection_maps_free(maps);
+    return status;
+}
+
+/* Sec. 3.2's pretrace: "the distance between rays going through adjacent pixels and
+ * striking the same object". One ray through the centre of every pixel of the whole
+ * image; footprint[prim] (n_prims entries, owned by the caller) becomes the smallest
+ * distance between the hits of horizontally or vertically adjacent pixels on prim, 0
+ * where no two adjacent pixels hit prim. Row by row, two rows kept. */
+static double *pretrace_footprints(const struct scene *scene)
+{
+    size_t n_prims = geometry_primitive_count(scene->geometry);
+    double *footprint = xcalloc(n_prims > 0 ? n_prims : 1, sizeof *footprint, "footprints");
+    size_t width = (size_t)scene->width;
+    int *prim = xmalloc(2 * width, sizeof *prim, "pretrace");
+    struct vec3 *p = xmalloc(2 * width, sizeof *p, "pretrace");
+    for (int y = 0; y < scene->height; y++) {
+        size_t row = (size_t)(y % 2) * width, above = (size_t)((y + 1) % 2) * width;
+        for (size_t x = 0; x < width; x++) {
+            struct hit hit;
+            struct ray ray = camera_ray(&scene->camera, x + 0.5, y + 0.5);
+            prim[row + x] = scene_intersect(scene, ray, INFINITY, &hit) ? hit.prim : -1;
+            p[row + x] = hit.p;
+            for (int k = 0; k < 2; k++) { /* the left neighbour, the one above */
+                size_t other = k == 0 ? row + x - 1 : above + x;
+                if ((k == 0 ? x == 0 : y == 0) || prim[row + x] < 0 ||
+                    prim[other] != prim[row + x])
+                    continue;
+                double d = vec3_length(vec3_sub(p[row + x], p[other]));
+                double *f = &footprint[prim[row + x]];
+                *f = *f == 0 || d < *f ? d : *f;
+            }
+        }
+    }
+    free(p);
+    free(prim);
+    return footprint;
+}
+
+/* The illumination maps' figures for --stats. */
+static void count_illumination(const struct illumination_maps *maps,
+                               struct jensen1994_stats *stats)
+{
+    struct illumination_stats st = illumination_maps_stats(maps);
+    stats->illumination_maps = st.n_maps;
+    stats->illumination_di_elements = st.di_elements;
+    stats->illumination_ci_maps = st.ci_maps;
+    stats->bytes_illumination_maps = st.bytes;
+}
+
+int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
+                     const struct jensen1994_settings *js, struct irradiance_stores *out,
+                     struct jensen1994_stats *stats, struct error *err)
 {
     struct trace_settings ts;
     memset(&ts, 0, sizeof ts);
@@ -100,34 +184,52 @@ struct kdtree *jensen1994_photon_map(const struct scene *scene, uint64_t seed, i
     ts.store = PHOTON_MAP_GLOBAL; /* every deposit: direct, caustic and indirect */
     ts.max_depth = max_depth;
     ts.targets = NULL;
-    struct projection_settings ps = {PROJECTION_N_THETA_DEFAULT, PROJECTION_N_PHI_DEFAULT,
-                                     PROJECTION_BOOST_DEFAULT};
-    struct projection_maps *maps = js->projection_maps ? projection_maps_build(scene, &ps) : NULL;
-    ts.projection = maps;
-    struct photon_trace traced;
-    memset(&traced, 0, sizeof traced);
-    struct photon_sink sink = {store_with_normal, &traced};
-    int failed = trace_photons_into(scene, &ts, &sink, &stats->photon_rays) < 0;
-    if (maps != NULL) {
-        struct projection_stats pst = projection_maps_stats(maps);
-        stats->projection_maps = pst.n_maps;
-        stats->projection_marked = pst.marked_fraction;
-        stats->bytes_projection_maps = pst.bytes;
+    ts.projection = NULL;
+    struct deposits d;
+    memset(&d, 0, sizeof d);
+    d.photons.photons = NULL;
+    d.illumination = NULL;
+    if (js->illumination_maps) {
+        double *footprint = pretrace_footprints(scene);
+        d.illumination = illumination_maps_create(scene->geometry, scene_diagonal(scene),
+                                                  footprint);
+        free(footprint);
     }
-    projection_maps_free(maps);
-    if (failed) {
-        photon_trace_free(&traced);
-        error_set(err, "", 0,
-                  "photon map: more than %d photons would be stored; emit fewer photons or "
-                  "follow fewer bounces (--max-depth)", MAX_PHOTONS);
-        return NULL;
+    if (trace_light_paths(scene, &ts, js, &d, stats) < 0) {
+        photon_trace_free(&d.photons);
+        illumination_maps_free(d.illumination);
+        return error_set(err, "", 0,
+                         "photon map: more than %d photons would be stored; emit fewer "
+                         "photons or follow fewer bounces (--max-depth)", MAX_PHOTONS);
     }
     stats->photons_emitted = ts.n_emit;
-    stats->photons_caustic = traced.n_caustic;
-    struct kdtree *map = balance_kdtree(traced.photons, traced.n_photons); /* takes them */
-    stats->photons_stored = map->n_photons;
-    stats->bytes_photon_map = kdtree_bytes(map);
-    return map;
+    stats->photons_caustic = d.photons.n_caustic;
+    out->photons = balance_kdtree(d.photons.photons, d.photons.n_photons); /* takes them */
+    stats->photons_stored = out->photons->n_photons;
+    stats->bytes_photon_map = kdtree_bytes(out->photons);
+    out->illumination = d.illumination;
+    if (out->illumination != NULL) {
+        illumination_maps_finish(out->illumination, scene->geometry);
+        count_illumination(out->illumination, stats);
+    }
+    return 0;
+}
+
+void irradiance_stores_free(struct irradiance_stores *stores)
+{
+    kdtree_free(stores->photons);
+    illumination_maps_free(stores->illumination);
+    stores->photons = NULL;
+    stores->illumination = NULL;
+}
+
+struct vec3 stored_irradiance(const struct irradiance_stores *stores,
+                              const struct store_query *q, struct nearest *nn)
+{
+    if (stores->illumination != NULL && illumination_covers(stores->illumination, q->prim))
+        return illumination_irradiance(stores->illumination, q->prim, q->u, q->v,
+                                       q->estimate->kinds == PHOTON_CAUSTIC);
+    return irradiance_estimate(stores->photons, q->x, q->n, q->estimate, nn);
 }
 
 /* ---- Sec. 4, pass 2: Monte Carlo ray tracing ---- */
@@ -143,7 +245,7 @@ struct path {
 struct j94 {
     const struct scene *scene;
     const struct jensen1994_settings *js;
-    struct kdtree *map;
+    struct irradiance_stores stores;
     struct irradiance_settings all_photons, caustic_photons;
     struct irradiance_cache *cache;
     int filling_cache;               /* the pre-pass: records where none is usable      */
@@ -202,8 +304,8 @@ static struct vec3 caustic_light(const struct j94 *m, const struct surface *s,
                                  const struct material *diffuse,
                                  const struct shading_frame *frame)
 {
-    struct vec3 e = irradiance_estimate(m->map, s->p, s->ng, &m->caustic_photons, m->nn);
-    return diffuse_reflection(s, diffuse, frame, e);
+    struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, &m->caustic_photons};
+    return diffuse_reflection(s, diffuse, frame, stored_irradiance(&m->stores, &q, m->nn));
 }
 
 /* -- L_r,s: the specular-like part by recursive Monte Carlo ray tracing -- */
@@ -341,8 +443,8 @@ static struct vec3 secondary_radiance(const struct j94 *m, const struct surface 
     struct brdf_split split = brdf_split(s->material);
     struct vec3 l = vec3_zero();
     if (split.has_diffuse) {
-        struct vec3 e = irradiance_estimate(m->map, s->p, s->ng, &m->all_photons, m->nn);
-        l = diffuse_reflection(s, &split.diffuse, &frame, e);
+        struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, &m->all_photons};
+        l = diffuse_reflection(s, &split.diffuse, &frame, stored_irradiance(&m->stores, &q, m->nn));
     }
     if (split.has_specular)
         l = vec3_add(l, specular_light(m, s, &split.specular, &frame, path, rng, counters));
@@ -381,11 +483,10 @@ static void set_up(struct j94 *m, const struct scene *scene, const struct render
                    const struct jensen1994_settings *js)
 {
     struct aabb box = geometry_bounds(scene->geometry);
-    double diagonal = vec3_length(vec3_sub(box.hi, box.lo));
     m->scene = scene;
     m->js = js;
     m->max_depth = rs->max_depth;
-    m->diagonal = isfinite(diagonal) && diagonal > 0 ? diagonal : 1.0;
+    m->diagonal = scene_diagonal(scene);
     double max_radius = js->max_radius > 0 ? js->max_radius
                                            : PHOTONS_RADIUS_FRACTION * m->diagonal;
     struct irradiance_settings all = {js->gather, max_radius * max_radius, 0,
@@ -412,7 +513,7 @@ static void tear_down(struct j94 *m)
     free(m->strata);
     nearest_free(m->nn);
     irradiance_cache_free(m->cache);
-    kdtree_free(m->map);
+    irradiance_stores_free(&m->stores);
 }
 
 struct render_result render_jensen1994(const struct scene *scene,
@@ -427,8 +528,7 @@ struct render_result render_jensen1994(const struct scene *scene,
     memset(&m, 0, sizeof m);
     m.stats = stats;
     clock_t start = clock();
-    m.map = jensen1994_photon_map(scene, rs->seed, rs->max_depth, js, stats, err);
-    if (m.map == NULL)
+    if (jensen1994_trace(scene, rs->seed, rs->max_depth, js, &m.stores, stats, err) < 0)
         return result;
     stats->seconds_photons = cpu_seconds(start);
     set_up(&m, scene, rs, js);

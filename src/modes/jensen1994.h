@@ -9,6 +9,7 @@
 #include <stdint.h>
 
 #include "../base/error.h"
+#include "../base/vec3.h"
 #include "render.h"
 
 #define J94_DEFAULT_PHOTONS 200000     /* --photons: light rays of pass 1                 */
@@ -33,6 +34,9 @@ struct jensen1994_settings {
     int light_samples;     /* stratified samples of each light, 1..J94_MAX_LIGHT_SAMPLES    */
     int projection_maps;   /* 1: emit through projection maps (Sec. 3.1, photon/
                               projection_map.h, default cells and boost); 0: light_emit() */
+    int illumination_maps; /* --irradiance-store: 1 illumination maps on quads and spheres
+                              and photon maps elsewhere (the paper's Fig. 4); 0 photon
+                              maps everywhere (Fig. 5)                                     */
 };
 
 /* What the render did, for --stats (the paper's Fig. 9 and more). */
@@ -45,6 +49,10 @@ struct jensen1994_stats {
     size_t projection_maps;          /* emission positions over all lights (0: maps off)  */
     double projection_marked;        /* share of the lights' power the maps emit          */
     size_t bytes_projection_maps;
+    size_t illumination_maps;        /* surfaces with a DI map (0: photon maps only)      */
+    size_t illumination_di_elements;
+    size_t illumination_ci_maps;     /* CI sub-maps created where caustics landed         */
+    size_t bytes_illumination_maps;
     double seconds_photons;          /* pass 1, tracing and balancing                     */
     double seconds_cache;            /* the irradiance cache's pre-pass                   */
     double seconds_render;           /* the final pass                                    */
@@ -59,16 +67,43 @@ struct jensen1994_stats {
 struct jensen1994_settings jensen1994_settings_default(void);
 
 struct kdtree;
+struct illumination_maps;
+struct nearest;
+struct irradiance_settings;
+
+/* The irradiance stores pass 1 fills (Sec. 3.2-3.3): the photon map, and with
+ * js->illumination_maps the illumination maps of the surfaces that have parameters
+ * (quads and spheres), which then hold those surfaces' photons instead. */
+struct irradiance_stores {
+    struct kdtree *photons;                 /* owned: photons holding their surface normal
+                                               and the caustic bit (CP: PHOTON_CAUSTIC)  */
+    struct illumination_maps *illumination; /* owned, finished; NULL: photon maps only   */
+};
 
 /* Pass 1 alone (Sec. 3): js->n_photons light rays from the scene's lights (finished) with
- * seed, followed for at most max_depth bounces, deposited as photons holding their
- * surface normal and the caustic bit (CP: PHOTON_CAUSTIC). Returns the balanced map
- * (the caller frees it with kdtree_free) and fills the photon fields of *stats; NULL with
- * *err filled when more than MAX_PHOTONS would be stored. The render's first step, and
- * `photon probe`'s (app/probe.h). */
-struct kdtree *jensen1994_photon_map(const struct scene *scene, uint64_t seed, int max_depth,
-                                     const struct jensen1994_settings *js,
-                                     struct jensen1994_stats *stats, struct error *err);
+ * seed, followed for at most max_depth bounces, deposited into *out (which the caller
+ * releases with irradiance_stores_free()); fills the photon fields of *stats. Returns 0,
+ * or -1 with *err filled and nothing left allocated when more than MAX_PHOTONS would be
+ * stored. The render's first step, and `photon probe`'s (app/probe.h). */
+int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
+                     const struct jensen1994_settings *js, struct irradiance_stores *out,
+                     struct jensen1994_stats *stats, struct error *err);
+void irradiance_stores_free(struct irradiance_stores *stores);
+
+/* A point of a surface where irradiance is read. */
+struct store_query {
+    struct vec3 x, n;  /* the point and its unit normal, on the side of the light wanted */
+    int prim;          /* the primitive, and where on it (struct hit's u, v)              */
+    double u, v;
+    const struct irradiance_settings *estimate; /* the photon map's estimate; its kinds
+                                                   PHOTON_CAUSTIC asks for caustics only */
+};
+
+/* Irradiance at q: from the illumination map of q->prim where it has one (its CI alone
+ * for caustics, DI + CI otherwise), else the photon map's estimate (estimate.h). nn: the
+ * caller's scratch. */
+struct vec3 stored_irradiance(const struct irradiance_stores *stores,
+                              const struct store_query *q, struct nearest *nn);
 
 /* Renders the settings' window of the scene (finished) in two passes: the photon map,
  * then Monte Carlo ray tracing with an irradiance cache filled by a pre-pass over the

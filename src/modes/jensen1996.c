@@ -781,10 +781,9 @@ static void set_up(struct j96 *m, const struct scene *scene, const struct render
                    const struct jensen1996_settings *js)
 {
     struct aabb box = geometry_bounds(scene->geometry);
-    double diagonal = vec3_length(vec3_sub(box.hi, box.lo));
     m->scene = scene;
     m->js = js;
-    m->diagonal = isfinite(diagonal) && diagonal > 0 ? diagonal : 1.0;
+    m->diagonal = scene_diagonal(scene);
     double max_radius = js->max_radius > 0 ? js->max_radius
                                            : PHOTONS_RADIUS_FRACTION * m->diagonal;
     m->global_es.k = js->global_gather;

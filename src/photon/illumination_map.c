@@ -5,7 +5,7 @@
  * primitive id (NULL for primitives without parameters). A DI map is res_u x res_v
  * elements in row-major order (v the row); element (i, j) spans u in [i, i + 1] / res_u
  * and v in [j, j + 1] / res_v. Its CI sub-map, when there is one, splits that span into
- * ILLUMINATION_CI_SIDE x ILLUMINATION_CI_SIDE elements the same way. Values are 3
+ * ci_side x ci_side elements the same way. Values are 3
  * doubles per element: energy while photons arrive, irradiance after finishing.
  */
 #include "illumination_map.h"
@@ -16,13 +16,12 @@
 
 #include "../base/alloc.h"
 
-#define CI_ELEMENTS (ILLUMINATION_CI_SIDE * ILLUMINATION_CI_SIDE)
-
 struct di_map {
     int res_u, res_v; /* elements along u and v, 1..ILLUMINATION_MAX_SIDE        */
+    int ci_side;      /* a CI sub-map's elements along u and v, 1..ILLUMINATION_CI_MAX_SIDE */
     double *di;       /* owned: 3 res_u res_v values                            */
     double **ci;      /* owned: res_u res_v sub-maps, each NULL or owned, 3
-                         CI_ELEMENTS values                                     */
+                         ci_side^2 values                                       */
 };
 
 struct illumination_maps {
@@ -38,9 +37,10 @@ static int elements_along(double length, double h)
     return n < 1 ? 1 : n > ILLUMINATION_MAX_SIDE ? ILLUMINATION_MAX_SIDE : (int)n;
 }
 
-/* The DI map of prim, elements about h across along its parameter lines, or NULL when
- * prim has no parameters. */
-static struct di_map *di_map_create(const struct geometry *g, int prim, double h)
+/* The DI map of prim, elements about h across along its parameter lines, CI elements
+ * about footprint across (0: as DI's), or NULL when prim has no parameters. */
+static struct di_map *di_map_create(const struct geometry *g, int prim, double h,
+                                    double footprint)
 {
     double length_u, length_v;
     if (!geometry_uv_extent(g, prim, &length_u, &length_v))
@@ -48,13 +48,16 @@ static struct di_map *di_map_create(const struct geometry *g, int prim, double h
     struct di_map *d = xmalloc(1, sizeof *d, "illumination map");
     d->res_u = elements_along(length_u, h);
     d->res_v = elements_along(length_v, h);
+    double side = footprint > 0 ? ceil(h / footprint) : 1;
+    d->ci_side = side > ILLUMINATION_CI_MAX_SIDE ? ILLUMINATION_CI_MAX_SIDE : (int)side;
     size_t n = (size_t)d->res_u * (size_t)d->res_v;
     d->di = xcalloc(3 * n, sizeof *d->di, "illumination map");
     d->ci = xcalloc(n, sizeof *d->ci, "illumination map");
     return d;
 }
 
-struct illumination_maps *illumination_maps_create(const struct geometry *g, double diagonal)
+struct illumination_maps *illumination_maps_create(const struct geometry *g, double diagonal,
+                                                   const double *footprint)
 {
     assert(diagonal > 0 && isfinite(diagonal));
     struct illumination_maps *maps = xmalloc(1, sizeof *maps, "illumination maps");
@@ -64,7 +67,7 @@ struct illumination_maps *illumination_maps_create(const struct geometry *g, dou
     maps->finished = 0;
     double h = diagonal / ILLUMINATION_DI_PER_DIAGONAL;
     for (size_t i = 0; i < maps->n_prims; i++)
-        maps->maps[i] = di_map_create(g, (int)i, h);
+        maps->maps[i] = di_map_create(g, (int)i, h, footprint != NULL ? footprint[i] : 0);
     return maps;
 }
 
@@ -103,9 +106,9 @@ static void locate(const struct di_map *d, double u, double v, size_t *di, size_
 {
     int i = cell_of(u, d->res_u), j = cell_of(v, d->res_v);
     *di = (size_t)j * (size_t)d->res_u + (size_t)i;
-    int ci_i = cell_of(u * d->res_u - i, ILLUMINATION_CI_SIDE);
-    int ci_j = cell_of(v * d->res_v - j, ILLUMINATION_CI_SIDE);
-    *ci = (size_t)ci_j * ILLUMINATION_CI_SIDE + (size_t)ci_i;
+    int ci_i = cell_of(u * d->res_u - i, d->ci_side);
+    int ci_j = cell_of(v * d->res_v - j, d->ci_side);
+    *ci = (size_t)ci_j * (size_t)d->ci_side + (size_t)ci_i;
 }
 
 static void add_energy(double *value, struct vec3 energy)
@@ -127,7 +130,8 @@ void illumination_deposit(struct illumination_maps *maps, int prim, double u, do
         return;
     }
     if (d->ci[di] == NULL) /* the first caustic photon in this element: its CI sub-map */
-        d->ci[di] = xcalloc(3 * CI_ELEMENTS, sizeof *d->ci[di], "caustic illumination map");
+        d->ci[di] = xcalloc(3 * (size_t)d->ci_side * (size_t)d->ci_side, sizeof *d->ci[di],
+                            "caustic illumination map");
     add_energy(&d->ci[di][3 * ci], energy);
 }
 
@@ -142,15 +146,15 @@ static void to_irradiance(double *value, double area)
 static void finish_map(struct di_map *d, const struct geometry *g, int prim)
 {
     double du = 1.0 / d->res_u, dv = 1.0 / d->res_v;
-    double cu = du / ILLUMINATION_CI_SIDE, cv = dv / ILLUMINATION_CI_SIDE;
+    double cu = du / d->ci_side, cv = dv / d->ci_side;
     for (int j = 0; j < d->res_v; j++) {
         for (int i = 0; i < d->res_u; i++) {
             size_t e = (size_t)j * (size_t)d->res_u + (size_t)i;
             to_irradiance(&d->di[3 * e],
                           geometry_uv_area(g, prim, i * du, (i + 1) * du, j * dv, (j + 1) * dv));
-            for (int k = 0; d->ci[e] != NULL && k < CI_ELEMENTS; k++) {
-                double u0 = i * du + (k % ILLUMINATION_CI_SIDE) * cu;
-                double v0 = j * dv + (k / ILLUMINATION_CI_SIDE) * cv;
+            for (int k = 0; d->ci[e] != NULL && k < d->ci_side * d->ci_side; k++) {
+                double u0 = i * du + (k % d->ci_side) * cu;
+                double v0 = j * dv + (k / d->ci_side) * cv;
                 to_irradiance(&d->ci[e][3 * k], geometry_uv_area(g, prim, u0, u0 + cu, v0,
                                                                   v0 + cv));
             }
@@ -197,7 +201,7 @@ struct illumination_stats illumination_maps_stats(const struct illumination_maps
         for (size_t e = 0; e < n; e++)
             if (d->ci[e] != NULL) {
                 st.ci_maps++;
-                st.bytes += 3 * CI_ELEMENTS * sizeof *d->ci[e];
+                st.bytes += 3 * (size_t)d->ci_side * (size_t)d->ci_side * sizeof *d->ci[e];
             }
     }
     return st;

@@ -8,20 +8,23 @@
  * map, DI: a grid of elements over (u, v), holding the energy of the photons that are
  * not part of a caustic. "CI requires high precision while DI can use a much lower
  * precision since it is not seen directly by the eye", so each DI element may hold a
- * caustic sub-map, CI, of ILLUMINATION_CI_SIDE^2 finer elements, created only when a
+ * caustic sub-map, CI, of finer elements, created only when a
  * caustic photon first lands in it ("we avoid this problem by not creating the caustic
  * maps until caustics are actually occurring"). A photon's energy goes wholly to the
  * element holding its (u, v): the box kernel the paper used, whose noise it reports.
  * After the photons, illumination_maps_finish() divides every element's energy by its
  * area, which makes it irradiance (W / m^2 per channel in the scene's units).
  *
- * Resolutions (departs from Sec. 3.2, whose rules, the light sources' relative size for
- * DI and a pretrace of adjacent pixels for CI, are not given exactly): DI elements about
+ * Resolutions. DI (departs from Sec. 3.2, which sizes DI by "the relative size with
+ * respect to the light sources" without a rule): elements about
  * 1/ILLUMINATION_DI_PER_DIAGONAL of the scene's diagonal across along the surface's
- * parameter lines (geometry_uv_extent()), at most ILLUMINATION_MAX_SIDE along one;
- * CI elements ILLUMINATION_CI_SIDE times finer each way, 64 times the elements, within the
- * paper's "25-100 times the number of elements in DI". Elements along a parameter line
- * are equal in parameter, so a sphere's shrink towards its poles.
+ * parameter lines (geometry_uv_extent()), at most ILLUMINATION_MAX_SIDE along one.
+ * Elements along a parameter line are equal in parameter, so a sphere's shrink towards
+ * its poles. CI (Sec. 3.2: "determined by a simple pretracing of the scene ... the
+ * distance between rays going through adjacent pixels and striking the same object"):
+ * elements about the footprint the caller measured for the surface across, at most
+ * ILLUMINATION_CI_MAX_SIDE to a DI element's side (256 times DI's elements; the paper
+ * found "25-100 times" typical); a surface no pixel sees gets CI elements of DI's size.
  */
 #ifndef PHOTON_ILLUMINATION_MAP_H
 #define PHOTON_ILLUMINATION_MAP_H
@@ -32,7 +35,7 @@
 #include "../geom/geometry.h"
 
 #define ILLUMINATION_DI_PER_DIAGONAL 64 /* DI element side: the scene's diagonal / 64    */
-#define ILLUMINATION_CI_SIDE 8          /* a CI sub-map: 8 x 8 elements per DI element   */
+#define ILLUMINATION_CI_MAX_SIDE 16     /* a CI sub-map: at most 16 x 16 elements        */
 #define ILLUMINATION_MAX_SIDE 1024      /* DI elements along one parameter, at most      */
 
 struct illumination_maps;
@@ -46,8 +49,11 @@ struct illumination_stats {
 };
 
 /* Empty maps for every primitive of g (built) that has surface parameters, with DI
- * elements about diagonal / ILLUMINATION_DI_PER_DIAGONAL across (diagonal > 0, finite). */
-struct illumination_maps *illumination_maps_create(const struct geometry *g, double diagonal);
+ * elements about diagonal / ILLUMINATION_DI_PER_DIAGONAL across (diagonal > 0, finite)
+ * and CI elements about footprint[prim] across (footprint: one entry per primitive, 0
+ * for one no pixel sees; NULL: CI elements of DI's size everywhere). */
+struct illumination_maps *illumination_maps_create(const struct geometry *g, double diagonal,
+                                                   const double *footprint);
 void illumination_maps_free(struct illumination_maps *maps); /* NULL is a no-op */
 
 /* Whether primitive prim has a map (a photon landing on it belongs there). */

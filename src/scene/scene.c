@@ -203,3 +203,10 @@ int scene_occluded(const struct scene *scene, struct vec3 origin, struct vec3 di
     return geometry_occluded(scene->geometry, make_ray(origin, dir),
                              distance * (1.0 - SHADOW_EPSILON));
 }
+
+double scene_diagonal(const struct scene *scene)
+{
+    struct aabb box = geometry_bounds(scene->geometry);
+    double diagonal = vec3_length(vec3_sub(box.hi, box.lo));
+    return isfinite(diagonal) && diagonal > 0 ? diagonal : 1.0;
+}

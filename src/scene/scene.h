@@ -69,6 +69,11 @@ void scene_finish(struct scene *scene, int width, int height);
  * and its probability in *probability (> 0), or -1 when the scene has no light. */
 int scene_pick_light(const struct scene *scene, double u, double *probability);
 
+/* The length of the diagonal of the box around every primitive of the scene (finished),
+ * the scale of "the dimensions of the scene"; 1 when there is nothing, or it is not
+ * finite, so that sizes derived from it stay usable. */
+double scene_diagonal(const struct scene *scene);
+
 /* The probability with which scene_pick_light() picks light. */
 double scene_light_probability(const struct scene *scene, int light);
 
