@@ -20,6 +20,9 @@
                                screen space): records never crowd into corners below
                                pixel size                                                */
 #define CACHE_R_MAX 0.2     /* and at most this fraction of the scene's diagonal         */
+#define CACHE_FILL_STRICTNESS 0.5 /* the pre-pass makes records where none is usable with
+                                     this fraction of Ward's a, so that the final pass's
+                                     samples find records made at pixel centres          */
 
 /* Traces one camera path through the centre of every pixel of the whole image, in
  * scanline order, with estimator; path (x, y) draws from rng_stream(seed, STREAM_CACHE,

@@ -8,9 +8,11 @@
  * object lies, more towards specular ones, powers weighted so the expected flux is
  * exact), and "every time the ray hits an object the energy carried by the ray is
  * deposited"; Russian roulette decides whether it is absorbed or reflected
- * (photon/trace.h). Every deposit is a
- * photon (Sec. 3.3) holding position, normal, energy and a bit saying whether it is part
- * of a caustic (CP: only specular reflections since the light) or not (DP).
+ * (photon/trace.h). Every deposit is a photon (Sec. 3.3) holding position, normal,
+ * energy and a bit saying whether it is part of a caustic (CP: only specular reflections
+ * since the light) or not (DP); with --irradiance-store illumination, a deposit on a
+ * quad or sphere goes to its illumination maps instead (Sec. 3.2: DI, and CI sub-maps
+ * where caustics land, photon/illumination_map.h).
  *
  * Pass 2 (Sec. 4), Monte Carlo ray tracing of
  *   L_p = L_e + L_r,   L_r = L_r,s + L_r,d,   L_r,d = L_r,d,l + L_r,d,s + L_r,d,d,
@@ -54,9 +56,6 @@
 #include "photons.h"
 #include "surface.h"
 
-#define CACHE_FILL_STRICTNESS 0.5 /* the pre-pass makes records where none is usable
-                                     with this fraction of Ward's a, so that the final
-                                     pass's samples find records made at pixel centres */
 
 struct jensen1994_settings jensen1994_settings_default(void)
 {

@@ -63,8 +63,6 @@
 #define CAUSTIC_RADIUS_FRACTION 0.25 /* caustic estimates reach this much of the global
                                         ones: caustic photons are dense where they are,
                                         and a wide search would blur them over edges    */
-#define CACHE_FILL_STRICTNESS 0.5  /* the pre-pass makes records where none is usable
-                                        with this fraction of Ward's a                  */
 
 struct jensen1996_settings jensen1996_settings_default(void)
 {
