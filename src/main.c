@@ -193,6 +193,7 @@ static void print_jensen1994_stats(const struct jensen1994_stats *js)
             js->photon_rays);
     fprintf(stderr, "photons_stored=%zu\nphotons_caustic=%zu\nbytes_photon_map=%zu\n",
             js->photons_stored, js->photons_caustic, js->bytes_photon_map);
+    fprintf(stderr, "bytes_caustic_photons=%zu\n", js->bytes_caustic_photons);
     fprintf(stderr, "bytes_per_photon=%.1f\n",
             js->photons_stored > 0 ? (double)js->bytes_photon_map / js->photons_stored : 0.0);
     fprintf(stderr, "projection_maps=%zu\nprojection_marked=%.4f\nbytes_projection_maps=%zu\n",

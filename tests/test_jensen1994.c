@@ -304,6 +304,25 @@ static struct profile_errors caustic_profile_errors(const struct scene *scene,
     return pe;
 }
 
+/* Whether the caustic estimate from the CP photons' own tree (what stored_irradiance()
+ * reads) equals the estimate from the whole map filtered to CP photons, the paper's one
+ * map, along the profile (the same photons: equal up to the order of equal distances). */
+static int caustic_copy_agrees(const struct irradiance_stores *st)
+{
+    struct nearest *nn = nearest_create(200);
+    struct irradiance_settings is = {200, HUGE_VAL, PHOTON_CAUSTIC, DIFFERENTIAL_RUN};
+    int same = st->caustics->n_photons > 0;
+    for (int i = 0; i <= 20; i++) {
+        struct vec3 p = vec3(0.3, 0, -0.9 + 1.8 * i / 20.0);
+        struct store_query q = {p, vec3(0, 1, 0), -1, 0, 0, &is};
+        double copy = vec3_luminance(stored_irradiance(st, &q, nn));
+        double filtered = vec3_luminance(irradiance_estimate(st->photons, p, q.n, &is, nn));
+        same = same && fabs(copy - filtered) <= 1e-12 * fabs(filtered);
+    }
+    nearest_free(nn);
+    return same;
+}
+
 /* truth: the exact caustic of scenes/mirror-caustic.scene (the image source through the
  *   mirror's outline, computed above from the scene's numbers, not by the code under
  *   test), the paper's Fig. 7-8. The stores: mode 1994's pass 1, 200,000 light rays, with
@@ -319,7 +338,8 @@ static struct profile_errors caustic_profile_errors(const struct scene *scene,
  * catches: CP photons missing or weighted wrongly (the mirror's image too dim or bright),
  *   the projection maps' weights not exact, the normal test rejecting the floor's own
  *   photons, differential checking that does not stop at an edge, caustic photons not
- *   reaching the CI map or its elements' areas wrong. */
+ *   reaching the CI map or its elements' areas wrong, the CP photons' own tree holding
+ *   other photons or missing some (it must agree with the filtered map). */
 static void test_mirror_caustic_profile(struct check *t)
 {
     struct scene *scene = load_test_scene("scenes/mirror-caustic.scene", 0, 0);
@@ -341,6 +361,7 @@ static void test_mirror_caustic_profile(struct check *t)
         CHECK(t, pe.far[1] < 0.06 && pe.far[0] < 0.06);
         CHECK(t, pe.near[1] < 0.9 * pe.near[0]);
         CHECK(t, pe.far[2] < 0.3);
+        CHECK(t, caustic_copy_agrees(&photons));
         irradiance_stores_free(&photons);
         irradiance_stores_free(&maps);
     }

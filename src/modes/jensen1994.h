@@ -46,6 +46,7 @@ struct jensen1994_stats {
     size_t photons_stored;           /* in the photon map: CP + DP                       */
     size_t photons_caustic;          /* CP                                               */
     size_t bytes_photon_map;
+    size_t bytes_caustic_photons;    /* the copies of the CP photons in their own tree    */
     size_t projection_maps;          /* emission positions over all lights (0: maps off)  */
     double projection_marked;        /* share of the lights' power the maps emit          */
     size_t bytes_projection_maps;
@@ -77,6 +78,8 @@ struct irradiance_settings;
 struct irradiance_stores {
     struct kdtree *photons;                 /* owned: photons holding their surface normal
                                                and the caustic bit (CP: PHOTON_CAUSTIC)  */
+    struct kdtree *caustics;                /* owned: copies of the CP photons alone, so
+                                               that caustic estimates search only them   */
     struct illumination_maps *illumination; /* owned, finished; NULL: photon maps only   */
 };
 
