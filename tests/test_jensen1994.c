@@ -347,6 +347,7 @@ static void test_mirror_caustic_profile(struct check *t)
     if (scene == NULL)
         return;
     struct jensen1994_settings js = jensen1994_settings_default();
+    js.n_photons = 200000;
     struct jensen1994_stats stats;
     struct error err;
     struct irradiance_stores photons, maps;

@@ -40,7 +40,8 @@ static const struct option_spec specs[] = {
      "output image; FILE.ppm is written beside it (default: SCENE's name, .pfm)"},
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)"},
     {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N",
-     "camera samples per pixel (default 16; 2008: eye rays per pixel, default 4)"},
+     "camera samples per pixel (default 16; 1994 and 1996: 64; 2008: eye rays per pixel, "
+     "default 4)"},
     {"--width", OPT_INT, FIELD(width), 1, MAX_IMAGE_SIDE, "N", "image width (default: scene's)"},
     {"--height", OPT_INT, FIELD(height), 1, MAX_IMAGE_SIDE, "N",
      "image height (default: scene's)"},
@@ -61,8 +62,8 @@ static const struct option_spec specs[] = {
     {"--variance", OPT_FILE, FIELD(variance), 0, 0, "FILE.pfm",
      "also write each pixel's variance of the mean (needs --spp >= 2)"},
     {"--photons", OPT_INT, FIELD(photons), 1, MAX_PHOTONS, "N",
-     "photon modes: photons emitted (default: photons and 1994 200000, 1996 1000000 for the "
-     "global map)"},
+     "photon modes: photons emitted (default: photons 200000, 1994 1000000, 1996 1000000 for "
+     "the global map)"},
     {"--gather", OPT_INT, FIELD(gather), 1, MAX_GATHER, "K",
      "photon modes: photons in each radiance or irradiance estimate (default 100)"},
     {"--max-radius", OPT_REAL, FIELD(max_radius), 0, 1e30, "R",
@@ -371,6 +372,7 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
     if (o->spp == 0)
         o->spp = o->mode == MODE_PPM2008     ? PPM_DEFAULT_SPP
                  : o->mode == MODE_JENSEN1996 ? J96_DEFAULT_SPP
+                 : o->mode == MODE_JENSEN1994 ? J94_DEFAULT_SPP
                                               : DEFAULT_SPP;
     if (o->mode == MODE_PPM2008 && o->variance != NULL)
         return error_set(err, "", 0, "--variance: not available with --mode 2008, whose "

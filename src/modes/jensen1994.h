@@ -12,7 +12,11 @@
 #include "../base/vec3.h"
 #include "render.h"
 
-#define J94_DEFAULT_PHOTONS 200000     /* --photons: light rays of pass 1                 */
+#define J94_DEFAULT_PHOTONS 1000000    /* --photons: light rays of pass 1; searches cost
+                                          log N, so a large map is cheap (README)        */
+#define J94_DEFAULT_SPP 64             /* --spp: the cache and maps are shared by all
+                                          samples, so the final pass is the cheap part;
+                                          16 leave the light's outline aliased by 4%    */
 #define J94_DEFAULT_GATHER 100         /* --gather: photons in an irradiance estimate (the
                                           paper used 40 on the desk, 80 on the landscape,
                                           200 for its Fig. 8)                            */
