@@ -294,15 +294,16 @@ static struct vec3 diffuse_reflection(const struct surface *s, const struct mate
 /* -- 4.0.1 L_r,d,l: direct light -- */
 
 /* Each light sampled on a k x k grid of jittered strata of its sample space, through the
- * diffuse-like part, with a shadow ray per sample. */
+ * diffuse-like part, with a shadow ray per sample; a point light, whose every sample is
+ * the same, once. */
 static struct vec3 direct_light(const struct j94 *m, const struct surface *s,
                                 const struct material *diffuse,
                                 const struct shading_frame *frame, struct rng *rng,
                                 struct render_counters *counters)
 {
-    int k = m->light_strata;
     struct vec3 sum = vec3_zero();
     for (size_t i = 0; i < m->scene->n_lights; i++) {
+        int k = m->scene->lights[i].kind == LIGHT_POINT ? 1 : m->light_strata;
         for (int j = 0; j < k * k; j++) {
             double u1 = (j % k + rng_uniform(rng)) / k, u2 = (j / k + rng_uniform(rng)) / k;
             struct light_sample ls;
