@@ -56,6 +56,34 @@ static void test_log_axis_fit(struct check *t)
     }
 }
 
+/* truth: the definition in plot.h worked by hand: the least step of 1, 2 or 5 x 10^k
+ *   that is at least a range's eighth, the ends rounded out to its multiples; an empty
+ *   range widened by half its value (by 1 at 0).
+ * tolerance: 1e-12 relative; multiples of 0.1 are not exact in binary.
+ * catches: the step's mantissas skipped or tried in the wrong order, ends rounded inwards
+ *   (a point off the frame), a zero-width range (a division by zero in the mapping),
+ *   a negative range rounded the wrong way. */
+static void test_linear_axis_fit(struct check *t)
+{
+    static const struct {
+        double lo, hi, axis_lo, axis_hi, step;
+    } cases[] = {
+        {0, 0.53, 0, 0.6, 0.1},   {-0.9, 0.9, -1, 1, 0.5}, {3, 3, 1.5, 4.5, 0.5},
+        {0, 0, -1, 1, 0.5},       {0, 8, 0, 8, 1},         {0, 8.0001, 0, 10, 2},
+        {-5, -3, -5, -3, 0.5},    {2e6, 3e6, 2e6, 3e6, 2e5},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        struct linear_axis a = linear_axis_fit(cases[i].lo, cases[i].hi);
+        double scale = 1e-12 * fmax(1.0, fabs(cases[i].axis_hi) + fabs(cases[i].axis_lo));
+        int ok = fabs(a.lo - cases[i].axis_lo) <= scale && fabs(a.hi - cases[i].axis_hi)
+                 <= scale && fabs(a.step - cases[i].step) <= 1e-12 * cases[i].step;
+        CHECK(t, ok);
+        if (!ok)
+            fprintf(stderr, "  [%g, %g]: got %g .. %g step %g\n", cases[i].lo, cases[i].hi,
+                    a.lo, a.hi, a.step);
+    }
+}
+
 /* The frame rectangle of an SVG written by plot.c; 0 when it is not there. */
 static int read_frame(const char *svg, double *x, double *y, double *w, double *h)
 {
@@ -86,13 +114,14 @@ static int read_polyline(const char *svg, int n, double *xy, int max)
 /* Writes csv_text to a CSV, plots it alone, returns the SVG text (caller frees) or NULL. */
 static char *plot_one(const char *csv_text)
 {
+    const struct plot_spec errors = plot_spec_errors();
     char csv[NAME_MAX_BYTES], svg[NAME_MAX_BYTES];
     temp_name(csv, sizeof csv, "plot", "one.csv");
     temp_name(svg, sizeof svg, "plot", "one.svg");
     write_text_file(csv, csv_text);
     const char *files[1] = {csv};
     struct error err;
-    char *text = plot_files(files, 1, svg, &err) == 0 ? read_text_file(svg) : NULL;
+    char *text = plot_files(files, 1, &errors, svg, &err) == 0 ? read_text_file(svg) : NULL;
     remove(csv);
     remove(svg);
     return text;
@@ -142,6 +171,48 @@ static void test_points_land_on_decades(struct check *t)
     free(svg);
 }
 
+/* truth: closed form; on linear axes fitted by hand (x: -1 .. 1 by 0.5, y: 0 .. 1 by
+ *   0.2), column a's points (-1, 0), (0, 0.5), (1, 1) run from the bottom left corner
+ *   through the centre to the top right, column b's the other way; with one file the
+ *   runs are labelled by column, the y axis "value" and the x axis by its column.
+ * tolerance: 0.006 units; coordinates are printed with two decimals.
+ * catches: log10 applied on a linear axis, columns swapped or read by position, a
+ *   second --y column dropped, labels naming the file instead of the columns. */
+static void test_linear_profile(struct check *t)
+{
+    char csv[NAME_MAX_BYTES], svg_name[NAME_MAX_BYTES];
+    temp_name(csv, sizeof csv, "plot", "profile.csv");
+    temp_name(svg_name, sizeof svg_name, "plot", "profile.svg");
+    write_text_file(csv, "b,z,a\n1,-1,0\n0.5,0,0.5\n0,1,1\n");
+    struct plot_spec spec = plot_spec_errors();
+    spec.linear = 1;
+    spec.x = "z";
+    spec.y[0] = "a";
+    spec.y[1] = "b";
+    spec.n_y = 2;
+    const char *files[1] = {csv};
+    struct error err;
+    CHECK(t, plot_files(files, 1, &spec, svg_name, &err) == 0);
+    char *svg = read_text_file(svg_name);
+    double xy[2 * 8], x, y, w, h;
+    CHECK(t, svg != NULL && read_frame(svg, &x, &y, &w, &h));
+    if (svg != NULL) {
+        CHECK(t, read_polyline(svg, 0, xy, 8) == 3);
+        check_point(t, xy, 0, x, y + h);
+        check_point(t, xy, 1, x + 0.5 * w, y + 0.5 * h);
+        check_point(t, xy, 2, x + w, y);
+        CHECK(t, read_polyline(svg, 1, xy, 8) == 3);
+        check_point(t, xy, 0, x, y);
+        check_point(t, xy, 2, x + w, y + h);
+        CHECK(t, strstr(svg, ">a</text>") && strstr(svg, ">b</text>"));
+        CHECK(t, strstr(svg, ">z</text>") && strstr(svg, ">value</text>"));
+        CHECK(t, strstr(svg, ">-0.5</text>") && strstr(svg, ">0.8</text>"));
+    }
+    free(svg);
+    remove(csv);
+    remove(svg_name);
+}
+
 /* truth: the legend rules in plot.c: each run is labelled with its file's base name
  *   without ".csv", XML-escaped; rows with seconds or relmse 0 are left out and counted
  *   in the legend; the document is one SVG 1.1 element with a viewBox, white behind.
@@ -150,6 +221,7 @@ static void test_points_land_on_decades(struct check *t)
  *   zero rows drawn (log10(0) = -Inf in the points) or silently dropped, a run missing. */
 static void test_legend_and_skipped_rows(struct check *t)
 {
+    const struct plot_spec errors = plot_spec_errors();
     char a[NAME_MAX_BYTES], b[NAME_MAX_BYTES], svg_name[NAME_MAX_BYTES];
     temp_name(a, sizeof a, "plot", "x&y<z>.csv");
     temp_name(b, sizeof b, "plot", "zeros.csv");
@@ -158,7 +230,7 @@ static void test_legend_and_skipped_rows(struct check *t)
     write_text_file(b, HEADER "0,1,1,0.5\n1,1,1,0.1\n2,1,1,0\n4,1,1,0.05\n");
     const char *files[2] = {a, b};
     struct error err;
-    CHECK(t, plot_files(files, 2, svg_name, &err) == 0);
+    CHECK(t, plot_files(files, 2, &errors, svg_name, &err) == 0);
     char *svg = read_text_file(svg_name);
     CHECK(t, svg != NULL);
     if (svg != NULL) {
@@ -190,6 +262,7 @@ struct bad_csv {
  * nothing, and leaves an existing output untouched. */
 static void check_refused(struct check *t, const char *csv_name, const struct bad_csv *c)
 {
+    const struct plot_spec errors = plot_spec_errors();
     char svg[NAME_MAX_BYTES], tmp[NAME_MAX_BYTES + 8];
     temp_name(svg, sizeof svg, "plot", "refused.svg");
     snprintf(tmp, sizeof tmp, "%s.tmp", svg);
@@ -197,7 +270,7 @@ static void check_refused(struct check *t, const char *csv_name, const struct ba
     const char *files[1] = {csv_name};
     struct error err;
     err.message[0] = '\0';
-    int ok = plot_files(files, 1, svg, &err) == -1 && strcmp(err.file, csv_name) == 0
+    int ok = plot_files(files, 1, &errors, svg, &err) == -1 && strcmp(err.file, csv_name) == 0
              && err.line == c->line && strstr(err.message, c->keyword) != NULL;
     CHECK(t, ok);
     if (!ok)
@@ -255,6 +328,7 @@ static void test_plot_refuses_bad_csv(struct check *t)
  *   degenerate axis, no runs at all accepted. */
 static void test_plot_refuses_bad_sets(struct check *t)
 {
+    const struct plot_spec errors = plot_spec_errors();
     char csv[NAME_MAX_BYTES], svg[NAME_MAX_BYTES];
     temp_name(csv, sizeof csv, "plot", "set.csv");
     temp_name(svg, sizeof svg, "plot", "set.svg");
@@ -263,14 +337,26 @@ static void test_plot_refuses_bad_sets(struct check *t)
         files[i] = csv;
     struct error err;
     write_text_file(csv, HEADER "1,1,1,0.5\n");
-    CHECK(t, plot_files(files, PLOT_MAX_SERIES, svg, &err) == 0);
+    CHECK(t, plot_files(files, PLOT_MAX_SERIES, &errors, svg, &err) == 0);
     remove(svg);
-    CHECK(t, plot_files(files, PLOT_MAX_SERIES + 1, svg, &err) == -1);
+    CHECK(t, plot_files(files, PLOT_MAX_SERIES + 1, &errors, svg, &err) == -1);
     CHECK(t, strstr(err.message, "1 to 8") != NULL && !file_exists(svg));
-    CHECK(t, plot_files(files, 0, svg, &err) == -1 && !file_exists(svg));
+    CHECK(t, plot_files(files, 0, &errors, svg, &err) == -1 && !file_exists(svg));
     write_text_file(csv, HEADER "0,1,1,0.5\n1,1,1,0\n");
-    CHECK(t, plot_files(files, 2, svg, &err) == -1);
+    CHECK(t, plot_files(files, 2, &errors, svg, &err) == -1);
     CHECK(t, strstr(err.message, "nothing to plot") != NULL && !file_exists(svg));
+    struct plot_spec columns = errors;
+    columns.y[1] = columns.y[2] = "rmse";
+    columns.n_y = 3;
+    CHECK(t, plot_files(files, 3, &columns, svg, &err) == -1); /* 9 runs */
+    CHECK(t, strstr(err.message, "1 to 8") != NULL && !file_exists(svg));
+    columns.y[1] = "work";
+    write_text_file(csv, HEADER "1,-1,1,0.5\n");
+    CHECK(t, plot_files(files, 1, &columns, svg, &err) == -1 && err.line == 2);
+    CHECK(t, strstr(err.message, "work must be >= 0") != NULL && !file_exists(svg));
+    columns.y[2] = "-0.5";
+    CHECK(t, plot_files(files, 1, &columns, svg, &err) == -1 && err.line == 1);
+    CHECK(t, strstr(err.message, "no column named '-0.5'") != NULL && !file_exists(svg));
     remove(csv);
 }
 
@@ -305,12 +391,22 @@ static void test_plot_command_line(struct check *t)
     CHECK(t, photon_plot(args, log) == 2 && file_contains(log, "-o needs"));
     snprintf(args, sizeof args, "--log %s -o %s", csv, svg);
     CHECK(t, photon_plot(args, log) == 2 && file_contains(log, "unknown option '--log'"));
+    snprintf(args, sizeof args, "%s -o %s --y", csv, svg);
+    CHECK(t, photon_plot(args, log) == 2 && file_contains(log, "--y needs one value"));
+    snprintf(args, sizeof args, "%s -o %s --y relmse --y relmse --y relmse --y relmse --y "
+                                "relmse --y relmse --y relmse --y relmse --y relmse", csv, svg);
+    CHECK(t, photon_plot(args, log) == 2 && file_contains(log, "more than 8 --y"));
     snprintf(args, sizeof args, "%s.missing -o %s", csv, svg);
     CHECK(t, photon_plot(args, log) == 2 && file_contains(log, ".missing: cannot open"));
     CHECK(t, !file_exists(svg));
     snprintf(args, sizeof args, "%s -o %s", csv, svg);
     CHECK(t, photon_plot(args, log) == 0 && file_exists(svg));
     CHECK(t, file_equals_text(log, ""));
+    remove(svg);
+    snprintf(args, sizeof args, "--linear --x work --y rmse --y relmse --x-title 'the <x>' "
+                                "%s -o %s", csv, svg);
+    CHECK(t, photon_plot(args, log) == 0 && file_contains(svg, ">the &lt;x&gt;</text>"));
+    CHECK(t, file_contains(svg, ">rmse</text>") && file_equals_text(log, ""));
     remove(svg);
     write_text_file(csv, HEADER "1,1,1,0.5\n2,1,1,0.25,9\n");
     snprintf(args, sizeof args, "%s -o %s", csv, svg);
@@ -323,7 +419,9 @@ static void test_plot_command_line(struct check *t)
 void test_plot(struct check *t)
 {
     RUN_TEST(t, test_log_axis_fit);
+    RUN_TEST(t, test_linear_axis_fit);
     RUN_TEST(t, test_points_land_on_decades);
+    RUN_TEST(t, test_linear_profile);
     RUN_TEST(t, test_legend_and_skipped_rows);
     RUN_TEST(t, test_plot_refuses_bad_csv);
     RUN_TEST(t, test_plot_refuses_bad_sets);

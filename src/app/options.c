@@ -144,7 +144,13 @@ static void print_help(void)
            "                                    .nff name (see README: Scene files, NFF files)\n"
            "       photon compare A.pfm B.pfm [--diff OUT.ppm] [--ref-variance VB.pfm]\n"
            "                      [--test-variance VA.pfm] [--alpha ALPHA] [--block N]\n"
-           "       photon plot A.csv [B.csv ...] -o PLOT.svg\n\noptions:\n");
+           "       photon plot A.csv [B.csv ...] -o PLOT.svg      (relmse against seconds)\n"
+           "       photon plot --linear --x COL --y COL [--y COL]... [--x-title T]\n"
+           "                   [--y-title T] A.csv [B.csv ...] -o PLOT.svg\n"
+           "       photon probe SCENE --line X0 Y0 Z0 X1 Y1 Z1 --samples N -o FILE.csv\n"
+           "                   [--normal NX NY NZ] [--photons N] [--gather N]\n"
+           "                   [--differential R] [--seed S]   (irradiance along a line)\n"
+           "\noptions:\n");
     for (size_t i = 0; i < sizeof specs / sizeof specs[0]; i++) {
         char left[40];
         snprintf(left, sizeof left, "%s %s", specs[i].name, specs[i].args);

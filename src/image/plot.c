@@ -1,26 +1,28 @@
 /*
- * image/plot.c -- `photon plot A.csv [B.csv ...] -o PLOT.svg`: relative MSE against CPU
- * seconds, log-log, one line per run, written as plain SVG 1.1 by hand.
+ * image/plot.c -- `photon plot`: columns of CSV files against one another, one line per
+ * run, written as plain SVG 1.1 by hand. By default relative MSE against CPU seconds,
+ * log-log, from the renderer's --report files; `--x`, `--y` and `--linear` draw other
+ * columns, such as a `photon probe` profile, on linear axes.
  *
- * Input: the renderer's --report files, a header line naming the columns
- * ("seconds,work,rmse,relmse") and one row of numbers per checkpoint. Columns are found
- * by name, so more may be added; every field of every row must be a finite number, and
- * seconds and relmse must be >= 0. Blank lines are ignored. Limits: lines of CSV_LINE_MAX
- * bytes, CSV_FIELDS_MAX columns, SERIES_MAX_ROWS rows, PLOT_MAX_SERIES files. A row with
- * seconds = 0 or relmse = 0 has no place on a log axis: it is skipped, and the legend says
- * how many were ("3 rows at 0 not shown"). It is not refused, because a render compared
- * with itself, or a checkpoint within the clock's resolution, is not bad input; but a
- * plot with no point at all is.
+ * Input: CSV files read by csv.c (a header naming the columns, rows of finite numbers).
+ * Columns are found by name, so files may hold more. A run is one file's column y[i]
+ * against its column x: n_files x n_y runs, at most PLOT_MAX_SERIES. On log axes a
+ * negative value is refused, and a row with a 0 in x or y has no place: it is skipped,
+ * and the legend says how many were ("3 rows at 0 not shown"). It is not refused,
+ * because a render compared with itself, or a checkpoint within the clock's resolution,
+ * is not bad input; but a plot with no point at all is.
  *
- * Output: the plot area is FRAME_WIDTH x FRAME_HEIGHT units, each axis whole decades
- * (log_axis_fit), labelled 10^k (thinned so labels never crowd), with minor ticks at
- * 2..9 x 10^k where a decade is wide enough, and grid lines at both; the legend sits to
- * the right of the plot, so it never hides data, and the picture's width follows it. Run
- * i is drawn with STYLES[i]: an Okabe-Ito colour (told apart with colour-blindness), a
- * marker shape and a dash pattern (told apart in greyscale). Fonts are generic
- * sans-serif; numbers are printed with "%.2f" in the C locale (no setlocale anywhere).
- * Labels show the file's base name without ".csv", with bytes outside printable ASCII
- * shown as '?', so the document is valid XML whatever the file name.
+ * Output: the plot area is FRAME_WIDTH x FRAME_HEIGHT units. A log axis spans whole
+ * decades (log_axis_fit), labelled 10^k (thinned so labels never crowd), with minor ticks
+ * at 2..9 x 10^k where a decade is wide enough, and grid lines at both; a linear axis
+ * (linear_axis_fit) has labelled ticks at multiples of a step of 1, 2 or 5 x 10^k. The
+ * legend sits to the right of the plot, so it never hides data, and the picture's width
+ * follows it. Run i is drawn with STYLES[i]: an Okabe-Ito colour (told apart with
+ * colour-blindness), a marker shape and a dash pattern (told apart in greyscale). Fonts
+ * are generic sans-serif; numbers are printed with "%.2f" and "%g" in the C locale (no
+ * setlocale anywhere). Labels show the file's base name without ".csv" (and the column
+ * when several are drawn), with bytes outside printable ASCII shown as '?', so the
+ * document is valid XML whatever the names.
  *
  * Nothing is written until every CSV has been read; the SVG goes through output_open()
  * and output_commit(), so it is whole or absent. Each struct series owns its arrays.
@@ -28,218 +30,159 @@
 #include "plot.h"
 
 #include <assert.h>
-#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "csv.h"
 
-#define CSV_LINE_MAX 1024       /* longest line read; a report row is under 100 bytes */
-#define CSV_FIELDS_MAX 16       /* columns in a header; a report has 4 */
 #define SERIES_MAX_ROWS 1000000 /* rows per file: a report has one per checkpoint */
-#define LABEL_CHARS 40          /* longest legend label kept, before "..." */
-#define PLOT_USAGE "usage: photon plot A.csv [B.csv ...] -o PLOT.svg"
+#define LABEL_CHARS 40          /* longest name kept in a label, before "..." */
+#define LINEAR_MAX_STEPS 8      /* a linear axis's range / step is at most about this */
+#define PLOT_USAGE "usage: photon plot [--x COL] [--y COL]... [--linear] A.csv [B.csv ...] " \
+                   "-o PLOT.svg"
 
-/* One run: the points of one CSV file that a log-log plot can show. */
+/* One run: the points of one column of one CSV file. */
 struct series {
-    char label[LABEL_CHARS + 4]; /* base name without ".csv", printable ASCII only */
-    double *seconds;             /* owned; n_points values > 0, in file order */
-    double *relmse;              /* owned; n_points values > 0 */
-    size_t n_points, capacity;   /* n_points <= capacity, the arrays' length */
-    size_t n_skipped;            /* rows with seconds = 0 or relmse = 0 */
+    char label[2 * LABEL_CHARS + 16]; /* printable ASCII only */
+    double *x, *y;                    /* owned; n_points values each, in file order */
+    size_t n_points, capacity;        /* n_points <= capacity, the arrays' length */
+    size_t n_skipped;                 /* rows a log axis cannot show (a 0 in x or y) */
 };
 
-/* A CSV file being read, one line at a time. */
-struct csv {
-    FILE *f;                          /* owned by series_read(), which opens and closes it */
-    const char *name;                 /* borrowed: the file's name, for messages */
-    int line;                         /* 1-based number of the line in text */
-    char text[CSV_LINE_MAX + 2];      /* the line, without its end; fields point into it */
-    char *field[CSV_FIELDS_MAX];      /* the line's comma-separated fields, trimmed */
-    int n_fields;
-    int n_columns;                    /* the header's fields: every row must have as many */
-    int col_seconds, col_relmse;      /* the header's columns named seconds and relmse */
-};
+struct plot_spec plot_spec_errors(void)
+{
+    struct plot_spec spec;
+    memset(&spec, 0, sizeof spec);
+    spec.x = "seconds";
+    spec.y[0] = "relmse";
+    spec.n_y = 1;
+    spec.x_title = spec.y_title = NULL;
+    return spec;
+}
 
 static void series_free_arrays(struct series *s)
 {
-    free(s->seconds);
-    free(s->relmse);
-    s->seconds = s->relmse = NULL;
+    free(s->x);
+    free(s->y);
+    s->x = s->y = NULL;
 }
 
-/* The base name of path without a ".csv" ending, cut to LABEL_CHARS with "...". */
-static void series_label(const char *path, char *label)
+/* text, cut to LABEL_CHARS with "...", with bytes outside printable ASCII as '?',
+ * appended to label. */
+static void append_printable(char *label, const char *text, size_t n)
+{
+    size_t at = strlen(label), kept = n > LABEL_CHARS ? LABEL_CHARS : n;
+    for (size_t i = 0; i < kept; i++) {
+        unsigned char c = (unsigned char)text[i];
+        label[at + i] = c >= 0x20 && c < 0x7F ? (char)c : '?';
+    }
+    strcpy(label + at + kept, n > kept ? "..." : "");
+}
+
+/* The run's label: the base name of path without a ".csv" ending, or the column's name,
+ * or both, whichever tells the runs of this plot apart. */
+static void series_label(const char *path, const char *column, int n_files, int n_columns,
+                         char *label)
 {
     const char *base = strrchr(path, '/') != NULL ? strrchr(path, '/') + 1 : path;
     size_t n = strlen(base);
     if (n > 4 && strcmp(base + n - 4, ".csv") == 0)
         n -= 4;
-    size_t kept = n > LABEL_CHARS ? LABEL_CHARS : n;
-    for (size_t i = 0; i < kept; i++) {
-        unsigned char c = (unsigned char)base[i];
-        label[i] = c >= 0x20 && c < 0x7F ? (char)c : '?';
-    }
-    strcpy(label + kept, n > kept ? "..." : "");
+    label[0] = '\0';
+    if (n_files > 1 || n_columns == 1)
+        append_printable(label, base, n);
+    if (n_files > 1 && n_columns > 1)
+        strcat(label, ": ");
+    if (n_columns > 1)
+        append_printable(label, column, strlen(column));
 }
 
-static void series_add(struct series *s, double seconds, double relmse)
+static void series_add(struct series *s, double x, double y)
 {
     if (s->n_points == s->capacity) {
         s->capacity = s->capacity == 0 ? 64 : 2 * s->capacity;
-        s->seconds = xrealloc(s->seconds, s->capacity, sizeof *s->seconds, "plot points");
-        s->relmse = xrealloc(s->relmse, s->capacity, sizeof *s->relmse, "plot points");
+        s->x = xrealloc(s->x, s->capacity, sizeof *s->x, "plot points");
+        s->y = xrealloc(s->y, s->capacity, sizeof *s->y, "plot points");
     }
-    s->seconds[s->n_points] = seconds;
-    s->relmse[s->n_points] = relmse;
+    s->x[s->n_points] = x;
+    s->y[s->n_points] = y;
     s->n_points++;
 }
 
-static int is_blank(int c)
+/* One row's point (x, y) into s: on log axes refused when negative, skipped (counted)
+ * when 0. */
+static int add_row(const struct csv *csv, const struct plot_spec *spec, double x, double y,
+                   const char *y_name, struct series *s, struct error *err)
 {
-    return c == ' ' || c == '\t';
-}
-
-/* Reads the next line that is not blank into csv->text, without its end. Returns 1 for
- * a line, 0 at the end of the file, -1 with *err filled. */
-static int csv_read_line(struct csv *csv, struct error *err)
-{
-    do {
-        if (fgets(csv->text, sizeof csv->text, csv->f) == NULL) {
-            if (ferror(csv->f))
-                return error_set(err, csv->name, 0, "cannot read the file (is it a "
-                                                    "directory?)");
-            return 0;
-        }
-        csv->line++;
-        size_t n = strcspn(csv->text, "\r\n");
-        if (n > CSV_LINE_MAX) /* text has room for CSV_LINE_MAX bytes and the line end */
-            return error_set(err, csv->name, csv->line, "line longer than %d bytes",
-                             CSV_LINE_MAX);
-        csv->text[n] = '\0';
-    } while (csv->text[strspn(csv->text, " \t")] == '\0');
-    return 1;
-}
-
-/* Splits csv->text at its commas into csv->field[], each trimmed of spaces and tabs. */
-static int csv_split(struct csv *csv, struct error *err)
-{
-    csv->n_fields = 0;
-    for (char *p = csv->text; p != NULL; csv->n_fields++) {
-        if (csv->n_fields == CSV_FIELDS_MAX)
-            return error_set(err, csv->name, csv->line, "more than %d columns",
-                             CSV_FIELDS_MAX);
-        char *comma = strchr(p, ',');
-        if (comma != NULL)
-            *comma = '\0';
-        while (is_blank(*p))
-            p++;
-        for (char *end = p + strlen(p); end > p && is_blank(end[-1]); end--)
-            end[-1] = '\0';
-        csv->field[csv->n_fields] = p;
-        p = comma != NULL ? comma + 1 : NULL;
-    }
-    return 0;
-}
-
-/* The next line that is not blank, split into fields: 1, 0 at the end, -1 on error. */
-static int csv_next_line(struct csv *csv, struct error *err)
-{
-    int status = csv_read_line(csv, err);
-    if (status == 1 && csv_split(csv, err) != 0)
-        return -1;
-    return status;
-}
-
-/* The header: the number of columns and which are named "seconds" and "relmse". */
-static int csv_read_header(struct csv *csv, struct error *err)
-{
-    int status = csv_next_line(csv, err);
-    if (status < 0)
-        return -1;
-    if (status == 0)
-        return error_set(err, csv->name, 0, "empty file: expected a --report CSV "
-                                            "(header seconds,work,rmse,relmse)");
-    csv->n_columns = csv->n_fields;
-    csv->col_seconds = csv->col_relmse = -1;
-    for (int i = 0; i < csv->n_fields; i++) {
-        if (strcmp(csv->field[i], "seconds") == 0)
-            csv->col_seconds = i;
-        if (strcmp(csv->field[i], "relmse") == 0)
-            csv->col_relmse = i;
-    }
-    if (csv->col_seconds < 0 || csv->col_relmse < 0)
-        return error_set(err, csv->name, csv->line, "expected a header naming the columns "
-                                                    "seconds and relmse, such as "
-                                                    "seconds,work,rmse,relmse");
-    return 0;
-}
-
-/* Every field a finite number (strtod's whole syntax, nothing after it). */
-static int csv_parse_row(const struct csv *csv, double *value, struct error *err)
-{
-    if (csv->n_fields != csv->n_columns)
-        return error_set(err, csv->name, csv->line, "expected %d fields as in the header, "
-                                                    "found %d", csv->n_columns, csv->n_fields);
-    for (int i = 0; i < csv->n_columns; i++) {
-        char *end;
-        value[i] = strtod(csv->field[i], &end);
-        if (end == csv->field[i] || *end != '\0' || !isfinite(value[i]))
-            return error_set(err, csv->name, csv->line, "field %d '%s' is not a finite "
-                                                        "number", i + 1, csv->field[i]);
-    }
-    return 0;
-}
-
-/* One data row into s: refused when negative, skipped (counted) when 0. */
-static int csv_add_row(const struct csv *csv, const double *value, struct series *s,
-                       struct error *err)
-{
-    double seconds = value[csv->col_seconds], relmse = value[csv->col_relmse];
-    if (seconds < 0 || relmse < 0)
-        return error_set(err, csv->name, csv->line, "%s must be >= 0, found %g",
-                         seconds < 0 ? "seconds" : "relmse", seconds < 0 ? seconds : relmse);
-    if (s->n_points + s->n_skipped == SERIES_MAX_ROWS)
-        return error_set(err, csv->name, csv->line, "more than %d rows", SERIES_MAX_ROWS);
-    if (seconds == 0 || relmse == 0)
+    if (!spec->linear && (x < 0 || y < 0))
+        return error_set(err, csv->name, csv->line, "%s must be >= 0 on a log axis, "
+                                                    "found %g", x < 0 ? spec->x : y_name,
+                         x < 0 ? x : y);
+    if (!spec->linear && (x == 0 || y == 0))
         s->n_skipped++;
     else
-        series_add(s, seconds, relmse);
+        series_add(s, x, y);
     return 0;
 }
 
-static int csv_read_rows(struct csv *csv, struct series *s, struct error *err)
+/* The header's column called name; -1 with *err filled when there is none. */
+static int find_column(const struct csv *csv, const char *name, struct error *err)
 {
-    if (csv_read_header(csv, err) != 0)
+    int column = csv_column(csv, name);
+    if (column < 0)
+        return error_set(err, csv->name, csv->header_line, "the header has no column "
+                                                           "named '%s' (a --report file's "
+                                                           "is seconds,work,rmse,relmse)",
+                         name);
+    return column;
+}
+
+/* The rows of an open file into s[0 .. spec->n_y - 1]. */
+static int read_rows(struct csv *csv, const struct plot_spec *spec, struct series *s,
+                     struct error *err)
+{
+    int col_x = find_column(csv, spec->x, err), col_y[PLOT_MAX_SERIES];
+    if (col_x < 0)
         return -1;
-    int header_line = csv->line, status;
-    double value[CSV_FIELDS_MAX];
-    while ((status = csv_next_line(csv, err)) == 1) {
-        if (csv_parse_row(csv, value, err) != 0 || csv_add_row(csv, value, s, err) != 0)
+    for (int i = 0; i < spec->n_y; i++) {
+        if ((col_y[i] = find_column(csv, spec->y[i], err)) < 0)
             return -1;
     }
-    if (status == 0 && s->n_points + s->n_skipped == 0)
-        return error_set(err, csv->name, header_line, "no rows after the header");
+    double value[CSV_FIELDS_MAX];
+    int status, rows = 0;
+    while ((status = csv_next_row(csv, value, err)) == 1) {
+        if (++rows > SERIES_MAX_ROWS)
+            return error_set(err, csv->name, csv->line, "more than %d rows",
+                             SERIES_MAX_ROWS);
+        for (int i = 0; i < spec->n_y; i++) {
+            if (add_row(csv, spec, value[col_x], value[col_y[i]], spec->y[i], &s[i], err))
+                return -1;
+        }
+    }
+    if (status == 0 && rows == 0)
+        return error_set(err, csv->name, csv->header_line, "no rows after the header");
     return status;
 }
 
-/* Reads one --report file into *s (zeroed here); -1 with *err filled and s emptied. */
-static int series_read(const char *name, struct series *s, struct error *err)
+/* Reads one file's runs into s[0 .. spec->n_y - 1] (zeroed here); -1 with *err filled
+ * and the runs emptied. */
+static int series_read(const char *name, const struct plot_spec *spec, int n_files,
+                       struct series *s, struct error *err)
 {
-    memset(s, 0, sizeof *s);
-    s->seconds = s->relmse = NULL;
-    series_label(name, s->label);
+    for (int i = 0; i < spec->n_y; i++) {
+        memset(&s[i], 0, sizeof s[i]);
+        s[i].x = s[i].y = NULL;
+        series_label(name, spec->y[i], n_files, spec->n_y, s[i].label);
+    }
     struct csv csv;
-    csv.name = name;
-    csv.line = 0;
-    csv.f = fopen(name, "rb");
-    if (csv.f == NULL)
-        return error_set(err, name, 0, "cannot open for reading: %s", strerror(errno));
-    int status = csv_read_rows(&csv, s, err);
-    fclose(csv.f);
-    if (status != 0)
-        series_free_arrays(s);
+    if (csv_open(&csv, name, err) != 0)
+        return -1;
+    int status = read_rows(&csv, spec, s, err);
+    csv_close(&csv);
+    for (int i = 0; i < spec->n_y && status != 0; i++)
+        series_free_arrays(&s[i]);
     return status;
 }
 
@@ -256,6 +199,29 @@ struct log_axis log_axis_fit(double lo, double hi)
         axis.k_lo--;
         axis.k_hi++;
     }
+    return axis;
+}
+
+struct linear_axis linear_axis_fit(double lo, double hi)
+{
+    assert(isfinite(lo) && isfinite(hi) && lo <= hi);
+    if (lo == hi) {
+        double widen = lo != 0 ? 0.5 * fabs(lo) : 1.0;
+        lo -= widen;
+        hi += widen;
+    }
+    double least = (hi - lo) / LINEAR_MAX_STEPS, decade = pow(10.0, floor(log10(least)));
+    static const double mantissa[4] = {1, 2, 5, 10};
+    struct linear_axis axis;
+    axis.step = 10 * decade;
+    for (int i = 0; i < 4; i++) {
+        if (mantissa[i] * decade >= least) {
+            axis.step = mantissa[i] * decade;
+            break;
+        }
+    }
+    axis.lo = floor(lo / axis.step) * axis.step;
+    axis.hi = ceil(hi / axis.step) * axis.step;
     return axis;
 }
 
@@ -286,10 +252,18 @@ enum axis_dir { AXIS_X, AXIS_Y };
 enum mark { MARK_MAJOR, MARK_MINOR, MARK_MINOR_GRID };
 enum layer { LAYER_MINOR_GRID, LAYER_MAJOR_GRID, LAYER_TICKS };
 
+/* One axis: logarithmic or linear. */
+struct axis {
+    int linear;
+    struct log_axis log;       /* when !linear */
+    struct linear_axis lin;    /* when linear */
+    const char *title;         /* borrowed */
+};
+
 /* The plot area and its axes. */
 struct frame {
     double left, top, width, height; /* the area inside the axes */
-    struct log_axis x, y;            /* seconds, relmse */
+    struct axis x, y;
 };
 
 /* How run i is drawn. Colours: Okabe & Ito (2008) for the first seven, then Tol's wine
@@ -312,12 +286,21 @@ static const struct style STYLES[PLOT_MAX_SERIES] = {
     {"#882255", "9,3,2,3", "M-3.5,-3.5L3.5,3.5M-3.5,3.5L3.5,-3.5", 0},
 };
 
-/* Where log10(v) = log_v lies along the axis, in user units. */
-static double axis_position(const struct frame *fr, enum axis_dir dir, double log_v)
+/* Where u lies along the axis, in user units; u is log10 of the value on a log axis, the
+ * value itself on a linear one. */
+static double axis_position(const struct frame *fr, enum axis_dir dir, double u)
 {
-    const struct log_axis *a = dir == AXIS_X ? &fr->x : &fr->y;
-    double t = (log_v - a->k_lo) / (a->k_hi - a->k_lo); /* k_hi > k_lo: log_axis_fit */
+    const struct axis *a = dir == AXIS_X ? &fr->x : &fr->y;
+    double t = a->linear ? (u - a->lin.lo) / (a->lin.hi - a->lin.lo) /* lo < hi: fitted */
+                         : (u - a->log.k_lo) / (a->log.k_hi - a->log.k_lo);
     return dir == AXIS_X ? fr->left + t * fr->width : fr->top + (1.0 - t) * fr->height;
+}
+
+/* Where the value v lies along the axis, in user units. */
+static double value_position(const struct frame *fr, enum axis_dir dir, double v)
+{
+    const struct axis *a = dir == AXIS_X ? &fr->x : &fr->y;
+    return axis_position(fr, dir, a->linear ? v : log10(v));
 }
 
 /* One layer of one axis being drawn. */
@@ -365,6 +348,13 @@ static void write_power_of_ten(FILE *f, int k, double x, double y, const char *a
             k < 0 ? "&#8722;" : "", abs(k));
 }
 
+/* A linear axis's label: the number in the shortest form, at (x, y). */
+static void write_number(FILE *f, double v, double x, double y, const char *anchor)
+{
+    fprintf(f, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"%s\" stroke=\"none\">%g</text>\n",
+            x, y, anchor, v);
+}
+
 /* Labels every step-th decade, step in 1, 2, 5, 10, 20, 50, ..., the least that puts
  * labels gap or more apart (decade >= 480 / 633 units: doubles span 633 decades). */
 static int label_step(double decade, double gap)
@@ -381,13 +371,34 @@ static int label_step(double decade, double gap)
     return step;
 }
 
+/* One layer of a linear axis: a labelled major tick and grid line at every step. */
+static void write_linear_axis(FILE *f, const struct frame *fr, enum axis_dir dir,
+                              enum layer layer)
+{
+    struct axis_pass p = {fr, dir, layer};
+    const struct linear_axis *a = dir == AXIS_X ? &fr->x.lin : &fr->y.lin;
+    long first = lround(a->lo / a->step), last = lround(a->hi / a->step);
+    for (long i = first; i <= last; i++) {
+        double v = i == 0 ? 0.0 : (double)i * a->step, t = axis_position(fr, dir, v);
+        if (layer == LAYER_TICKS && dir == AXIS_X)
+            write_number(f, v, t, fr->top + fr->height + TICK_MAJOR + 15, "middle");
+        else if (layer == LAYER_TICKS)
+            write_number(f, v, fr->left - TICK_MAJOR - 4, t + 4, "end");
+        write_mark(f, &p, t, MARK_MAJOR);
+    }
+}
+
 /* One layer of one axis. Labelled decades get a major tick, a grid line and a label;
  * other decades a minor tick (where decades are >= 3 units apart); wide decades also get
  * minor ticks at 2..9 x 10^k, and wider ones light grid lines there. */
 static void write_axis(FILE *f, const struct frame *fr, enum axis_dir dir, enum layer layer)
 {
+    if ((dir == AXIS_X ? &fr->x : &fr->y)->linear) {
+        write_linear_axis(f, fr, dir, layer);
+        return;
+    }
     struct axis_pass p = {fr, dir, layer};
-    const struct log_axis *a = dir == AXIS_X ? &fr->x : &fr->y;
+    const struct log_axis *a = dir == AXIS_X ? &fr->x.log : &fr->y.log;
     double length = dir == AXIS_X ? fr->width : fr->height;
     double decade = length / (a->k_hi - a->k_lo); /* k_hi > k_lo: log_axis_fit */
     int step = label_step(decade, dir == AXIS_X ? LABEL_MIN_GAP_X : LABEL_MIN_GAP_Y);
@@ -406,6 +417,22 @@ static void write_axis(FILE *f, const struct frame *fr, enum axis_dir dir, enum 
     }
 }
 
+/* XML character data: &, < and > escaped, bytes outside printable ASCII as '?' (titles
+ * come from the command line; labels are printable already). */
+static void write_escaped(FILE *f, const char *text)
+{
+    for (; *text != '\0'; text++) {
+        if (*text == '&')
+            fputs("&amp;", f);
+        else if (*text == '<')
+            fputs("&lt;", f);
+        else if (*text == '>')
+            fputs("&gt;", f);
+        else
+            putc(*text >= 0x20 && *text < 0x7F ? *text : '?', f);
+    }
+}
+
 /* Grid lines (light ones under dark ones, both under everything else), ticks and tick
  * labels, the frame, and the axis titles. */
 static void write_axes(FILE *f, const struct frame *fr)
@@ -418,11 +445,13 @@ static void write_axes(FILE *f, const struct frame *fr)
     fprintf(f, "</g>\n<rect id=\"frame\" x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" "
                "fill=\"none\" stroke=\"#000000\"/>\n", fr->left, fr->top, fr->width,
             fr->height);
-    fprintf(f, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\" font-size=\"13\">"
-               "seconds (CPU)</text>\n", fr->left + 0.5 * fr->width,
-            fr->top + fr->height + MARGIN_BOTTOM - 10);
-    fprintf(f, "<text transform=\"translate(%.2f,%.2f) rotate(-90)\" text-anchor=\"middle\" "
-               "font-size=\"13\">relative MSE</text>\n", 18.0, fr->top + 0.5 * fr->height);
+    fprintf(f, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\" font-size=\"13\">",
+            fr->left + 0.5 * fr->width, fr->top + fr->height + MARGIN_BOTTOM - 10);
+    write_escaped(f, fr->x.title);
+    fprintf(f, "</text>\n<text transform=\"translate(%.2f,%.2f) rotate(-90)\" "
+               "text-anchor=\"middle\" font-size=\"13\">", 18.0, fr->top + 0.5 * fr->height);
+    write_escaped(f, fr->y.title);
+    fprintf(f, "</text>\n");
 }
 
 /* One run: its line, then a marker at each point (on top of the line). */
@@ -434,14 +463,12 @@ static void write_series(FILE *f, const struct frame *fr, const struct series *s
             st->dash);
     for (size_t p = 0; p < s->n_points; p++)
         fprintf(f, "%s%.2f,%.2f", p > 0 ? " " : "",
-                axis_position(fr, AXIS_X, log10(s->seconds[p])),
-                axis_position(fr, AXIS_Y, log10(s->relmse[p])));
+                value_position(fr, AXIS_X, s->x[p]), value_position(fr, AXIS_Y, s->y[p]));
     fprintf(f, "\"/>\n<g fill=\"%s\" stroke=\"%s\" stroke-width=\"1.2\">\n",
             st->filled ? st->colour : "#ffffff", st->colour);
     for (size_t p = 0; p < s->n_points; p++)
         fprintf(f, "<use xlink:href=\"#marker%d\" x=\"%.2f\" y=\"%.2f\"/>\n", i,
-                axis_position(fr, AXIS_X, log10(s->seconds[p])),
-                axis_position(fr, AXIS_Y, log10(s->relmse[p])));
+                value_position(fr, AXIS_X, s->x[p]), value_position(fr, AXIS_Y, s->y[p]));
     fprintf(f, "</g>\n");
 }
 
@@ -453,21 +480,6 @@ static void legend_text(const struct series *s, char *text, size_t size)
     else
         snprintf(text, size, "%.*s (%lu row%s at 0 not shown)", LABEL_CHARS + 3, s->label,
                  (unsigned long)s->n_skipped, s->n_skipped == 1 ? "" : "s");
-}
-
-/* XML character data: &, < and > escaped; labels hold printable ASCII only. */
-static void write_escaped(FILE *f, const char *text)
-{
-    for (; *text != '\0'; text++) {
-        if (*text == '&')
-            fputs("&amp;", f);
-        else if (*text == '<')
-            fputs("&lt;", f);
-        else if (*text == '>')
-            fputs("&gt;", f);
-        else
-            putc(*text, f);
-    }
 }
 
 /* The legend's width: its longest text at LEGEND_CHAR per character, plus the sample. */
@@ -534,28 +546,54 @@ static void write_svg(FILE *f, const struct frame *fr, const struct series *s, i
     fprintf(f, "</svg>\n");
 }
 
-/* The frame around every plotted point of every run; -1 when there is none. */
-static int fit_frame(const struct series *s, int n_series, struct frame *fr,
-                     struct error *err)
+/* An axis title: the column's name, or for the --report columns what they measure. */
+static const char *column_title(const char *column)
 {
-    double x_lo = HUGE_VAL, x_hi = 0, y_lo = HUGE_VAL, y_hi = 0;
+    if (strcmp(column, "seconds") == 0)
+        return "seconds (CPU)";
+    if (strcmp(column, "relmse") == 0)
+        return "relative MSE";
+    return column;
+}
+
+/* An axis of the given kind over [lo, hi]. */
+static struct axis axis_fit(int linear, double lo, double hi, const char *title)
+{
+    struct axis a;
+    memset(&a, 0, sizeof a);
+    a.linear = linear;
+    if (linear)
+        a.lin = linear_axis_fit(lo, hi);
+    else
+        a.log = log_axis_fit(lo, hi);
+    a.title = title;
+    return a;
+}
+
+/* The frame around every plotted point of every run; -1 when there is none. */
+static int fit_frame(const struct series *s, int n_series, const struct plot_spec *spec,
+                     struct frame *fr, struct error *err)
+{
+    double x_lo = HUGE_VAL, x_hi = -HUGE_VAL, y_lo = HUGE_VAL, y_hi = -HUGE_VAL;
     for (int i = 0; i < n_series; i++) {
         for (size_t p = 0; p < s[i].n_points; p++) {
-            x_lo = fmin(x_lo, s[i].seconds[p]);
-            x_hi = fmax(x_hi, s[i].seconds[p]);
-            y_lo = fmin(y_lo, s[i].relmse[p]);
-            y_hi = fmax(y_hi, s[i].relmse[p]);
+            x_lo = fmin(x_lo, s[i].x[p]);
+            x_hi = fmax(x_hi, s[i].x[p]);
+            y_lo = fmin(y_lo, s[i].y[p]);
+            y_hi = fmax(y_hi, s[i].y[p]);
         }
     }
-    if (!(x_hi > 0))
-        return error_set(err, "", 0, "plot: nothing to plot: no row has seconds > 0 and "
-                                     "relmse > 0");
+    if (x_lo > x_hi)
+        return error_set(err, "", 0, "plot: nothing to plot: no row has %s > 0 and %s > 0 "
+                                     "(log axes)", spec->x, spec->n_y == 1 ? spec->y[0] : "y");
     fr->left = FRAME_LEFT;
     fr->top = FRAME_TOP;
     fr->width = FRAME_WIDTH;
     fr->height = FRAME_HEIGHT;
-    fr->x = log_axis_fit(x_lo, x_hi);
-    fr->y = log_axis_fit(y_lo, y_hi);
+    const char *y_title = spec->n_y == 1 ? column_title(spec->y[0]) : "value";
+    fr->x = axis_fit(spec->linear, x_lo, x_hi, spec->x_title ? spec->x_title
+                                                              : column_title(spec->x));
+    fr->y = axis_fit(spec->linear, y_lo, y_hi, spec->y_title ? spec->y_title : y_title);
     return 0;
 }
 
@@ -570,24 +608,26 @@ static int write_plot(const char *svg, const struct frame *fr, const struct seri
     return output_commit(f, err); /* a failed write shows in ferror(), checked there */
 }
 
-int plot_files(const char *const *csv, int n_csv, const char *svg, struct error *err)
+int plot_files(const char *const *csv, int n_csv, const struct plot_spec *spec,
+               const char *svg, struct error *err)
 {
     struct series s[PLOT_MAX_SERIES];
-    int n_read = 0, status = 0;
-    if (n_csv < 1 || n_csv > PLOT_MAX_SERIES)
-        return error_set(err, "", 0, "plot: %d CSV files; a plot shows 1 to %d runs", n_csv,
-                         PLOT_MAX_SERIES);
-    for (; n_read < n_csv; n_read++) {
-        status = series_read(csv[n_read], &s[n_read], err); /* on -1, frees its own */
+    int n_read = 0, status = 0, n_series = n_csv * spec->n_y;
+    if (spec->n_y < 1 || n_csv < 1 || n_series > PLOT_MAX_SERIES)
+        return error_set(err, "", 0, "plot: %d CSV files x %d columns; a plot shows 1 to %d "
+                                     "runs", n_csv, spec->n_y, PLOT_MAX_SERIES);
+    for (; n_read < n_csv; n_read++) { /* on -1, series_read frees its own */
+        status = series_read(csv[n_read], spec, n_csv, &s[n_read * spec->n_y], err);
         if (status != 0)
             break;
     }
     struct frame fr;
+    memset(&fr, 0, sizeof fr); /* filled by fit_frame(); zeroed so no compiler wonders */
     if (status == 0)
-        status = fit_frame(s, n_csv, &fr, err);
+        status = fit_frame(s, n_series, spec, &fr, err);
     if (status == 0)
-        status = write_plot(svg, &fr, s, n_csv, err);
-    for (int i = 0; i < n_read; i++)
+        status = write_plot(svg, &fr, s, n_series, err);
+    for (int i = 0; i < n_read * spec->n_y; i++)
         series_free_arrays(&s[i]);
     return status;
 }
@@ -597,23 +637,60 @@ struct plot_args {
     const char **csv; /* owned by plot_command(); room for argc names, n_csv used */
     int n_csv;
     const char *svg;  /* -o PLOT.svg */
+    struct plot_spec spec;
 };
 
-/* Files and -o from the command line; -1 with *err filled. */
+/* The value after option argv[*i] into *value (advancing *i); -1 with *err filled when
+ * it is missing or was given before (for options given once). */
+static int option_value(int argc, char **argv, int *i, const char **value, int once,
+                        struct error *err)
+{
+    if (*i + 1 == argc || (once && *value != NULL))
+        return error_set(err, "", 0, "plot: %s needs one value%s; " PLOT_USAGE, argv[*i],
+                         once ? ", once" : "");
+    *value = argv[++*i];
+    return 0;
+}
+
+/* One option at argv[*i] into args; -1 with *err filled. */
+static int parse_plot_option(int argc, char **argv, int *i, struct plot_args *args,
+                             int *y_given, struct error *err)
+{
+    struct plot_spec *spec = &args->spec;
+    const char *name = argv[*i];
+    if (strcmp(name, "-o") == 0)
+        return option_value(argc, argv, i, &args->svg, 1, err);
+    if (strcmp(name, "--x") == 0)
+        return option_value(argc, argv, i, &spec->x, 0, err);
+    if (strcmp(name, "--x-title") == 0)
+        return option_value(argc, argv, i, &spec->x_title, 1, err);
+    if (strcmp(name, "--y-title") == 0)
+        return option_value(argc, argv, i, &spec->y_title, 1, err);
+    if (strcmp(name, "--linear") == 0) {
+        spec->linear = 1;
+        return 0;
+    }
+    if (strcmp(name, "--y") == 0) {
+        if (*y_given == PLOT_MAX_SERIES)
+            return error_set(err, "", 0, "plot: more than %d --y columns", PLOT_MAX_SERIES);
+        spec->n_y = ++*y_given; /* the first --y replaces the default relmse */
+        return option_value(argc, argv, i, &spec->y[*y_given - 1], 0, err);
+    }
+    return error_set(err, "", 0, "plot: unknown option '%s'; " PLOT_USAGE, name);
+}
+
+/* Files and options from the command line; -1 with *err filled. */
 static int parse_plot_args(int argc, char **argv, struct plot_args *args, struct error *err)
 {
     args->n_csv = 0;
     args->svg = NULL;
+    args->spec = plot_spec_errors();
+    int y_given = 0;
     for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "-o") == 0) {
-            if (i + 1 == argc || args->svg != NULL)
-                return error_set(err, "", 0, "plot: -o needs one file name; " PLOT_USAGE);
-            args->svg = argv[++i];
-        } else if (argv[i][0] == '-') {
-            return error_set(err, "", 0, "plot: unknown option '%s'; " PLOT_USAGE, argv[i]);
-        } else {
+        if (argv[i][0] != '-')
             args->csv[args->n_csv++] = argv[i];
-        }
+        else if (parse_plot_option(argc, argv, &i, args, &y_given, err) != 0)
+            return -1;
     }
     if (args->svg == NULL)
         return error_set(err, "", 0, "plot: no output file: give -o PLOT.svg; " PLOT_USAGE);
@@ -634,7 +711,7 @@ int plot_command(int argc, char **argv)
     args.csv = xmalloc((size_t)argc, sizeof *args.csv, "plot arguments");
     int status = parse_plot_args(argc, argv, &args, &err);
     if (status == 0)
-        status = plot_files(args.csv, args.n_csv, args.svg, &err);
+        status = plot_files(args.csv, args.n_csv, &args.spec, args.svg, &err);
     if (status != 0)
         error_print(&err);
     free(args.csv);
