@@ -105,6 +105,8 @@ static void test_bad_scenes_are_refused(struct check *t)
          "already defined"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m plastic 1\n", 2, "unknown kind"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial g glass -1.5\n", 2, "positive"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial g glass 1.5 1.2 1 1\n", 2, "[0, 1]"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial g glass 1.5 1 1\n", 2, "expected 3 numbers"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nimage 0 10\n", 2, "whole numbers"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nimage 100000 10\n", 2, "whole numbers"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nimage 10.5 10\n", 2, "whole numbers"},
@@ -168,6 +170,34 @@ static void test_bad_scenes_are_refused(struct check *t)
         CHECK(t, err.line == cases[i].line);
         CHECK(t, strstr(err.message, cases[i].message) != NULL);
     }
+    remove(path);
+}
+
+/* truth: the scene-file grammar (README): "glass IOR R G B" lets R G B through at each
+ *   refraction, so it absorbs 1 - R G B; without the colour the glass is clear.
+ * tolerance: 1e-15 (1 - 0.8 is not exact in binary).
+ * catches: the colour stored as it is instead of as absorption, a clear glass absorbing
+ *   everything (absorption left at 1 - 0), the colour's numbers taken for the next line. */
+static void test_glass_filter_parsed(struct check *t)
+{
+    const char *path = "build/test_scene_glass.scene";
+    FILE *f = fopen(path, "wb");
+    CHECK(t, f != NULL);
+    if (f == NULL)
+        return;
+    fputs("camera 0 0 0 0 0 1 0 1 0 40\nmaterial tinted glass 1.5 0.8 0.5 0.1\n"
+          "material clear glass 1.33\nsphere 0 0 5 1 tinted\nsphere 3 0 5 1 clear\n", f);
+    fclose(f);
+    struct error err;
+    struct scene *scene = scene_load(path, &err);
+    CHECK(t, scene != NULL && scene->n_materials == 2);
+    if (scene != NULL && scene->n_materials == 2) {
+        const struct material *tinted = &scene->materials[0], *clear = &scene->materials[1];
+        CHECK(t, tinted->kind == MATERIAL_GLASS && tinted->ior == 1.5);
+        CHECK(t, vec3_max_abs(vec3_sub(tinted->absorption, vec3(0.2, 0.5, 0.9))) <= 1e-15);
+        CHECK(t, clear->ior == 1.33 && vec3_max_abs(clear->absorption) == 0);
+    }
+    scene_free(scene);
     remove(path);
 }
 
@@ -317,6 +347,7 @@ void test_scene(struct check *t)
     RUN_TEST(t, test_cornell_scene_loads);
     RUN_TEST(t, test_shipped_scenes_load);
     RUN_TEST(t, test_bad_scenes_are_refused);
+    RUN_TEST(t, test_glass_filter_parsed);
     RUN_TEST(t, test_unreadable_scenes_are_refused);
     RUN_TEST(t, test_camera_rays);
     RUN_TEST(t, test_light_sampling_irradiance);

@@ -93,17 +93,29 @@ double brdf_pdf(const struct material *m, const struct shading_frame *f, struct 
     return fmin(pdf_local(m, lo, li), DBL_MAX);
 }
 
+/* The colour a refraction through glass lets pass: 1 - absorption per channel. */
+static struct vec3 glass_filter(const struct material *m)
+{
+    return vec3_sub(vec3(1.0, 1.0, 1.0), m->absorption);
+}
+
+/* Glass's relative index n_t / n_i for light leaving towards wo (outside at index 1). */
+static double glass_eta(const struct material *m, const struct shading_frame *f)
+{
+    assert(m->ior > 0);
+    return f->front ? m->ior : 1.0 / m->ior;
+}
+
 /* One of glass's two delta lobes, chosen with the Fresnel probability. */
 static int sample_glass(const struct material *m, const struct shading_frame *f,
                         struct vec3 wo, double u, struct brdf_sample *s)
 {
-    assert(m->ior > 0);
-    double eta = f->front ? m->ior : 1.0 / m->ior; /* n_t / n_i, outside at index 1 */
+    double eta = glass_eta(m, f);
     double reflectance = fresnel_dielectric(vec3_dot(wo, f->n), eta); /* 1 on TIR */
     s->delta = 1;
     if (u >= reflectance && refract(wo, f->n, eta, &s->wi)) {
         double scale = f->transport == TRANSPORT_RADIANCE ? 1.0 / (eta * eta) : 1.0;
-        s->weight = vec3(scale, scale, scale);
+        s->weight = vec3_scale(glass_filter(m), scale);
         s->pdf = 1.0 - reflectance; /* > 0: u < 1 and u >= reflectance */
         s->transmitted = 1;
         return 1;
@@ -200,8 +212,11 @@ struct vec3 brdf_albedo(const struct material *m, const struct shading_frame *f,
     case MATERIAL_LAMBERT:
     case MATERIAL_MIRROR:
         return m->rho;
-    case MATERIAL_GLASS:
-        return vec3(1.0, 1.0, 1.0); /* F + (1 - F): glass absorbs nothing */
+    case MATERIAL_GLASS: {
+        double reflectance = fresnel_dielectric(lo.z, glass_eta(m, f)); /* F */
+        return vec3_add(vec3(reflectance, reflectance, reflectance),
+                        vec3_scale(glass_filter(m), 1.0 - reflectance)); /* + (1 - F) T */
+    }
     case MATERIAL_PHONG:
         return phong_albedo(m, lo);
     case MATERIAL_WARD:

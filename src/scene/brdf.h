@@ -90,8 +90,9 @@ int brdf_delta_lobes(const struct material *m, const struct shading_frame *f, st
 
 /* Directional albedo towards wo: the integral of f cos_i over wi including delta lobes,
  * i.e. the expected brdf_sample() weight under TRANSPORT_IMPORTANCE. Exact for lambert
- * (rho), mirror (rho), glass (1), phong (closed form in azimuth, Gauss-Legendre in the
- * polar angle, error below 1e-6); for ward (rho_d + rho_s) and schlick (C) it is the
+ * (rho), mirror (rho), glass (F + (1 - F) T: Fresnel's F at wo, T the filter colour),
+ * phong (closed form in azimuth, Gauss-Legendre in the polar angle, error below 1e-6);
+ * for ward (rho_d + rho_s) and schlick (C) it is the
  * model's upper bound, nearly reached by narrow lobes at normal incidence and by Ward at
  * grazing angles, exact for schlick with r = 0 or 1. Zero for wo below the surface. */
 struct vec3 brdf_albedo(const struct material *m, const struct shading_frame *f,

@@ -18,7 +18,8 @@
 enum material_kind {
     MATERIAL_LAMBERT, /* f_r = rho / pi                                          */
     MATERIAL_MIRROR,  /* ideal specular reflection scaled by a reflectance       */
-    MATERIAL_GLASS,   /* smooth dielectric: exact Fresnel, refraction, total internal reflection */
+    MATERIAL_GLASS,   /* smooth dielectric: exact Fresnel, refraction, total internal
+                         reflection, and an optional colour filter on refraction       */
     MATERIAL_PHONG,   /* energy-conserving modified Phong (Lafortune & Willems 1994)  */
     MATERIAL_WARD,    /* Ward's anisotropic model (1992), bounded-albedo normalisation */
     MATERIAL_SCHLICK  /* Schlick's single-slope model (1994), roughness r, isotropy p  */
@@ -33,6 +34,10 @@ struct material {
     struct vec3 rho;      /* Lambert: albedo rho; mirror: reflectance; glass: unused;
                              Phong: diffuse kd; Ward: diffuse rho_d; Schlick: colour C  */
     double ior;           /* glass: index of refraction inside / outside (> 0)       */
+    struct vec3 absorption; /* glass: the fraction of each channel absorbed at each
+                             refraction, in [0, 1]; 0 is clear glass. A filter at the
+                             surface, not absorption along the path inside (Beer's law):
+                             light crossing a body twice keeps (1 - absorption)^2      */
     struct vec3 emission; /* Le, radiance leaving the front side; zero if it does not emit */
     int two_sided;        /* whether the back side emits Le too (e.g. inside a sphere)  */
     struct vec3 rho_s;    /* Phong: specular ks, kd + ks <= 1; Ward: specular rho_s,

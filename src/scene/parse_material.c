@@ -74,6 +74,21 @@ static int parse_schlick(struct parser *ps, struct material *m, struct error *er
     return 0;
 }
 
+/* "glass IOR [T_R T_G T_B]": T is the colour a refraction lets through (clear: 1 1 1). */
+static int parse_glass(struct parser *ps, struct material *m, struct error *err)
+{
+    m->kind = MATERIAL_GLASS;
+    if (read_numbers(ps, &m->ior, 1, "index of refraction", err) < 0)
+        return -1;
+    if (!(m->ior > 0))
+        return parse_error(ps, err, "index of refraction must be positive");
+    struct vec3 filter = vec3(1.0, 1.0, 1.0);
+    if (next_is_number(ps) && read_reflectance(ps, &filter, "filter colour r g b", err) < 0)
+        return -1;
+    m->absorption = vec3_sub(vec3(1.0, 1.0, 1.0), filter);
+    return 0;
+}
+
 /* The reflection part of "material NAME KIND ...". */
 static int parse_material_kind(struct parser *ps, struct material *m, struct error *err)
 {
@@ -85,12 +100,8 @@ static int parse_material_kind(struct parser *ps, struct material *m, struct err
         m->kind = kind[0] == 'l' ? MATERIAL_LAMBERT : MATERIAL_MIRROR;
         return read_reflectance(ps, &m->rho, "reflectance r g b", err);
     }
-    if (strcmp(kind, "glass") == 0) {
-        m->kind = MATERIAL_GLASS;
-        if (read_numbers(ps, &m->ior, 1, "index of refraction", err) < 0)
-            return -1;
-        return m->ior > 0 ? 0 : parse_error(ps, err, "index of refraction must be positive");
-    }
+    if (strcmp(kind, "glass") == 0)
+        return parse_glass(ps, m, err);
     static const struct {
         const char *name;
         enum material_kind kind;
