@@ -57,6 +57,8 @@ static void test_shipped_scenes_load(struct check *t)
         {"scenes/sphereflake.scene", 2, 3},   /* floor quad, flake, light sphere  */
         {"scenes/sphereflake-6.scene", 2, 3},
         {"scenes/landscape.scene", 1, 2209},  /* heightfield, lens of 2208 facets */
+        {"scenes/desk.scene", 2, 10912},      /* 29 quads, flake, 2 light spheres,
+                                                 glass 8576 and liquid 2304 triangles */
         {"scenes/obj-example.scene", 2, 0},   /* counted below                    */
         {"scenes/every-primitive.nff", 2, 0},
     };
