@@ -9,6 +9,7 @@
 #include "../src/base/rng.h"
 #include "../src/scene/optics.h"
 #include "../src/scene/scene.h"
+#include "files.h"
 #include "tests.h"
 #include "truths.h"
 
@@ -182,14 +183,11 @@ static void test_bad_scenes_are_refused(struct check *t)
  *   everything (absorption left at 1 - 0), the colour's numbers taken for the next line. */
 static void test_glass_filter_parsed(struct check *t)
 {
-    const char *path = "build/test_scene_glass.scene";
-    FILE *f = fopen(path, "wb");
-    CHECK(t, f != NULL);
-    if (f == NULL)
-        return;
-    fputs("camera 0 0 0 0 0 1 0 1 0 40\nmaterial tinted glass 1.5 0.8 0.5 0.1\n"
-          "material clear glass 1.33\nsphere 0 0 5 1 tinted\nsphere 3 0 5 1 clear\n", f);
-    fclose(f);
+    char path[256];
+    temp_name(path, sizeof path, "scene", "glass.scene");
+    write_text_file(path, "camera 0 0 0 0 0 1 0 1 0 40\nmaterial tinted glass 1.5 0.8 0.5 0.1\n"
+                          "material clear glass 1.33\nsphere 0 0 5 1 tinted\n"
+                          "sphere 3 0 5 1 clear\n");
     struct error err;
     struct scene *scene = scene_load(path, &err);
     CHECK(t, scene != NULL && scene->n_materials == 2);
