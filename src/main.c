@@ -108,21 +108,11 @@ static int prepare_run(struct run *run, struct error *err)
     return 0;
 }
 
-/* The image as -o's PFM and the PPM beside it, each written whole or not at all. */
-static int write_images(const struct options *o, const struct image *image, struct error *err)
-{
-    char ppm[OUTPUT_PATH_MAX];
-    strcpy(ppm, o->output);
-    strcpy(ppm + strlen(ppm) - 4, ".ppm"); /* the name ends in .pfm (parse_options) */
-    if (pfm_write(o->output, image, err) < 0 || ppm_write(ppm, image, o->exposure, err) < 0)
-        return -1;
-    return 0;
-}
-
+/* -o's PFM (the name ends in .pfm: parse_options) and the PPM beside it, and the variance. */
 static int write_outputs(const struct run *run, struct error *err)
 {
     const struct options *o = &run->o;
-    if (write_images(o, run->result.image, err) < 0)
+    if (image_write_pair(o->output, run->result.image, o->exposure, err) < 0)
         return -1;
     if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
         return -1;
@@ -137,8 +127,9 @@ static double write_snapshot(void *context, const struct image *image, long long
     (void)work;
     (void)seconds;
     clock_t start = clock();
+    const struct options *o = context;
     struct error err;
-    if (write_images(context, image, &err) < 0)
+    if (image_write_pair(o->output, image, o->exposure, &err) < 0)
         error_print(&err);
     return seconds_since(start);
 }
