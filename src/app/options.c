@@ -3,6 +3,7 @@
  */
 #include "options.h"
 
+#include <assert.h>
 #include <errno.h>
 #include <math.h>
 #include <stddef.h>
@@ -10,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../base/hash.h"
 #include "../image/image.h"
 #include "../modes/jensen1994.h"
 #include "../modes/jensen1996.h"
@@ -238,7 +240,7 @@ static int read_store(const char *text, int *illumination, struct error *err)
                      text != NULL ? text : "nothing");
 }
 
-static int read_output(const char *text, char *output, struct error *err)
+int read_output(const char *text, char *output, struct error *err)
 {
     size_t n = text != NULL ? strlen(text) : 0;
     if (n < 5 || strcmp(text + n - 4, ".pfm") != 0)
@@ -378,4 +380,68 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         return error_set(err, "", 0, "--variance: not available with --mode 2008, whose "
                                      "pixels are not means of independent samples");
     return 0;
+}
+
+/* The options that change no pixel of the PFM: where outputs go, what is printed or shown,
+ * the PPM's exposure, the window itself, and checkpoints and reports, which only look at the
+ * image as it grows. options_hash() covers every other option, so one added to specs[] is
+ * hashed unless it is named here. --time-limit is here because a hash cannot capture it:
+ * it makes the pixels depend on the machine's speed, so tile.h records it apart. */
+static const char *const outside_pixels[] = {
+    "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure", "--reference",
+    "--report", "--variance", "--checkpoint", "--time-limit",
+};
+
+static int changes_pixels(const struct option_spec *spec)
+{
+    for (size_t i = 0; i < sizeof outside_pixels / sizeof outside_pixels[0]; i++)
+        if (strcmp(spec->name, outside_pixels[i]) == 0)
+            return 0;
+    return 1;
+}
+
+/* spec's value in o as text: exact for reals (17 significant digits round-trip a double),
+ * and the same whatever order or spelling the command line used. */
+static void option_text(const struct option_spec *spec, const struct options *o, char *text,
+                        size_t size)
+{
+    const char *field = (const char *)o + spec->offset;
+    switch (spec->kind) {
+    case OPT_REAL:
+        snprintf(text, size, "%s=%.17g\n", spec->name, *(const double *)field);
+        return;
+    case OPT_SEED:
+        snprintf(text, size, "%s=%llu\n", spec->name,
+                 (unsigned long long)*(const uint64_t *)field);
+        return;
+    case OPT_MODE:
+        snprintf(text, size, "%s=%s\n", spec->name, mode_name(*(const enum mode *)field));
+        return;
+    case OPT_FLAG:
+    case OPT_INT:
+    case OPT_STORE:
+        snprintf(text, size, "%s=%d\n", spec->name, *(const int *)field);
+        return;
+    case OPT_OUTPUT:
+    case OPT_FILE:
+    case OPT_CROP:
+        break;
+    }
+    /* A file that changes pixels must have its bytes hashed where it is read, as the
+     * scene's lines are (scene_hash_line); its name says nothing of them. */
+    assert(!"options that name files or the window are in outside_pixels[]");
+    snprintf(text, size, "%s\n", spec->name);
+}
+
+uint64_t options_hash(const struct options *o, uint64_t h)
+{
+    char text[128];
+    snprintf(text, sizeof text, "photon %s\n", PHOTON_VERSION);
+    h = fnv1a(h, text, strlen(text));
+    for (size_t i = 0; i < sizeof specs / sizeof specs[0]; i++)
+        if (changes_pixels(&specs[i])) {
+            option_text(&specs[i], o, text, sizeof text);
+            h = fnv1a(h, text, strlen(text));
+        }
+    return h;
 }
