@@ -48,7 +48,8 @@ static const struct option_spec specs[] = {
     {"--height", OPT_INT, FIELD(height), 1, MAX_IMAGE_SIDE, "N",
      "image height (default: scene's)"},
     {"--crop", OPT_CROP, FIELD(crop), 0, MAX_IMAGE_SIDE, "X0 Y0 X1 Y1",
-     "render only pixels X0 <= x < X1, Y0 <= y < Y1 of the whole image (0,0 = top left)"},
+     "render only pixels X0 <= x < X1, Y0 <= y < Y1 of the whole image (0,0 = top left); "
+     "also writes FILE.pfm.window for photon merge"},
     {"--adaptive", OPT_REAL, FIELD(adaptive), 0, 1e6, "E",
      "stop sampling a pixel (after 4 samples, at powers of two) once its mean's standard "
      "error is at most E times the mean (Jensen & Christensen 1994); 0 = off (default 0; "
@@ -146,7 +147,9 @@ static void print_help(void)
            "                                    .nff name (see README: Scene files, NFF files)\n"
            "       photon compare A.pfm B.pfm [--diff OUT.ppm] [--ref-variance VB.pfm]\n"
            "                      [--test-variance VA.pfm] [--alpha ALPHA] [--block N]\n"
-           "       photon plot A.csv [B.csv ...] -o PLOT.svg\n\noptions:\n");
+           "       photon plot A.csv [B.csv ...] -o PLOT.svg\n"
+           "       photon merge -o FULL.pfm TILE.pfm [TILE.pfm ...] [--exposure E]\n"
+           "\noptions:\n");
     for (size_t i = 0; i < sizeof specs / sizeof specs[0]; i++) {
         char left[40];
         snprintf(left, sizeof left, "%s %s", specs[i].name, specs[i].args);
