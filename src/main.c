@@ -10,8 +10,10 @@
 #include <time.h>
 
 #include "app/options.h"
+#include "app/merge.h"
 #include "app/probe.h"
 #include "app/report.h"
+#include "app/tile.h"
 #include "image/compare.h"
 #include "image/plot.h"
 #include "modes/direct.h"
@@ -108,23 +110,31 @@ static int prepare_run(struct run *run, struct error *err)
     return 0;
 }
 
-/* The image as -o's PFM and the PPM beside it, each written whole or not at all. */
-static int write_images(const struct options *o, const struct image *image, struct error *err)
+/* With --crop, the record beside the PFM that lets photon merge place it (app/tile.h). */
+static int write_tile_record(const struct run *run, struct error *err)
 {
-    char ppm[OUTPUT_PATH_MAX];
-    strcpy(ppm, o->output);
-    strcpy(ppm + strlen(ppm) - 4, ".ppm"); /* the name ends in .pfm (parse_options) */
-    if (pfm_write(o->output, image, err) < 0 || ppm_write(ppm, image, o->exposure, err) < 0)
-        return -1;
-    return 0;
+    struct tile_record r;
+    r.x0 = run->rs.x0;
+    r.y0 = run->rs.y0;
+    r.x1 = run->rs.x1;
+    r.y1 = run->rs.y1;
+    r.width = run->scene->width;
+    r.height = run->scene->height;
+    r.hash = options_hash(&run->o, run->scene->source_hash);
+    r.time_limit = run->o.time_limit;
+    return tile_record_write(run->o.output, &r, err);
 }
 
+/* -o's PFM (the name ends in .pfm: parse_options) and the PPM beside it, the variance and,
+ * for a crop, its record. A whole render writes no record, so its files stay as before. */
 static int write_outputs(const struct run *run, struct error *err)
 {
     const struct options *o = &run->o;
-    if (write_images(o, run->result.image, err) < 0)
+    if (image_write_pair(o->output, run->result.image, o->exposure, err) < 0)
         return -1;
     if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
+        return -1;
+    if (o->crop[2] != 0 && write_tile_record(run, err) < 0)
         return -1;
     return 0;
 }
@@ -137,8 +147,9 @@ static double write_snapshot(void *context, const struct image *image, long long
     (void)work;
     (void)seconds;
     clock_t start = clock();
+    const struct options *o = context;
     struct error err;
-    if (write_images(context, image, &err) < 0)
+    if (image_write_pair(o->output, image, o->exposure, &err) < 0)
         error_print(&err);
     return seconds_since(start);
 }
@@ -332,6 +343,8 @@ int main(int argc, char **argv)
         return plot_command(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "probe") == 0)
         return probe_command(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "merge") == 0)
+        return merge_command(argc - 1, argv + 1);
     struct run run;
     struct error err;
     memset(&run, 0, sizeof run);

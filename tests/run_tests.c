@@ -22,7 +22,7 @@ static const struct room rooms[] = {
     {"photon", test_photon},     {"projection", test_projection}, {"trace", test_trace},
     {"ppm", test_ppm},           {"cache", test_cache},         {"render", test_render},
     {"pt", test_pt},             {"jensen1994", test_jensen1994}, {"jensen1996", test_jensen1996},
-    {"report", test_report},     {"cli", test_cli},
+    {"report", test_report},     {"merge", test_merge},         {"cli", test_cli},
 };
 
 /* Whether the command line asks for room (no names: every room). */

@@ -1,11 +1,12 @@
 /*
- * tests/test_base.c -- the base room: keyed random streams, errors, atomic outputs.
+ * tests/test_base.c -- the base room: keyed random streams, errors, atomic outputs, FNV-1a.
  */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "../src/base/error.h"
+#include "../src/base/hash.h"
 #include "../src/base/rng.h"
 #include "../src/base/sequence02.h"
 #include "files.h"
@@ -154,6 +155,20 @@ static void test_outputs_are_atomic(struct check *t)
     CHECK(t, output_open("build/no/such/directory/x.pfm", &err) == NULL);
 }
 
+/* truth: the FNV-1a 64-bit values published with the algorithm (the FNV page's test
+ *   vectors: "" -> cbf29ce484222325, "a" -> af63dc4c8601ec8c, "foobar" ->
+ *   85944171f73967e8), and hash.h's promise that a fold goes on from an earlier h.
+ * tolerance: none.
+ * catches: FNV-1 (multiply before XOR), a wrong prime or basis, a fold that restarts. */
+static void test_fnv1a_vectors(struct check *t)
+{
+    CHECK(t, fnv1a(FNV1A_OFFSET_BASIS, "", 0) == UINT64_C(0xcbf29ce484222325));
+    CHECK(t, fnv1a(FNV1A_OFFSET_BASIS, "a", 1) == UINT64_C(0xaf63dc4c8601ec8c));
+    CHECK(t, fnv1a(FNV1A_OFFSET_BASIS, "foobar", 6) == UINT64_C(0x85944171f73967e8));
+    CHECK(t, fnv1a(fnv1a(FNV1A_OFFSET_BASIS, "foo", 3), "bar", 3) ==
+                 UINT64_C(0x85944171f73967e8));
+}
+
 void test_base(struct check *t)
 {
     RUN_TEST(t, test_streams_are_keyed);
@@ -162,4 +177,5 @@ void test_base(struct check *t)
     RUN_TEST(t, test_sequence02_points_are_uniform);
     RUN_TEST(t, test_error_set);
     RUN_TEST(t, test_outputs_are_atomic);
+    RUN_TEST(t, test_fnv1a_vectors);
 }

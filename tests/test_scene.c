@@ -4,8 +4,10 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "../src/base/hash.h"
 #include "../src/base/rng.h"
 #include "../src/scene/optics.h"
 #include "../src/scene/scene.h"
@@ -218,6 +220,59 @@ static void test_unreadable_scenes_are_refused(struct check *t)
     remove(path);
 }
 
+/* h folded with each line of text (lines end at '\n'; the last may not) and its '\0':
+ * the test's own spelling of scene_hash_line() over a file. */
+static uint64_t hash_lines(uint64_t h, const char *text)
+{
+    while (*text != '\0') {
+        size_t n = strcspn(text, "\n");
+        n += text[n] == '\n';
+        h = fnv1a(h, text, n);
+        h = fnv1a(h, "", 1);
+        text += n;
+    }
+    return h;
+}
+
+/* truth: scene.h's source_hash: FNV-1a over every line read, in reading order, from the
+ *   scene file, what it includes and what it imports (an included file's lines come where
+ *   its include line stands), each line with its '\0'; recomputed here from the files'
+ *   texts. A top-level NFF file hashes its own lines.
+ * tolerance: none.
+ * catches: an include or an OBJ import left out of the hash (tiles of a scene whose mesh
+ *   changed would merge), lines hashed out of order, line ends not hashed. */
+static void test_source_hash_covers_every_file(struct check *t)
+{
+    const char *top = "camera 0 1 -5  0 1 0  0 1 0  40\ninclude test_scene_inc.scene\n"
+                      "obj test_scene_mesh.obj m   # the mesh\n";
+    const char *inc = "material m lambert 0.5 0.5 0.5\n";
+    const char *mesh = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3"; /* no final line break */
+    write_text_file("build/test_scene_top.scene", top);
+    write_text_file("build/test_scene_inc.scene", inc);
+    write_text_file("build/test_scene_mesh.obj", mesh);
+    uint64_t h = hash_lines(FNV1A_OFFSET_BASIS, "camera 0 1 -5  0 1 0  0 1 0  40\n"
+                                                "include test_scene_inc.scene\n");
+    h = hash_lines(hash_lines(h, inc), "obj test_scene_mesh.obj m   # the mesh\n");
+    h = hash_lines(h, mesh);
+    struct error err;
+    struct scene *scene = scene_load("build/test_scene_top.scene", &err);
+    CHECK(t, scene != NULL && scene->source_hash == h);
+    scene_free(scene);
+    write_text_file("build/test_scene_mesh.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 3 2");
+    scene = scene_load("build/test_scene_top.scene", &err);
+    CHECK(t, scene != NULL && scene->source_hash != h);
+    scene_free(scene);
+    char *nff = read_text_file("scenes/every-primitive.nff");
+    scene = scene_load("scenes/every-primitive.nff", &err);
+    CHECK(t, nff != NULL && scene != NULL &&
+             scene->source_hash == hash_lines(FNV1A_OFFSET_BASIS, nff));
+    scene_free(scene);
+    free(nff);
+    remove("build/test_scene_top.scene");
+    remove("build/test_scene_inc.scene");
+    remove("build/test_scene_mesh.obj");
+}
+
 /* truth: the camera model of camera.h: the image centre looks along at - from; the top
  *   edge's centre is fov/2 above it; the left edge is on the side of up x (at - from)
  *   ... written out: u = w x up points right, so pixel x = 0 looks towards -u.
@@ -349,6 +404,7 @@ void test_scene(struct check *t)
     RUN_TEST(t, test_bad_scenes_are_refused);
     RUN_TEST(t, test_glass_filter_parsed);
     RUN_TEST(t, test_unreadable_scenes_are_refused);
+    RUN_TEST(t, test_source_hash_covers_every_file);
     RUN_TEST(t, test_camera_rays);
     RUN_TEST(t, test_light_sampling_irradiance);
     RUN_TEST(t, test_light_sides);

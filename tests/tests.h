@@ -25,6 +25,7 @@ void test_pt(struct check *t);     /* test_pt.c: the path tracer, closed forms  
 void test_jensen1994(struct check *t); /* test_jensen1994.c: --mode 1994             */
 void test_jensen1996(struct check *t); /* test_jensen1996.c: --mode 1996, photon maps */
 void test_report(struct check *t); /* test_report.c: --report, --time-limit, ...  */
+void test_merge(struct check *t);  /* test_merge.c: tile records, photon merge      */
 void test_cli(struct check *t);    /* test_cli.c: the command line, exit statuses */
 
 #endif

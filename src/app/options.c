@@ -3,6 +3,7 @@
  */
 #include "options.h"
 
+#include <assert.h>
 #include <errno.h>
 #include <math.h>
 #include <stddef.h>
@@ -10,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../base/hash.h"
 #include "../image/image.h"
 #include "../modes/jensen1994.h"
 #include "../modes/jensen1996.h"
@@ -46,7 +48,8 @@ static const struct option_spec specs[] = {
     {"--height", OPT_INT, FIELD(height), 1, MAX_IMAGE_SIDE, "N",
      "image height (default: scene's)"},
     {"--crop", OPT_CROP, FIELD(crop), 0, MAX_IMAGE_SIDE, "X0 Y0 X1 Y1",
-     "render only pixels X0 <= x < X1, Y0 <= y < Y1 of the whole image (0,0 = top left)"},
+     "render only pixels X0 <= x < X1, Y0 <= y < Y1 of the whole image (0,0 = top left); "
+     "also writes FILE.pfm.window for photon merge"},
     {"--adaptive", OPT_REAL, FIELD(adaptive), 0, 1e6, "E",
      "stop sampling a pixel (after 4 samples, at powers of two) once its mean's standard "
      "error is at most E times the mean (Jensen & Christensen 1994); 0 = off (default 0; "
@@ -150,6 +153,7 @@ static void print_help(void)
            "       photon probe SCENE --line X0 Y0 Z0 X1 Y1 Z1 --samples N -o FILE.csv\n"
            "                   [--normal NX NY NZ] [--photons N] [--gather N]\n"
            "                   [--differential R] [--seed S]   (irradiance along a line)\n"
+           "       photon merge -o FULL.pfm TILE.pfm [TILE.pfm ...] [--exposure E]\n"
            "\noptions:\n");
     for (size_t i = 0; i < sizeof specs / sizeof specs[0]; i++) {
         char left[40];
@@ -244,7 +248,7 @@ static int read_store(const char *text, int *illumination, struct error *err)
                      text != NULL ? text : "nothing");
 }
 
-static int read_output(const char *text, char *output, struct error *err)
+int read_output(const char *text, char *output, struct error *err)
 {
     size_t n = text != NULL ? strlen(text) : 0;
     if (n < 5 || strcmp(text + n - 4, ".pfm") != 0)
@@ -384,4 +388,68 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         return error_set(err, "", 0, "--variance: not available with --mode 2008, whose "
                                      "pixels are not means of independent samples");
     return 0;
+}
+
+/* The options that change no pixel of the PFM: where outputs go, what is printed or shown,
+ * the PPM's exposure, the window itself, and checkpoints and reports, which only look at the
+ * image as it grows. options_hash() covers every other option, so one added to specs[] is
+ * hashed unless it is named here. --time-limit is here because a hash cannot capture it:
+ * it makes the pixels depend on the machine's speed, so tile.h records it apart. */
+static const char *const outside_pixels[] = {
+    "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure", "--reference",
+    "--report", "--variance", "--checkpoint", "--time-limit",
+};
+
+static int changes_pixels(const struct option_spec *spec)
+{
+    for (size_t i = 0; i < sizeof outside_pixels / sizeof outside_pixels[0]; i++)
+        if (strcmp(spec->name, outside_pixels[i]) == 0)
+            return 0;
+    return 1;
+}
+
+/* spec's value in o as text: exact for reals (17 significant digits round-trip a double),
+ * and the same whatever order or spelling the command line used. */
+static void option_text(const struct option_spec *spec, const struct options *o, char *text,
+                        size_t size)
+{
+    const char *field = (const char *)o + spec->offset;
+    switch (spec->kind) {
+    case OPT_REAL:
+        snprintf(text, size, "%s=%.17g\n", spec->name, *(const double *)field);
+        return;
+    case OPT_SEED:
+        snprintf(text, size, "%s=%llu\n", spec->name,
+                 (unsigned long long)*(const uint64_t *)field);
+        return;
+    case OPT_MODE:
+        snprintf(text, size, "%s=%s\n", spec->name, mode_name(*(const enum mode *)field));
+        return;
+    case OPT_FLAG:
+    case OPT_INT:
+    case OPT_STORE:
+        snprintf(text, size, "%s=%d\n", spec->name, *(const int *)field);
+        return;
+    case OPT_OUTPUT:
+    case OPT_FILE:
+    case OPT_CROP:
+        break;
+    }
+    /* A file that changes pixels must have its bytes hashed where it is read, as the
+     * scene's lines are (scene_hash_line); its name says nothing of them. */
+    assert(!"options that name files or the window are in outside_pixels[]");
+    snprintf(text, size, "%s\n", spec->name);
+}
+
+uint64_t options_hash(const struct options *o, uint64_t h)
+{
+    char text[128];
+    snprintf(text, sizeof text, "photon %s\n", PHOTON_VERSION);
+    h = fnv1a(h, text, strlen(text));
+    for (size_t i = 0; i < sizeof specs / sizeof specs[0]; i++)
+        if (changes_pixels(&specs[i])) {
+            option_text(&specs[i], o, text, sizeof text);
+            h = fnv1a(h, text, strlen(text));
+        }
+    return h;
 }

@@ -73,4 +73,15 @@ int read_number(const char *name, const char *text, double min, double max, int 
 /* A --seed value: a whole number from 0 to 2^64 - 1; -1 with *err filled otherwise. */
 int read_seed(const char *text, uint64_t *seed, struct error *err);
 
+/* An -o value: a file name ending in .pfm, shorter than OUTPUT_PATH_MAX, copied to
+ * output[OUTPUT_PATH_MAX]; -1 with *err filled otherwise. Also for photon merge. */
+int read_output(const char *text, char *output, struct error *err);
+
+/* h folded with this program's version and every option of o that changes pixels, each as
+ * "name=value\n" in the order of the option table, after defaults are applied (so spelling
+ * and order on the command line do not matter). Left out: the options that change no
+ * pixel (-o, --crop, --stats, ...) and --time-limit (app/tile.h). An option that does not
+ * apply to o->mode is hashed too: refusing tiles that differ only there is safe. */
+uint64_t options_hash(const struct options *o, uint64_t h);
+
 #endif

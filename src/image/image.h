@@ -42,4 +42,10 @@ struct image *pfm_read(const char *name, struct error *err);
 /* Binary PPM (P6) for display: value * exposure, clamped to [0, 1], sRGB-encoded, 8 bits. */
 int ppm_write(const char *name, const struct image *img, double exposure, struct error *err);
 
+/* The pair every image-making command writes: the PFM pfm_name, which ends in ".pfm" (the
+ * caller checked), and the PPM of the same name ending in ".ppm" beside it, each written
+ * whole or not at all. */
+int image_write_pair(const char *pfm_name, const struct image *img, double exposure,
+                     struct error *err);
+
 #endif

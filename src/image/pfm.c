@@ -10,9 +10,9 @@
  * and this file alone does the flip. SCALE < 0 means little-endian floats, > 0 big-endian,
  * and |SCALE| multiplies every value (as pbrt reads it); we always write -1.0.
  *
- * The reader also skips '#' comment lines between header fields (a crop window will be
- * kept in one after the "PF" line); the writer writes none, since other readers may not
- * accept them. Greyscale "Pf" files are refused: a reference is colour. Every size is
+ * The reader also skips '#' comment lines between header fields, which some writers put
+ * there; the writer writes none, since other readers refuse them (netpbm's pfmtopam does,
+ * so a crop's window goes in a file of its own: app/tile.h). Greyscale "Pf" files are refused: a reference is colour. Every size is
  * checked, and the data's length compared with it, before the image is allocated.
  *
  * Byte order is assembled by hand from the float's bits, so the file is the same on hosts

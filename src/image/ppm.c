@@ -9,6 +9,10 @@
 #include "image.h"
 
 #include <assert.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../base/alloc.h"
 
 /* sRGB encoding of a linear value: 12.92 c on the linear segment c <= 0.0031308, else
  * 1.055 c^(1/2.4) - 0.055; e is in [0, 1], so the byte is in 0..255. */
@@ -35,4 +39,18 @@ int ppm_write(const char *name, const struct image *img, double exposure, struct
         }
     }
     return output_commit(f, err); /* a failed write shows in ferror(), checked there */
+}
+
+int image_write_pair(const char *pfm_name, const struct image *img, double exposure,
+                     struct error *err)
+{
+    size_t n = strlen(pfm_name);
+    assert(n >= 4 && strcmp(pfm_name + n - 4, ".pfm") == 0);
+    char *ppm_name = xstrdup(pfm_name);
+    strcpy(ppm_name + n - 4, ".ppm");
+    int status = pfm_write(pfm_name, img, err) < 0 || ppm_write(ppm_name, img, exposure, err) < 0
+                     ? -1
+                     : 0;
+    free(ppm_name);
+    return status;
 }

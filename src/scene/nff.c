@@ -147,6 +147,7 @@ static int next_line(struct nff_reader *rd, struct error *err)
         if (length == sizeof rd->text - 1 && rd->text[length - 1] != '\n' && !feof(rd->stream))
             return error_set(err, rd->file, rd->line, "line longer than %d bytes",
                              NFF_MAX_LINE - 2);
+        scene_hash_line(rd->scene, rd->text);
         if (split_tokens(rd, err) < 0)
             return -1;
         rd->next = 0;

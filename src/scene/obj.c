@@ -100,6 +100,7 @@ static int read_line(struct obj_reader *rd, struct error *err)
     size_t length = strlen(rd->text);
     if (length == OBJ_MAX_LINE - 1 && rd->text[length - 1] != '\n' && !feof(rd->stream))
         return error_set(err, rd->file, rd->line, "line longer than %d bytes", OBJ_MAX_LINE - 2);
+    scene_hash_line(rd->scene, rd->text);
     rd->cursor = rd->text;
     return 1;
 }

@@ -233,6 +233,7 @@ static int parse_lines(struct parser *ps, FILE *f, struct error *err)
         size_t length = strlen(ps->text);
         if (length == sizeof ps->text - 1 && ps->text[length - 1] != '\n' && !feof(f))
             return error_set(err, ps->file, ps->line, "line longer than %d bytes", MAX_LINE - 2);
+        scene_hash_line(ps->scene, ps->text);
         if (parse_line(ps, err) < 0)
             return -1;
     }

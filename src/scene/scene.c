@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/hash.h"
 
 /* Relative pull-in of a shadow ray's far end: rounding in a hit distance is a few ulps
  * (1e-15) times the conditioning of the intersection, which is large only at grazing
@@ -25,7 +26,13 @@ struct scene *scene_create(void)
     scene->height = 256;
     scene->background = vec3_zero();
     scene->geometry = geometry_create();
+    scene->source_hash = FNV1A_OFFSET_BASIS;
     return scene;
+}
+
+void scene_hash_line(struct scene *scene, const char *line)
+{
+    scene->source_hash = fnv1a(scene->source_hash, line, strlen(line) + 1);
 }
 
 void scene_free(struct scene *scene)

@@ -14,6 +14,7 @@
 #define PHOTON_SCENE_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "../base/error.h"
 #include "../geom/geometry.h"
@@ -39,10 +40,19 @@ struct scene {
     int *light_of_prim;          /* owned; for each primitive id, its light or -1       */
     size_t n_prims;              /* primitives added so far (= entries of light_of_prim) */
     struct geometry *geometry;   /* owned                                               */
+    uint64_t source_hash;        /* FNV-1a (base/hash.h) of every line the readers took
+                                    from the scene's files, in reading order, each with
+                                    its '\0' (scene_hash_line): with the options, what a
+                                    tile's pixels depend on (app/tile.h)                 */
 };
 
 struct scene *scene_create(void);
 void scene_free(struct scene *scene); /* NULL is a no-op */
+
+/* Folds a line just read from one of the scene's files (a scene file, an include, an NFF
+ * or OBJ import) into source_hash, with its terminating '\0', so that where one line ends
+ * is hashed too. The bytes after a '\0' inside a line are not hashed: no reader sees them. */
+void scene_hash_line(struct scene *scene, const char *line);
 
 /* Adds a material (copied); returns its index, or -1 beyond MAX_MATERIALS. */
 int scene_add_material(struct scene *scene, const struct material *m);

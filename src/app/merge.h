@@ -1,0 +1,22 @@
+/*
+ * app/merge.h -- `photon merge`: crops rendered apart, put back into the whole image.
+ *
+ *   photon merge -o FULL.pfm TILE.pfm [TILE.pfm ...] [--exposure E]
+ *
+ * Each TILE.pfm is a render with --crop, and TILE.pfm.window its record (tile.h). The
+ * tiles must be windows of one image: the same image size and the same hash (scene bytes,
+ * mode, seed, options), none made with --time-limit, each PFM the size of its window, no
+ * two overlapping, and together covering every pixel. Then FULL.pfm is the whole image,
+ * byte for byte the file a render without --crop writes (DESIGN.md: a crop renders
+ * bit-identically to the same window of the whole image), and FULL.ppm is beside it
+ * (--exposure as for a render). Anything else exits 2 with a message naming the file, the
+ * overlap or the missing windows, and writes nothing.
+ */
+#ifndef PHOTON_MERGE_H
+#define PHOTON_MERGE_H
+
+/* argv[0] is "merge". Returns the exit status: 0, or 2 for bad input or an output that
+ * cannot be written (the message is printed). */
+int merge_command(int argc, char **argv);
+
+#endif
