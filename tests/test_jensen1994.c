@@ -488,6 +488,8 @@ static void test_probe_command(struct check *t)
                  file_contains(OUT ".log", bad[i][1]));
         CHECK(t, !file_exists(OUT ".csv") && !file_exists(OUT ".csv.tmp"));
     }
+    CHECK(t, photon_logged("probe", "--help", OUT ".log") == 0 &&
+             file_contains(OUT ".log", "usage: photon probe") && !file_exists(OUT ".csv"));
     CHECK(t, photon_logged("probe", "scenes/mirror-caustic.scene --line 0.3 0 -0.9 0.3 0 0.9 "
                                     "--samples 7 --photons 20000 -o " OUT ".csv",
                            OUT ".log") == 0);

@@ -381,6 +381,7 @@ static void test_plot_command_line(struct check *t)
     temp_name(svg, sizeof svg, "plot", "cli.svg");
     write_text_file(csv, HEADER "1,1,1,0.5\n2,1,1,0.25\n");
     CHECK(t, photon_plot("", log) == 2 && file_contains(log, "photon: plot: no output"));
+    CHECK(t, photon_plot("--help", log) == 0 && file_contains(log, "usage: photon plot"));
     snprintf(args, sizeof args, "%s", csv);
     CHECK(t, photon_plot(args, log) == 2 && file_contains(log, "-o PLOT.svg"));
     snprintf(args, sizeof args, "%s -o %s.png", csv, svg);

@@ -78,6 +78,7 @@ static int read_probe_option(int argc, char **argv, int *i, struct probe_args *a
     return status;
 }
 
+/* The arguments after "probe"; 1 when --help was printed, -1 with *err filled. */
 static int parse_probe_args(int argc, char **argv, struct probe_args *args, struct error *err)
 {
     memset(args, 0, sizeof *args);
@@ -87,6 +88,16 @@ static int parse_probe_args(int argc, char **argv, struct probe_args *args, stru
     args->js = jensen1994_settings_default();
     args->js.gather = PROBE_DEFAULT_GATHER;
     for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            printf("%s\n\nSamples the irradiance at N points along the line from (X0, Y0, Z0) to "
+                   "(X1, Y1, Z1)\non a surface of the given normal, and writes one CSV row per "
+                   "point: x,y,z,\nexact_direct,exact_caustic (point lights and flat mirrors "
+                   "only; empty otherwise),\ncaustic_photons, caustic_photons_unchecked, "
+                   "all_photons (mode 1994's estimates\nfrom --gather photons, default %d), "
+                   "caustic_illumination (its illumination map).\n", PROBE_USAGE,
+                   PROBE_DEFAULT_GATHER);
+            return 1;
+        }
         if (argv[i][0] == '-' && argv[i][1] != '\0') {
             if (read_probe_option(argc, argv, &i, args, err) < 0)
                 return -1;
@@ -257,9 +268,11 @@ int probe_command(int argc, char **argv)
 {
     struct probe_args args;
     struct error err;
-    if (parse_probe_args(argc, argv, &args, &err) < 0) {
-        error_print(&err);
-        return 2;
+    int parsed = parse_probe_args(argc, argv, &args, &err);
+    if (parsed != 0) {
+        if (parsed < 0)
+            error_print(&err);
+        return parsed < 0 ? 2 : 0;
     }
     struct scene *scene = scene_load(args.scene_path, &err);
     if (scene == NULL) {

@@ -31,6 +31,7 @@
 
 #include <assert.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -679,7 +680,8 @@ static int parse_plot_option(int argc, char **argv, int *i, struct plot_args *ar
     return error_set(err, "", 0, "plot: unknown option '%s'; " PLOT_USAGE, name);
 }
 
-/* Files and options from the command line; -1 with *err filled. */
+/* Files and options from the command line; 1 when --help was printed, -1 with *err
+ * filled. */
 static int parse_plot_args(int argc, char **argv, struct plot_args *args, struct error *err)
 {
     args->n_csv = 0;
@@ -687,6 +689,14 @@ static int parse_plot_args(int argc, char **argv, struct plot_args *args, struct
     args->spec = plot_spec_errors();
     int y_given = 0;
     for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            printf("%s\n\nDraws columns of CSV files (first line: the column names) as an "
+                   "SVG plot, one line\nper file and --y column (at most %d): by default "
+                   "relmse against seconds, log-log,\nfrom --report files; --linear for "
+                   "linear axes (profiles from photon probe);\n--x-title and --y-title name "
+                   "the axes.\n", PLOT_USAGE, PLOT_MAX_SERIES);
+            return 1;
+        }
         if (argv[i][0] != '-')
             args->csv[args->n_csv++] = argv[i];
         else if (parse_plot_option(argc, argv, &i, args, &y_given, err) != 0)
@@ -712,8 +722,8 @@ int plot_command(int argc, char **argv)
     int status = parse_plot_args(argc, argv, &args, &err);
     if (status == 0)
         status = plot_files(args.csv, args.n_csv, &args.spec, args.svg, &err);
-    if (status != 0)
+    if (status < 0)
         error_print(&err);
     free(args.csv);
-    return status != 0 ? 2 : 0;
+    return status < 0 ? 2 : 0; /* 1: --help was printed */
 }
