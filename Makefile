@@ -5,7 +5,7 @@
 #   make test       build and run every test; ends with "N passed, N failed"
 #   make check      the tests built by gcc and clang with -Werror, by tcc, and under
 #                   AddressSanitizer + UndefinedBehaviorSanitizer
-#   make bench      benchmark figures (ONLY=rays|knn|... runs one workload)
+#   make bench      benchmark figures (ONLY=rays|knn|...|tiles runs one workload)
 #   make fuzz       libFuzzer targets for the four readers, built with clang (development)
 #   make clean
 #
@@ -75,8 +75,9 @@ check:
 	done; done
 	@echo "determinism: the gcc, clang, tcc and sanitizer builds render identical bytes in every mode"
 
+# The tiles workload (tests/bench/tiles.sh) runs ./$(BIN) as separate processes.
 bench: $(BIN) $(BUILD)/bench
-	./$(BUILD)/bench $(ONLY)
+	PHOTON=./$(BIN) BENCH_TMP=$(BUILD)/bench-tiles ./$(BUILD)/bench $(ONLY)
 
 # Fuzz targets (a development tool, not part of the product build): one per reader. Run
 # e.g. build/fuzz/fuzz_nff -max_len=8192 -max_total_time=600 CORPUS_DIR < /dev/null
