@@ -325,6 +325,39 @@ static void test_ppm_bytes(struct check *t)
     image_free(img);
 }
 
+/* truth: a round trip. The PPM written beside a PFM equals, byte for byte, the PPM made
+ *   from that PFM read back (what photon merge does). The image holds, for every level k,
+ *   the linear values 1e-13 above and below the boundary between levels k and k + 1
+ *   (the sRGB curve inverted by hand at (k + 1/2) / 255), so the doubles sit on either
+ *   side of each boundary while their floats coincide.
+ * tolerance: none; bytes.
+ * catches: a PPM encoded from the doubles while the PFM keeps floats (a level apart at
+ *   a boundary; found when Slurm tiles were merged). */
+static void test_ppm_matches_its_pfm(struct check *t)
+{
+    char pfm[NAME_MAX_BYTES], ppm[NAME_MAX_BYTES], again[NAME_MAX_BYTES];
+    temp_name(pfm, sizeof pfm, "image", "pair.pfm");
+    snprintf(ppm, sizeof ppm, "%.*s.ppm", (int)strlen(pfm) - 4, pfm);
+    temp_name(again, sizeof again, "image", "again.ppm");
+    struct image *img = image_create(255, 2);
+    for (int k = 0; k < 255; k++) {
+        double e = (k + 0.5) / 255.0;
+        double c = e <= 0.04045 ? e / 12.92 : pow((e + 0.055) / 1.055, 2.4);
+        image_set(img, k, 0, vec3(c + 1e-13, c + 1e-13, c + 1e-13));
+        image_set(img, k, 1, vec3(c - 1e-13, c - 1e-13, c - 1e-13));
+    }
+    struct error err;
+    CHECK(t, image_write_pair(pfm, img, 1.0, &err) == 0);
+    struct image *back = pfm_read(pfm, &err);
+    CHECK(t, back != NULL && ppm_write(again, back, 1.0, &err) == 0);
+    CHECK(t, files_equal(ppm, again));
+    image_free(back);
+    image_free(img);
+    remove(pfm);
+    remove(ppm);
+    remove(again);
+}
+
 /* truth: the definitions in compare.h, worked by hand. a = {(1,0,0), (0,0,0)} against
  *   b = {(0,0,0), (0,0,2)}: differences 1 and -2 among six channels, so mse = 5/6,
  *   relmse = (1/0.01 + 4/4.01) / 6, peak = 2, psnr = 10 log10(4 / (5/6)) = 10 log10(4.8),
@@ -387,6 +420,7 @@ void test_image(struct check *t)
     RUN_TEST(t, test_pfm_read_by_hand);
     RUN_TEST(t, test_pfm_refuses_malformed);
     RUN_TEST(t, test_ppm_bytes);
+    RUN_TEST(t, test_ppm_matches_its_pfm);
     RUN_TEST(t, test_compare_metrics);
     RUN_TEST(t, test_write_fails_cleanly);
 }

@@ -39,7 +39,12 @@ int pfm_write(const char *name, const struct image *img, struct error *err);
 /* Reads a colour PFM of either byte order. NULL with *err filled for anything malformed. */
 struct image *pfm_read(const char *name, struct error *err);
 
-/* Binary PPM (P6) for display: value * exposure, clamped to [0, 1], sRGB-encoded, 8 bits. */
+/* The value a PFM keeps of v: v rounded to the nearest binary32 (clamped to +-FLT_MAX). */
+double pfm_stored_value(double v);
+
+/* Binary PPM (P6) for display: each channel as the PFM keeps it (pfm_stored_value), times
+ * exposure, clamped to [0, 1], sRGB-encoded, 8 bits; so a PPM made from a PFM read back
+ * (photon merge) has the same bytes as the one written beside it. */
 int ppm_write(const char *name, const struct image *img, double exposure, struct error *err);
 
 /* The pair every image-making command writes: the PFM pfm_name, which ends in ".pfm" (the

@@ -59,6 +59,11 @@ static double float_value(uint32_t bits)
     return (double)f;
 }
 
+double pfm_stored_value(double v)
+{
+    return float_value(float_bits(v));
+}
+
 static void put_little_endian(uint32_t bits, FILE *f)
 {
     for (int i = 0; i < 4; i++)

@@ -4,7 +4,10 @@
  * "P6\n<width> <height>\n255\n", then one byte per channel, rows top to bottom, each row
  * left to right. A channel byte is value * exposure, clamped to [0, 1] (no tone mapping),
  * encoded with the sRGB transfer function (IEC 61966-2-1) and rounded to the nearest of
- * 256 levels. Written atomically through output_open()/output_commit().
+ * 256 levels. The value is first rounded to the float the PFM keeps of it, so that the PPM
+ * of a render and the PPM `photon merge` makes from its PFM tiles agree byte for byte
+ * (a double a hair above a level's boundary can round to a float below it). Written
+ * atomically through output_open()/output_commit().
  */
 #include "image.h"
 
@@ -32,7 +35,9 @@ int ppm_write(const char *name, const struct image *img, double exposure, struct
     fprintf(f, "P6\n%d %d\n255\n", img->width, img->height);
     for (int y = 0; y < img->height; y++) {
         for (int x = 0; x < img->width; x++) {
-            struct vec3 v = vec3_scale(image_get(img, x, y), exposure);
+            struct vec3 p = image_get(img, x, y);
+            struct vec3 v = vec3_scale(vec3(pfm_stored_value(p.x), pfm_stored_value(p.y),
+                                            pfm_stored_value(p.z)), exposure);
             putc(srgb_byte(v.x), f);
             putc(srgb_byte(v.y), f);
             putc(srgb_byte(v.z), f);
