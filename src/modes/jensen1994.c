@@ -39,7 +39,9 @@
  * cache's pre-pass from rng_stream(seed, STREAM_CACHE, pixel, 0); the pre-pass fills the
  * cache over the whole image before the final pass, which only reads it (a point no
  * record covers gathers on the spot and keeps nothing). So a crop equals the same window
- * of the whole image.
+ * of the whole image. The photon map, the CP tree and the filled cache are the global work
+ * every crop repeats; --load-photons reads them from a file instead (photon/
+ * global_work.h; not with illumination maps, which the file does not hold).
  */
 #include "jensen1994.h"
 

@@ -41,7 +41,9 @@
  * is filled by a pre-pass over the whole image in scanline order before the final pass,
  * which only reads it; where no record is usable the final pass gathers on the spot and
  * keeps nothing. So a pixel depends on nothing but the scene and the settings, and a crop
- * equals the same window of the whole image.
+ * equals the same window of the whole image. The maps and the filled cache are the global
+ * work every crop repeats; --load-photons reads them from a file instead (photon/
+ * global_work.h), and the cache's records are added in the order they were made.
  */
 #include "jensen1996.h"
 

@@ -9,6 +9,8 @@
  *   3. for each pixel, follow the camera ray through ideal mirrors and glass; at the first
  *      surface with a non-delta part return its emission plus the radiance estimate of
  *      Eq. 3 (or Eq. 5 with the cone filter) from the nearest photons (Sec. 5).
+ * Steps 1 and 2 are the render's global work: with --load-photons the map comes from a
+ * file instead (photon/global_work.h), the same map node for node.
  * No direct lighting is computed: everything a diffuse surface shows comes from the
  * photons, which is why the picture is blotchy at low photon counts, and why its
  * brightness is right (the estimate is consistent) where it is not blotchy.
