@@ -317,7 +317,7 @@ static void test_merge_refuses_bad_tile_sets(struct check *t)
 
 /* ---- The file of global work (app/work_file.h) ---- */
 
-/* Photon 1 of work_file.h's example, and the bytes the format says it takes. */
+/* The one photon of the hand-written file below (example_bytes). */
 static struct photon example_photon(void)
 {
     struct photon p = {{1.0f, -2.0f, 0.5f}, {1, 2, 3, 4}, 5, 6, 0, PHOTON_CAUSTIC};
