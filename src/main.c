@@ -14,6 +14,7 @@
 #include "app/probe.h"
 #include "app/report.h"
 #include "app/tile.h"
+#include "app/work_file.h"
 #include "image/compare.h"
 #include "image/plot.h"
 #include "modes/direct.h"
@@ -36,8 +37,11 @@ struct run {
     struct ppm_stats ppm_stats;       /* --mode 2008 only */
     struct jensen1994_stats j94_stats; /* --mode 1994 only */
     struct jensen1996_stats j96_stats; /* --mode 1996 only */
+    struct global_work work;           /* the photon modes' maps and cache: owned, made by
+                                          the mode or read by --load-photons           */
     clock_t start;
     double seconds_build;
+    double seconds_work_file;          /* reading or writing it                        */
 };
 
 static double seconds_since(clock_t start)
@@ -110,6 +114,12 @@ static int prepare_run(struct run *run, struct error *err)
     return 0;
 }
 
+/* What made the pixels: the scene's lines and the options that change them (tile.h). */
+static uint64_t render_hash(const struct run *run)
+{
+    return options_hash(&run->o, run->scene->source_hash);
+}
+
 /* With --crop, the record beside the PFM that lets photon merge place it (app/tile.h). */
 static int write_tile_record(const struct run *run, struct error *err)
 {
@@ -120,14 +130,14 @@ static int write_tile_record(const struct run *run, struct error *err)
     r.y1 = run->rs.y1;
     r.width = run->scene->width;
     r.height = run->scene->height;
-    r.hash = options_hash(&run->o, run->scene->source_hash);
+    r.hash = render_hash(run);
     r.time_limit = run->o.time_limit;
     return tile_record_write(run->o.output, &r, err);
 }
 
 /* -o's PFM (the name ends in .pfm: parse_options) and the PPM beside it, the variance and,
  * for a crop, its record. A whole render writes no record, so its files stay as before. */
-static int write_outputs(const struct run *run, struct error *err)
+static int write_outputs(struct run *run, struct error *err)
 {
     const struct options *o = &run->o;
     if (image_write_pair(o->output, run->result.image, o->exposure, err) < 0)
@@ -136,6 +146,11 @@ static int write_outputs(const struct run *run, struct error *err)
         return -1;
     if (o->crop[2] != 0 && write_tile_record(run, err) < 0)
         return -1;
+    clock_t start = clock();
+    if (o->save_photons != NULL &&
+        work_file_write(o->save_photons, render_hash(run), &run->work, err) < 0)
+        return -1;
+    run->seconds_work_file += seconds_since(start);
     return 0;
 }
 
@@ -229,6 +244,8 @@ static void print_stats(const struct run *run)
             mode_name(run->o.mode), seconds_since(run->start), run->seconds_build,
             run->result.seconds);
     fprintf(stderr, "rays=%llu\nnonfinite_samples=%llu\n", c->rays, c->nonfinite_samples);
+    if (run->o.save_photons != NULL || run->o.load_photons != NULL)
+        fprintf(stderr, "seconds_work_file=%.3f\n", run->seconds_work_file);
     fprintf(stderr, "objects=%zu\nlights=%zu\nbvh_nodes=%zu\nbytes_geometry=%zu\n",
             geometry_primitive_count(scene->geometry), scene->n_lights,
             geometry_bvh_nodes(scene->geometry), geometry_bytes(scene->geometry));
@@ -266,6 +283,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         ps.gather = (size_t)run->o.gather;
         ps.max_radius = run->o.max_radius;
         ps.cone_k = run->o.cone;
+        ps.work = &run->work;
         return render_photons(run->scene, &run->rs, &ps, want_variance, checkpoint,
                               &run->counters, &run->photon_stats, err);
     case MODE_JENSEN1994:
@@ -278,6 +296,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         j94.light_samples = run->o.light_samples;
         j94.projection_maps = run->o.projection_maps;
         j94.illumination_maps = run->o.illumination_maps;
+        j94.work = &run->work;
         return render_jensen1994(run->scene, &run->rs, &j94, want_variance, &run->counters,
                                  &run->j94_stats, err);
     case MODE_JENSEN1996:
@@ -295,6 +314,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         js.shadow_photons = run->o.shadow_photons;
         js.one_map = run->o.one_map;
         js.report = checkpoint;
+        js.work = &run->work;
         return render_jensen1996(run->scene, &run->rs, &js, want_variance, &run->counters,
                                  &run->j96_stats, err);
     case MODE_PPM2008:
@@ -316,6 +336,11 @@ static int render_command(struct run *run, struct error *err)
 {
     if (prepare_run(run, err) < 0)
         return 2;
+    clock_t start = clock();
+    if (run->o.load_photons != NULL &&
+        work_file_read(run->o.load_photons, render_hash(run), &run->work, err) < 0)
+        return 2;
+    run->seconds_work_file = seconds_since(start);
     run->result = render_mode(run, err);
     if (run->result.image == NULL || write_outputs(run, err) < 0)
         return 2;
@@ -331,6 +356,7 @@ static void finish_run(struct run *run)
     if (run->reference != NULL)
         report_abandon(&run->report); /* a no-op once closed */
     render_result_free(&run->result);
+    global_work_free(&run->work);
     image_free(run->reference);
     scene_free(run->scene);
 }
@@ -352,6 +378,8 @@ int main(int argc, char **argv)
     run.reference = NULL;
     run.result.image = NULL;
     run.result.variance = NULL;
+    run.work.maps = NULL;
+    run.work.records = NULL;
     run.start = clock();
     int parsed = parse_options(argc, argv, &run.o, &err);
     if (parsed != 0) {

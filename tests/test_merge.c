@@ -1,6 +1,7 @@
 /*
  * tests/test_merge.c -- tiles: the hash of what made a render's pixels (options_hash), the
- * record beside a crop (app/tile.h), and `photon merge` run as a user runs it.
+ * record beside a crop (app/tile.h), `photon merge` run as a user runs it, and the file of
+ * global work that tiles share (--save-photons, --load-photons: app/work_file.h).
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -9,6 +10,7 @@
 
 #include "../src/app/options.h"
 #include "../src/app/tile.h"
+#include "../src/app/work_file.h"
 #include "../src/base/hash.h"
 #include "files.h"
 #include "tests.h"
@@ -32,13 +34,16 @@ static int log_contains(const char *text)
     return file_contains(OUT ".log", text);
 }
 
-/* options_hash() of "photon WORDS scenes/cornell.scene", WORDS split at spaces; 0 (which
+/* options_hash() of "photon --mode photons WORDS scenes/cornell.scene", WORDS split at
+ * spaces; 0 (which
  * no test expects) when the options do not parse. */
 static uint64_t hash_of(const char *words)
 {
     char text[256], *argv[32];
     int argc = 0;
     argv[argc++] = "photon";
+    argv[argc++] = "--mode"; /* a mode with global work, so --save-photons parses */
+    argv[argc++] = "photons";
     snprintf(text, sizeof text, "%s", words);
     for (char *w = strtok(text, " "); w != NULL && argc < 30; w = strtok(NULL, " "))
         argv[argc++] = w;
@@ -54,7 +59,7 @@ static uint64_t hash_of(const char *words)
 static const char *const same_pixels_options[] = {
     "-o build/x.pfm", "--crop 0 0 4 4", "--time-limit 5", "--reference r.pfm --report r.csv",
     "--variance v.pfm", "--checkpoint 3", "--exposure 2", "--stats", "--progress",
-    "--no-progress",
+    "--no-progress", "--save-photons w.work", "--load-photons w.work",
 };
 static const char *const other_pixels_options[] = {
     "--mode pt", "--seed 2", "--spp 3", "--width 100", "--height 100", "--adaptive 0.1",
@@ -310,6 +315,192 @@ static void test_merge_refuses_bad_tile_sets(struct check *t)
     CHECK(t, photon("merge --help") == 0 && log_contains("usage: photon merge"));
 }
 
+/* ---- The file of global work (app/work_file.h) ---- */
+
+/* The one photon of the hand-written file below (example_bytes). */
+static struct photon example_photon(void)
+{
+    struct photon p = {{1.0f, -2.0f, 0.5f}, {1, 2, 3, 4}, 5, 6, 0, PHOTON_CAUSTIC};
+    return p;
+}
+
+/* What work_file.h's table says the file of example_work() holds, written out by hand:
+ * little-endian numbers, the floats' and doubles' IEEE 754 bits. Returns its length
+ * without the last 8 bytes, the checksum, which are left for the caller. */
+static size_t example_bytes(unsigned char *b)
+{
+    static const unsigned char head[] = {
+        'p', 'h', 'o', 't', 'o', 'n', 'G', 'W', 1, 0, 0, 0,           /* magic, version  */
+        0xef, 0xcd, 0xab, 0x89, 0x67, 0x45, 0x23, 0x01,               /* hash            */
+        2, 0, 0, 0,                                                   /* two maps        */
+        1, 1, 0, 0, 0, 0, 0, 0, 0,                                    /* one photon      */
+        0, 0, 0x80, 0x3f, 0, 0, 0, 0xc0, 0, 0, 0, 0x3f,               /* 1, -2, 0.5      */
+        1, 2, 3, 4, 5, 6, 0, PHOTON_CAUSTIC,                          /* power ... flags */
+        0,                                                            /* no second map   */
+        1, 0, 0, 0, 0, 0, 0, 0,                                       /* one record      */
+    };
+    size_t n = sizeof head;
+    memcpy(b, head, n);
+    memset(b + n, 0, 28 * 8); /* the record: all 0.0 but n.z = 1 and R = 2 */
+    b[n + 5 * 8 + 6] = 0xf0;  /* 1.0 = 0x3ff0000000000000 */
+    b[n + 5 * 8 + 7] = 0x3f;
+    b[n + 9 * 8 + 7] = 0x40;  /* 2.0 = 0x4000000000000000 */
+    return n + 28 * 8;
+}
+
+/* truth: work_file.h's byte table, written out by hand above (a photon's floats and a
+ *   record's doubles as IEEE bits, numbers lowest byte first), and a round trip.
+ * tolerance: none.
+ * catches: a field in the wrong place or byte order, the unused heap[0] written, a
+ *   missing map not marked, the checksum not over every byte before it. */
+static void test_work_file_format(struct check *t)
+{
+    struct photon *heap = calloc(2, sizeof *heap);
+    heap[1] = example_photon();
+    struct global_work work = {NULL, 0, NULL, 0}, back = {NULL, 0, NULL, 0};
+    global_work_add_maps(&work, 2);
+    work.maps[0] = kdtree_from_heap(heap, 1);
+    work.records = calloc(1, sizeof *work.records);
+    work.n_records = 1;
+    work.records[0].n = vec3(0, 0, 1);
+    work.records[0].r = 2;
+    struct error err;
+    uint64_t hash = UINT64_C(0x0123456789abcdef);
+    CHECK(t, work_file_write(OUT "_example.work", hash, &work, &err) == 0);
+    unsigned char expected[512];
+    size_t n = example_bytes(expected);
+    uint64_t sum = fnv1a(FNV1A_OFFSET_BASIS, expected, n);
+    for (int i = 0; i < 8; i++)
+        expected[n + i] = (unsigned char)(sum >> (8 * i));
+    write_bytes_file(OUT "_expected.work", expected, n + 8);
+    CHECK(t, files_equal(OUT "_example.work", OUT "_expected.work"));
+    CHECK(t, work_file_read(OUT "_example.work", hash, &back, &err) == 0);
+    CHECK(t, back.n_maps == 2 && back.maps[0] != NULL && back.maps[1] == NULL &&
+             back.maps[0]->n_photons == 1 && back.n_records == 1);
+    if (back.n_maps == 2 && back.maps[0] != NULL && back.n_records == 1) {
+        struct photon p = example_photon();
+        CHECK(t, memcmp(&back.maps[0]->photons[1], &p, sizeof p) == 0);
+        CHECK(t, memcmp(&back.records[0], &work.records[0], sizeof back.records[0]) == 0);
+    }
+    global_work_free(&back);
+    global_work_free(&work);
+}
+
+/* Renders mode with TILE_SETTINGS, extra options last, to OUT_NAME.pfm; the status. */
+static int render_work(const char *mode, const char *name, const char *extra)
+{
+    return photon("--mode %s " TILE_SETTINGS " %s -o " OUT "_%s.pfm", mode, extra, name);
+}
+
+/* truth: the global work is the same whatever window is rendered (DESIGN.md: a crop
+ *   equals its window of the whole image), so a render that loads it instead of doing it
+ *   must write the same bytes, whole and cropped, and a crop must save the same file as
+ *   the whole render.
+ * tolerance: none.
+ * catches: a map re-balanced or reordered on loading, photons or doubles not kept
+ *   exactly, cache records re-added in another order (other sums), the cache's pre-pass
+ *   or a map left out of the file, work that depends on the window. */
+static void test_loaded_work_renders_same_bytes(struct check *t)
+{
+    static const char *const modes[] = {"photons", "1994", "1996"};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        const char *mode = modes[m];
+        CHECK(t, render_work(mode, "made", "--save-photons " OUT "_made.work") == 0);
+        CHECK(t, render_work(mode, "loaded", "--load-photons " OUT "_made.work") == 0);
+        CHECK(t, render_work(mode, "crop_made", "--crop 5 7 30 20") == 0);
+        CHECK(t, render_work(mode, "crop_loaded", "--crop 5 7 30 20 --load-photons "
+                             OUT "_made.work") == 0);
+        CHECK(t, render_work(mode, "crop_saved", "--crop 5 7 30 20 --save-photons "
+                             OUT "_crop.work") == 0);
+        int same = files_equal(OUT "_made.pfm", OUT "_loaded.pfm") &&
+                   files_equal(OUT "_crop_made.pfm", OUT "_crop_loaded.pfm") &&
+                   files_equal(OUT "_crop_made.pfm", OUT "_crop_saved.pfm") &&
+                   files_equal(OUT "_made.work", OUT "_crop.work");
+        CHECK(t, same);
+        if (!same)
+            fprintf(stderr, "test_merge: mode %s: --load-photons changed the image\n", mode);
+    }
+}
+
+/* OUT_made.work changed into OUT_bad.work: its first keep bytes (all when keep < 0), byte
+ * flip (when >= 0) with its bits inverted, and extra bytes of zeros after. */
+static void write_changed_work(long keep, long flip, size_t extra)
+{
+    static unsigned char bytes[4 << 20];
+    FILE *f = fopen(OUT "_made.work", "rb");
+    size_t n = f != NULL ? fread(bytes, 1, sizeof bytes - extra, f) : 0;
+    if (f != NULL)
+        fclose(f);
+    if (keep >= 0 && (size_t)keep < n)
+        n = (size_t)keep;
+    if (flip >= 0 && (size_t)flip < n)
+        bytes[flip] ^= 0xff;
+    memset(bytes + n, 0, extra);
+    write_bytes_file(OUT "_bad.work", bytes, n + extra);
+}
+
+/* Whether "photon --mode MODE TILE_SETTINGS EXTRA -o OUT_refused.pfm" exits 2 with message
+ * in its output and leaves no image. */
+static int render_refused(const char *mode, const char *extra, const char *message)
+{
+    remove(OUT "_refused.pfm");
+    remove(OUT "_refused.ppm");
+    int refused = render_work(mode, "refused", extra) == 2 && log_contains(message) &&
+                  !file_exists(OUT "_refused.pfm") && !file_exists(OUT "_refused.ppm");
+    if (!refused)
+        fprintf(stderr, "test_merge: '%s' with --mode %s not refused with '%s'\n", extra,
+                mode, message);
+    return refused;
+}
+
+#define LOAD_BAD "--load-photons " OUT "_bad.work"
+
+/* truth: work_file.h's promise that a file of global work is used only when it is whole,
+ *   undamaged and made for this render, and the modes that have none refuse the options.
+ *   The 1996 file of TILE_SETTINGS is some 1.2 MB: the cuts fall in the header, in the
+ *   first map's photons, in the cache's records and in the checksum.
+ * tolerance: none.
+ * catches: a missing length or checksum check (a truncated or damaged file read as
+ *   good), trailing bytes accepted, the hash not compared (another seed's maps used),
+ *   a mode without global work silently ignoring the options. */
+static void test_bad_work_files_are_refused(struct check *t)
+{
+    CHECK(t, render_work("1996", "made", "--save-photons " OUT "_made.work") == 0);
+    static const struct {
+        long keep, flip;
+        size_t extra;
+        const char *message;
+    } bad[] = {
+        {-1, 0, 0, "not a file of photon's saved global work"},
+        {-1, 8, 0, "version 254 of the saved work; this photon reads version 1"},
+        {6, -1, 0, "not a file of photon's saved global work"},
+        {10, -1, 0, "truncated: the file ends inside the header"},
+        {16, -1, 0, "truncated: the file ends inside the header"},
+        {1000, -1, 0, "truncated: "},
+        {1170000, -1, 0, "truncated: "},
+        {-1, 40, 0, "damaged: its checksum is"},
+        {-1, -1, 1, "unexpected bytes after the checksum"},
+        {-1, 13, 0, "saved from other scene files, mode, seed or options"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        write_changed_work(bad[i].keep, bad[i].flip, bad[i].extra);
+        CHECK(t, render_refused("1996", LOAD_BAD, bad[i].message));
+    }
+    write_changed_work(-1, -1, 0);
+    CHECK(t, render_work("1996", "loaded", LOAD_BAD) == 0);
+    CHECK(t, render_refused("1996", LOAD_BAD " --seed 2", "saved from other scene files"));
+    CHECK(t, render_refused("photons", LOAD_BAD, "saved from other scene files"));
+    CHECK(t, render_refused("1996", "--load-photons " OUT "_none.work", "cannot open"));
+    CHECK(t, render_refused("pt", LOAD_BAD, "mode pt has no global work"));
+    CHECK(t, render_refused("direct", "--save-photons " OUT "_x.work", "mode direct has no"));
+    CHECK(t, render_refused("2008", LOAD_BAD, "mode 2008 traces new photons in every pass"));
+    CHECK(t, render_refused("1994", "--irradiance-store illumination --save-photons " OUT
+                            "_x.work", "not with --irradiance-store illumination"));
+    CHECK(t, render_refused("1996", LOAD_BAD " --save-photons " OUT "_x.work",
+                            "give one or the other"));
+    CHECK(t, !file_exists(OUT "_x.work"));
+}
+
 void test_merge(struct check *t)
 {
     RUN_TEST(t, test_options_hash_covers_pixel_options);
@@ -317,4 +508,7 @@ void test_merge(struct check *t)
     RUN_TEST(t, test_bad_tile_records_are_refused);
     RUN_TEST(t, test_merged_tiles_equal_whole_render);
     RUN_TEST(t, test_merge_refuses_bad_tile_sets);
+    RUN_TEST(t, test_work_file_format);
+    RUN_TEST(t, test_loaded_work_renders_same_bytes);
+    RUN_TEST(t, test_bad_work_files_are_refused);
 }

@@ -64,6 +64,12 @@ static const struct option_spec specs[] = {
      "write seconds,work,rmse,relmse at work 1, 2, 4, ... and at the end"},
     {"--variance", OPT_FILE, FIELD(variance), 0, 0, "FILE.pfm",
      "also write each pixel's variance of the mean (needs --spp >= 2)"},
+    {"--save-photons", OPT_FILE, FIELD(save_photons), 0, 0, "FILE",
+     "photons, 1994, 1996: also write the global work (photon maps, irradiance cache) to "
+     "FILE, for --load-photons"},
+    {"--load-photons", OPT_FILE, FIELD(load_photons), 0, 0, "FILE",
+     "photons, 1994, 1996: read the global work from FILE (saved by the same command but "
+     "for -o, --crop and the like) instead of doing it"},
     {"--photons", OPT_INT, FIELD(photons), 1, MAX_PHOTONS, "N",
      "photon modes: photons emitted (default: photons 200000, 1994 1000000, 1996 1000000 for "
      "the global map)"},
@@ -332,6 +338,29 @@ static const struct option_spec *find_spec(const char *name)
     return NULL;
 }
 
+/* --save-photons and --load-photons: one of them, in a mode that has global work to
+ * save, and not with 1994's illumination maps, which the file does not hold. */
+static int check_global_work_options(const struct options *o, struct error *err)
+{
+    const char *name = o->save_photons != NULL ? "--save-photons" : "--load-photons";
+    if (o->save_photons == NULL && o->load_photons == NULL)
+        return 0;
+    if (o->save_photons != NULL && o->load_photons != NULL)
+        return error_set(err, "", 0, "--save-photons and --load-photons: give one or the "
+                                     "other");
+    if (o->mode == MODE_DIRECT || o->mode == MODE_PT)
+        return error_set(err, "", 0, "%s: mode %s has no global work to save (every sample "
+                         "belongs to its pixel)", name, mode_name(o->mode));
+    if (o->mode == MODE_PPM2008)
+        return error_set(err, "", 0, "%s: mode 2008 traces new photons in every pass; they "
+                         "are not saved (their tracing is the smaller part of a tile's "
+                         "work: README, Tiles and merging)", name);
+    if (o->mode == MODE_JENSEN1994 && o->illumination_maps)
+        return error_set(err, "", 0, "%s: not with --irradiance-store illumination, whose "
+                         "illumination maps the file does not hold", name);
+    return 0;
+}
+
 int parse_options(int argc, char **argv, struct options *o, struct error *err)
 {
     set_defaults(o);
@@ -384,6 +413,8 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
                  : o->mode == MODE_JENSEN1996 ? J96_DEFAULT_SPP
                  : o->mode == MODE_JENSEN1994 ? J94_DEFAULT_SPP
                                               : DEFAULT_SPP;
+    if (check_global_work_options(o, err) < 0)
+        return -1;
     if (o->mode == MODE_PPM2008 && o->variance != NULL)
         return error_set(err, "", 0, "--variance: not available with --mode 2008, whose "
                                      "pixels are not means of independent samples");
@@ -391,13 +422,15 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
 }
 
 /* The options that change no pixel of the PFM: where outputs go, what is printed or shown,
- * the PPM's exposure, the window itself, and checkpoints and reports, which only look at the
- * image as it grows. options_hash() covers every other option, so one added to specs[] is
- * hashed unless it is named here. --time-limit is here because a hash cannot capture it:
+ * the PPM's exposure, the window itself, checkpoints and reports, which only look at the
+ * image as it grows, and the file of global work, which holds what the render would
+ * otherwise compute itself, bit for bit (tests/test_work_file.c). options_hash() covers
+ * every other option, so one added to specs[] is hashed unless it is named here. --time-limit is here because a hash cannot capture it:
  * it makes the pixels depend on the machine's speed, so tile.h records it apart. */
 static const char *const outside_pixels[] = {
     "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure", "--reference",
-    "--report", "--variance", "--checkpoint", "--time-limit",
+    "--report", "--variance", "--checkpoint", "--time-limit", "--save-photons",
+    "--load-photons",
 };
 
 static int changes_pixels(const struct option_spec *spec)

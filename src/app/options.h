@@ -32,6 +32,8 @@ struct options {
     const char *reference;        /* --reference REF.pfm, or NULL (borrowed)        */
     const char *report;           /* --report FILE.csv, or NULL (borrowed)          */
     const char *variance;         /* --variance FILE.pfm, or NULL (borrowed)        */
+    const char *save_photons;     /* --save-photons FILE, or NULL (borrowed)        */
+    const char *load_photons;     /* --load-photons FILE, or NULL (borrowed)        */
     int photons;                  /* photon modes: photons emitted                 */
     int gather;                   /* photon modes: photons per radiance estimate   */
     double max_radius;            /* photon modes: gathering radius; 0 = default   */

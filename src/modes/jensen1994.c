@@ -39,7 +39,9 @@
  * cache's pre-pass from rng_stream(seed, STREAM_CACHE, pixel, 0); the pre-pass fills the
  * cache over the whole image before the final pass, which only reads it (a point no
  * record covers gathers on the spot and keeps nothing). So a crop equals the same window
- * of the whole image.
+ * of the whole image. The photon map, the CP tree and the filled cache are the global work
+ * every crop repeats; --load-photons reads them from a file instead (photon/
+ * global_work.h; not with illumination maps, which the file does not hold).
  */
 #include "jensen1994.h"
 
@@ -69,6 +71,7 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;
     js.projection_maps = 1;
     js.illumination_maps = 0;
+    js.work = NULL;
     return js;
 }
 
@@ -535,7 +538,37 @@ static void tear_down(struct j94 *m)
     free(m->strata);
     nearest_free(m->nn);
     irradiance_cache_free(m->cache);
-    irradiance_stores_free(&m->stores);
+    illumination_maps_free(m->stores.illumination); /* the trees are the work's */
+}
+
+/* Pass 1 into work when it is empty (maps[0] the photon map, maps[1] the CP photons'
+ * tree; illumination maps stay m->stores' own), else the trees work holds (loaded from a
+ * file). m->stores borrows the trees from work. */
+static int photon_stores(struct j94 *m, const struct scene *scene,
+                         const struct render_settings *rs, struct global_work *work,
+                         struct error *err)
+{
+    if (work->n_maps == 0) {
+        if (jensen1994_trace(scene, rs->seed, rs->max_depth, m->js, &m->stores, m->stats,
+                             err) < 0)
+            return -1;
+        global_work_add_maps(work, 2);
+        work->maps[0] = m->stores.photons;
+        work->maps[1] = m->stores.caustics;
+        return 0;
+    }
+    if (m->js->illumination_maps)
+        return error_set(err, "", 0, "--load-photons: saved work holds no illumination maps");
+    if (work->n_maps != 2 || work->maps[0] == NULL || work->maps[1] == NULL)
+        return error_set(err, "", 0, "--load-photons: the file does not hold the two photon "
+                                     "maps mode 1994 saves");
+    m->stores.photons = work->maps[0];
+    m->stores.caustics = work->maps[1];
+    m->stats->photons_stored = work->maps[0]->n_photons;
+    m->stats->photons_caustic = work->maps[1]->n_photons;
+    m->stats->bytes_photon_map = kdtree_bytes(work->maps[0]);
+    m->stats->bytes_caustic_photons = kdtree_bytes(work->maps[1]);
+    return 0;
 }
 
 struct render_result render_jensen1994(const struct scene *scene,
@@ -549,18 +582,29 @@ struct render_result render_jensen1994(const struct scene *scene,
     struct j94 m;
     memset(&m, 0, sizeof m);
     m.stats = stats;
+    m.js = js;
+    struct global_work own_work = {NULL, 0, NULL, 0}; /* without js->work: made, freed */
+    struct global_work *work = js->work != NULL ? js->work : &own_work;
+    int loaded = work->n_maps > 0;
     clock_t start = clock();
-    if (jensen1994_trace(scene, rs->seed, rs->max_depth, js, &m.stores, stats, err) < 0)
+    if (photon_stores(&m, scene, rs, work, err) < 0) {
+        global_work_free(&own_work);
         return result;
+    }
     stats->seconds_photons = cpu_seconds(start);
     set_up(&m, scene, rs, js);
     stats->strata_theta = m.strata_theta;
     stats->strata_phi = m.strata_phi;
     start = clock();
     struct radiance_estimator estimator = {j94_radiance, &m};
-    m.filling_cache = 1;
-    fill_cache_pass(scene, rs->seed, estimator, m.cache, rs->progress, counters);
-    m.filling_cache = 0;
+    if (loaded) {
+        global_work_fill_cache(work, m.cache);
+    } else {
+        m.filling_cache = 1;
+        fill_cache_pass(scene, rs->seed, estimator, m.cache, rs->progress, counters);
+        m.filling_cache = 0;
+        global_work_keep_cache(work, m.cache);
+    }
     stats->seconds_cache = cpu_seconds(start);
     stats->cache_records = irradiance_cache_records(m.cache);
     stats->bytes_cache = irradiance_cache_bytes(m.cache);
@@ -568,5 +612,6 @@ struct render_result render_jensen1994(const struct scene *scene,
     stats->seconds_render = result.seconds;
     result.seconds += stats->seconds_photons + stats->seconds_cache;
     tear_down(&m);
+    global_work_free(&own_work);
     return result;
 }

@@ -10,6 +10,7 @@
 
 #include "../base/error.h"
 #include "../base/vec3.h"
+#include "../photon/global_work.h"
 #include "render.h"
 
 #define J94_DEFAULT_PHOTONS 1000000    /* --photons: light rays of pass 1; searches cost
@@ -41,6 +42,11 @@ struct jensen1994_settings {
     int illumination_maps; /* --irradiance-store: 1 illumination maps on quads and spheres
                               and photon maps elsewhere (the paper's Fig. 4); 0 photon
                               maps everywhere (Fig. 5)                                     */
+    struct global_work *work; /* NULL: pass 1 and the cache's pre-pass run and are released
+                                 here; else, empty, it receives their work (maps[0] the
+                                 photon map, maps[1] the CP photons' tree, the cache's
+                                 records), or, full, holds it to use instead (photon/
+                                 global_work.h); not with illumination maps              */
 };
 
 /* What the render did, for --stats (the paper's Fig. 9 and more). */
@@ -114,9 +120,11 @@ struct vec3 stored_irradiance(const struct irradiance_stores *stores,
 
 /* Renders the settings' window of the scene (finished) in two passes: the photon map,
  * then Monte Carlo ray tracing with an irradiance cache filled by a pre-pass over the
- * whole image (jensen1994.c), so a crop equals the same window of the whole render.
- * Fails (result.image NULL, *err filled) when more than MAX_PHOTONS photons would be
- * stored. The result's seconds include both passes and the pre-pass. */
+ * whole image (jensen1994.c), so a crop equals the same window of the whole render; the
+ * map and the cache come from js->work instead when it is full. Fails (result.image
+ * NULL, *err filled) when more than MAX_PHOTONS photons would be stored, or js->work
+ * holds other than two maps. The result's seconds include both passes and the
+ * pre-pass. */
 struct render_result render_jensen1994(const struct scene *scene,
                                        const struct render_settings *rs,
                                        const struct jensen1994_settings *js, int want_variance,

@@ -41,7 +41,9 @@
  * is filled by a pre-pass over the whole image in scanline order before the final pass,
  * which only reads it; where no record is usable the final pass gathers on the spot and
  * keeps nothing. So a pixel depends on nothing but the scene and the settings, and a crop
- * equals the same window of the whole image.
+ * equals the same window of the whole image. The maps and the filled cache are the global
+ * work every crop repeats; --load-photons reads them from a file instead (photon/
+ * global_work.h), and the cache's records are added in the order they were made.
  */
 #include "jensen1996.h"
 
@@ -81,6 +83,7 @@ struct jensen1996_settings jensen1996_settings_default(void)
     js.shadow_photons = 1;
     js.one_map = 0;
     js.report = NULL;
+    js.work = NULL;
     return js;
 }
 
@@ -91,6 +94,8 @@ static double cpu_seconds(clock_t start)
 
 /* ---- Sec. 3, pass 1: constructing the photon maps ---- */
 
+/* While pass 1 builds them, owned; while pass 2 reads them, borrowed from the render's
+ * global work (jensen1996.h). */
 struct photon_maps {
     struct kdtree *global;      /* L (S|D)* D, without shadow photons                     */
     struct kdtree *caustic;     /* L S+ D; NULL without specular objects or with one_map  */
@@ -221,6 +226,56 @@ static void photon_maps_free(struct photon_maps *maps)
     for (size_t l = 0; maps->visibility != NULL && l < maps->n_lights; l++)
         kdtree_free(maps->visibility[l]);
     free(maps->visibility);
+}
+
+/* Pass 1 into js->work, which is empty: maps[0] the global map, maps[1] the caustic map
+ * (NULL when not built), maps[2 ..] the lights' visibility maps. */
+static int build_maps_into_work(const struct scene *scene, const struct render_settings *rs,
+                                const struct jensen1996_settings *js,
+                                struct jensen1996_stats *stats, struct error *err)
+{
+    struct photon_maps maps = {NULL, NULL, NULL, 0};
+    if (build_global_map(scene, rs, js, &maps, stats, err) < 0 ||
+        build_caustic_map(scene, rs, js, &maps, stats, err) < 0) {
+        photon_maps_free(&maps);
+        return -1;
+    }
+    global_work_add_maps(js->work, 2 + maps.n_lights);
+    js->work->maps[0] = maps.global;
+    js->work->maps[1] = maps.caustic;
+    for (size_t l = 0; l < maps.n_lights; l++)
+        js->work->maps[2 + l] = maps.visibility[l];
+    free(maps.visibility);
+    return 0;
+}
+
+/* The maps of js->work, borrowed into *maps, after checking that they are the ones this
+ * scene and these settings make (a visibility map per light with shadow photons, no
+ * caustic map with one_map); the stats' map figures. */
+static int borrow_maps(const struct scene *scene, const struct jensen1996_settings *js,
+                       struct photon_maps *maps, struct jensen1996_stats *stats,
+                       struct error *err)
+{
+    const struct global_work *work = js->work;
+    size_t n_lights = js->shadow_photons ? scene->n_lights : 0;
+    int fits = work->n_maps == 2 + n_lights && work->maps[0] != NULL &&
+               !(js->one_map && work->maps[1] != NULL);
+    for (size_t l = 0; fits && l < n_lights; l++)
+        fits = work->maps[2 + l] != NULL;
+    if (!fits)
+        return error_set(err, "", 0, "--load-photons: the file's photon maps are not the "
+                                     "ones mode 1996 makes for this scene and these options");
+    maps->global = work->maps[0];
+    maps->caustic = work->maps[1];
+    maps->visibility = n_lights > 0 ? work->maps + 2 : NULL;
+    maps->n_lights = n_lights;
+    stats->photons_global = maps->global->n_photons;
+    stats->bytes_global_map = kdtree_bytes(maps->global);
+    stats->photons_caustic = maps->caustic != NULL ? maps->caustic->n_photons : 0;
+    stats->bytes_caustic_map = maps->caustic != NULL ? kdtree_bytes(maps->caustic) : 0;
+    for (size_t l = 0; l < n_lights; l++)
+        stats->bytes_visibility_maps += kdtree_bytes(maps->visibility[l]);
+    return 0;
 }
 
 /* ---- Sec. 4, pass 2: rendering ---- */
@@ -812,13 +867,16 @@ struct render_result render_jensen1996(const struct scene *scene,
     memset(stats, 0, sizeof *stats);
     struct j96 m;
     memset(&m, 0, sizeof m);
-    m.maps.global = NULL;
-    m.maps.caustic = NULL;
-    m.maps.visibility = NULL;
+    struct global_work own_work = {NULL, 0, NULL, 0}; /* without js->work: made, freed */
+    struct jensen1996_settings with_work = *js;
+    if (with_work.work == NULL)
+        with_work.work = &own_work;
+    js = &with_work;
+    int loaded = js->work->n_maps > 0;
     clock_t start = clock();
-    if (build_global_map(scene, rs, js, &m.maps, stats, err) < 0 ||
-        build_caustic_map(scene, rs, js, &m.maps, stats, err) < 0) {
-        photon_maps_free(&m.maps);
+    if ((!loaded && build_maps_into_work(scene, rs, js, stats, err) < 0) ||
+        borrow_maps(scene, js, &m.maps, stats, err) < 0) {
+        global_work_free(&own_work);
         return result;
     }
     stats->seconds_photons = cpu_seconds(start);
@@ -827,11 +885,14 @@ struct render_result render_jensen1996(const struct scene *scene,
     stats->strata_phi = m.cached.phi;
     m.scratch = scratch_create(&m, stats);
     start = clock();
-    if (m.cache != NULL) {
+    if (m.cache != NULL && loaded) {
+        global_work_fill_cache(js->work, m.cache);
+    } else if (m.cache != NULL) {
         struct radiance_estimator filler = {j96_radiance, &m};
         m.filling_cache = 1;
         fill_cache_pass(scene, rs->seed, filler, m.cache, rs->progress, counters);
         m.filling_cache = 0;
+        global_work_keep_cache(js->work, m.cache);
     }
     stats->seconds_cache = cpu_seconds(start);
     stats->cache_records = m.cache != NULL ? irradiance_cache_records(m.cache) : 0;
@@ -846,6 +907,6 @@ struct render_result render_jensen1996(const struct scene *scene,
     result.seconds += before;
     scratch_free(m.scratch);
     irradiance_cache_free(m.cache);
-    photon_maps_free(&m.maps);
+    global_work_free(&own_work); /* m.maps borrowed from it */
     return result;
 }

@@ -9,6 +9,7 @@
 #include <stddef.h>
 
 #include "../base/error.h"
+#include "../photon/global_work.h"
 #include "render.h"
 
 #define J96_DEFAULT_PHOTONS 1000000        /* --photons: searches cost log N, so a large
@@ -50,6 +51,12 @@ struct jensen1996_settings {
                                  from its caustic photons (the comparison of Sec. 3)     */
     const struct checkpoint *report; /* borrowed or NULL: rows after 1, 2, 4, ... samples
                                  per pixel, work = photons emitted + gather rays so far   */
+    struct global_work *work; /* NULL: pass 1 and the cache's pre-pass run and are released
+                                 here; else, empty, it receives their work (maps[0] the
+                                 global map, maps[1] the caustic map or NULL, maps[2 ..]
+                                 each light's visibility map with shadow photons, and the
+                                 cache's records), or, full, holds it to use instead
+                                 (photon/global_work.h)                                  */
 };
 
 /* What the render did, for --stats. */
@@ -78,8 +85,10 @@ struct jensen1996_stats {
 struct jensen1996_settings jensen1996_settings_default(void);
 
 /* Renders the window of rs: pass 1 (the maps), the irradiance cache's pre-pass over the
- * whole image, then rs->spp camera samples per pixel. On failure (more than MAX_PHOTONS
- * photons would be stored) returns a result with image NULL and *err filled. */
+ * whole image (or both from js->work when it is full), then rs->spp camera samples per
+ * pixel. On failure (more than MAX_PHOTONS photons would be stored, or js->work holds
+ * maps that do not fit the scene and settings) returns a result with image NULL and
+ * *err filled. */
 struct render_result render_jensen1996(const struct scene *scene,
                                        const struct render_settings *rs,
                                        const struct jensen1996_settings *js, int want_variance,

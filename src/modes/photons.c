@@ -9,6 +9,8 @@
  *   3. for each pixel, follow the camera ray through ideal mirrors and glass; at the first
  *      surface with a non-delta part return its emission plus the radiance estimate of
  *      Eq. 3 (or Eq. 5 with the cone filter) from the nearest photons (Sec. 5).
+ * Steps 1 and 2 are the render's global work: with --load-photons the map comes from a
+ * file instead (photon/global_work.h), the same map node for node.
  * No direct lighting is computed: everything a diffuse surface shows comes from the
  * photons, which is why the picture is blotchy at low photon counts, and why its
  * brightness is right (the estimate is consistent) where it is not blotchy.
@@ -109,13 +111,36 @@ static struct kdtree *build_global_map(const struct scene *scene,
         return NULL;
     stats->seconds_photons = cpu_seconds(start);
     stats->photons_emitted = traced.n_emitted;
-    stats->photons_stored = traced.n_photons;
     stats->photon_rays = traced.rays;
     start = clock();
     struct kdtree *map = balance_kdtree(traced.photons, traced.n_photons); /* takes them */
     stats->seconds_balance = cpu_seconds(start);
     traced.photons = NULL;
     photon_trace_free(&traced);
+    return map;
+}
+
+/* The global map: steps 1 and 2 into work->maps[0] when work is empty, else the map work
+ * holds (loaded from a file). Borrowed from work; NULL with *err filled. */
+static const struct kdtree *global_map(const struct scene *scene,
+                                       const struct render_settings *rs,
+                                       const struct photon_settings *ps,
+                                       struct photon_stats *stats, struct error *err)
+{
+    struct global_work *work = ps->work;
+    if (work->n_maps == 0) {
+        struct kdtree *map = build_global_map(scene, rs, ps, stats, err);
+        if (map == NULL)
+            return NULL;
+        global_work_add_maps(work, 1);
+        work->maps[0] = map;
+    } else if (work->n_maps != 1 || work->maps[0] == NULL || work->n_records != 0) {
+        error_set(err, "", 0, "--load-photons: the file does not hold one photon map and "
+                              "nothing else, as mode photons saves");
+        return NULL;
+    }
+    const struct kdtree *map = work->maps[0];
+    stats->photons_stored = map->n_photons;
     stats->bytes_per_photon = map->n_photons > 0
                                   ? (double)kdtree_bytes(map) / (double)map->n_photons
                                   : 0.0;
@@ -143,9 +168,15 @@ struct render_result render_photons(const struct scene *scene, const struct rend
 {
     struct render_result result = {NULL, NULL, 0.0};
     memset(stats, 0, sizeof *stats);
-    struct kdtree *map = build_global_map(scene, rs, ps, stats, err);
-    if (map == NULL)
+    struct global_work own_work = {NULL, 0, NULL, 0}; /* without ps->work: traced, freed */
+    struct photon_settings with_work = *ps;
+    if (with_work.work == NULL)
+        with_work.work = &own_work;
+    const struct kdtree *map = global_map(scene, rs, &with_work, stats, err);
+    if (map == NULL) {
+        global_work_free(&own_work);
         return result;
+    }
     stats->max_radius = ps->max_radius > 0 ? ps->max_radius : default_max_radius(scene);
     struct photons_mode pm;
     pm.scene = scene;
@@ -166,6 +197,6 @@ struct render_result render_photons(const struct scene *scene, const struct rend
                            checkpoint != NULL ? &at_shifted : NULL, counters);
     result.seconds += photon_seconds;
     nearest_free(pm.nn);
-    kdtree_free(map);
+    global_work_free(&own_work);
     return result;
 }

@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include "../base/error.h"
+#include "../photon/global_work.h"
 #include "render.h"
 
 #define PHOTONS_DEFAULT_N 200000   /* --photons: photons emitted for the global map     */
@@ -23,6 +24,9 @@ struct photon_settings {
     double max_radius; /* > 0: photons farther than this are not gathered; <= 0: the
                           default, PHOTONS_RADIUS_FRACTION of the scene's diagonal      */
     double cone_k;     /* 0: the plain estimate; >= 1: the cone filter (estimate.h)     */
+    struct global_work *work; /* NULL: the map is traced and released here; else, empty,
+                                 it receives the map (maps[0]), or, full, holds the map
+                                 to use instead of tracing one (photon/global_work.h)  */
 };
 
 /* What the photon pass did, for --stats. */
@@ -43,7 +47,8 @@ struct photon_stats {
  * rs->max_depth, and at a surface with a non-delta part the pixel takes its emission
  * plus the radiance estimate from the ps->gather nearest photons. result.seconds and the
  * checkpoints' seconds include the photon pass. On failure (more than MAX_PHOTONS
- * photons would be stored) returns a result with image NULL and *err filled. */
+ * photons would be stored, or ps->work holds what is not one map) returns a result with
+ * image NULL and *err filled. */
 struct render_result render_photons(const struct scene *scene, const struct render_settings *rs,
                                     const struct photon_settings *ps, int want_variance,
                                     const struct checkpoint *checkpoint,

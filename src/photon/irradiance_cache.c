@@ -418,6 +418,16 @@ size_t irradiance_cache_records(const struct irradiance_cache *cache)
     return cache->n_records;
 }
 
+void irradiance_cache_copy_records(const struct irradiance_cache *cache,
+                                   struct irradiance_record *out)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < cache->n_nodes; i++)
+        for (size_t r = 0; r < cache->nodes[i].n_records; r++)
+            out[n++] = cache->nodes[i].records[r];
+    assert(n == cache->n_records);
+}
+
 size_t irradiance_cache_bytes(const struct irradiance_cache *cache)
 {
     size_t bytes = sizeof *cache + cache->capacity * sizeof *cache->nodes;

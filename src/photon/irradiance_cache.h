@@ -123,6 +123,15 @@ int irradiance_cache_lookup(const struct irradiance_cache *cache, struct vec3 p,
                             struct vec3 n, double accuracy, struct vec3 *e);
 
 size_t irradiance_cache_records(const struct irradiance_cache *cache);
+
+/* Copies the cache's records to out[0 .. irradiance_cache_records() - 1] (the caller's
+ * array) node by node, each node's records in the order they were added. Which node a
+ * record goes to depends on the record, the bounds and the accuracy alone, so adding the
+ * copies in this order to an empty cache of the same bounds and accuracy gives every node
+ * the same records in the same order, and every lookup the same bits (a saved cache,
+ * app/work_file.h). */
+void irradiance_cache_copy_records(const struct irradiance_cache *cache,
+                                   struct irradiance_record *out);
 size_t irradiance_cache_bytes(const struct irradiance_cache *cache); /* for --stats */
 
 /* 1 when the octree satisfies the invariants stated in irradiance_cache.c, else 0. */

@@ -29,6 +29,7 @@
 #include <assert.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "../base/alloc.h"
 
@@ -139,6 +140,19 @@ struct kdtree *balance_kdtree(struct photon *photons, size_t n)
         balance_subtree(photons, n, map->photons, 1);
     free(photons);
     return map;
+}
+
+struct kdtree *kdtree_from_heap(struct photon *heap, size_t n)
+{
+    assert(n < SIZE_MAX / 2 && heap != NULL);
+    struct kdtree *map = xmalloc(1, sizeof *map, "photon map");
+    memset(&heap[0], 0, sizeof heap[0]);
+    map->photons = heap;
+    map->n_photons = n;
+    if (kdtree_check(map))
+        return map;
+    kdtree_free(map);
+    return NULL;
 }
 
 void kdtree_free(struct kdtree *map)

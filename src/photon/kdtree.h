@@ -27,6 +27,13 @@ struct kdtree {
 struct kdtree *balance_kdtree(struct photon *photons, size_t n);
 void kdtree_free(struct kdtree *map); /* NULL is a no-op */
 
+/* A map made from records already in heap order, as a map holds them: heap[1..n] (heap[0]
+ * is unused and set to zeros here), n + 1 records, taken over as they are, so a map read
+ * back from a file (app/work_file.h) is the map that was written, node for node, whatever
+ * order balance_kdtree() would choose. NULL when they break the invariants (kdtree_check);
+ * heap is freed then too. */
+struct kdtree *kdtree_from_heap(struct photon *heap, size_t n);
+
 /* 1 when the map satisfies the invariants stated in kdtree.c, else 0. O(n log n). */
 int kdtree_check(const struct kdtree *map);
 
