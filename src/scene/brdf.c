@@ -213,9 +213,9 @@ struct vec3 brdf_albedo(const struct material *m, const struct shading_frame *f,
     case MATERIAL_MIRROR:
         return m->rho;
     case MATERIAL_GLASS: {
-        double reflectance = fresnel_dielectric(lo.z, glass_eta(m, f)); /* F */
-        return vec3_add(vec3(reflectance, reflectance, reflectance),
-                        vec3_scale(glass_filter(m), 1.0 - reflectance)); /* + (1 - F) T */
+        /* F + (1 - F) T, written as 1 - (1 - F)(1 - T) so that clear glass gives exactly 1. */
+        double reflectance = fresnel_dielectric(lo.z, glass_eta(m, f));
+        return vec3_sub(vec3(1.0, 1.0, 1.0), vec3_scale(m->absorption, 1.0 - reflectance));
     }
     case MATERIAL_PHONG:
         return phong_albedo(m, lo);
