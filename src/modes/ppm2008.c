@@ -81,6 +81,7 @@ struct eye_path {
     size_t pixel;     /* row-major index in the window                 */
     struct vec3 beta; /* throughput of the mirror and glass bounces    */
     double distance;  /* length travelled from the camera              */
+    int depth;        /* mirror and glass bounces so far               */
 };
 
 /* Stores a hit point at s, reached by the eye path. */
@@ -108,29 +109,78 @@ static void store_hit_point(struct ppm *ppm, const struct surface *s,
     hp->m_photons = 0;
 }
 
-/* Follows one eye ray through mirrors and glass (Russian roulette on long chains), storing
- * a hit point at every surface with a non-specular part; what emitters and the background
- * show along the way goes to the pixel directly. Returns that radiance. */
-static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct rng *rng,
-                                  size_t pixel)
+/* The specular directions an eye path follows from s into lobes[]; returns how many. Sec.
+ * 3.1 finds the surfaces "using standard ray tracing": a mirror's reflection, and glass's
+ * reflection and refraction both (Whitted), each with its reflectance as weight, so what is
+ * seen through glass carries no noise from choosing between them. A material with a
+ * non-specular part beside a mirror lobe (Schlick with r < 1/2) has its one sampled
+ * direction followed when it is the mirror's, as a path tracer would. */
+static int specular_lobes(const struct surface *s, const struct shading_frame *frame,
+                          struct rng *rng, struct brdf_sample lobes[2])
+{
+    if (brdf_is_delta(s->material))
+        return brdf_delta_lobes(s->material, frame, s->wo, lobes);
+    if (!brdf_has_delta(s->material))
+        return 0;
+    double u[3];
+    for (int k = 0; k < 3; k++)
+        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+    return brdf_sample(s->material, frame, s->wo, u, &lobes[0]) && lobes[0].delta;
+}
+
+/* Turns the eye path at s into lobe: throughput times the lobe's weight, one bounce more,
+ * Russian roulette once the path is long (surface.h). Returns 0 when roulette ends it;
+ * else *ray is the ray leaving s along the lobe. */
+static int take_lobe(const struct surface *s, const struct brdf_sample *lobe,
+                     struct eye_path *path, struct rng *rng, struct ray *ray)
+{
+    path->beta = vec3_mul(path->beta, lobe->weight);
+    path->depth++;
+    if (!survives_roulette(&path->beta, path->depth, rng))
+        return 0;
+    *ray = surface_ray(s, lobe->wi, lobe->transmitted);
+    return 1;
+}
+
+static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct eye_path path,
+                                  struct rng *rng);
+
+/* The radiance seen along lobe from s by an eye path of its own (a copy of path). */
+static struct vec3 trace_lobe(struct ppm *ppm, const struct surface *s,
+                              const struct brdf_sample *lobe, struct eye_path path,
+                              struct rng *rng)
+{
+    struct ray ray;
+    if (!take_lobe(s, lobe, &path, rng, &ray))
+        return vec3_zero();
+    return trace_eye_path(ppm, ray, path, rng);
+}
+
+/* Follows an eye ray through mirrors and glass (every lobe; Russian roulette on long
+ * chains), storing a hit point at every surface with a non-specular part; what emitters
+ * and the background show along the way goes to the pixel directly. Returns that radiance.
+ * Glass's first lobes get paths of their own (recursion) and its last one continues this
+ * loop, so a chain of mirrors costs no stack. */
+static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct eye_path path,
+                                  struct rng *rng)
 {
     struct vec3 seen = vec3_zero();
-    struct eye_path path = {pixel, vec3(1.0, 1.0, 1.0), 0.0};
-    for (int depth = 0;; depth++) {
-        struct hit hit;
-        ppm->counters->rays++;
-        if (!scene_intersect(ppm->scene, ray, INFINITY, &hit))
+    for (;;) {
+        struct surface s;
+        double t;
+        if (!ray_surface(ppm->scene, ray, ppm->counters, &s, &t))
             return vec3_add(seen, vec3_mul(path.beta, ppm->scene->background));
-        path.distance += hit.t;
-        struct surface s = surface_at(ppm->scene, &hit, vec3_neg(ray.dir));
+        path.distance += t;
         struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
                                                                TRANSPORT_RADIANCE);
         seen = vec3_add(seen, vec3_mul(path.beta, surface_emission(&s)));
         if (brdf_has_diffuse(s.material))
             store_hit_point(ppm, &s, &frame, &path);
-        if (!brdf_has_delta(s.material) || depth >= ppm->rs->max_depth ||
-            !specular_bounce(&s, &frame, rng, &path.beta, &ray) ||
-            !survives_roulette(&path.beta, depth + 1, rng))
+        struct brdf_sample lobes[2];
+        int n = path.depth < ppm->rs->max_depth ? specular_lobes(&s, &frame, rng, lobes) : 0;
+        for (int k = 0; k + 1 < n; k++)
+            seen = vec3_add(seen, trace_lobe(ppm, &s, &lobes[k], path, rng));
+        if (n == 0 || !take_lobe(&s, &lobes[n - 1], &path, rng, &ray))
             return seen;
     }
 }
@@ -147,7 +197,8 @@ static void ray_tracing_pass(struct ppm *ppm)
             for (int s = 0; s < rs->spp; s++) {
                 struct rng rng;
                 struct ray ray = camera_sample(ppm->scene, rs->seed, x, y, s, &rng);
-                sum = vec3_add(sum, trace_eye_path(ppm, ray, &rng, pixel));
+                struct eye_path path = {pixel, vec3(1.0, 1.0, 1.0), 0.0, 0};
+                sum = vec3_add(sum, trace_eye_path(ppm, ray, path, &rng));
             }
             ppm->seen[pixel] = vec3_scale(sum, 1.0 / rs->spp);
         }
