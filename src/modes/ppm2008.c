@@ -3,7 +3,8 @@
  * Jensen 2008), read top to bottom as the paper's Sec. 4:
  *
  *   4.1 the ray tracing pass stores a hit point wherever an eye path, followed through
- *       every mirror and glass bounce, meets a surface with a non-specular part;
+ *       every mirror and glass bounce (both of glass's lobes, as standard ray tracing
+ *       does), meets a surface with a non-specular part;
  *   4.2 each photon tracing pass shoots photons with the shared tracer; every photon that
  *       lands on a non-specular surface adds f_r Phi' to each hit point whose disc holds it
  *       and whose surface faces the photon's; no photon is kept after its pass;
@@ -17,6 +18,9 @@
  * tan(fov / 2) / height. It scales with the scene (millimetres or kilometres alike) and is
  * the hit point's own, so a crop starts with the radii the whole image has. Mirrors and
  * lenses change a pixel's real footprint; this ignores that, which only moves the start.
+ * The disc's bias where it reaches past a surface's edge (a corner, an open side) and
+ * the noise of few photons both depend on R0, in opposite ways; README, `--mode 2008`,
+ * has the measurements.
  *
  * Determinism: photon i of pass p draws from rng_stream(seed, STREAM_PHOTON, p, i) and eye
  * sample s of pixel (x, y) from its camera stream (render.h); each hit point receives its
