@@ -213,7 +213,11 @@ static void ray_tracing_pass(struct ppm *ppm)
 
 /* A photon within hit point i's disc: tau_M += f_r(x, w, w_p) Phi'_p and M += 1 (Eq. 11),
  * unless the two surfaces face apart (a photon on the far side of a thin wall, or on the
- * back of the hit point's own surface). No cosine: it is in the photon's flux already. */
+ * back of the hit point's own surface). Departs from Sec. 4.2, which takes every photon
+ * within R: the sphere of radius R also reaches through thin walls. A photon on a wall at
+ * right angles is not counted either, though its disc's area pi R^2 still counts the part
+ * beyond the corner, where no photon lands: the corner's bias (README). No cosine: it is
+ * in the photon's flux already. */
 static void add_flux(void *context, size_t i)
 {
     struct ppm *ppm = context;
