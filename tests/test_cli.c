@@ -149,7 +149,7 @@ static void test_ppm_command(struct check *t)
                  == 0);
     CHECK(t, file_exists(OUT "_ppm.pfm") && file_exists(OUT "_ppm.ppm"));
     static const char *keys[] = {"mode=2008", "hit_points=", "bytes_per_hit_point=",
-                                 "passes=2", "photons_emitted=2000", "mean_radius=", "spp=4"};
+                                 "passes=2", "photons_emitted=2000", "mean_radius=", "spp=16"};
     for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
         CHECK(t, log_contains(keys[i]));
     remove(OUT "_ppm.pfm");

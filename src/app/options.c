@@ -43,7 +43,7 @@ static const struct option_spec specs[] = {
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)"},
     {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N",
      "camera samples per pixel (default 16; 1994 and 1996: 64; 2008: eye rays per pixel, "
-     "default 4)"},
+     "default 16)"},
     {"--width", OPT_INT, FIELD(width), 1, MAX_IMAGE_SIDE, "N", "image width (default: scene's)"},
     {"--height", OPT_INT, FIELD(height), 1, MAX_IMAGE_SIDE, "N",
      "image height (default: scene's)"},
@@ -118,7 +118,7 @@ static const struct option_spec specs[] = {
     {"--alpha", OPT_REAL, FIELD(alpha), 0, 1, "A",
      "2008: fraction of new photons kept, 0 < A < 1 (Eq. 7; default 0.7)"},
     {"--radius", OPT_REAL, FIELD(radius), 0, 1e30, "R",
-     "2008: initial radius in scene units (default: 2 pixel footprints at each hit point)"},
+     "2008: initial radius in scene units (default: one pixel footprint at each hit point)"},
     {"--checkpoint", OPT_INT, FIELD(checkpoint), 1, MAX_PASSES, "K",
      "2008: write the image (-o) every K passes, each write complete (default: at the end)"},
     {"--exposure", OPT_REAL, FIELD(exposure), 0, 1e30, "E",

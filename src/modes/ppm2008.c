@@ -3,7 +3,8 @@
  * Jensen 2008), read top to bottom as the paper's Sec. 4:
  *
  *   4.1 the ray tracing pass stores a hit point wherever an eye path, followed through
- *       every mirror and glass bounce, meets a surface with a non-specular part;
+ *       every mirror and glass bounce (both of glass's lobes, as standard ray tracing
+ *       does), meets a surface with a non-specular part;
  *   4.2 each photon tracing pass shoots photons with the shared tracer; every photon that
  *       lands on a non-specular surface adds f_r Phi' to each hit point whose disc holds it
  *       and whose surface faces the photon's; no photon is kept after its pass;
@@ -17,6 +18,9 @@
  * tan(fov / 2) / height. It scales with the scene (millimetres or kilometres alike) and is
  * the hit point's own, so a crop starts with the radii the whole image has. Mirrors and
  * lenses change a pixel's real footprint; this ignores that, which only moves the start.
+ * The disc's bias where it reaches past a surface's edge (a corner, an open side) and
+ * the noise of few photons both depend on R0, in opposite ways; README, `--mode 2008`,
+ * has the measurements.
  *
  * Determinism: photon i of pass p draws from rng_stream(seed, STREAM_PHOTON, p, i) and eye
  * sample s of pixel (x, y) from its camera stream (render.h); each hit point receives its
@@ -81,6 +85,7 @@ struct eye_path {
     size_t pixel;     /* row-major index in the window                 */
     struct vec3 beta; /* throughput of the mirror and glass bounces    */
     double distance;  /* length travelled from the camera              */
+    int depth;        /* mirror and glass bounces so far               */
 };
 
 /* Stores a hit point at s, reached by the eye path. */
@@ -108,29 +113,78 @@ static void store_hit_point(struct ppm *ppm, const struct surface *s,
     hp->m_photons = 0;
 }
 
-/* Follows one eye ray through mirrors and glass (Russian roulette on long chains), storing
- * a hit point at every surface with a non-specular part; what emitters and the background
- * show along the way goes to the pixel directly. Returns that radiance. */
-static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct rng *rng,
-                                  size_t pixel)
+/* The specular directions an eye path follows from s into lobes[]; returns how many. Sec.
+ * 3.1 finds the surfaces "using standard ray tracing": a mirror's reflection, and glass's
+ * reflection and refraction both (Whitted), each with its reflectance as weight, so what is
+ * seen through glass carries no noise from choosing between them. A material with a
+ * non-specular part beside a mirror lobe (Schlick with r < 1/2) has its one sampled
+ * direction followed when it is the mirror's, as a path tracer would. */
+static int specular_lobes(const struct surface *s, const struct shading_frame *frame,
+                          struct rng *rng, struct brdf_sample lobes[2])
+{
+    if (brdf_is_delta(s->material))
+        return brdf_delta_lobes(s->material, frame, s->wo, lobes);
+    if (!brdf_has_delta(s->material))
+        return 0;
+    double u[3];
+    for (int k = 0; k < 3; k++)
+        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+    return brdf_sample(s->material, frame, s->wo, u, &lobes[0]) && lobes[0].delta;
+}
+
+/* Turns the eye path at s into lobe: throughput times the lobe's weight, one bounce more,
+ * Russian roulette once the path is long (surface.h). Returns 0 when roulette ends it;
+ * else *ray is the ray leaving s along the lobe. */
+static int take_lobe(const struct surface *s, const struct brdf_sample *lobe,
+                     struct eye_path *path, struct rng *rng, struct ray *ray)
+{
+    path->beta = vec3_mul(path->beta, lobe->weight);
+    path->depth++;
+    if (!survives_roulette(&path->beta, path->depth, rng))
+        return 0;
+    *ray = surface_ray(s, lobe->wi, lobe->transmitted);
+    return 1;
+}
+
+static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct eye_path path,
+                                  struct rng *rng);
+
+/* The radiance seen along lobe from s by an eye path of its own (a copy of path). */
+static struct vec3 trace_lobe(struct ppm *ppm, const struct surface *s,
+                              const struct brdf_sample *lobe, struct eye_path path,
+                              struct rng *rng)
+{
+    struct ray ray;
+    if (!take_lobe(s, lobe, &path, rng, &ray))
+        return vec3_zero();
+    return trace_eye_path(ppm, ray, path, rng);
+}
+
+/* Follows an eye ray through mirrors and glass (every lobe; Russian roulette on long
+ * chains), storing a hit point at every surface with a non-specular part; what emitters
+ * and the background show along the way goes to the pixel directly. Returns that radiance.
+ * Glass's first lobes get paths of their own (recursion) and its last one continues this
+ * loop, so a chain of mirrors costs no stack. */
+static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct eye_path path,
+                                  struct rng *rng)
 {
     struct vec3 seen = vec3_zero();
-    struct eye_path path = {pixel, vec3(1.0, 1.0, 1.0), 0.0};
-    for (int depth = 0;; depth++) {
-        struct hit hit;
-        ppm->counters->rays++;
-        if (!scene_intersect(ppm->scene, ray, INFINITY, &hit))
+    for (;;) {
+        struct surface s;
+        double t;
+        if (!ray_surface(ppm->scene, ray, ppm->counters, &s, &t))
             return vec3_add(seen, vec3_mul(path.beta, ppm->scene->background));
-        path.distance += hit.t;
-        struct surface s = surface_at(ppm->scene, &hit, vec3_neg(ray.dir));
+        path.distance += t;
         struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
                                                                TRANSPORT_RADIANCE);
         seen = vec3_add(seen, vec3_mul(path.beta, surface_emission(&s)));
         if (brdf_has_diffuse(s.material))
             store_hit_point(ppm, &s, &frame, &path);
-        if (!brdf_has_delta(s.material) || depth >= ppm->rs->max_depth ||
-            !specular_bounce(&s, &frame, rng, &path.beta, &ray) ||
-            !survives_roulette(&path.beta, depth + 1, rng))
+        struct brdf_sample lobes[2];
+        int n = path.depth < ppm->rs->max_depth ? specular_lobes(&s, &frame, rng, lobes) : 0;
+        for (int k = 0; k + 1 < n; k++)
+            seen = vec3_add(seen, trace_lobe(ppm, &s, &lobes[k], path, rng));
+        if (n == 0 || !take_lobe(&s, &lobes[n - 1], &path, rng, &ray))
             return seen;
     }
 }
@@ -147,7 +201,8 @@ static void ray_tracing_pass(struct ppm *ppm)
             for (int s = 0; s < rs->spp; s++) {
                 struct rng rng;
                 struct ray ray = camera_sample(ppm->scene, rs->seed, x, y, s, &rng);
-                sum = vec3_add(sum, trace_eye_path(ppm, ray, &rng, pixel));
+                struct eye_path path = {pixel, vec3(1.0, 1.0, 1.0), 0.0, 0};
+                sum = vec3_add(sum, trace_eye_path(ppm, ray, path, &rng));
             }
             ppm->seen[pixel] = vec3_scale(sum, 1.0 / rs->spp);
         }
@@ -158,7 +213,11 @@ static void ray_tracing_pass(struct ppm *ppm)
 
 /* A photon within hit point i's disc: tau_M += f_r(x, w, w_p) Phi'_p and M += 1 (Eq. 11),
  * unless the two surfaces face apart (a photon on the far side of a thin wall, or on the
- * back of the hit point's own surface). No cosine: it is in the photon's flux already. */
+ * back of the hit point's own surface). Departs from Sec. 4.2, which takes every photon
+ * within R: the sphere of radius R also reaches through thin walls. A photon on a wall at
+ * right angles is not counted either, though its disc's area pi R^2 still counts the part
+ * beyond the corner, where no photon lands: the corner's bias (README). No cosine: it is
+ * in the photon's flux already. */
 static void add_flux(void *context, size_t i)
 {
     struct ppm *ppm = context;

@@ -11,10 +11,14 @@
 #include "render.h"
 
 #define PPM_DEFAULT_PHOTONS_PER_PASS 100000 /* the paper's (Sec. 5)                      */
-#define PPM_DEFAULT_PASSES 64               /* about 30 s on the Cornell box              */
+#define PPM_DEFAULT_PASSES 64               /* about 50 s on the Cornell box              */
 #define PPM_DEFAULT_ALPHA 0.7               /* the paper's (Sec. 5)                      */
-#define PPM_DEFAULT_SPP 4                   /* eye rays per pixel: hit points cost memory */
-#define PPM_INITIAL_FOOTPRINTS 2.0          /* default R0: this many pixel footprints    */
+#define PPM_DEFAULT_SPP 16                  /* eye rays per pixel, fixed for the whole render:
+                                               with 4, the light's outline alone puts blocks
+                                               beside it 4-18% off (README); each costs a hit
+                                               point of ~300 bytes                         */
+#define PPM_INITIAL_FOOTPRINTS 1.0          /* default R0 in pixel footprints: the paper's
+                                               "footprint of the pixel" (Sec. 4)          */
 #define MAX_PASSES 100000000                /* documented limit on --passes              */
 #define PPM_MAX_EYE_RAYS (1 << 24)          /* documented limit on pixels x spp: each eye
                                                ray leaves a hit point of ~300 bytes      */

@@ -3,7 +3,7 @@
  * needs to reach a given relmse against a scene's converged reference, beside the path
  * tracer, on the Cornell boxes whose references are in reference/.
  *
- * For each scene and each photon mode at its defaults (2008: 256 x 256, 4 eye rays, 64
+ * For each scene and each photon mode at its defaults (2008: 256 x 256, 16 eye rays, 64
  * passes of 100,000 photons; 1996: 64 samples per pixel, the maps, the irradiance cache),
  * the mode sets the target, the relmse it ends with, and its seconds to reach it; pt then
  * renders, with checkpoints after 1, 2, 4, ... samples per pixel, until it reaches the target
