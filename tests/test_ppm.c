@@ -350,6 +350,66 @@ static void test_glass_seen_through_every_lobe(struct check *t)
     scene_free(scene);
 }
 
+/* An emitter (Le = 1, two-sided, black) filling the view right of x = edge in the plane
+ * z = 0, seen straight on from 10 units away through a 2-degree field of view, 4 x 4
+ * pixels, against a black background: its vertical edge cuts through a pixel column. */
+static struct scene *light_edge(double edge)
+{
+    struct scene *scene = scene_create();
+    int light = add_test_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(1, 1, 1));
+    scene->materials[light].two_sided = 1;
+    scene_add_quad(scene, vec3(edge, -20, 0), vec3(20, 0, 0), vec3(0, 40, 0), light);
+    scene->camera.from = vec3(0, 0, -10);
+    scene->camera.at = vec3(0, 0, 0);
+    scene->camera.up = vec3(0, 1, 0);
+    scene->camera.fov = 2;
+    scene->has_camera = 1;
+    scene_finish(scene, 4, 4);
+    return scene;
+}
+
+/* The part of pixel (x, y) whose camera rays meet z = 0 right of edge: 400 x 400 points
+ * over the pixel, each ray met with the plane here, not by the renderer. */
+static double covered_part(const struct camera *camera, int x, int y, double edge)
+{
+    int covered = 0;
+    for (int i = 0; i < 400; i++)
+        for (int j = 0; j < 400; j++) {
+            struct ray r = camera_ray(camera, x + (i + 0.5) / 400, y + (j + 0.5) / 400);
+            double t = -r.origin.z / r.dir.z;
+            covered += r.origin.x + t * r.dir.x >= edge;
+        }
+    return covered / 160000.0;
+}
+
+/* truth: each pixel shows Le times the part of it the emitter covers, computed from the
+ *   camera's rays and the plane alone (covered_part()). The emission seen directly takes
+ *   one new eye ray a pixel each pass, camera samples 0 to 256 of a (0, 2) sequence whose
+ *   first 256 are stratified along x, so every pixel is within 2/256 of its part; 0.01
+ *   allows that. The edge at x = 0.05 cuts a column 43% and 57% of the way.
+ * catches: the emission taken from the --spp eye rays of the ray tracing pass alone (one
+ *   eye ray: a pixel is 0 or 1 for ever), the new rays counted with the wrong weight. */
+static void test_light_outline_converges(struct check *t)
+{
+    const double edge = 0.05;
+    struct scene *scene = light_edge(edge);
+    struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
+    struct ppm_settings ps = ppm_defaults(100, 256);
+    struct render_counters counters = {0, 0, 0, 0};
+    struct ppm_stats stats;
+    struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
+    int within = 1, partial = 0;
+    for (int y = 0; y < 4; y++)
+        for (int x = 0; x < 4; x++) {
+            double part = covered_part(&scene->camera, x, y, edge);
+            partial += part > 0.2 && part < 0.8;
+            within = within && fabs(image_get(result.image, x, y).y - part) <= 0.01;
+        }
+    CHECK(t, partial == 4 && within);
+    render_result_free(&result);
+    scene_free(scene);
+}
+
 static double count_call(void *context, const struct image *mean, long long work,
                          double seconds)
 {
@@ -443,6 +503,7 @@ void test_ppm(struct check *t)
     RUN_TEST(t, test_crop_is_bit_identical);
     RUN_TEST(t, test_scale_invariance);
     RUN_TEST(t, test_glass_seen_through_every_lobe);
+    RUN_TEST(t, test_light_outline_converges);
     RUN_TEST(t, test_checkpoints);
     RUN_TEST(t, test_tracked_hit_points);
 }

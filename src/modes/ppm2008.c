@@ -13,6 +13,15 @@
  *   4.4 the image at any time: each hit point's radiance (Eq. 13) times its pixel weight,
  *       plus the emission the eye paths saw directly.
  *
+ * The emission seen directly departs from the paper, whose eye rays are traced once: a
+ * light's outline would keep the aliasing of --spp rays a pixel however long the render
+ * ran, and a light hundreds of times brighter than the ceiling around it moves a block's
+ * mean by percents with one eye ray more or less on it. Emission needs no hit point and
+ * no memory, so every photon pass also traces one new eye ray through each pixel (the
+ * pixel's next camera sample) that only collects what emitters and the background show;
+ * the seen part of a pixel is the mean over all its eye rays so far, and converges with
+ * passes like the rest of the image.
+ *
  * The initial radius R0 is the paper's "footprint of the pixel": PPM_INITIAL_FOOTPRINTS
  * times the width a pixel covers at the hit point's distance along its eye path, d 2
  * tan(fov / 2) / height. It scales with the scene (millimetres or kilometres alike) and is
@@ -47,8 +56,10 @@ struct ppm {
     const struct ppm_settings *ps;      /* borrowed                                       */
     struct render_counters *counters;   /* borrowed                                       */
     int width, height;                  /* of the window                                  */
-    struct vec3 *seen;                  /* owned: per window pixel, the mean emission and
-                                           background radiance seen along its eye paths   */
+    struct vec3 *seen;                  /* owned: per window pixel, the sum of the emission
+                                           and background radiance seen along its eye rays */
+    long eye_rays;                      /* eye rays per pixel in seen so far: --spp, and
+                                           one more each photon pass                      */
     struct hit_point *points;           /* owned: n_points of cap_points, in the order made */
     size_t n_points, cap_points;
     struct hit_point_tree tree;         /* over points                                    */
@@ -86,6 +97,8 @@ struct eye_path {
     struct vec3 beta; /* throughput of the mirror and glass bounces    */
     double distance;  /* length travelled from the camera              */
     int depth;        /* mirror and glass bounces so far               */
+    int stores;       /* 1: stores hit points (the ray tracing pass);
+                         0: only sees emission (a photon pass's ray)   */
 };
 
 /* Stores a hit point at s, reached by the eye path. */
@@ -161,7 +174,8 @@ static struct vec3 trace_lobe(struct ppm *ppm, const struct surface *s,
 }
 
 /* Follows an eye ray through mirrors and glass (every lobe; Russian roulette on long
- * chains), storing a hit point at every surface with a non-specular part; what emitters
+ * chains), storing a hit point at every surface with a non-specular part if the path
+ * stores them; what emitters
  * and the background show along the way goes to the pixel directly. Returns that radiance.
  * Glass's first lobes get paths of their own (recursion) and its last one continues this
  * loop, so a chain of mirrors costs no stack. */
@@ -178,7 +192,7 @@ static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct eye_pa
         struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
                                                                TRANSPORT_RADIANCE);
         seen = vec3_add(seen, vec3_mul(path.beta, surface_emission(&s)));
-        if (brdf_has_diffuse(s.material))
+        if (path.stores && brdf_has_diffuse(s.material))
             store_hit_point(ppm, &s, &frame, &path);
         struct brdf_sample lobes[2];
         int n = path.depth < ppm->rs->max_depth ? specular_lobes(&s, &frame, rng, lobes) : 0;
@@ -189,23 +203,30 @@ static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct eye_pa
     }
 }
 
-/* rs->spp stratified eye rays (camera_sample()) through every pixel of the window, then the
- * hit points' tree. */
-static void ray_tracing_pass(struct ppm *ppm)
+/* Eye rays number first to last through every pixel of the window: camera sample s of
+ * pixel (x, y) (camera_sample(), stratified over any run of samples from 0), adding what
+ * each sees directly to the pixel's seen sum; stores says whether they store hit points. */
+static void trace_eye_rays(struct ppm *ppm, int first, int last, int stores)
 {
     const struct render_settings *rs = ppm->rs;
     for (int y = rs->y0; y < rs->y1; y++)
         for (int x = rs->x0; x < rs->x1; x++) {
             size_t pixel = (size_t)(y - rs->y0) * (size_t)ppm->width + (size_t)(x - rs->x0);
-            struct vec3 sum = vec3_zero();
-            for (int s = 0; s < rs->spp; s++) {
+            for (int s = first; s <= last; s++) {
                 struct rng rng;
                 struct ray ray = camera_sample(ppm->scene, rs->seed, x, y, s, &rng);
-                struct eye_path path = {pixel, vec3(1.0, 1.0, 1.0), 0.0, 0};
-                sum = vec3_add(sum, trace_eye_path(ppm, ray, path, &rng));
+                struct eye_path path = {pixel, vec3(1.0, 1.0, 1.0), 0.0, 0, stores};
+                ppm->seen[pixel] = vec3_add(ppm->seen[pixel],
+                                            trace_eye_path(ppm, ray, path, &rng));
             }
-            ppm->seen[pixel] = vec3_scale(sum, 1.0 / rs->spp);
         }
+    ppm->eye_rays += last - first + 1;
+}
+
+/* rs->spp eye rays through every pixel, storing hit points, then the hit points' tree. */
+static void ray_tracing_pass(struct ppm *ppm)
+{
+    trace_eye_rays(ppm, 0, ppm->rs->spp - 1, 1);
     hit_point_tree_build(&ppm->tree, ppm->points, ppm->n_points);
 }
 
@@ -257,6 +278,14 @@ static void photon_tracing_pass(struct ppm *ppm, long pass, struct ppm_stats *st
     ppm->photons_emitted += ts.n_emit;
 }
 
+/* After photon pass p (from 0), one more eye ray through every pixel that only sees
+ * emission (the departure explained at the top). */
+static void emission_pass(struct ppm *ppm, long pass)
+{
+    int sample = ppm->rs->spp + (int)pass;
+    trace_eye_rays(ppm, sample, sample, 0);
+}
+
 /* ---- 4.3 The progressive radiance estimate ------------------------------------------ */
 
 double ppm_accumulated_photons(double n, double m, double alpha)
@@ -305,12 +334,13 @@ struct vec3 ppm_radiance(struct vec3 tau, double r, double n_emitted)
     return vec3_scale(tau, 1.0 / (PI * r * r * n_emitted)); /* Eq. 13 */
 }
 
-/* The image so far: what the eye paths saw directly plus every hit point's Eq. 13 radiance
- * times its pixel weight, summed in the order the hit points were made. */
+/* The image so far: the mean of what the eye rays saw directly plus every hit point's
+ * Eq. 13 radiance times its pixel weight, summed in the order the hit points were made. */
 static void evaluate_image(const struct ppm *ppm, struct image *image)
 {
     size_t n_pixels = (size_t)ppm->width * (size_t)ppm->height;
-    memcpy(image->pixels, ppm->seen, n_pixels * sizeof *image->pixels);
+    for (size_t i = 0; i < n_pixels; i++)
+        image->pixels[i] = vec3_scale(ppm->seen[i], 1.0 / (double)ppm->eye_rays);
     for (size_t i = 0; i < ppm->n_points; i++) {
         const struct hit_point *hp = &ppm->points[i];
         struct vec3 l = ppm_radiance(hp->tau, hp->radius, (double)ppm->photons_emitted);
@@ -370,6 +400,7 @@ static void photon_passes(struct ppm *ppm, double offset, struct image *image,
     long pass = 0;
     while (pass < ps->passes && !(pass > 0 && limit > 0 && offset + seconds >= limit)) {
         photon_tracing_pass(ppm, pass, stats);
+        emission_pass(ppm, pass);
         progressive_update(ppm);
         pass++;
         if (ps->observer != NULL)
