@@ -37,8 +37,9 @@ struct run {
     struct ppm_stats ppm_stats;       /* --mode 2008 only */
     struct jensen1994_stats j94_stats; /* --mode 1994 only */
     struct jensen1996_stats j96_stats; /* --mode 1996 only */
-    struct global_work work;           /* the photon modes' maps and cache: owned, made by
-                                          the mode or read by --load-photons           */
+    struct global_work work;           /* the photon modes' maps and cache (and 1994's
+                                          illumination maps): owned, made by the mode or
+                                          read by --load-photons                       */
     clock_t start;
     double seconds_build;
     double seconds_work_file;          /* reading or writing it                        */
@@ -380,6 +381,7 @@ int main(int argc, char **argv)
     run.result.variance = NULL;
     run.work.maps = NULL;
     run.work.records = NULL;
+    run.work.illumination = NULL;
     run.start = clock();
     int parsed = parse_options(argc, argv, &run.o, &err);
     if (parsed != 0) {
