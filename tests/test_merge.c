@@ -291,9 +291,11 @@ static int merge_refused(const char *tile_names, const char *message)
 
 /* truth: merge.h's contract: a set of tiles that is not exactly one image's windows is
  *   refused with exit status 2, a message naming the file (or, for a gap, the window to
- *   render), and no output; the same tiles with the right fourth one merge.
+ *   render; for a tile given twice, both arguments), and no output; the same tiles with
+ *   the right fourth one merge.
  * catches: a gap filled with black, an overlap resolved silently, a PFM pasted into a
- *   window of another size, tiles of another seed, image size or time limit mixed in. */
+ *   window of another size, tiles of another seed, image size or time limit mixed in, a
+ *   tile given twice (by one name or two) reported as overlapping itself. */
 static void test_merge_refuses_bad_tile_sets(struct check *t)
 {
     for (int k = 0; k < 4; k++)
@@ -319,6 +321,13 @@ static void test_merge_refuses_bad_tile_sets(struct check *t)
     CHECK(t, merge_refused(THREE_TILES OUT "_timed.pfm", OUT "_timed.pfm: rendered with "
                            "--time-limit 1000"));
     CHECK(t, merge_refused(THREE_TILES OUT "_plain.pfm", OUT "_plain.pfm.window: cannot open"));
+    CHECK(t, merge_refused(THREE_TILES OUT "_tile3.pfm " OUT "_tile1.pfm", "merge: one tile "
+                           "given twice: tile 2 (" OUT "_tile1.pfm) and tile 5 (" OUT
+                           "_tile1.pfm) are both the window 13 0 32 7"));
+    CHECK(t, run_command("cp " OUT "_tile3.pfm " OUT "_again.pfm && cp " OUT "_tile3.pfm.window "
+                         OUT "_again.pfm.window") == 0);
+    CHECK(t, merge_refused(THREE_TILES OUT "_tile3.pfm " OUT "_again.pfm", "tile 4 (" OUT
+                           "_tile3.pfm) and tile 5 (" OUT "_again.pfm) are both the window"));
     CHECK(t, merge_refused("", "at least one tile"));
     CHECK(t, merge_refused("--frobnicate " THREE_TILES, "unknown option '--frobnicate'"));
     CHECK(t, photon("merge -o " OUT "_full.png " THREE_TILES) == 2 && log_contains(".pfm"));
