@@ -137,7 +137,8 @@ static int write_tile_record(const struct run *run, struct error *err)
 }
 
 /* -o's PFM (the name ends in .pfm: parse_options) and the PPM beside it, the variance and,
- * for a crop, its record. A whole render writes no record, so its files stay as before. */
+ * for a crop, its record. A whole render writes no record, so its files stay as before,
+ * and removes one an earlier crop left under its name (tile.h). */
 static int write_outputs(struct run *run, struct error *err)
 {
     const struct options *o = &run->o;
@@ -145,7 +146,8 @@ static int write_outputs(struct run *run, struct error *err)
         return -1;
     if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
         return -1;
-    if (o->crop[2] != 0 && write_tile_record(run, err) < 0)
+    if (o->crop[2] != 0 ? write_tile_record(run, err) < 0
+                        : tile_record_remove(o->output, err) < 0)
         return -1;
     clock_t start = clock();
     if (o->save_photons != NULL &&

@@ -335,6 +335,26 @@ static void test_merge_refuses_bad_tile_sets(struct check *t)
     CHECK(t, photon("merge --help") == 0 && log_contains("usage: photon merge"));
 }
 
+/* truth: tile.h's contract: a whole render removes the record an earlier crop left under
+ *   its name once its own image is written, so that merge cannot take the whole image for
+ *   that crop; a render that fails writes nothing and removes nothing. The crop here is
+ *   of the whole window with another seed, whose record merge would otherwise accept
+ *   with the new image (it is the window's size).
+ * tolerance: none.
+ * catches: a stale record left beside a whole render (merge then passes off the new image
+ *   as the old crop), a record removed by a render that wrote no image. */
+static void test_whole_render_removes_stale_record(struct check *t)
+{
+    static const int whole[4] = {0, 0, 32, 24};
+    CHECK(t, render_window(OUT "_stale.pfm", whole, "--seed 2") == 0);
+    CHECK(t, photon("--mode photons %s --load-photons " OUT "_none.work -o " OUT "_stale.pfm",
+                    TILE_SETTINGS) == 2);
+    CHECK(t, file_exists(OUT "_stale.pfm.window"));
+    CHECK(t, photon("--mode direct %s -o " OUT "_stale.pfm", TILE_SETTINGS) == 0);
+    CHECK(t, !file_exists(OUT "_stale.pfm.window"));
+    CHECK(t, merge_refused(OUT "_stale.pfm", OUT "_stale.pfm.window: cannot open"));
+}
+
 /* ---- The file of global work (app/work_file.h) ---- */
 
 /* The one photon of the hand-written file below (example_bytes). */
@@ -694,6 +714,7 @@ void test_merge(struct check *t)
     RUN_TEST(t, test_bad_tile_records_are_refused);
     RUN_TEST(t, test_merged_tiles_equal_whole_render);
     RUN_TEST(t, test_merge_refuses_bad_tile_sets);
+    RUN_TEST(t, test_whole_render_removes_stale_record);
     RUN_TEST(t, test_work_file_format);
     RUN_TEST(t, test_bad_illumination_maps_are_refused);
     RUN_TEST(t, test_loaded_work_renders_same_bytes);
