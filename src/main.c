@@ -37,8 +37,9 @@ struct run {
     struct ppm_stats ppm_stats;       /* --mode 2008 only */
     struct jensen1994_stats j94_stats; /* --mode 1994 only */
     struct jensen1996_stats j96_stats; /* --mode 1996 only */
-    struct global_work work;           /* the photon modes' maps and cache: owned, made by
-                                          the mode or read by --load-photons           */
+    struct global_work work;           /* the photon modes' maps and cache (and 1994's
+                                          illumination maps): owned, made by the mode or
+                                          read by --load-photons                       */
     clock_t start;
     double seconds_build;
     double seconds_work_file;          /* reading or writing it                        */
@@ -136,7 +137,8 @@ static int write_tile_record(const struct run *run, struct error *err)
 }
 
 /* -o's PFM (the name ends in .pfm: parse_options) and the PPM beside it, the variance and,
- * for a crop, its record. A whole render writes no record, so its files stay as before. */
+ * for a crop, its record. A whole render writes no record, so its files stay as before,
+ * and removes one an earlier crop left under its name (tile.h). */
 static int write_outputs(struct run *run, struct error *err)
 {
     const struct options *o = &run->o;
@@ -144,7 +146,8 @@ static int write_outputs(struct run *run, struct error *err)
         return -1;
     if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
         return -1;
-    if (o->crop[2] != 0 && write_tile_record(run, err) < 0)
+    if (o->crop[2] != 0 ? write_tile_record(run, err) < 0
+                        : tile_record_remove(o->output, err) < 0)
         return -1;
     clock_t start = clock();
     if (o->save_photons != NULL &&
@@ -380,6 +383,7 @@ int main(int argc, char **argv)
     run.result.variance = NULL;
     run.work.maps = NULL;
     run.work.records = NULL;
+    run.work.illumination = NULL;
     run.start = clock();
     int parsed = parse_options(argc, argv, &run.o, &err);
     if (parsed != 0) {

@@ -203,22 +203,33 @@ static void test_bad_tile_records_are_refused(struct check *t)
              strstr(err.message, "cannot open") != NULL);
 }
 
-/* A small render of the specular box with every mode's work cut to a fraction of a
- * second (the counts of `make check`'s determinism loop). */
-#define TILE_SETTINGS "--no-progress --width 32 --height 24 --spp 2 --photons 20000 " \
-                      "--passes 2 --photons-per-pass 20000 --caustic-photons 20000 "   \
-                      "--gather-rays 32 scenes/cornell-specular.scene"
+/* A small render with every mode's work cut to a fraction of a second (the counts of
+ * `make check`'s determinism loop), of the specular box unless a test says otherwise. */
+#define TILE_OPTIONS "--no-progress --width 32 --height 24 --spp 2 --photons 20000 " \
+                     "--passes 2 --photons-per-pass 20000 --caustic-photons 20000 "   \
+                     "--gather-rays 32"
+#define BOX "scenes/cornell-specular.scene"
+#define TILE_SETTINGS TILE_OPTIONS " " BOX
 
 /* Four tiles of the 32 x 24 image with edges at odd places (13, 7, 5), so an off-by-one in
  * a window's placement shows. */
 static const int tiles[4][4] = {{0, 0, 13, 7}, {13, 0, 32, 7}, {0, 7, 5, 24}, {5, 7, 32, 24}};
 
-/* Renders tile k of tiles[] in mode to OUT_tileK.pfm, extra options last (so they win);
- * the exit status. */
-static int render_tile(const char *mode, int k, const char *extra)
+/* Renders tile k of tiles[] to OUT_tileK.pfm: render is the mode and the scene, with any
+ * options between ("1994 --irradiance-store illumination " BOX), extra options last (so
+ * they win); the exit status. */
+static int render_tile(const char *render, int k, const char *extra)
 {
-    return photon("--mode %s " TILE_SETTINGS " %s --crop %d %d %d %d -o " OUT "_tile%d.pfm",
-                  mode, extra, tiles[k][0], tiles[k][1], tiles[k][2], tiles[k][3], k);
+    return photon("--mode %s " TILE_OPTIONS " %s --crop %d %d %d %d -o " OUT "_tile%d.pfm",
+                  render, extra, tiles[k][0], tiles[k][1], tiles[k][2], tiles[k][3], k);
+}
+
+/* Merges the four tiles of tiles[], in another order, into OUT_full.pfm; the status. */
+static int merge_four_tiles(void)
+{
+    remove(OUT "_full.pfm");
+    return photon("merge -o " OUT "_full.pfm " OUT "_tile2.pfm " OUT "_tile0.pfm " OUT
+                  "_tile3.pfm " OUT "_tile1.pfm");
 }
 
 /* truth: DESIGN.md's promise that a crop renders bit-identically to the same window of
@@ -235,17 +246,17 @@ static void test_merged_tiles_equal_whole_render(struct check *t)
     static const char *const modes[] = {"direct", "pt", "photons", "1994", "1996", "2008"};
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
         const char *mode = modes[m];
+        char render[64];
+        snprintf(render, sizeof render, "%s " BOX, mode);
         remove(OUT "_whole.pfm.window");
         CHECK(t, photon("--mode %s %s -o " OUT "_whole.pfm", mode, TILE_SETTINGS) == 0);
         CHECK(t, !file_exists(OUT "_whole.pfm.window"));
         for (int k = 0; k < 3; k++)
-            CHECK(t, render_tile(mode, k, "") == 0);
-        CHECK(t, render_tile(mode, 3, strcmp(mode, "2008") == 0
-                                          ? "--stats --exposure 4 --progress --checkpoint 1"
-                                          : "--stats --exposure 4 --progress") == 0);
-        remove(OUT "_full.pfm");
-        CHECK(t, photon("merge -o " OUT "_full.pfm " OUT "_tile2.pfm " OUT "_tile0.pfm "
-                        OUT "_tile3.pfm " OUT "_tile1.pfm") == 0);
+            CHECK(t, render_tile(render, k, "") == 0);
+        CHECK(t, render_tile(render, 3, strcmp(mode, "2008") == 0
+                                            ? "--stats --exposure 4 --progress --checkpoint 1"
+                                            : "--stats --exposure 4 --progress") == 0);
+        CHECK(t, merge_four_tiles() == 0);
         int same = files_equal(OUT "_full.pfm", OUT "_whole.pfm") &&
                    files_equal(OUT "_full.ppm", OUT "_whole.ppm");
         CHECK(t, same);
@@ -280,13 +291,15 @@ static int merge_refused(const char *tile_names, const char *message)
 
 /* truth: merge.h's contract: a set of tiles that is not exactly one image's windows is
  *   refused with exit status 2, a message naming the file (or, for a gap, the window to
- *   render), and no output; the same tiles with the right fourth one merge.
+ *   render; for a tile given twice, both arguments), and no output; the same tiles with
+ *   the right fourth one merge.
  * catches: a gap filled with black, an overlap resolved silently, a PFM pasted into a
- *   window of another size, tiles of another seed, image size or time limit mixed in. */
+ *   window of another size, tiles of another seed, image size or time limit mixed in, a
+ *   tile given twice (by one name or two) reported as overlapping itself. */
 static void test_merge_refuses_bad_tile_sets(struct check *t)
 {
     for (int k = 0; k < 4; k++)
-        CHECK(t, render_tile("direct", k, "") == 0);
+        CHECK(t, render_tile("direct " BOX, k, "") == 0);
     static const int overlapping[4] = {10, 5, 20, 10};
     CHECK(t, render_window(OUT "_foreign.pfm", tiles[3], "--seed 2") == 0);
     CHECK(t, render_window(OUT "_timed.pfm", tiles[3], "--time-limit 1000") == 0);
@@ -308,11 +321,38 @@ static void test_merge_refuses_bad_tile_sets(struct check *t)
     CHECK(t, merge_refused(THREE_TILES OUT "_timed.pfm", OUT "_timed.pfm: rendered with "
                            "--time-limit 1000"));
     CHECK(t, merge_refused(THREE_TILES OUT "_plain.pfm", OUT "_plain.pfm.window: cannot open"));
+    CHECK(t, merge_refused(THREE_TILES OUT "_tile3.pfm " OUT "_tile1.pfm", "merge: one tile "
+                           "given twice: tile 2 (" OUT "_tile1.pfm) and tile 5 (" OUT
+                           "_tile1.pfm) are both the window 13 0 32 7"));
+    CHECK(t, run_command("cp " OUT "_tile3.pfm " OUT "_again.pfm && cp " OUT "_tile3.pfm.window "
+                         OUT "_again.pfm.window") == 0);
+    CHECK(t, merge_refused(THREE_TILES OUT "_tile3.pfm " OUT "_again.pfm", "tile 4 (" OUT
+                           "_tile3.pfm) and tile 5 (" OUT "_again.pfm) are both the window"));
     CHECK(t, merge_refused("", "at least one tile"));
     CHECK(t, merge_refused("--frobnicate " THREE_TILES, "unknown option '--frobnicate'"));
     CHECK(t, photon("merge -o " OUT "_full.png " THREE_TILES) == 2 && log_contains(".pfm"));
     CHECK(t, photon("merge -o " OUT "_full.pfm " THREE_TILES OUT "_tile3.pfm") == 0);
     CHECK(t, photon("merge --help") == 0 && log_contains("usage: photon merge"));
+}
+
+/* truth: tile.h's contract: a whole render removes the record an earlier crop left under
+ *   its name once its own image is written, so that merge cannot take the whole image for
+ *   that crop; a render that fails writes nothing and removes nothing. The crop here is
+ *   of the whole window with another seed, whose record merge would otherwise accept
+ *   with the new image (it is the window's size).
+ * tolerance: none.
+ * catches: a stale record left beside a whole render (merge then passes off the new image
+ *   as the old crop), a record removed by a render that wrote no image. */
+static void test_whole_render_removes_stale_record(struct check *t)
+{
+    static const int whole[4] = {0, 0, 32, 24};
+    CHECK(t, render_window(OUT "_stale.pfm", whole, "--seed 2") == 0);
+    CHECK(t, photon("--mode photons %s --load-photons " OUT "_none.work -o " OUT "_stale.pfm",
+                    TILE_SETTINGS) == 2);
+    CHECK(t, file_exists(OUT "_stale.pfm.window"));
+    CHECK(t, photon("--mode direct %s -o " OUT "_stale.pfm", TILE_SETTINGS) == 0);
+    CHECK(t, !file_exists(OUT "_stale.pfm.window"));
+    CHECK(t, merge_refused(OUT "_stale.pfm", OUT "_stale.pfm.window: cannot open"));
 }
 
 /* ---- The file of global work (app/work_file.h) ---- */
@@ -324,13 +364,44 @@ static struct photon example_photon(void)
     return p;
 }
 
-/* What work_file.h's table says the file of example_work() holds, written out by hand:
- * little-endian numbers, the floats' and doubles' IEEE 754 bits. Returns its length
- * without the last 8 bytes, the checksum, which are left for the caller. */
-static size_t example_bytes(unsigned char *b)
+/* b[0..7] = bits, lowest byte first: how the file keeps a double's IEEE 754 bits and its
+ * checksum. */
+static void put_bits(unsigned char *b, uint64_t bits)
+{
+    for (int i = 0; i < 8; i++)
+        b[i] = (unsigned char)(bits >> (8 * i));
+}
+
+#define BITS_ONE UINT64_C(0x3ff0000000000000)  /* 1.0 */
+#define BITS_TWO UINT64_C(0x4000000000000000)  /* 2.0 */
+#define BITS_HALF UINT64_C(0x3fe0000000000000) /* 0.5 */
+
+/* Where the parts of example_bytes()'s illumination maps start, counted from the byte
+ * that says they follow: P; primitive 0's flag; primitive 1's res_u, ci_side, DI
+ * irradiances, its elements' CI flags and its one CI sub-map; and their length. */
+enum {
+    AT_P = 1, AT_FLAG_0 = 5, AT_RES_U = 7, AT_CI_SIDE = 11, AT_DI = 12, AT_CI_FLAGS = 60,
+    AT_CI = 62, MAPS_BYTES = 158
+};
+
+/* Appends the FNV-1a checksum of b[0..n-1]; the new length. */
+static size_t with_checksum(unsigned char *b, size_t n)
+{
+    put_bits(b + n, fnv1a(FNV1A_OFFSET_BASIS, b, n));
+    return n + 8;
+}
+
+/* What work_file.h's and illumination_map.h's tables say this work is in the file, written
+ * out by hand: little-endian numbers, the floats' and doubles' IEEE 754 bits, the
+ * checksum. Two maps, the first of one photon, the second absent; one cache record;
+ * illumination maps for two primitives, 0 without a map, 1 with 2 x 1 DI elements of
+ * irradiance (1, 0, 0) and (0, 2, 0) and CI sub-maps of 2 x 2 elements, of which element
+ * 1 has one, whose element 1 (u high, v low) is (0, 0, 0.5). Returns the length; *maps_at
+ * is where the illumination maps start. */
+static size_t example_bytes(unsigned char *b, size_t *maps_at)
 {
     static const unsigned char head[] = {
-        'p', 'h', 'o', 't', 'o', 'n', 'G', 'W', 1, 0, 0, 0,           /* magic, version  */
+        'p', 'h', 'o', 't', 'o', 'n', 'G', 'W', 2, 0, 0, 0,           /* magic, version  */
         0xef, 0xcd, 0xab, 0x89, 0x67, 0x45, 0x23, 0x01,               /* hash            */
         2, 0, 0, 0,                                                   /* two maps        */
         1, 1, 0, 0, 0, 0, 0, 0, 0,                                    /* one photon      */
@@ -339,87 +410,207 @@ static size_t example_bytes(unsigned char *b)
         0,                                                            /* no second map   */
         1, 0, 0, 0, 0, 0, 0, 0,                                       /* one record      */
     };
+    static const unsigned char maps_head[] = {
+        1, 2, 0, 0, 0,        /* maps follow, for P = 2 primitives                   */
+        0,                    /* primitive 0: no map                                 */
+        1, 2, 0, 1, 0, 2,     /* primitive 1: res_u 2, res_v 1, ci_side 2            */
+    };
     size_t n = sizeof head;
     memcpy(b, head, n);
     memset(b + n, 0, 28 * 8); /* the record: all 0.0 but n.z = 1 and R = 2 */
-    b[n + 5 * 8 + 6] = 0xf0;  /* 1.0 = 0x3ff0000000000000 */
-    b[n + 5 * 8 + 7] = 0x3f;
-    b[n + 9 * 8 + 7] = 0x40;  /* 2.0 = 0x4000000000000000 */
-    return n + 28 * 8;
+    put_bits(b + n + 5 * 8, BITS_ONE);
+    put_bits(b + n + 9 * 8, BITS_TWO);
+    n += 28 * 8;
+    *maps_at = n;
+    memset(b + n, 0, MAPS_BYTES);
+    memcpy(b + n, maps_head, sizeof maps_head);
+    put_bits(b + n + AT_DI, BITS_ONE);              /* DI element 0: R = 1                */
+    put_bits(b + n + AT_DI + 4 * 8, BITS_TWO);      /* DI element 1: G = 2                */
+    b[n + AT_CI_FLAGS + 1] = 1;                     /* DI element 1 has a CI sub-map      */
+    put_bits(b + n + AT_CI + 5 * 8, BITS_HALF);     /* its CI element 1: B = 0.5          */
+    return with_checksum(b, n + MAPS_BYTES);
 }
 
-/* truth: work_file.h's byte table, written out by hand above (a photon's floats and a
- *   record's doubles as IEEE bits, numbers lowest byte first), and a round trip.
+/* Whether primitive 1 of maps has irradiance e at (u, v), of caustics alone or of all. */
+static int irradiance_is(const struct illumination_maps *maps, double u, double v,
+                         int caustic_only, struct vec3 e)
+{
+    struct vec3 got = illumination_irradiance(maps, 1, u, v, caustic_only);
+    return got.x == e.x && got.y == e.y && got.z == e.z;
+}
+
+/* Whether example work's illumination maps say what example_bytes() meant: DI elements
+ * along u, CI elements row by row (v the row), a DI element without a sub-map. */
+static int example_illumination_read(const struct illumination_maps *maps)
+{
+    return !illumination_covers(maps, 0) && illumination_covers(maps, 1) &&
+           !illumination_covers(maps, 2) && irradiance_is(maps, 0.25, 0.5, 0, vec3(1, 0, 0)) &&
+           irradiance_is(maps, 0.25, 0.5, 1, vec3(0, 0, 0)) &&
+           irradiance_is(maps, 0.6, 0.9, 0, vec3(0, 2, 0)) &&
+           irradiance_is(maps, 0.9, 0.2, 0, vec3(0, 2, 0.5)) &&
+           irradiance_is(maps, 0.9, 0.2, 1, vec3(0, 0, 0.5));
+}
+
+/* truth: work_file.h's and illumination_map.h's byte tables, written out by hand above
+ *   (a photon's floats and the doubles as IEEE bits, numbers lowest byte first, DI and CI
+ *   elements row by row): what is read must be what the bytes were written to say, and
+ *   writing it back must give the same bytes.
  * tolerance: none.
  * catches: a field in the wrong place or byte order, the unused heap[0] written, a
- *   missing map not marked, the checksum not over every byte before it. */
+ *   missing map not marked, res_u and res_v swapped, elements in column order, a CI
+ *   sub-map in the wrong element, the checksum not over every byte before it. */
 static void test_work_file_format(struct check *t)
 {
-    struct photon *heap = calloc(2, sizeof *heap);
-    heap[1] = example_photon();
-    struct global_work work = {NULL, 0, NULL, 0}, back = {NULL, 0, NULL, 0};
-    global_work_add_maps(&work, 2);
-    work.maps[0] = kdtree_from_heap(heap, 1);
-    work.records = calloc(1, sizeof *work.records);
-    work.n_records = 1;
-    work.records[0].n = vec3(0, 0, 1);
-    work.records[0].r = 2;
+    unsigned char bytes[1024];
+    size_t maps_at, n = example_bytes(bytes, &maps_at);
+    write_bytes_file(OUT "_expected.work", bytes, n);
+    struct global_work work = {NULL, 0, NULL, 0, NULL};
     struct error err;
     uint64_t hash = UINT64_C(0x0123456789abcdef);
-    CHECK(t, work_file_write(OUT "_example.work", hash, &work, &err) == 0);
-    unsigned char expected[512];
-    size_t n = example_bytes(expected);
-    uint64_t sum = fnv1a(FNV1A_OFFSET_BASIS, expected, n);
-    for (int i = 0; i < 8; i++)
-        expected[n + i] = (unsigned char)(sum >> (8 * i));
-    write_bytes_file(OUT "_expected.work", expected, n + 8);
-    CHECK(t, files_equal(OUT "_example.work", OUT "_expected.work"));
-    CHECK(t, work_file_read(OUT "_example.work", hash, &back, &err) == 0);
-    CHECK(t, back.n_maps == 2 && back.maps[0] != NULL && back.maps[1] == NULL &&
-             back.maps[0]->n_photons == 1 && back.n_records == 1);
-    if (back.n_maps == 2 && back.maps[0] != NULL && back.n_records == 1) {
+    CHECK(t, work_file_read(OUT "_expected.work", hash, &work, &err) == 0);
+    int whole = work.n_maps == 2 && work.maps[0] != NULL && work.maps[1] == NULL &&
+                work.maps[0]->n_photons == 1 && work.n_records == 1 && work.illumination != NULL;
+    CHECK(t, whole);
+    if (whole) {
         struct photon p = example_photon();
-        CHECK(t, memcmp(&back.maps[0]->photons[1], &p, sizeof p) == 0);
-        CHECK(t, memcmp(&back.records[0], &work.records[0], sizeof back.records[0]) == 0);
+        struct irradiance_record record;
+        memset(&record, 0, sizeof record);
+        record.n = vec3(0, 0, 1);
+        record.r = 2;
+        CHECK(t, memcmp(&work.maps[0]->photons[1], &p, sizeof p) == 0);
+        CHECK(t, memcmp(&work.records[0], &record, sizeof record) == 0);
+        CHECK(t, example_illumination_read(work.illumination));
+        CHECK(t, work_file_write(OUT "_example.work", hash, &work, &err) == 0);
+        CHECK(t, files_equal(OUT "_example.work", OUT "_expected.work"));
     }
-    global_work_free(&back);
     global_work_free(&work);
 }
 
-/* Renders mode with TILE_SETTINGS, extra options last, to OUT_NAME.pfm; the status. */
-static int render_work(const char *mode, const char *name, const char *extra)
+/* Whether the n bytes, as a file of global work, are refused with message (and leave
+ * nothing allocated: the work stays empty for global_work_free to find so). */
+static int example_refused(const unsigned char *bytes, size_t n, const char *message)
 {
-    return photon("--mode %s " TILE_SETTINGS " %s -o " OUT "_%s.pfm", mode, extra, name);
+    write_bytes_file(OUT "_planted.work", bytes, n);
+    struct global_work work = {NULL, 0, NULL, 0, NULL};
+    struct error err;
+    int refused = work_file_read(OUT "_planted.work", UINT64_C(0x0123456789abcdef), &work,
+                                 &err) < 0 && strstr(err.message, message) != NULL;
+    if (!refused)
+        fprintf(stderr, "test_merge: planted file not refused with '%s'\n", message);
+    global_work_free(&work);
+    return refused;
+}
+
+/* truth: illumination_map.h's contract: maps are read only when every side is in range,
+ *   every flag 0 or 1 and every irradiance finite, and a count is checked against the
+ *   bytes left before anything is allocated for it; work_file.h's: a file of the older
+ *   version is refused, saying so. Each change is planted in example_bytes()'s file and
+ *   the checksum made again, so only the check meant for it can refuse it.
+ * tolerance: none.
+ * catches: a side of 0 or over its limit accepted (a map of no elements, or one as large
+ *   as a damaged byte says), an infinite irradiance let through to the image, a count
+ *   trusted before its bytes are there, a version 1 file read as version 2. */
+static void test_bad_illumination_maps_are_refused(struct check *t)
+{
+    static const struct {
+        size_t at; /* from the start of the illumination maps */
+        unsigned char bytes[8];
+        size_t n_bytes;
+        const char *message;
+    } planted[] = {
+        {AT_P, {0xff, 0xff, 0xff, 0xff}, 4, "truncated: 4294967295 illumination maps need"},
+        {AT_FLAG_0, {2}, 1, "illumination map of primitive 0: expected 0 or 1, got 2"},
+        {AT_RES_U, {1, 4}, 2, "primitive 1: 1025 elements along a side, not 1 to 1024"},
+        {AT_CI_SIDE, {0}, 1, "primitive 1: 0 elements along a side, not 1 to 16"},
+        {AT_CI_SIDE, {17}, 1, "primitive 1: 17 elements along a side, not 1 to 16"},
+        {AT_RES_U, {0, 4, 0, 4}, 4, "truncated: 3145728 DI irradiances need 25165824 bytes"},
+        {AT_DI + 8, {0, 0, 0, 0, 0, 0, 0xf0, 0x7f}, 8, "primitive 1: a number is not finite"},
+        {AT_CI_FLAGS, {3}, 1, "illumination map of primitive 1: expected 0 or 1, got 3"},
+    };
+    unsigned char bytes[1024];
+    size_t maps_at, n;
+    for (size_t i = 0; i < sizeof planted / sizeof planted[0]; i++) {
+        n = example_bytes(bytes, &maps_at);
+        memcpy(bytes + maps_at + planted[i].at, planted[i].bytes, planted[i].n_bytes);
+        n = with_checksum(bytes, n - 8);
+        CHECK(t, example_refused(bytes, n, planted[i].message));
+    }
+    n = example_bytes(bytes, &maps_at);
+    CHECK(t, example_refused(bytes, n - 12, "truncated: 12 CI irradiances need 96 bytes, 92"));
+    bytes[8] = 1;
+    CHECK(t, example_refused(bytes, n, "version 1 of the saved work; this photon reads "
+                             "version 2"));
+}
+
+/* What the work-file tests render: each mode with global work on the specular box, and
+ * 1994 with illumination maps on the PPM box, whose shrouds (quads) catch its lenses'
+ * caustics, so that CI sub-maps are made (268 at TILE_OPTIONS), saved and loaded. */
+#define ILLUMINATION_RENDER "1994 --irradiance-store illumination scenes/ppm-box.scene"
+static const char *const work_renders[] = {
+    "photons " BOX, "1994 " BOX, "1996 " BOX, ILLUMINATION_RENDER,
+};
+
+/* Renders render (mode, options, scene) with TILE_OPTIONS, extra options last, to
+ * OUT_NAME.pfm; the status. */
+static int render_work(const char *render, const char *name, const char *extra)
+{
+    return photon("--mode %s " TILE_OPTIONS " %s -o " OUT "_%s.pfm", render, extra, name);
+}
+
+/* The number --stats printed for key in the last command's output; -1 when it did not. */
+static double logged_stat(const char *key)
+{
+    char *log = read_text_file(OUT ".log");
+    const char *at = log != NULL ? strstr(log, key) : NULL;
+    double value = at != NULL && at[strlen(key)] == '=' ? atof(at + strlen(key) + 1) : -1;
+    free(log);
+    return value;
 }
 
 /* truth: the global work is the same whatever window is rendered (DESIGN.md: a crop
  *   equals its window of the whole image), so a render that loads it instead of doing it
- *   must write the same bytes, whole and cropped, and a crop must save the same file as
- *   the whole render.
+ *   writes the bytes of the plain render, whole and as tiles merged, and a crop saves the
+ *   same file as the whole render. The render that loads 1994's illumination maps must
+ *   find CI sub-maps in them (--stats), or the CI path went untried.
  * tolerance: none.
  * catches: a map re-balanced or reordered on loading, photons or doubles not kept
- *   exactly, cache records re-added in another order (other sums), the cache's pre-pass
- *   or a map left out of the file, work that depends on the window. */
+ *   exactly, cache records re-added in another order (other sums), the cache's pre-pass,
+ *   a map or the illumination maps left out of the file, CI sub-maps dropped or misplaced,
+ *   work that depends on the window (the CI resolution's pretrace over the crop alone). */
 static void test_loaded_work_renders_same_bytes(struct check *t)
 {
-    static const char *const modes[] = {"photons", "1994", "1996"};
-    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
-        const char *mode = modes[m];
-        CHECK(t, render_work(mode, "made", "--save-photons " OUT "_made.work") == 0);
-        CHECK(t, render_work(mode, "loaded", "--load-photons " OUT "_made.work") == 0);
-        CHECK(t, render_work(mode, "crop_made", "--crop 5 7 30 20") == 0);
-        CHECK(t, render_work(mode, "crop_loaded", "--crop 5 7 30 20 --load-photons "
-                             OUT "_made.work") == 0);
-        CHECK(t, render_work(mode, "crop_saved", "--crop 5 7 30 20 --save-photons "
+    for (size_t m = 0; m < sizeof work_renders / sizeof work_renders[0]; m++) {
+        const char *render = work_renders[m];
+        CHECK(t, render_work(render, "plain", "") == 0);
+        CHECK(t, render_work(render, "made", "--save-photons " OUT "_made.work") == 0);
+        CHECK(t, render_work(render, "loaded", "--stats --load-photons " OUT "_made.work") == 0);
+        CHECK(t, strcmp(render, ILLUMINATION_RENDER) != 0 ||
+                 logged_stat("illumination_ci_maps") > 0);
+        CHECK(t, render_work(render, "crop_saved", "--crop 5 7 30 20 --save-photons "
                              OUT "_crop.work") == 0);
-        int same = files_equal(OUT "_made.pfm", OUT "_loaded.pfm") &&
-                   files_equal(OUT "_crop_made.pfm", OUT "_crop_loaded.pfm") &&
-                   files_equal(OUT "_crop_made.pfm", OUT "_crop_saved.pfm") &&
+        for (int k = 0; k < 4; k++)
+            CHECK(t, render_tile(render, k, "--load-photons " OUT "_made.work") == 0);
+        CHECK(t, merge_four_tiles() == 0);
+        int same = files_equal(OUT "_made.pfm", OUT "_plain.pfm") &&
+                   files_equal(OUT "_loaded.pfm", OUT "_plain.pfm") &&
+                   files_equal(OUT "_full.pfm", OUT "_plain.pfm") &&
+                   files_equal(OUT "_full.ppm", OUT "_plain.ppm") &&
                    files_equal(OUT "_made.work", OUT "_crop.work");
         CHECK(t, same);
         if (!same)
-            fprintf(stderr, "test_merge: mode %s: --load-photons changed the image\n", mode);
+            fprintf(stderr, "test_merge: --mode %s: --load-photons changed the image\n",
+                    render);
     }
+}
+
+/* The length of the file name in bytes, or -1 when it cannot be read. */
+static long file_length(const char *name)
+{
+    FILE *f = fopen(name, "rb");
+    long length = f != NULL && fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+    if (f != NULL)
+        fclose(f);
+    return length;
 }
 
 /* OUT_made.work changed into OUT_bad.work: its first keep bytes (all when keep < 0), byte
@@ -439,17 +630,17 @@ static void write_changed_work(long keep, long flip, size_t extra)
     write_bytes_file(OUT "_bad.work", bytes, n + extra);
 }
 
-/* Whether "photon --mode MODE TILE_SETTINGS EXTRA -o OUT_refused.pfm" exits 2 with message
- * in its output and leaves no image. */
-static int render_refused(const char *mode, const char *extra, const char *message)
+/* Whether "photon --mode RENDER TILE_OPTIONS EXTRA -o OUT_refused.pfm" exits 2 with
+ * message in its output and leaves no image. */
+static int render_refused(const char *render, const char *extra, const char *message)
 {
     remove(OUT "_refused.pfm");
     remove(OUT "_refused.ppm");
-    int refused = render_work(mode, "refused", extra) == 2 && log_contains(message) &&
+    int refused = render_work(render, "refused", extra) == 2 && log_contains(message) &&
                   !file_exists(OUT "_refused.pfm") && !file_exists(OUT "_refused.ppm");
     if (!refused)
         fprintf(stderr, "test_merge: '%s' with --mode %s not refused with '%s'\n", extra,
-                mode, message);
+                render, message);
     return refused;
 }
 
@@ -458,21 +649,27 @@ static int render_refused(const char *mode, const char *extra, const char *messa
 /* truth: work_file.h's promise that a file of global work is used only when it is whole,
  *   undamaged and made for this render, and the modes that have none refuse the options.
  *   The 1996 file of TILE_SETTINGS is some 1.2 MB: the cuts fall in the header, in the
- *   first map's photons, in the cache's records and in the checksum.
+ *   first map's photons, in the cache's records and in the checksum. The illumination
+ *   maps end a 1994 file that holds them (the PPM box's, over 50 kB: 2,036 DI elements
+ *   of 24 bytes): cuts and flipped bytes from the last byte before the checksum to 9 kB
+ *   before it fall in their flags and in their DI and CI irradiances. A flipped byte may
+ *   be refused by a range check before the checksum is reached, so any refusal of the
+ *   file will do there.
  * tolerance: none.
  * catches: a missing length or checksum check (a truncated or damaged file read as
  *   good), trailing bytes accepted, the hash not compared (another seed's maps used),
- *   a mode without global work silently ignoring the options. */
+ *   the illumination maps outside the checksum, a mode without global work silently
+ *   ignoring the options. */
 static void test_bad_work_files_are_refused(struct check *t)
 {
-    CHECK(t, render_work("1996", "made", "--save-photons " OUT "_made.work") == 0);
+    CHECK(t, render_work("1996 " BOX, "made", "--save-photons " OUT "_made.work") == 0);
     static const struct {
         long keep, flip;
         size_t extra;
         const char *message;
     } bad[] = {
         {-1, 0, 0, "not a file of photon's saved global work"},
-        {-1, 8, 0, "version 254 of the saved work; this photon reads version 1"},
+        {-1, 8, 0, "version 253 of the saved work; this photon reads version 2"},
         {6, -1, 0, "not a file of photon's saved global work"},
         {10, -1, 0, "truncated: the file ends inside the header"},
         {16, -1, 0, "truncated: the file ends inside the header"},
@@ -484,21 +681,30 @@ static void test_bad_work_files_are_refused(struct check *t)
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         write_changed_work(bad[i].keep, bad[i].flip, bad[i].extra);
-        CHECK(t, render_refused("1996", LOAD_BAD, bad[i].message));
+        CHECK(t, render_refused("1996 " BOX, LOAD_BAD, bad[i].message));
     }
     write_changed_work(-1, -1, 0);
-    CHECK(t, render_work("1996", "loaded", LOAD_BAD) == 0);
-    CHECK(t, render_refused("1996", LOAD_BAD " --seed 2", "saved from other scene files"));
-    CHECK(t, render_refused("photons", LOAD_BAD, "saved from other scene files"));
-    CHECK(t, render_refused("1996", "--load-photons " OUT "_none.work", "cannot open"));
-    CHECK(t, render_refused("pt", LOAD_BAD, "mode pt has no global work"));
-    CHECK(t, render_refused("direct", "--save-photons " OUT "_x.work", "mode direct has no"));
-    CHECK(t, render_refused("2008", LOAD_BAD, "mode 2008 traces new photons in every pass"));
-    CHECK(t, render_refused("1994", "--irradiance-store illumination --save-photons " OUT
-                            "_x.work", "not with --irradiance-store illumination"));
-    CHECK(t, render_refused("1996", LOAD_BAD " --save-photons " OUT "_x.work",
+    CHECK(t, render_work("1996 " BOX, "loaded", LOAD_BAD) == 0);
+    CHECK(t, render_refused("1996 " BOX, LOAD_BAD " --seed 2", "saved from other scene files"));
+    CHECK(t, render_refused("photons " BOX, LOAD_BAD, "saved from other scene files"));
+    CHECK(t, render_refused("1996 " BOX, "--load-photons " OUT "_none.work", "cannot open"));
+    CHECK(t, render_refused("pt " BOX, LOAD_BAD, "mode pt has no global work"));
+    CHECK(t, render_refused("direct " BOX, "--save-photons " OUT "_x.work",
+                            "mode direct has no"));
+    CHECK(t, render_refused("2008 " BOX, LOAD_BAD, "mode 2008 traces new photons in every "
+                            "pass"));
+    CHECK(t, render_refused("1996 " BOX, LOAD_BAD " --save-photons " OUT "_x.work",
                             "give one or the other"));
     CHECK(t, !file_exists(OUT "_x.work"));
+    CHECK(t, render_work(ILLUMINATION_RENDER, "made", "--save-photons " OUT "_made.work") == 0);
+    long length = file_length(OUT "_made.work");
+    CHECK(t, length > 60000);
+    for (long back = 9; back <= 9 * 1024; back *= 4) {
+        write_changed_work(length - back, -1, 0);
+        CHECK(t, render_refused(ILLUMINATION_RENDER, LOAD_BAD, "truncated: "));
+        write_changed_work(-1, length - back, 0);
+        CHECK(t, render_refused(ILLUMINATION_RENDER, LOAD_BAD, OUT "_bad.work: "));
+    }
 }
 
 void test_merge(struct check *t)
@@ -508,7 +714,9 @@ void test_merge(struct check *t)
     RUN_TEST(t, test_bad_tile_records_are_refused);
     RUN_TEST(t, test_merged_tiles_equal_whole_render);
     RUN_TEST(t, test_merge_refuses_bad_tile_sets);
+    RUN_TEST(t, test_whole_render_removes_stale_record);
     RUN_TEST(t, test_work_file_format);
+    RUN_TEST(t, test_bad_illumination_maps_are_refused);
     RUN_TEST(t, test_loaded_work_renders_same_bytes);
     RUN_TEST(t, test_bad_work_files_are_refused);
 }

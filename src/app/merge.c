@@ -41,8 +41,8 @@ static int parse_merge_args(int argc, char **argv, struct merge_args *args, stru
             printf("%s\n\nPuts crops (renders with --crop, each with its FILE.pfm.window) "
                    "back into the\nwhole image: FULL.pfm and FULL.ppm. Refused, with exit "
                    "status 2 and nothing\nwritten: tiles of different images, scenes, modes, "
-                   "seeds or options; tiles\nrendered with --time-limit; overlaps; gaps "
-                   "(named as --crop windows to render).\n", MERGE_USAGE);
+                   "seeds or options; tiles\nrendered with --time-limit; overlaps, and a tile "
+                   "given twice; gaps (named as\n--crop windows to render).\n", MERGE_USAGE);
             return 1;
         }
         if (strcmp(argv[i], "-o") == 0 && read_output(value, args->output, err) < 0)
@@ -90,14 +90,26 @@ static long long window_area(const struct tile_record *r)
     return (long long)(r->x1 - r->x0) * (r->y1 - r->y0);
 }
 
+static int same_window(const struct tile_record *a, const struct tile_record *b)
+{
+    return a->x0 == b->x0 && a->y0 == b->y0 && a->x1 == b->x1 && a->y1 == b->y1;
+}
+
 /* No pixel in two tiles: each pair's windows must not intersect (n^2 pairs, for the few
- * tiles an image is cut into). */
+ * tiles an image is cut into). Two tiles of one window are one tile given twice, under
+ * one name or two: their hashes agree (read_record), so by DESIGN.md's determinism their
+ * pixels do too; the message says so and names both arguments, not an overlap. */
 static int check_overlaps(const struct merge_args *args, const struct tile_record *records,
                           struct error *err)
 {
     for (int i = 0; i < args->n_tiles; i++)
         for (int j = 0; j < i; j++) {
             const struct tile_record *a = &records[j], *b = &records[i];
+            if (same_window(a, b))
+                return error_set(err, "", 0, "merge: one tile given twice: tile %d (%s) and "
+                                 "tile %d (%s) are both the window %d %d %d %d", j + 1,
+                                 args->tiles[j], i + 1, args->tiles[i], a->x0, a->y0, a->x1,
+                                 a->y1);
             int x0 = a->x0 > b->x0 ? a->x0 : b->x0, x1 = a->x1 < b->x1 ? a->x1 : b->x1;
             int y0 = a->y0 > b->y0 ? a->y0 : b->y0, y1 = a->y1 < b->y1 ? a->y1 : b->y1;
             if (x0 < x1 && y0 < y1)

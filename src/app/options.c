@@ -65,8 +65,8 @@ static const struct option_spec specs[] = {
     {"--variance", OPT_FILE, FIELD(variance), 0, 0, "FILE.pfm",
      "also write each pixel's variance of the mean (needs --spp >= 2)"},
     {"--save-photons", OPT_FILE, FIELD(save_photons), 0, 0, "FILE",
-     "photons, 1994, 1996: also write the global work (photon maps, irradiance cache) to "
-     "FILE, for --load-photons"},
+     "photons, 1994, 1996: also write the global work (photon maps, 1994's illumination "
+     "maps, irradiance cache) to FILE, for --load-photons"},
     {"--load-photons", OPT_FILE, FIELD(load_photons), 0, 0, "FILE",
      "photons, 1994, 1996: read the global work from FILE (saved by the same command but "
      "for -o, --crop and the like) instead of doing it"},
@@ -339,7 +339,7 @@ static const struct option_spec *find_spec(const char *name)
 }
 
 /* --save-photons and --load-photons: one of them, in a mode that has global work to
- * save, and not with 1994's illumination maps, which the file does not hold. */
+ * save. */
 static int check_global_work_options(const struct options *o, struct error *err)
 {
     const char *name = o->save_photons != NULL ? "--save-photons" : "--load-photons";
@@ -355,9 +355,6 @@ static int check_global_work_options(const struct options *o, struct error *err)
         return error_set(err, "", 0, "%s: mode 2008 traces new photons in every pass; they "
                          "are not saved (their tracing is the smaller part of a tile's "
                          "work: README, Tiles and merging)", name);
-    if (o->mode == MODE_JENSEN1994 && o->illumination_maps)
-        return error_set(err, "", 0, "%s: not with --irradiance-store illumination, whose "
-                         "illumination maps the file does not hold", name);
     return 0;
 }
 

@@ -53,6 +53,22 @@ int tile_record_write(const char *pfm_name, const struct tile_record *r, struct 
     return output_commit(f, err); /* a failed write shows in ferror(), checked there */
 }
 
+int tile_record_remove(const char *pfm_name, struct error *err)
+{
+    char name[FILENAME_MAX];
+    if (record_name(pfm_name, name, err) < 0)
+        return -1;
+    FILE *f = fopen(name, "r");
+    if (f == NULL)
+        return 0; /* no record: nothing to do */
+    fclose(f);
+    if (remove(name) != 0)
+        return error_set(err, name, 0, "cannot remove this record of an earlier crop (%s), "
+                         "which would make photon merge take the whole image %s for that "
+                         "crop", strerror(errno), pfm_name);
+    return 0;
+}
+
 /* Cuts rd->text into words at white space; -1 when there are more than RECORD_WORDS_MAX. */
 static int split_words(struct record_reader *rd)
 {

@@ -43,6 +43,13 @@ struct tile_record {
  * filled when it cannot be written. */
 int tile_record_write(const char *pfm_name, const struct tile_record *r, struct error *err);
 
+/* Removes the record beside pfm_name when there is one: a whole render (no --crop) calls
+ * it once its PFM is written, so that a record left there by an earlier crop of the same
+ * name cannot make merge take the whole image for that crop. -1 with *err filled when the
+ * record is there and cannot be removed; a record that cannot even be opened is left, as
+ * merge cannot read it either. */
+int tile_record_remove(const char *pfm_name, struct error *err);
+
 /* Reads the record beside pfm_name into *r. -1 with *err ("FILE.window:LINE: message")
  * when it is missing, of another version, malformed, or its window is not inside its
  * image; *r is then unspecified. */

@@ -2,66 +2,38 @@
  * app/work_file.c -- writing and reading the file of a render's global work
  * (work_file.h).
  *
- * Numbers go out one byte at a time, lowest first, and come back the same way, so the
- * file does not depend on the machine's byte order or on how a compiler lays out a
- * struct. Floats and doubles travel as their IEEE 754 bits (C99 does not promise IEEE
- * 754, but every machine photon runs on has it, and the sizes are checked below). The
- * reader knows the file's size before it allocates anything: a count that would need
- * more bytes than the file has left is reported as truncation, not tried.
+ * Numbers travel through base/binary.h, which makes the file's bytes the same on every
+ * machine and checks every count against the bytes left before anything is allocated.
+ * This file lays out the parts whose structs are public (the kd-trees' photons, the
+ * cache's records); the illumination maps keep their layout to themselves and write and
+ * read it in photon/illumination_map.c.
  */
 #include "work_file.h"
 
-#include <errno.h>
-#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/binary.h"
 #include "../base/hash.h"
+#include "../photon/illumination_map.h"
 
-#define PHOTON_BYTES 20  /* a photon in the file, as in memory (photon.h)   */
+#define PHOTON_BYTES 20   /* a photon in the file, as in memory (photon.h)   */
 #define RECORD_DOUBLES 28 /* an irradiance record in the file: 28 doubles    */
 
 extern char float_is_4_bytes[sizeof(float) == 4 ? 1 : -1];
-extern char double_is_8_bytes[sizeof(double) == 8 ? 1 : -1];
 
 /* ---- Writing ----------------------------------------------------------------------- */
 
-struct work_writer {
-    FILE *f;
-    uint64_t checksum; /* FNV-1a of every byte written so far */
-};
-
-static void put_bytes(struct work_writer *w, const unsigned char *bytes, size_t n)
+static void put_vec3(struct binary_writer *w, struct vec3 v)
 {
-    fwrite(bytes, 1, n, w->f); /* a failed write shows in ferror(), checked at the commit */
-    w->checksum = fnv1a(w->checksum, bytes, n);
+    binary_put_double(w, v.x);
+    binary_put_double(w, v.y);
+    binary_put_double(w, v.z);
 }
 
-/* The n_bytes lowest bytes of v, lowest first. */
-static void put_uint(struct work_writer *w, uint64_t v, int n_bytes)
-{
-    unsigned char bytes[8];
-    for (int i = 0; i < n_bytes; i++)
-        bytes[i] = (unsigned char)(v >> (8 * i));
-    put_bytes(w, bytes, (size_t)n_bytes);
-}
-
-static void put_double(struct work_writer *w, double x)
-{
-    uint64_t bits;
-    memcpy(&bits, &x, sizeof bits);
-    put_uint(w, bits, 8);
-}
-
-static void put_vec3(struct work_writer *w, struct vec3 v)
-{
-    put_double(w, v.x);
-    put_double(w, v.y);
-    put_double(w, v.z);
-}
-
-static void put_photon(struct work_writer *w, const struct photon *p)
+static void put_photon(struct binary_writer *w, const struct photon *p)
 {
     unsigned char bytes[PHOTON_BYTES];
     for (int k = 0; k < 3; k++) {
@@ -75,15 +47,15 @@ static void put_photon(struct work_writer *w, const struct photon *p)
     bytes[17] = p->phi;
     bytes[18] = p->plane;
     bytes[19] = p->flags;
-    put_bytes(w, bytes, sizeof bytes);
+    binary_put_bytes(w, bytes, sizeof bytes);
 }
 
-static void put_record(struct work_writer *w, const struct irradiance_record *r)
+static void put_record(struct binary_writer *w, const struct irradiance_record *r)
 {
     put_vec3(w, r->p);
     put_vec3(w, r->n);
     put_vec3(w, r->e);
-    put_double(w, r->r);
+    binary_put_double(w, r->r);
     for (int c = 0; c < 3; c++)
         put_vec3(w, r->grad_r[c]);
     for (int c = 0; c < 3; c++)
@@ -93,74 +65,34 @@ static void put_record(struct work_writer *w, const struct irradiance_record *r)
 int work_file_write(const char *name, uint64_t hash, const struct global_work *work,
                     struct error *err)
 {
-    struct work_writer w = {NULL, FNV1A_OFFSET_BASIS};
+    struct binary_writer w = {NULL, FNV1A_OFFSET_BASIS};
     w.f = output_open(name, err);
     if (w.f == NULL)
         return -1;
-    put_bytes(&w, (const unsigned char *)WORK_FILE_MAGIC, 8);
-    put_uint(&w, WORK_FILE_VERSION, 4);
-    put_uint(&w, hash, 8);
-    put_uint(&w, work->n_maps, 4);
+    binary_put_bytes(&w, (const unsigned char *)WORK_FILE_MAGIC, 8);
+    binary_put_uint(&w, WORK_FILE_VERSION, 4);
+    binary_put_uint(&w, hash, 8);
+    binary_put_uint(&w, work->n_maps, 4);
     for (size_t m = 0; m < work->n_maps; m++) {
         const struct kdtree *map = work->maps[m];
-        put_uint(&w, map != NULL, 1);
+        binary_put_uint(&w, map != NULL, 1);
         if (map == NULL)
             continue;
-        put_uint(&w, map->n_photons, 8);
+        binary_put_uint(&w, map->n_photons, 8);
         for (size_t i = 1; i <= map->n_photons; i++)
             put_photon(&w, &map->photons[i]);
     }
-    put_uint(&w, work->n_records, 8);
+    binary_put_uint(&w, work->n_records, 8);
     for (size_t i = 0; i < work->n_records; i++)
         put_record(&w, &work->records[i]);
-    put_uint(&w, w.checksum, 8); /* the checksum does not cover itself */
+    binary_put_uint(&w, work->illumination != NULL, 1);
+    if (work->illumination != NULL)
+        illumination_maps_write(work->illumination, &w);
+    binary_put_checksum(&w);
     return output_commit(w.f, err);
 }
 
 /* ---- Reading ----------------------------------------------------------------------- */
-
-struct work_reader {
-    FILE *f;
-    const char *name;  /* for messages                                */
-    long size;         /* of the whole file, in bytes                 */
-    uint64_t checksum; /* FNV-1a of every byte read so far            */
-};
-
-/* n bytes, of the part of the file that what names (for the message). */
-static int get_bytes(struct work_reader *r, unsigned char *bytes, size_t n, const char *what,
-                     struct error *err)
-{
-    if (fread(bytes, 1, n, r->f) != n)
-        return error_set(err, r->name, 0, "truncated: the file ends inside %s", what);
-    r->checksum = fnv1a(r->checksum, bytes, n);
-    return 0;
-}
-
-static int get_uint(struct work_reader *r, int n_bytes, const char *what, uint64_t *v,
-                    struct error *err)
-{
-    unsigned char bytes[8];
-    if (get_bytes(r, bytes, (size_t)n_bytes, what, err) < 0)
-        return -1;
-    *v = 0;
-    for (int i = n_bytes - 1; i >= 0; i--)
-        *v = *v << 8 | bytes[i];
-    return 0;
-}
-
-/* Whether count items of item_bytes each fit in what is left of the file; the message
- * says truncation otherwise, before anything is allocated for them. */
-static int fits_in_file(const struct work_reader *r, uint64_t count, size_t item_bytes,
-                        const char *what, struct error *err)
-{
-    long at = ftell(r->f);
-    uint64_t left = at >= 0 && at <= r->size ? (uint64_t)(r->size - at) : 0;
-    if (count > left / item_bytes)
-        return error_set(err, r->name, 0, "truncated: %llu %s need %llu bytes, %llu are "
-                         "left", (unsigned long long)count, what,
-                         (unsigned long long)count * item_bytes, (unsigned long long)left);
-    return 0;
-}
 
 /* The photon of bytes (put_photon's layout). */
 static struct photon photon_of_bytes(const unsigned char *bytes)
@@ -181,23 +113,23 @@ static struct photon photon_of_bytes(const unsigned char *bytes)
 }
 
 /* Map m of the file into *map (NULL when the file says it does not exist). */
-static int get_map(struct work_reader *r, size_t m, struct kdtree **map, struct error *err)
+static int get_map(struct binary_reader *r, size_t m, struct kdtree **map, struct error *err)
 {
-    uint64_t present, n;
-    if (get_uint(r, 1, "a map's header", &present, err) < 0)
+    int present;
+    uint64_t n;
+    char what[48];
+    snprintf(what, sizeof what, "map %zu's header", m);
+    if (binary_get_flag(r, what, &present, err) < 0)
         return -1;
-    if (present > 1)
-        return error_set(err, r->name, 0, "map %zu: expected 0 or 1 before it, got %llu", m,
-                         (unsigned long long)present);
-    if (present == 0)
+    if (!present)
         return 0;
-    if (get_uint(r, 8, "a map's header", &n, err) < 0 ||
-        fits_in_file(r, n, PHOTON_BYTES, "photons", err) < 0)
+    if (binary_get_uint(r, 8, what, &n, err) < 0 ||
+        binary_fits(r, n, PHOTON_BYTES, "photons", err) < 0)
         return -1;
     struct photon *heap = xmalloc((size_t)n + 1, sizeof *heap, "photon map");
     for (size_t i = 1; i <= n; i++) {
         unsigned char bytes[PHOTON_BYTES];
-        if (get_bytes(r, bytes, sizeof bytes, "a map's photons", err) < 0) {
+        if (binary_get_bytes(r, bytes, sizeof bytes, "a map's photons", err) < 0) {
             free(heap);
             return -1;
         }
@@ -209,27 +141,16 @@ static int get_map(struct work_reader *r, size_t m, struct kdtree **map, struct 
     return 0;
 }
 
-static int get_double(struct work_reader *r, double *x, struct error *err)
-{
-    uint64_t bits;
-    if (get_uint(r, 8, "the cache's records", &bits, err) < 0)
-        return -1;
-    memcpy(x, &bits, sizeof *x);
-    return 0;
-}
-
-/* Record i into *rec: 28 doubles, all finite, R > 0 (irradiance_cache_add()'s terms). */
-static int get_record(struct work_reader *r, size_t i, struct irradiance_record *rec,
+/* Record i into *rec: 28 finite doubles, R > 0 (irradiance_cache_add()'s terms). */
+static int get_record(struct binary_reader *r, size_t i, struct irradiance_record *rec,
                       struct error *err)
 {
     double x[RECORD_DOUBLES];
+    char what[40];
+    snprintf(what, sizeof what, "cache record %zu", i);
     for (int k = 0; k < RECORD_DOUBLES; k++)
-        if (get_double(r, &x[k], err) < 0)
+        if (binary_get_double(r, what, &x[k], err) < 0)
             return -1;
-    for (int k = 0; k < RECORD_DOUBLES; k++)
-        if (!isfinite(x[k]))
-            return error_set(err, r->name, 0, "cache record %zu: number %d is not finite",
-                             i, k + 1);
     if (!(x[9] > 0))
         return error_set(err, r->name, 0, "cache record %zu: radius %g is not positive", i,
                          x[9]);
@@ -245,20 +166,21 @@ static int get_record(struct work_reader *r, size_t i, struct irradiance_record 
 }
 
 /* Magic, version and hash: the file is work of this program's kind, for this render. */
-static int get_header(struct work_reader *r, uint64_t hash, struct error *err)
+static int get_header(struct binary_reader *r, uint64_t hash, struct error *err)
 {
     unsigned char magic[8];
     uint64_t version, saved_hash;
-    if (fread(magic, 1, 8, r->f) != 8 || memcmp(magic, WORK_FILE_MAGIC, 8) != 0)
+    if (binary_get_bytes(r, magic, 8, "the magic", NULL) < 0 ||
+        memcmp(magic, WORK_FILE_MAGIC, 8) != 0)
         return error_set(err, r->name, 0, "not a file of photon's saved global work "
                          "(--save-photons)");
-    r->checksum = fnv1a(r->checksum, magic, 8);
-    if (get_uint(r, 4, "the header", &version, err) < 0)
+    if (binary_get_uint(r, 4, "the header", &version, err) < 0)
         return -1;
     if (version != WORK_FILE_VERSION)
         return error_set(err, r->name, 0, "version %llu of the saved work; this photon reads "
-                         "version %d", (unsigned long long)version, WORK_FILE_VERSION);
-    if (get_uint(r, 8, "the header", &saved_hash, err) < 0)
+                         "version %d (save the work again with this photon's "
+                         "--save-photons)", (unsigned long long)version, WORK_FILE_VERSION);
+    if (binary_get_uint(r, 8, "the header", &saved_hash, err) < 0)
         return -1;
     if (saved_hash != hash)
         return error_set(err, r->name, 0, "saved from other scene files, mode, seed or "
@@ -267,21 +189,13 @@ static int get_header(struct work_reader *r, uint64_t hash, struct error *err)
     return 0;
 }
 
-static int get_work(struct work_reader *r, uint64_t hash, struct global_work *work,
-                    struct error *err)
+/* The cache's records into work. */
+static int get_records(struct binary_reader *r, struct global_work *work, struct error *err)
 {
-    uint64_t n_maps, n_records, checksum;
-    if (get_header(r, hash, err) < 0 || get_uint(r, 4, "the header", &n_maps, err) < 0 ||
-        fits_in_file(r, n_maps, 1, "maps", err) < 0)
-        return -1;
-    if (n_maps == 0)
-        return error_set(err, r->name, 0, "holds no photon map");
-    global_work_add_maps(work, (size_t)n_maps);
-    for (size_t m = 0; m < work->n_maps; m++)
-        if (get_map(r, m, &work->maps[m], err) < 0)
-            return -1;
-    if (get_uint(r, 8, "the cache's header", &n_records, err) < 0 ||
-        fits_in_file(r, n_records, 8 * RECORD_DOUBLES, "cache records", err) < 0)
+    uint64_t n_records;
+    if (binary_get_uint(r, 8, "the cache's header", &n_records, err) < 0 ||
+        binary_fits(r, n_records, BINARY_DOUBLE_BYTES * RECORD_DOUBLES, "cache records",
+                    err) < 0)
         return -1;
     if (n_records > 0)
         work->records = xmalloc((size_t)n_records, sizeof *work->records, "cache records");
@@ -289,29 +203,46 @@ static int get_work(struct work_reader *r, uint64_t hash, struct global_work *wo
     for (size_t i = 0; i < work->n_records; i++)
         if (get_record(r, i, &work->records[i], err) < 0)
             return -1;
-    uint64_t sum = r->checksum;
-    if (get_uint(r, 8, "the checksum", &checksum, err) < 0)
-        return -1;
-    if (checksum != sum)
-        return error_set(err, r->name, 0, "damaged: its checksum is %016llx, its bytes sum "
-                         "to %016llx", (unsigned long long)checksum, (unsigned long long)sum);
-    if (getc(r->f) != EOF)
-        return error_set(err, r->name, 0, "unexpected bytes after the checksum");
     return 0;
+}
+
+/* The illumination maps into work, when the file holds them. */
+static int get_illumination(struct binary_reader *r, struct global_work *work,
+                            struct error *err)
+{
+    int present;
+    if (binary_get_flag(r, "the illumination maps' header", &present, err) < 0)
+        return -1;
+    if (!present)
+        return 0;
+    work->illumination = illumination_maps_read(r, err);
+    return work->illumination != NULL ? 0 : -1;
+}
+
+static int get_work(struct binary_reader *r, uint64_t hash, struct global_work *work,
+                    struct error *err)
+{
+    uint64_t n_maps;
+    if (get_header(r, hash, err) < 0 || binary_get_uint(r, 4, "the header", &n_maps, err) < 0 ||
+        binary_fits(r, n_maps, 1, "maps", err) < 0)
+        return -1;
+    if (n_maps == 0)
+        return error_set(err, r->name, 0, "holds no photon map");
+    global_work_add_maps(work, (size_t)n_maps);
+    for (size_t m = 0; m < work->n_maps; m++)
+        if (get_map(r, m, &work->maps[m], err) < 0)
+            return -1;
+    if (get_records(r, work, err) < 0 || get_illumination(r, work, err) < 0)
+        return -1;
+    return binary_get_checksum(r, err);
 }
 
 int work_file_read(const char *name, uint64_t hash, struct global_work *work,
                    struct error *err)
 {
-    struct work_reader r = {NULL, name, 0, FNV1A_OFFSET_BASIS};
-    r.f = fopen(name, "rb");
-    if (r.f == NULL)
-        return error_set(err, name, 0, "cannot open: %s", strerror(errno));
-    if (fseek(r.f, 0, SEEK_END) != 0 || (r.size = ftell(r.f)) < 0 ||
-        fseek(r.f, 0, SEEK_SET) != 0) {
-        fclose(r.f);
-        return error_set(err, name, 0, "cannot tell its size (is it a regular file?)");
-    }
+    struct binary_reader r;
+    if (binary_open(name, &r, err) < 0)
+        return -1;
     int status = get_work(&r, hash, work, err);
     fclose(r.f);
     return status;

@@ -2,11 +2,11 @@
  * app/work_file.h -- the file of a render's global work: --save-photons writes it,
  * --load-photons reads it (photon/global_work.h says what the work is).
  *
- * Every tile of an image repeats its mode's global work (the photon maps, and in 1994 and
- * 1996 the irradiance cache's pre-pass over the whole image); saved once and loaded by
- * each tile, it is done once. The file is binary; every number is little-endian whatever
- * the machine, and written byte by byte, so a file is the same from every compiler and
- * machine and is read on any of them:
+ * Every tile of an image repeats its mode's global work (the photon maps, 1994's
+ * illumination maps, and in 1994 and 1996 the irradiance cache's pre-pass over the whole
+ * image); saved once and loaded by each tile, it is done once. The file is binary; every
+ * number is little-endian whatever the machine, and written byte by byte (base/binary.h),
+ * so a file is the same from every compiler and machine and is read on any of them:
  *
  *   offset  bytes     field
  *   0       8         magic "photonGW" (Global Work)
@@ -23,12 +23,18 @@
  *   8                 number of irradiance-cache records R (0 for mode photons)
  *   224 R             records, 28 doubles each as the bits of IEEE 754 doubles:
  *                     p, n, E (3 each), R (1), grad_r[0..2], grad_t[0..2] (3 each)
+ *   1                 1 when illumination maps follow (1994 with --irradiance-store
+ *                     illumination), 0 when not (nothing more)
+ *   ...               the illumination maps, in the layout photon/illumination_map.h
+ *                     draws (illumination_map.c alone knows their insides)
  *   8                 checksum: FNV-1a 64 of every byte before it
  *
  * and nothing after. The maps are not balanced again on reading: each is checked
- * (kdtree_check) and used node for node, and the records are added to the cache in the
- * order written, so a render that loads the file renders the very bits of one that made
- * the work itself.
+ * (kdtree_check) and used node for node, the records are added to the cache in the
+ * order written, and the illumination maps come back element for element, so a render
+ * that loads the file renders the very bits of one that made the work itself.
+ *
+ * Versions: 1 had no illumination maps (and no byte saying so); 2 adds them.
  */
 #ifndef PHOTON_WORK_FILE_H
 #define PHOTON_WORK_FILE_H
@@ -39,7 +45,7 @@
 #include "../photon/global_work.h"
 
 #define WORK_FILE_MAGIC "photonGW" /* 8 bytes, no terminating zero in the file */
-#define WORK_FILE_VERSION 1
+#define WORK_FILE_VERSION 2
 
 /* Writes work (full) with hash to name, whole or not at all (output_open). -1 with *err
  * filled when it cannot be written. */
@@ -50,7 +56,8 @@ int work_file_write(const char *name, uint64_t hash, const struct global_work *w
  * case). -1 with *err ("FILE: message") when the file cannot be opened, is not such a
  * file, is of another version, was saved with another hash (another scene, mode, seed or
  * setting), is truncated or damaged (checksum), has bytes after its end, or holds a map
- * that is not a balanced kd-tree or a record that is not finite. */
+ * that is not a balanced kd-tree, a record that is not finite, or illumination maps of
+ * sides out of range or irradiances that are not finite. */
 int work_file_read(const char *name, uint64_t hash, struct global_work *work,
                    struct error *err);
 

@@ -39,9 +39,10 @@
  * cache's pre-pass from rng_stream(seed, STREAM_CACHE, pixel, 0); the pre-pass fills the
  * cache over the whole image before the final pass, which only reads it (a point no
  * record covers gathers on the spot and keeps nothing). So a crop equals the same window
- * of the whole image. The photon map, the CP tree and the filled cache are the global work
+ * of the whole image. The photon map, the CP tree, the illumination maps (sized by a
+ * pretrace of the whole image, not the crop) and the filled cache are the global work
  * every crop repeats; --load-photons reads them from a file instead (photon/
- * global_work.h; not with illumination maps, which the file does not hold).
+ * global_work.h).
  */
 #include "jensen1994.h"
 
@@ -537,13 +538,12 @@ static void tear_down(struct j94 *m)
 {
     free(m->strata);
     nearest_free(m->nn);
-    irradiance_cache_free(m->cache);
-    illumination_maps_free(m->stores.illumination); /* the trees are the work's */
+    irradiance_cache_free(m->cache); /* m->stores are the work's */
 }
 
 /* Pass 1 into work when it is empty (maps[0] the photon map, maps[1] the CP photons'
- * tree; illumination maps stay m->stores' own), else the trees work holds (loaded from a
- * file). m->stores borrows the trees from work. */
+ * tree, and the illumination maps when js asks for them), else the stores work holds
+ * (loaded from a file). m->stores borrows them from work. */
 static int photon_stores(struct j94 *m, const struct scene *scene,
                          const struct render_settings *rs, struct global_work *work,
                          struct error *err)
@@ -555,15 +555,19 @@ static int photon_stores(struct j94 *m, const struct scene *scene,
         global_work_add_maps(work, 2);
         work->maps[0] = m->stores.photons;
         work->maps[1] = m->stores.caustics;
+        work->illumination = m->stores.illumination;
         return 0;
     }
-    if (m->js->illumination_maps)
-        return error_set(err, "", 0, "--load-photons: saved work holds no illumination maps");
-    if (work->n_maps != 2 || work->maps[0] == NULL || work->maps[1] == NULL)
+    if (work->n_maps != 2 || work->maps[0] == NULL || work->maps[1] == NULL ||
+        (work->illumination != NULL) != (m->js->illumination_maps != 0))
         return error_set(err, "", 0, "--load-photons: the file does not hold the two photon "
-                                     "maps mode 1994 saves");
+                                     "maps (and, with --irradiance-store illumination, the "
+                                     "illumination maps) mode 1994 saves");
     m->stores.photons = work->maps[0];
     m->stores.caustics = work->maps[1];
+    m->stores.illumination = work->illumination;
+    if (work->illumination != NULL)
+        count_illumination(work->illumination, m->stats);
     m->stats->photons_stored = work->maps[0]->n_photons;
     m->stats->photons_caustic = work->maps[1]->n_photons;
     m->stats->bytes_photon_map = kdtree_bytes(work->maps[0]);
@@ -583,7 +587,7 @@ struct render_result render_jensen1994(const struct scene *scene,
     memset(&m, 0, sizeof m);
     m.stats = stats;
     m.js = js;
-    struct global_work own_work = {NULL, 0, NULL, 0}; /* without js->work: made, freed */
+    struct global_work own_work = {NULL, 0, NULL, 0, NULL}; /* without js->work: made, freed */
     struct global_work *work = js->work != NULL ? js->work : &own_work;
     int loaded = work->n_maps > 0;
     clock_t start = clock();

@@ -44,9 +44,9 @@ struct jensen1994_settings {
                               maps everywhere (Fig. 5)                                     */
     struct global_work *work; /* NULL: pass 1 and the cache's pre-pass run and are released
                                  here; else, empty, it receives their work (maps[0] the
-                                 photon map, maps[1] the CP photons' tree, the cache's
-                                 records), or, full, holds it to use instead (photon/
-                                 global_work.h); not with illumination maps              */
+                                 photon map, maps[1] the CP photons' tree, the illumination
+                                 maps, the cache's records), or, full, holds it to use
+                                 instead (photon/global_work.h)                          */
 };
 
 /* What the render did, for --stats (the paper's Fig. 9 and more). */
@@ -123,8 +123,8 @@ struct vec3 stored_irradiance(const struct irradiance_stores *stores,
  * whole image (jensen1994.c), so a crop equals the same window of the whole render; the
  * map and the cache come from js->work instead when it is full. Fails (result.image
  * NULL, *err filled) when more than MAX_PHOTONS photons would be stored, or js->work
- * holds other than two maps. The result's seconds include both passes and the
- * pre-pass. */
+ * holds other than two maps, or illumination maps where js asks for none or none where
+ * it asks for them. The result's seconds include both passes and the pre-pass. */
 struct render_result render_jensen1994(const struct scene *scene,
                                        const struct render_settings *rs,
                                        const struct jensen1994_settings *js, int want_variance,

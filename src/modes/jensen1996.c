@@ -259,7 +259,7 @@ static int borrow_maps(const struct scene *scene, const struct jensen1996_settin
     const struct global_work *work = js->work;
     size_t n_lights = js->shadow_photons ? scene->n_lights : 0;
     int fits = work->n_maps == 2 + n_lights && work->maps[0] != NULL &&
-               !(js->one_map && work->maps[1] != NULL);
+               !(js->one_map && work->maps[1] != NULL) && work->illumination == NULL;
     for (size_t l = 0; fits && l < n_lights; l++)
         fits = work->maps[2 + l] != NULL;
     if (!fits)
@@ -867,7 +867,7 @@ struct render_result render_jensen1996(const struct scene *scene,
     memset(stats, 0, sizeof *stats);
     struct j96 m;
     memset(&m, 0, sizeof m);
-    struct global_work own_work = {NULL, 0, NULL, 0}; /* without js->work: made, freed */
+    struct global_work own_work = {NULL, 0, NULL, 0, NULL}; /* without js->work: made, freed */
     struct jensen1996_settings with_work = *js;
     if (with_work.work == NULL)
         with_work.work = &own_work;

@@ -134,7 +134,8 @@ static const struct kdtree *global_map(const struct scene *scene,
             return NULL;
         global_work_add_maps(work, 1);
         work->maps[0] = map;
-    } else if (work->n_maps != 1 || work->maps[0] == NULL || work->n_records != 0) {
+    } else if (work->n_maps != 1 || work->maps[0] == NULL || work->n_records != 0 ||
+               work->illumination != NULL) {
         error_set(err, "", 0, "--load-photons: the file does not hold one photon map and "
                               "nothing else, as mode photons saves");
         return NULL;
@@ -168,7 +169,7 @@ struct render_result render_photons(const struct scene *scene, const struct rend
 {
     struct render_result result = {NULL, NULL, 0.0};
     memset(stats, 0, sizeof *stats);
-    struct global_work own_work = {NULL, 0, NULL, 0}; /* without ps->work: traced, freed */
+    struct global_work own_work = {NULL, 0, NULL, 0, NULL}; /* without ps->work: traced, freed */
     struct photon_settings with_work = *ps;
     if (with_work.work == NULL)
         with_work.work = &own_work;

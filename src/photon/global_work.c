@@ -37,8 +37,10 @@ void global_work_free(struct global_work *work)
         kdtree_free(work->maps[i]);
     free(work->maps);
     free(work->records);
+    illumination_maps_free(work->illumination);
     work->maps = NULL;
     work->n_maps = 0;
     work->records = NULL;
     work->n_records = 0;
+    work->illumination = NULL;
 }

@@ -2,11 +2,13 @@
  * photon/global_work.h -- the global work of a photon-map render: what a mode computes
  * before its final pass, the same whatever window is rendered.
  *
- * The photons, 1994 and 1996 modes trace their photon maps over the whole scene, and 1994
- * and 1996 fill their irradiance cache in a pre-pass over the whole image (modes/
- * cache_pass.h), so that a crop equals the same window of the whole render. Every tile of
- * an image would repeat that work; this record lets it be done once, saved
- * (--save-photons, app/work_file.h) and loaded by every tile (--load-photons).
+ * The photons, 1994 and 1996 modes trace their photon maps over the whole scene (1994
+ * with --irradiance-store illumination its illumination maps too, sized by a pretrace
+ * of the whole image), and 1994 and 1996 fill their irradiance cache in a pre-pass over
+ * the whole image (modes/cache_pass.h), so that a crop equals the same window of the
+ * whole render. Every tile of an image would repeat that work; this record lets it be
+ * done once, saved (--save-photons, app/work_file.h) and loaded by every tile
+ * (--load-photons).
  *
  * Life of a record: the caller zeroes it and hands it to the mode's render. Empty
  * (n_maps == 0), the mode builds its work into it; full (read from a file), the mode uses
@@ -18,6 +20,7 @@
 
 #include <stddef.h>
 
+#include "illumination_map.h"
 #include "irradiance_cache.h"
 #include "kdtree.h"
 
@@ -30,6 +33,8 @@ struct global_work {
                                           order irradiance_cache_copy_records() gives;
                                           NULL when n_records is 0                       */
     size_t n_records;
+    struct illumination_maps *illumination; /* owned, finished: 1994's with
+                                               --irradiance-store illumination; else NULL */
 };
 
 /* Makes room for n_maps maps, all NULL, in an empty record (n_maps >= 1). */

@@ -12,9 +12,11 @@
 
 #include <assert.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "../base/alloc.h"
+#include "../base/binary.h"
 
 struct di_map {
     int res_u, res_v; /* elements along u and v, 1..ILLUMINATION_MAX_SIDE        */
@@ -29,6 +31,44 @@ struct illumination_maps {
     size_t n_prims;
     int finished;
 };
+
+static size_t di_elements(const struct di_map *d)
+{
+    return (size_t)d->res_u * (size_t)d->res_v;
+}
+
+static size_t ci_elements(const struct di_map *d)
+{
+    return (size_t)d->ci_side * (size_t)d->ci_side;
+}
+
+/* A DI map of the given sides, every element 0 and without a CI sub-map. */
+static struct di_map *di_map_alloc(int res_u, int res_v, int ci_side)
+{
+    struct di_map *d = xmalloc(1, sizeof *d, "illumination map");
+    d->res_u = res_u;
+    d->res_v = res_v;
+    d->ci_side = ci_side;
+    d->di = xcalloc(3 * di_elements(d), sizeof *d->di, "illumination map");
+    d->ci = xcalloc(di_elements(d), sizeof *d->ci, "illumination map");
+    return d;
+}
+
+/* A CI sub-map for d, every element 0. */
+static double *ci_map_alloc(const struct di_map *d)
+{
+    return xcalloc(3 * ci_elements(d), sizeof *d->di, "caustic illumination map");
+}
+
+/* Maps for n_prims primitives, none covered yet. */
+static struct illumination_maps *maps_alloc(size_t n_prims, int finished)
+{
+    struct illumination_maps *maps = xmalloc(1, sizeof *maps, "illumination maps");
+    maps->n_prims = n_prims;
+    maps->maps = xcalloc(n_prims > 0 ? n_prims : 1, sizeof *maps->maps, "illumination maps");
+    maps->finished = finished;
+    return maps;
+}
 
 /* Elements along one parameter for an extent of length over elements of side h. */
 static int elements_along(double length, double h)
@@ -45,26 +85,16 @@ static struct di_map *di_map_create(const struct geometry *g, int prim, double h
     double length_u, length_v;
     if (!geometry_uv_extent(g, prim, &length_u, &length_v))
         return NULL;
-    struct di_map *d = xmalloc(1, sizeof *d, "illumination map");
-    d->res_u = elements_along(length_u, h);
-    d->res_v = elements_along(length_v, h);
     double side = footprint > 0 ? ceil(h / footprint) : 1;
-    d->ci_side = side > ILLUMINATION_CI_MAX_SIDE ? ILLUMINATION_CI_MAX_SIDE : (int)side;
-    size_t n = (size_t)d->res_u * (size_t)d->res_v;
-    d->di = xcalloc(3 * n, sizeof *d->di, "illumination map");
-    d->ci = xcalloc(n, sizeof *d->ci, "illumination map");
-    return d;
+    return di_map_alloc(elements_along(length_u, h), elements_along(length_v, h),
+                        side > ILLUMINATION_CI_MAX_SIDE ? ILLUMINATION_CI_MAX_SIDE : (int)side);
 }
 
 struct illumination_maps *illumination_maps_create(const struct geometry *g, double diagonal,
                                                    const double *footprint)
 {
     assert(diagonal > 0 && isfinite(diagonal));
-    struct illumination_maps *maps = xmalloc(1, sizeof *maps, "illumination maps");
-    maps->n_prims = geometry_primitive_count(g);
-    maps->maps = xcalloc(maps->n_prims > 0 ? maps->n_prims : 1, sizeof *maps->maps,
-                         "illumination maps");
-    maps->finished = 0;
+    struct illumination_maps *maps = maps_alloc(geometry_primitive_count(g), 0);
     double h = diagonal / ILLUMINATION_DI_PER_DIAGONAL;
     for (size_t i = 0; i < maps->n_prims; i++)
         maps->maps[i] = di_map_create(g, (int)i, h, footprint != NULL ? footprint[i] : 0);
@@ -79,7 +109,7 @@ void illumination_maps_free(struct illumination_maps *maps)
         struct di_map *d = maps->maps[i];
         if (d == NULL)
             continue;
-        for (size_t e = 0; e < (size_t)d->res_u * (size_t)d->res_v; e++)
+        for (size_t e = 0; e < di_elements(d); e++)
             free(d->ci[e]);
         free(d->ci);
         free(d->di);
@@ -130,8 +160,7 @@ void illumination_deposit(struct illumination_maps *maps, int prim, double u, do
         return;
     }
     if (d->ci[di] == NULL) /* the first caustic photon in this element: its CI sub-map */
-        d->ci[di] = xcalloc(3 * (size_t)d->ci_side * (size_t)d->ci_side, sizeof *d->ci[di],
-                            "caustic illumination map");
+        d->ci[di] = ci_map_alloc(d);
     add_energy(&d->ci[di][3 * ci], energy);
 }
 
@@ -194,15 +223,132 @@ struct illumination_stats illumination_maps_stats(const struct illumination_maps
         const struct di_map *d = maps->maps[i];
         if (d == NULL)
             continue;
-        size_t n = (size_t)d->res_u * (size_t)d->res_v;
+        size_t n = di_elements(d);
         st.n_maps++;
         st.di_elements += n;
         st.bytes += sizeof *d + n * (3 * sizeof *d->di + sizeof *d->ci);
         for (size_t e = 0; e < n; e++)
             if (d->ci[e] != NULL) {
                 st.ci_maps++;
-                st.bytes += 3 * (size_t)d->ci_side * (size_t)d->ci_side * sizeof *d->ci[e];
+                st.bytes += 3 * ci_elements(d) * sizeof *d->ci[e];
             }
     }
     return st;
+}
+
+/* ---- Saving and loading (the layout illumination_map.h draws) ---------------------- */
+
+static void put_irradiances(struct binary_writer *w, const double *values, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        binary_put_double(w, values[i]);
+}
+
+static void write_map(const struct di_map *d, struct binary_writer *w)
+{
+    binary_put_uint(w, (uint64_t)d->res_u, 2);
+    binary_put_uint(w, (uint64_t)d->res_v, 2);
+    binary_put_uint(w, (uint64_t)d->ci_side, 1);
+    put_irradiances(w, d->di, 3 * di_elements(d));
+    for (size_t e = 0; e < di_elements(d); e++) {
+        binary_put_uint(w, d->ci[e] != NULL, 1);
+        if (d->ci[e] != NULL)
+            put_irradiances(w, d->ci[e], 3 * ci_elements(d));
+    }
+}
+
+void illumination_maps_write(const struct illumination_maps *maps, struct binary_writer *w)
+{
+    assert(maps->finished);
+    binary_put_uint(w, maps->n_prims, 4);
+    for (size_t i = 0; i < maps->n_prims; i++) {
+        binary_put_uint(w, maps->maps[i] != NULL, 1);
+        if (maps->maps[i] != NULL)
+            write_map(maps->maps[i], w);
+    }
+}
+
+/* n irradiances into values (the caller has checked that the file holds their bytes);
+ * what names the map for messages. */
+static int get_irradiances(struct binary_reader *r, const char *what, double *values,
+                           size_t n, struct error *err)
+{
+    for (size_t i = 0; i < n; i++)
+        if (binary_get_double(r, what, &values[i], err) < 0)
+            return -1;
+    return 0;
+}
+
+/* One of a map's sides, of n_bytes, from 1 to max elements. */
+static int get_side(struct binary_reader *r, const char *what, int n_bytes, int max, int *side,
+                    struct error *err)
+{
+    uint64_t v;
+    if (binary_get_uint(r, n_bytes, what, &v, err) < 0)
+        return -1;
+    if (v < 1 || v > (uint64_t)max)
+        return error_set(err, r->name, 0, "%s: %llu elements along a side, not 1 to %d", what,
+                         (unsigned long long)v, max);
+    *side = (int)v;
+    return 0;
+}
+
+/* Each DI element's flag and, where it is 1, its CI sub-map, into d. */
+static int read_ci_maps(struct binary_reader *r, const char *what, struct di_map *d,
+                        struct error *err)
+{
+    for (size_t e = 0; e < di_elements(d); e++) {
+        int has_ci;
+        if (binary_get_flag(r, what, &has_ci, err) < 0)
+            return -1;
+        if (!has_ci)
+            continue;
+        if (binary_fits(r, 3 * ci_elements(d), BINARY_DOUBLE_BYTES, "CI irradiances",
+                        err) < 0)
+            return -1;
+        d->ci[e] = ci_map_alloc(d);
+        if (get_irradiances(r, what, d->ci[e], 3 * ci_elements(d), err) < 0)
+            return -1;
+    }
+    return 0;
+}
+
+/* Primitive prim's entry into maps->maps[prim], which owns what is read even when the
+ * file fails part way. */
+static int read_map(struct binary_reader *r, size_t prim, struct illumination_maps *maps,
+                    struct error *err)
+{
+    char what[64];
+    snprintf(what, sizeof what, "the illumination map of primitive %zu", prim);
+    int present, res_u, res_v, ci_side;
+    if (binary_get_flag(r, what, &present, err) < 0)
+        return -1;
+    if (!present)
+        return 0;
+    if (get_side(r, what, 2, ILLUMINATION_MAX_SIDE, &res_u, err) < 0 ||
+        get_side(r, what, 2, ILLUMINATION_MAX_SIDE, &res_v, err) < 0 ||
+        get_side(r, what, 1, ILLUMINATION_CI_MAX_SIDE, &ci_side, err) < 0 ||
+        binary_fits(r, 3 * (uint64_t)res_u * (uint64_t)res_v, BINARY_DOUBLE_BYTES,
+                    "DI irradiances", err) < 0)
+        return -1;
+    struct di_map *d = di_map_alloc(res_u, res_v, ci_side);
+    maps->maps[prim] = d;
+    if (get_irradiances(r, what, d->di, 3 * di_elements(d), err) < 0)
+        return -1;
+    return read_ci_maps(r, what, d, err);
+}
+
+struct illumination_maps *illumination_maps_read(struct binary_reader *r, struct error *err)
+{
+    uint64_t n_prims;
+    if (binary_get_uint(r, 4, "the illumination maps' header", &n_prims, err) < 0 ||
+        binary_fits(r, n_prims, 1, "illumination maps", err) < 0)
+        return NULL;
+    struct illumination_maps *maps = maps_alloc((size_t)n_prims, 1);
+    for (size_t i = 0; i < maps->n_prims; i++)
+        if (read_map(r, i, maps, err) < 0) {
+            illumination_maps_free(maps);
+            return NULL;
+        }
+    return maps;
 }

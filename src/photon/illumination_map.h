@@ -25,12 +25,30 @@
  * elements about the footprint the caller measured for the surface across, at most
  * ILLUMINATION_CI_MAX_SIDE to a DI element's side (256 times DI's elements; the paper
  * found "25-100 times" typical); a surface no pixel sees gets CI elements of DI's size.
+ *
+ * Saved (--save-photons, app/work_file.h), finished maps are these bytes, every number
+ * lowest byte first and each irradiance the IEEE 754 bits of a double (base/binary.h):
+ *
+ *   bytes            field
+ *   4                P, the primitives of the scene the maps were made for
+ *   then P entries, primitive by primitive:
+ *     1              1 when it has a DI map, 0 when not (nothing more)
+ *     2, 2           res_u, res_v: DI elements along u and v, 1..ILLUMINATION_MAX_SIDE
+ *     1              ci_side: a CI sub-map's elements along u and v, 1..ILLUMINATION_CI_MAX_SIDE
+ *     24 res_u res_v the DI elements' irradiances, R G B, row by row (v the row)
+ *     then for each DI element, in the same order:
+ *       1            1 when it has a CI sub-map, 0 when not (nothing more)
+ *       24 ci_side^2 the sub-map's elements' irradiances, R G B, row by row
+ *
+ * which is all a finished map holds, so maps read back answer every lookup as the maps
+ * written did, bit for bit.
  */
 #ifndef PHOTON_ILLUMINATION_MAP_H
 #define PHOTON_ILLUMINATION_MAP_H
 
 #include <stddef.h>
 
+#include "../base/error.h"
 #include "../base/vec3.h"
 #include "../geom/geometry.h"
 
@@ -76,5 +94,17 @@ struct vec3 illumination_irradiance(const struct illumination_maps *maps, int pr
                                     double v, int caustic_only);
 
 struct illumination_stats illumination_maps_stats(const struct illumination_maps *maps);
+
+struct binary_writer;
+struct binary_reader;
+
+/* Writes maps (finished) to w in the layout drawn above. */
+void illumination_maps_write(const struct illumination_maps *maps, struct binary_writer *w);
+
+/* Finished maps read from r in the layout drawn above. NULL with *err ("FILE: message"),
+ * and nothing left allocated, when the file ends inside them or a side is out of range or
+ * an irradiance is not finite (every count is checked against the bytes left before it is
+ * allocated). */
+struct illumination_maps *illumination_maps_read(struct binary_reader *r, struct error *err);
 
 #endif
