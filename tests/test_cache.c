@@ -314,9 +314,9 @@ static double square_hit(const struct glowing_square *sq, struct vec3 p, struct 
 
 /* The record a final gather at p makes: rays ray x ray per stratum, on the
  * midpoints of a grid in (u1, u2); L_jk the fraction that hit, r_jk the nearest
- * hit. */
+ * hit; radii from r_min to 100. */
 static struct irradiance_record square_record(const struct glowing_square *sq, struct vec3 p, int m,
-                                              int n_phi, int rays)
+                                              int n_phi, int rays, double r_min)
 {
     static struct stratum_sample samples[STRATA_MAX];
     for (int j = 0; j < m; j++) {
@@ -334,7 +334,7 @@ static struct irradiance_record square_record(const struct glowing_square *sq, s
             samples[j * n_phi + k].distance = nearest;
         }
     }
-    return irradiance_record_make(p, sq->t, sq->b, sq->n, m, n_phi, samples, 1e-3, 100);
+    return irradiance_record_make(p, sq->t, sq->b, sq->n, m, n_phi, samples, r_min, 100);
 }
 
 /* truth: Lambert's closed form for the square's irradiance (truths.c), and its
@@ -355,7 +355,8 @@ static struct irradiance_record square_record(const struct glowing_square *sq, s
  * axis of symmetry at n = 32, which the symmetric point checks to 1e-9.
  * catches: the above, and a world-space conversion with t and b swapped or the
  * gradient out of the tangent plane. */
-static void test_translational_gradient(struct check *t)
+/* The square of the gradient tests: tilted, 1 above the plane, off centre. */
+static struct glowing_square test_square(void)
 {
     struct glowing_square sq;
     sq.p0 = vec3(0.3, -0.2, 0.5);
@@ -366,19 +367,40 @@ static void test_translational_gradient(struct check *t)
     sq.x1 = 1.4;
     sq.y0 = -0.3;
     sq.y1 = 0.9;
-    static const double offsets[][2] = {{0, 0}, {1.3, 0.8}, {-0.5, 0.3}};
+    return sq;
+}
+
+/* The three points of the gradient tests: off to one side, under a corner, and on the
+ * square's axis of symmetry. */
+static const double square_offsets[3][2] = {{0, 0}, {1.3, 0.8}, {-0.5, 0.3}};
+
+static struct vec3 square_point(const struct glowing_square *sq, int i)
+{
+    return vec3_add(sq->p0, vec3_add(vec3_scale(sq->t, square_offsets[i][0]),
+                                     vec3_scale(sq->b, square_offsets[i][1])));
+}
+
+/* The closed-form gradient of the square's irradiance at p along t and b, by central
+ * differences of Lambert's formula (step 1e-5: error ~1e-10). */
+static void square_gradient(const struct glowing_square *sq, struct vec3 p, double *dx,
+                            double *dy)
+{
     const double step = 1e-5;
+    *dx = (square_irradiance(sq, vec3_madd(p, sq->t, step)) -
+           square_irradiance(sq, vec3_madd(p, sq->t, -step))) / (2 * step);
+    *dy = (square_irradiance(sq, vec3_madd(p, sq->b, step)) -
+           square_irradiance(sq, vec3_madd(p, sq->b, -step))) / (2 * step);
+}
+
+static void test_translational_gradient(struct check *t)
+{
+    struct glowing_square sq = test_square();
     for (int i = 0; i < 3; i++) {
-        struct vec3 p = vec3_add(
-            sq.p0, vec3_add(vec3_scale(sq.t, offsets[i][0]), vec3_scale(sq.b, offsets[i][1])));
-        struct irradiance_record r = square_record(&sq, p, 64, 64, 4);
+        struct vec3 p = square_point(&sq, i);
+        struct irradiance_record r = square_record(&sq, p, 64, 64, 4, 1e-3);
         CHECK(t, close_to(r.e.x, square_irradiance(&sq, p), 0.005));
-        double dx = (square_irradiance(&sq, vec3_madd(p, sq.t, step)) -
-                     square_irradiance(&sq, vec3_madd(p, sq.t, -step))) /
-                    (2 * step);
-        double dy = (square_irradiance(&sq, vec3_madd(p, sq.b, step)) -
-                     square_irradiance(&sq, vec3_madd(p, sq.b, -step))) /
-                    (2 * step);
+        double dx, dy;
+        square_gradient(&sq, p, &dx, &dy);
         struct vec3 g = r.grad_t[0];
         double error = hypot(vec3_dot(g, sq.t) - dx, vec3_dot(g, sq.b) - dy);
         CHECK(t, error <= 0.015 * hypot(dx, dy));
@@ -386,6 +408,29 @@ static void test_translational_gradient(struct check *t)
         if (i == 2)
             CHECK(t, fabs(vec3_dot(g, sq.b)) <= 1e-9 * vec3_length(g));
         CHECK(t, vec3_length(r.grad_t[1]) == 0 && vec3_length(r.grad_r[2]) == 0);
+    }
+}
+
+/* truth: the closed-form E and gradient of the glowing square (above). Most of each
+ *   point's strata see nothing, so the harmonic mean distance is several times the
+ *   square's height (measured 7.3, 5.6 and 18.7), while E / |grad E| is 0.54 to 0.77:
+ *   the record's R must be E / |grad E| of the closed forms, within 2% (E within 0.5% and
+ *   the gradient within 1.5%, above; measured 0.4% to 0.5%). With r_min above that
+ *   limit, R is r_min.
+ * catches: the limit left out, E's luminance set against one channel's gradient or the
+ *   reverse (only red is lit here: 0.2126 or 1 / 0.2126 off), the limit overriding r_min,
+ *   E / |grad| inverted. */
+static void test_gradient_limits_radius(struct check *t)
+{
+    struct glowing_square sq = test_square();
+    for (int i = 0; i < 3; i++) {
+        struct vec3 p = square_point(&sq, i);
+        double dx, dy;
+        square_gradient(&sq, p, &dx, &dy);
+        double limit = square_irradiance(&sq, p) / hypot(dx, dy);
+        struct irradiance_record r = square_record(&sq, p, 64, 64, 4, 1e-3);
+        CHECK(t, close_to(r.r, limit, 0.02));
+        CHECK(t, square_record(&sq, p, 64, 64, 4, 2 * limit).r == 2 * limit);
     }
 }
 
@@ -588,6 +633,7 @@ void test_cache(struct check *t)
     RUN_TEST(t, test_rotational_gradient);
     RUN_TEST(t, test_rotational_gradient_in_lookup);
     RUN_TEST(t, test_translational_gradient);
+    RUN_TEST(t, test_gradient_limits_radius);
     RUN_TEST(t, test_lookup_matches_brute_force);
     RUN_TEST(t, test_lookup_boundaries);
 }

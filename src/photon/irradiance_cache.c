@@ -210,6 +210,23 @@ static void translational_gradient(int m, int n_phi, const struct stratum_sample
     gradient_to_world(gx, gy, t, b, grad_t);
 }
 
+/* R_i no larger than E_i / |grad_t E_i| (luminance), and no smaller than r_min. Departs
+ * from Ward and Heckbert, whose R_i is the harmonic mean distance alone: where the
+ * irradiance changes fast, a record now reaches only as far as its gradient stays a small
+ * correction (at a R_i it moves E_i by at most a E_i), so a lookup does not extend a
+ * straight line across a shadow's edge. */
+static double gradient_limited_radius(double r, struct vec3 e, const struct vec3 grad_t[3],
+                                      double r_min)
+{
+    struct vec3 grad = vec3(vec3_luminance(vec3(grad_t[0].x, grad_t[1].x, grad_t[2].x)),
+                            vec3_luminance(vec3(grad_t[0].y, grad_t[1].y, grad_t[2].y)),
+                            vec3_luminance(vec3(grad_t[0].z, grad_t[1].z, grad_t[2].z)));
+    double slope = vec3_length(grad), level = vec3_luminance(e);
+    if (slope * r <= level)
+        return r;
+    return fmax(level / slope, r_min);
+}
+
 struct irradiance_record irradiance_record_make(struct vec3 p, struct vec3 t, struct vec3 b,
                                                 struct vec3 n, int m, int n_phi,
                                                 const struct stratum_sample *samples,
@@ -228,6 +245,7 @@ struct irradiance_record irradiance_record_make(struct vec3 p, struct vec3 t, st
     if (n_phi > 1) {
         rotational_gradient(m, n_phi, samples, t, b, record.grad_r);
         translational_gradient(m, n_phi, samples, r_min, t, b, record.grad_t);
+        record.r = gradient_limited_radius(record.r, record.e, record.grad_t, r_min);
     } else { /* one sector cannot tell one tangent direction from another */
         for (int c = 0; c < 3; c++)
             record.grad_r[c] = record.grad_t[c] = vec3_zero();

@@ -61,7 +61,7 @@ struct irradiance_record {
     struct vec3 p;         /* p_i, position                                               */
     struct vec3 n;         /* n_i, unit normal                                            */
     struct vec3 e;         /* E_i, irradiance per channel (W/m^2)                         */
-    double r;              /* R_i: harmonic mean distance of the strata, clamped; > 0     */
+    double r;              /* R_i: harmonic mean distance of the strata, bounded; > 0     */
     struct vec3 grad_r[3]; /* rotational gradient of channel c (R, G, B), world space:
                               dE_c ~ (n_i x n) . grad_r[c]; perpendicular to n_i          */
     struct vec3 grad_t[3]; /* translational gradient of channel c, world space:
@@ -74,7 +74,8 @@ struct irradiance_record {
  * 0 < r_min <= r_max.
  *   E = pi / (m n) sum L_jk;
  *   R = harmonic mean of r_jk (escaped strata count as infinitely far, adding 0 to the
- *       sum of 1 / r; R = r_max when all escaped), clamped to [r_min, r_max];
+ *       sum of 1 / r; R = r_max when all escaped), clamped to [r_min, r_max], then no
+ *       more than E / |grad_t E| in luminance unless that is below r_min;
  *   the rotational and translational gradients of Ward and Heckbert 1992 (formulas in
  *   irradiance_cache.c). Allocates nothing. */
 struct irradiance_record irradiance_record_make(struct vec3 p, struct vec3 t, struct vec3 b,
