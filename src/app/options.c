@@ -118,7 +118,8 @@ static const struct option_spec specs[] = {
     {"--alpha", OPT_REAL, FIELD(alpha), 0, 1, "A",
      "2008: fraction of new photons kept, 0 < A < 1 (Eq. 7; default 0.7)"},
     {"--radius", OPT_REAL, FIELD(radius), 0, 1e30, "R",
-     "2008: initial radius in scene units (default: one pixel footprint at each hit point)"},
+     "2008: initial radius in scene units (default: one pixel footprint at each hit point, "
+     "shortened by a wall across its disc)"},
     {"--checkpoint", OPT_INT, FIELD(checkpoint), 1, MAX_PASSES, "K",
      "2008: write the image (-o) every K passes, each write complete (default: at the end)"},
     {"--exposure", OPT_REAL, FIELD(exposure), 0, 1e30, "E",

@@ -27,9 +27,12 @@
  * tan(fov / 2) / height. It scales with the scene (millimetres or kilometres alike) and is
  * the hit point's own, so a crop starts with the radii the whole image has. Mirrors and
  * lenses change a pixel's real footprint; this ignores that, which only moves the start.
- * The disc's bias where it reaches past a surface's edge (a corner, an open side) and
- * the noise of few photons both depend on R0, in opposite ways; README, `--mode 2008`,
- * has the measurements.
+ * The disc's bias where it reaches past a surface's edge and the noise of few photons
+ * both depend on R0, in opposite ways. Where a wall meets the surface (a corner), no
+ * photon lands in the part of the disc beyond it, though pi R^2 counts it: so a hit
+ * point's R0 stops at the nearest wall that rays along its tangent plane find (departs
+ * from the paper, which leaves R0 to the user; an open edge, where the surface just ends,
+ * is not found this way). README, `--mode 2008`, has the measurements.
  *
  * Determinism: photon i of pass p draws from rng_stream(seed, STREAM_PHOTON, p, i) and eye
  * sample s of pixel (x, y) from its camera stream (render.h); each hit point receives its
@@ -48,6 +51,9 @@
 #include "../photon/hit_points.h"
 #include "../photon/trace.h"
 #include "surface.h"
+
+#define PPM_WALL_PROBES 8   /* tangent directions searched for a wall across the disc */
+#define PPM_WALL_FLOOR 0.25 /* the shortest initial radius, as a part of the footprint's */
 
 
 struct ppm {
@@ -101,6 +107,29 @@ struct eye_path {
                          0: only sees emission (a photon pass's ray)   */
 };
 
+/* The initial radius r0, shortened to the nearest wall across the hit point's disc:
+ * PPM_WALL_PROBES rays along the surface's tangent plane, each as long as the radius so
+ * far. A wall is a surface turned more than 60 degrees from this one; a surface that
+ * curves gently up to meet the ray (the inside of a sphere) is the same surface, whose
+ * photons the disc rightly counts. Never below PPM_WALL_FLOOR of r0. */
+static double disc_clear_of_walls(const struct ppm *ppm, const struct surface *s, double r0)
+{
+    struct vec3 t, b;
+    vec3_frame(s->ng, &t, &b);
+    struct vec3 origin = offset_origin(s->p, s->ng);
+    double r = r0;
+    for (int k = 0; k < PPM_WALL_PROBES; k++) {
+        double phi = 2 * PI * k / PPM_WALL_PROBES;
+        struct vec3 along = vec3_add(vec3_scale(t, cos(phi)), vec3_scale(b, sin(phi)));
+        struct hit hit;
+        ppm->counters->rays++;
+        if (scene_intersect(ppm->scene, make_ray(origin, along), r, &hit) &&
+            fabs(vec3_dot(hit.ng, s->ng)) < 0.5)
+            r = hit.t;
+    }
+    return fmax(r, PPM_WALL_FLOOR * r0);
+}
+
 /* Stores a hit point at s, reached by the eye path. */
 static void store_hit_point(struct ppm *ppm, const struct surface *s,
                             const struct shading_frame *frame, const struct eye_path *path)
@@ -120,7 +149,8 @@ static void store_hit_point(struct ppm *ppm, const struct surface *s,
     hp->weight = vec3_scale(path->beta, 1.0 / ppm->rs->spp); /* the box filter's share; spp >= 1 */
     hp->radius = ppm->ps->radius > 0
                      ? ppm->ps->radius
-                     : PPM_INITIAL_FOOTPRINTS * path->distance * ppm->footprint_per_distance;
+                     : disc_clear_of_walls(ppm, s, PPM_INITIAL_FOOTPRINTS * path->distance *
+                                                       ppm->footprint_per_distance);
     hp->n_photons = 0.0;
     hp->tau = vec3_zero();
     hp->m_photons = 0;

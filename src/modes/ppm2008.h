@@ -13,10 +13,11 @@
 #define PPM_DEFAULT_PHOTONS_PER_PASS 100000 /* the paper's (Sec. 5)                      */
 #define PPM_DEFAULT_PASSES 64               /* about 50 s on the Cornell box              */
 #define PPM_DEFAULT_ALPHA 0.7               /* the paper's (Sec. 5)                      */
-#define PPM_DEFAULT_SPP 16                  /* eye rays per pixel, fixed for the whole render:
-                                               with 4, the light's outline alone puts blocks
-                                               beside it 4-18% off (README); each costs a hit
-                                               point of ~300 bytes                         */
+#define PPM_DEFAULT_SPP 16                  /* eye rays per pixel that store hit points,
+                                               fixed for the whole render (each pass adds
+                                               one that only sees emission): edges in the
+                                               photon estimate keep their aliasing; each
+                                               costs a hit point of ~300 bytes (README)   */
 #define PPM_INITIAL_FOOTPRINTS 1.0          /* default R0 in pixel footprints: the paper's
                                                "footprint of the pixel" (Sec. 4)          */
 #define MAX_PASSES 100000000                /* documented limit on --passes              */
@@ -38,7 +39,8 @@ struct ppm_settings {
     double alpha;                     /* Eq. 7: fraction of new photons kept, (0, 1)     */
     double radius;                    /* > 0: R0 of every hit point, in scene units;
                                          <= 0: PPM_INITIAL_FOOTPRINTS pixel footprints
-                                         at the hit point (see ppm2008.c)               */
+                                         at the hit point, shortened by a wall across
+                                         the disc (see ppm2008.c)                       */
     const struct checkpoint *report;  /* borrowed or NULL: gets the image after passes 1,
                                          2, 4, ... and the last, work = photons emitted  */
     long snapshot_every;              /* > 0: call snapshot after every this many passes */
