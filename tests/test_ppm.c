@@ -265,7 +265,6 @@ static void test_disc_clear_of_walls(struct check *t)
                 n++;
             }
         }
-    fprintf(stderr, "wall band n %d mean %g\n", n, sum / n);
     CHECK(t, n >= 8 && fabs(sum / n) <= 0.02);
     render_result_free(&result);
     scene_free(scene);
