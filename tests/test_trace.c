@@ -897,9 +897,14 @@ static void test_illumination_maps(struct check *t)
     CHECK_CLOSE(t, geometry_uv_area(g, 1, 0, 0.25, 0, 0.5), 0.49 * 2 * PI * 0.25, 1e-12);
     CHECK(t, geometry_uv_area(g, 2, 0, 1, 0, 1) == -1 && !geometry_uv_extent(g, 2, &lu, &lv));
     static const double footprint[3] = {1.0 / 256, 1.0 / 256, 0}; /* CI 8 x 8 per DI */
-    struct illumination_maps *maps = illumination_maps_create(g, 2.0, footprint);
+    struct illumination_maps *maps = illumination_maps_create(g, 2.0, footprint, NULL);
     CHECK(t, illumination_covers(maps, 0) && illumination_covers(maps, 1) &&
              !illumination_covers(maps, 2));
+    static const unsigned char only_the_square[3] = {1, 0, 1};
+    struct illumination_maps *square = illumination_maps_create(g, 2.0, footprint,
+                                                                only_the_square);
+    CHECK(t, illumination_covers(square, 0) && !illumination_covers(square, 1));
+    illumination_maps_free(square);
     int n_u[2], n_v[2]; /* elements: about 2 / 64 across */
     for (int prim = 0; prim < 2; prim++) {
         geometry_uv_extent(g, prim, &lu, &lv);

@@ -164,6 +164,21 @@ static double *pretrace_footprints(const struct scene *scene)
     return footprint;
 }
 
+/* Per primitive, whether photons can be stored on it (a non-specular part): mirrors and
+ * glass get no illumination map, since no photon would ever reach one. Owned by the
+ * caller. */
+static unsigned char *receiving_primitives(const struct scene *scene)
+{
+    size_t n_prims = geometry_primitive_count(scene->geometry);
+    unsigned char *receives = xmalloc(n_prims > 0 ? n_prims : 1, sizeof *receives,
+                                      "receiving primitives");
+    for (size_t i = 0; i < n_prims; i++) {
+        int material = geometry_primitive_material(scene->geometry, (int)i);
+        receives[i] = (unsigned char)brdf_has_diffuse(&scene->materials[material]);
+    }
+    return receives;
+}
+
 /* A kd-tree of copies of the CP photons among traced's (departs from Sec. 3.3, which
  * keeps one map and tells CP photons by their bit: searched for CP photons alone, that
  * map must visit every photon within the radius wherever caustics are sparse or absent,
@@ -210,8 +225,10 @@ int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
     d.illumination = NULL;
     if (js->illumination_maps) {
         double *footprint = pretrace_footprints(scene);
+        unsigned char *receives = receiving_primitives(scene);
         d.illumination = illumination_maps_create(scene->geometry, scene_diagonal(scene),
-                                                  footprint);
+                                                  footprint, receives);
+        free(receives);
         free(footprint);
     }
     if (trace_light_paths(scene, &ts, js, &d, stats) < 0) {

@@ -91,13 +91,15 @@ static struct di_map *di_map_create(const struct geometry *g, int prim, double h
 }
 
 struct illumination_maps *illumination_maps_create(const struct geometry *g, double diagonal,
-                                                   const double *footprint)
+                                                   const double *footprint,
+                                                   const unsigned char *receives)
 {
     assert(diagonal > 0 && isfinite(diagonal));
     struct illumination_maps *maps = maps_alloc(geometry_primitive_count(g), 0);
     double h = diagonal / ILLUMINATION_DI_PER_DIAGONAL;
     for (size_t i = 0; i < maps->n_prims; i++)
-        maps->maps[i] = di_map_create(g, (int)i, h, footprint != NULL ? footprint[i] : 0);
+        if (receives == NULL || receives[i])
+            maps->maps[i] = di_map_create(g, (int)i, h, footprint != NULL ? footprint[i] : 0);
     return maps;
 }
 

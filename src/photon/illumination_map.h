@@ -66,12 +66,15 @@ struct illumination_stats {
     size_t bytes;
 };
 
-/* Empty maps for every primitive of g (built) that has surface parameters, with DI
- * elements about diagonal / ILLUMINATION_DI_PER_DIAGONAL across (diagonal > 0, finite)
- * and CI elements about footprint[prim] across (footprint: one entry per primitive, 0
- * for one no pixel sees; NULL: CI elements of DI's size everywhere). */
+/* Empty maps for every primitive of g (built) that has surface parameters and can hold
+ * photons (receives: one entry per primitive, nonzero where a photon can be stored, e.g.
+ * not on a mirror; NULL: everywhere), with DI elements about diagonal /
+ * ILLUMINATION_DI_PER_DIAGONAL across (diagonal > 0, finite) and CI elements about
+ * footprint[prim] across (footprint: one entry per primitive, 0 for one no pixel sees;
+ * NULL: CI elements of DI's size everywhere). */
 struct illumination_maps *illumination_maps_create(const struct geometry *g, double diagonal,
-                                                   const double *footprint);
+                                                   const double *footprint,
+                                                   const unsigned char *receives);
 void illumination_maps_free(struct illumination_maps *maps); /* NULL is a no-op */
 
 /* Whether primitive prim has a map (a photon landing on it belongs there). */
