@@ -142,6 +142,16 @@ static struct ppm_settings ppm_defaults(size_t photons_per_pass, long passes)
     return ps;
 }
 
+/* The image of a whole render of scene: one eye ray a pixel, seed 1, the given photons. */
+static struct image *whole_image(const struct scene *scene, size_t photons_per_pass, long passes)
+{
+    struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
+    struct ppm_settings ps = ppm_defaults(photons_per_pass, passes);
+    struct render_counters counters = {0, 0, 0, 0};
+    struct ppm_stats stats;
+    return render_ppm(scene, &rs, &ps, &counters, &stats).image;
+}
+
 /* Error of each checkpoint's image against a closed form, by power-of-two pass. */
 struct convergence {
     const struct scene *scene;
@@ -247,11 +257,7 @@ static void test_disc_clear_of_walls(struct check *t)
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
-    struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
-    struct ppm_settings ps = ppm_defaults(64000, 256);
-    struct render_counters counters = {0, 0, 0, 0};
-    struct ppm_stats stats;
-    struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
+    struct image *image = whole_image(scene, 64000, 256);
     double sum = 0.0;
     int n = 0;
     for (int y = 0; y < 12; y++)
@@ -261,12 +267,12 @@ static void test_disc_clear_of_walls(struct check *t)
             double foot = r.origin.x - r.origin.y / r.dir.y * r.dir.x;
             if (foot < 0.3 && foot > 0.3 - 0.29) {
                 double truth = plane_truth(scene, x, y);
-                sum += (image_get(result.image, x, y).y - truth) / truth;
+                sum += (image_get(image, x, y).y - truth) / truth;
                 n++;
             }
         }
     CHECK(t, n >= 8 && fabs(sum / n) <= 0.02);
-    render_result_free(&result);
+    image_free(image);
     scene_free(scene);
 }
 
@@ -339,6 +345,26 @@ static void test_scale_invariance(struct check *t)
     image_free(other_seed);
 }
 
+/* A black, two-sided emitter of Le = 1 in scene; returns its material. */
+static int add_two_sided_light(struct scene *scene)
+{
+    int light = add_test_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(1, 1, 1));
+    scene->materials[light].two_sided = 1;
+    return light;
+}
+
+/* Finishes scene seen from 10 units in front of the origin (along -z) through a 2-degree
+ * field of view, side x side pixels. */
+static void finish_seen_from_front(struct scene *scene, int side)
+{
+    scene->camera.from = vec3(0, 0, -10);
+    scene->camera.at = vec3(0, 0, 0);
+    scene->camera.up = vec3(0, 1, 0);
+    scene->camera.fov = 2;
+    scene->has_camera = 1;
+    scene_finish(scene, side, side);
+}
+
 /* A glass ball of radius 1 at the origin in front of a two-sided emitter (Le = 1) that
  * fills the view behind it, seen from 10 units away through a 2-degree field of view, so
  * every eye ray meets the ball within 10 degrees of normal incidence. */
@@ -346,16 +372,10 @@ static struct scene *glass_before_light(void)
 {
     struct scene *scene = scene_create();
     int glass = add_test_material(scene, MATERIAL_GLASS, vec3(1, 1, 1), vec3_zero());
-    int light = add_test_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(1, 1, 1));
-    scene->materials[light].two_sided = 1;
+    int light = add_two_sided_light(scene);
     scene_add_sphere(scene, vec3(0, 0, 0), 1, glass);
     scene_add_quad(scene, vec3(-20, -20, 5), vec3(40, 0, 0), vec3(0, 40, 0), light);
-    scene->camera.from = vec3(0, 0, -10);
-    scene->camera.at = vec3(0, 0, 0);
-    scene->camera.up = vec3(0, 1, 0);
-    scene->camera.fov = 2;
-    scene->has_camera = 1;
-    scene_finish(scene, 8, 8);
+    finish_seen_from_front(scene, 8);
     return scene;
 }
 
@@ -373,37 +393,27 @@ static struct scene *glass_before_light(void)
 static void test_glass_seen_through_every_lobe(struct check *t)
 {
     struct scene *scene = glass_before_light();
-    struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
-    struct ppm_settings ps = ppm_defaults(100, 1);
-    struct render_counters counters = {0, 0, 0, 0};
-    struct ppm_stats stats;
-    struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
+    struct image *image = whole_image(scene, 100, 1);
     int within = 0;
     for (int y = 0; y < 8; y++)
         for (int x = 0; x < 8; x++) {
-            double l = image_get(result.image, x, y).y;
+            double l = image_get(image, x, y).y;
             within += l >= 0.9214 && l <= 0.9231;
         }
     CHECK(t, within >= 60);
-    render_result_free(&result);
+    image_free(image);
     scene_free(scene);
 }
 
 /* An emitter (Le = 1, two-sided, black) filling the view right of x = edge in the plane
- * z = 0, seen straight on from 10 units away through a 2-degree field of view, 4 x 4
- * pixels, against a black background: its vertical edge cuts through a pixel column. */
+ * z = 0, seen straight on from the front, 4 x 4 pixels, against a black background: its
+ * vertical edge cuts through a pixel column. */
 static struct scene *light_edge(double edge)
 {
     struct scene *scene = scene_create();
-    int light = add_test_material(scene, MATERIAL_LAMBERT, vec3_zero(), vec3(1, 1, 1));
-    scene->materials[light].two_sided = 1;
+    int light = add_two_sided_light(scene);
     scene_add_quad(scene, vec3(edge, -20, 0), vec3(20, 0, 0), vec3(0, 40, 0), light);
-    scene->camera.from = vec3(0, 0, -10);
-    scene->camera.at = vec3(0, 0, 0);
-    scene->camera.up = vec3(0, 1, 0);
-    scene->camera.fov = 2;
-    scene->has_camera = 1;
-    scene_finish(scene, 4, 4);
+    finish_seen_from_front(scene, 4);
     return scene;
 }
 
@@ -432,20 +442,16 @@ static void test_light_outline_converges(struct check *t)
 {
     const double edge = 0.05;
     struct scene *scene = light_edge(edge);
-    struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
-    struct ppm_settings ps = ppm_defaults(100, 256);
-    struct render_counters counters = {0, 0, 0, 0};
-    struct ppm_stats stats;
-    struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
+    struct image *image = whole_image(scene, 100, 256);
     int within = 1, partial = 0;
     for (int y = 0; y < 4; y++)
         for (int x = 0; x < 4; x++) {
             double part = covered_part(&scene->camera, x, y, edge);
             partial += part > 0.2 && part < 0.8;
-            within = within && fabs(image_get(result.image, x, y).y - part) <= 0.01;
+            within = within && fabs(image_get(image, x, y).y - part) <= 0.01;
         }
     CHECK(t, partial == 4 && within);
-    render_result_free(&result);
+    image_free(image);
     scene_free(scene);
 }
 
