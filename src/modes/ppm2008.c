@@ -53,8 +53,8 @@
 #include "surface.h"
 
 #define PPM_WALL_PROBES 8   /* tangent directions searched for a wall across the disc */
+#define PPM_WALL_COS 0.5    /* a wall's normal is more than 60 degrees from the surface's */
 #define PPM_WALL_FLOOR 0.25 /* the shortest initial radius, as a part of the footprint's */
-
 
 struct ppm {
     const struct scene *scene;          /* borrowed                                       */
@@ -124,7 +124,7 @@ static double disc_clear_of_walls(const struct ppm *ppm, const struct surface *s
         struct hit hit;
         ppm->counters->rays++;
         if (scene_intersect(ppm->scene, make_ray(origin, along), r, &hit) &&
-            fabs(vec3_dot(hit.ng, s->ng)) < 0.5)
+            fabs(vec3_dot(hit.ng, s->ng)) < PPM_WALL_COS)
             r = hit.t;
     }
     return fmax(r, PPM_WALL_FLOOR * r0);
