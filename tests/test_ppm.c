@@ -296,12 +296,7 @@ static struct scene *mirror_corridor(void)
     scene_add_quad(scene, vec3(0.2, 0, -20), vec3(0, 4, 0), vec3(0, 0, 40), mirror);
     scene_add_quad(scene, vec3(-0.2, 0, -20), vec3(0.4, 0, 0), vec3(0, 0, 40), floor);
     scene_add_point_light(scene, vec3(0, 3, 0), vec3(100, 100, 100));
-    scene->camera.from = vec3(0, 2, -10);
-    scene->camera.at = vec3(0, 0, 0);
-    scene->camera.up = vec3(0, 1, 0);
-    scene->camera.fov = 40;
-    scene->has_camera = 1;
-    scene_finish(scene, 16, 16);
+    finish_with_camera(scene, vec3(0, 2, -10), vec3(0, 0, 0), 40, 16, 16);
     return scene;
 }
 
@@ -405,12 +400,7 @@ static int add_two_sided_light(struct scene *scene)
  * field of view, side x side pixels. */
 static void finish_seen_from_front(struct scene *scene, int side)
 {
-    scene->camera.from = vec3(0, 0, -10);
-    scene->camera.at = vec3(0, 0, 0);
-    scene->camera.up = vec3(0, 1, 0);
-    scene->camera.fov = 2;
-    scene->has_camera = 1;
-    scene_finish(scene, side, side);
+    finish_with_camera(scene, vec3(0, 0, -10), vec3(0, 0, 0), 2, side, side);
 }
 
 /* A glass ball of radius 1 at the origin in front of a two-sided emitter (Le = 1) that

@@ -1027,12 +1027,7 @@ static struct scene *mirror_view_scene(void)
     add_square(scene, vec3(0, 0, 0), 100, 1, plane);
     scene_add_quad(scene, vec3(3, 0, -2), vec3(0, 0, 4), vec3(0, 2, 0), chrome); /* -x */
     scene_add_point_light(scene, vec3(MV_LIGHT_X, 1, 0), vec3(MV_PHI, MV_PHI, MV_PHI));
-    scene->camera.from = vec3(1, 1.5, 0);
-    scene->camera.at = vec3(3, 0.5, 0);
-    scene->camera.up = vec3(0, 1, 0);
-    scene->camera.fov = 40;
-    scene->has_camera = 1;
-    scene_finish(scene, 24, 24);
+    finish_with_camera(scene, vec3(1, 1.5, 0), vec3(3, 0.5, 0), 40, 24, 24);
     return scene;
 }
 

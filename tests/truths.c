@@ -145,14 +145,20 @@ int add_test_material(struct scene *scene, enum material_kind kind, struct vec3 
     return scene_add_material(scene, &m);
 }
 
+void finish_with_camera(struct scene *scene, struct vec3 from, struct vec3 at, double fov,
+                        int width, int height)
+{
+    scene->camera.from = from;
+    scene->camera.at = at;
+    scene->camera.up = vec3(0, 1, 0);
+    scene->camera.fov = fov;
+    scene->has_camera = 1;
+    scene_finish(scene, width, height);
+}
+
 void finish_test_scene(struct scene *scene)
 {
-    scene->camera.from = vec3(0, 5, -5);
-    scene->camera.at = vec3(0, 0, 0);
-    scene->camera.up = vec3(0, 1, 0);
-    scene->camera.fov = 60;
-    scene->has_camera = 1;
-    scene_finish(scene, 8, 8);
+    finish_with_camera(scene, vec3(0, 5, -5), vec3(0, 0, 0), 60, 8, 8);
 }
 
 int same_pixels(const struct image *a, const struct image *b)

@@ -86,4 +86,9 @@ int add_test_material(struct scene *scene, enum material_kind kind, struct vec3 
  * finishes it at 8 x 8. */
 void finish_test_scene(struct scene *scene);
 
+/* Gives a scene built in code a camera at from looking at at (up +y, fov degrees) and
+ * finishes it at width x height. */
+void finish_with_camera(struct scene *scene, struct vec3 from, struct vec3 at, double fov,
+                        int width, int height);
+
 #endif
