@@ -422,9 +422,10 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
 /* The options that change no pixel of the PFM: where outputs go, what is printed or shown,
  * the PPM's exposure, the window itself, checkpoints and reports, which only look at the
  * image as it grows, and the file of global work, which holds what the render would
- * otherwise compute itself, bit for bit (tests/test_work_file.c). options_hash() covers
- * every other option, so one added to specs[] is hashed unless it is named here. --time-limit is here because a hash cannot capture it:
- * it makes the pixels depend on the machine's speed, so tile.h records it apart. */
+ * otherwise compute itself, bit for bit (tests/test_merge.c). options_hash() covers every
+ * other option, so one added to specs[] is hashed unless it is named here. --time-limit
+ * is here because a hash cannot capture it: it makes the pixels depend on the machine's
+ * speed, so tile.h records it apart. */
 static const char *const outside_pixels[] = {
     "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure", "--reference",
     "--report", "--variance", "--checkpoint", "--time-limit", "--save-photons",

@@ -59,7 +59,8 @@ int main(int argc, char **argv)
         ran++;
     }
     if (ran == 0) {
-        fprintf(stderr, "bench: unknown workload '%s' (rays, knn, shapes, photons, ppm, tte, tiles)\n", only);
+        fprintf(stderr, "bench: unknown workload '%s' (rays, knn, shapes, photons, ppm, tte, "
+                        "tiles)\n", only);
         return 2;
     }
     return 0;
