@@ -601,7 +601,7 @@ static double point_over_plane_ratio(const struct scene *scene, size_t n, size_t
  *   at points within 2 of the light's foot (the plane's edges are 100 away).
  * tolerance: with 1M photons and 200 per estimate the mean ratio over 289 points is
  *   within 2% of 1 (one estimate's noise is 1/sqrt(200) = 7%, the mean's 0.4%; the
- *   blur of the falling irradiance over r <= 0.1 and the k/(k-1) bias are below 1%);
+ *   blur of the falling irradiance over r <= 0.1 is below 1%);
  *   with 10k photons the radius is ten times larger and the blur bias must be larger
  *   than at 1M: the error falls as N grows.
  * catches: a missing pi or 1/pi, the disc area from r instead of r^2, emission not
@@ -635,16 +635,17 @@ static struct kdtree *uniform_square_map(size_t n, double power)
 }
 
 /* truth: a uniform region of irradiance E on a Lambertian surface of albedo rho has
- *   L = rho E / pi. With r the k-th photon's distance, the cone filter with k_cone = 1
- *   is unbiased (its rim photon weighs 0, the k - 1 inside have mean weight 1/3, and
- *   E[(k - 1) / (pi r^2)] is the density), while the plain estimate's mean is
- *   L k / (k - 1) (estimate.c).
+ *   L = rho E / pi. With r the k-th photon's distance, E[(k - 1) / (pi r^2)] is the
+ *   density of a Poisson process, so both estimates are unbiased: the cone filter with
+ *   k_cone = 1 (its rim photon weighs 0, the k - 1 inside have mean weight 1/3) and the
+ *   plain one, which leaves the rim photon out (estimate.c); Eq. 3 as printed would
+ *   have mean L k / (k - 1).
  * tolerance: 3 standard errors of the mean over 441 estimates on a grid 0.04 apart
- *   (more than twice r, so they are nearly independent); k = 20 makes the plain
- *   estimate's bias 5%, about 4 standard errors, so the two truths are told apart.
+ *   (more than twice r, so they are nearly independent); k = 20 makes the printed
+ *   Eq. 3's bias 5%, about 4 standard errors, so counting the rim photon is caught.
  * catches: the cone normalisation 1 - 2/(3k) missing or inverted (a factor of 3), the
  *   weight computed from d^2 instead of d (a factor of 1.5), the radius of the (k-1)-th
- *   photon used for the area. */
+ *   photon used for the area, the rim photon counted in the plain estimate. */
 static void test_cone_filter_uniform(struct check *t)
 {
     size_t n = 100000, k = 20;
@@ -664,8 +665,7 @@ static void test_cone_filter_uniform(struct check *t)
             struct estimate_point at = {x, up, vec3(0, 0.6, 0.8), &scene->materials[0], &frame};
             tally_add(&m, radiance_estimate(map, &at, &es, nn).x / truth);
         }
-        double expected = cone ? 1.0 : (double)k / (k - 1);
-        CHECK_CLOSE(t, m.sum / 441, expected, 3 * tally_se(&m) / 441);
+        CHECK_CLOSE(t, m.sum / 441, 1.0, 3 * tally_se(&m) / 441);
     }
     scene_free(scene);
     nearest_free(nn);
@@ -746,11 +746,13 @@ static struct kdtree *step_square_map(size_t n, double energy, double edge, doub
     return balance_kdtree(photons, n);
 }
 
-/* truth: the plain estimate of a uniform Poisson density has mean E n / (n - 1) (the
- *   n-th photon's distance as r; estimate.c), E = photons times energy per unit area.
- * tolerance: 3 standard errors of the mean over 441 estimates on a grid 0.04 apart.
- * catches: a missing pi, r instead of r^2, the radius of the (n-1)-th photon, photons
- *   whose normal faces the query rejected (they all do here). */
+/* truth: the n - 1 photons inside the n-th photon's distance r of a uniform Poisson
+ *   density E have E[(n - 1) / (pi r^2)] = E exactly (estimate.c), E = photons times
+ *   energy per unit area.
+ * tolerance: 3 standard errors of the mean over 441 estimates on a grid 0.04 apart;
+ *   with n = 20 the paper's sum to n would be 5% (about 4 standard errors) high.
+ * catches: a missing pi, r instead of r^2, the radius of the (n-1)-th photon, the rim
+ *   photon counted, photons whose normal faces the query rejected (they all do here). */
 static void test_irradiance_uniform(struct check *t)
 {
     size_t n = 100000, k = 20;
@@ -763,13 +765,13 @@ static void test_irradiance_uniform(struct check *t)
         struct vec3 x = vec3(0.1 + 0.04 * (i % 21), 0.1 + 0.04 * (i / 21), 0);
         tally_add(&m, irradiance_estimate(map, x, vec3(0, 0, 1), &is, nn).y / (n * energy));
     }
-    CHECK_CLOSE(t, m.sum / 441, (double)k / (k - 1), 3 * tally_se(&m) / 441);
+    CHECK_CLOSE(t, m.sum / 441, 1.0, 3 * tally_se(&m) / 441);
     nearest_free(nn);
     kdtree_free(map);
 }
 
 /* Photons i = 1..8 on the x axis at distance d_i from the origin, energy 1 each, normal
- * +z: the estimates E_j = j / (pi d_j^2) of the j nearest follow from d alone. */
+ * +z: the estimates E_j = (j - 1) / (pi d_j^2) of the j nearest follow from d alone. */
 static struct kdtree *line_map(const double d[8])
 {
     struct photon *photons = xmalloc(8, sizeof *photons, "test photons");
@@ -778,10 +780,10 @@ static struct kdtree *line_map(const double d[8])
     return balance_kdtree(photons, 8);
 }
 
-/* truth: hand-computed sequences. d_j = 1 + j / 64 makes E_j = j / (pi d_j^2) rise at
- *   every photon, d_j = j makes it fall (1 / (pi j)); with runs of R = 2, checking
- *   starts at the 2R = 4th photon, where both runs are already long enough, so the
- *   estimate is E_4; without checking it is E_8. Photons whose normal faces away add
+/* truth: hand-computed sequences. d_j = 1 + j / 64 makes E_j = (j - 1) / (pi d_j^2)
+ *   rise at every photon, d_j = j makes it fall from the second on ((j - 1) / (pi j^2));
+ *   with runs of R = 2, checking starts at the 2R = 4th photon, where both runs are
+ *   already long enough, so the estimate is E_4; without checking it is E_8. Photons whose normal faces away add
  *   nothing but still widen the disc; no photon, or all at x, give zero; fewer than n
  *   within max_r2 divide by the disc of max_r2.
  * tolerance: 1e-12 relative (a few roundings).
@@ -800,11 +802,11 @@ static void test_irradiance_rules(struct check *t)
     struct irradiance_settings is = {8, HUGE_VAL, 0, 2};
     struct kdtree *up_map = line_map(rising), *down_map = line_map(falling);
     CHECK_CLOSE(t, irradiance_estimate(up_map, o, up, &is, nn).x,
-                4 / (PI * rising[3] * rising[3]), 1e-12);
-    CHECK_CLOSE(t, irradiance_estimate(down_map, o, up, &is, nn).x, 4 / (PI * 16), 1e-12);
+                3 / (PI * rising[3] * rising[3]), 1e-12);
+    CHECK_CLOSE(t, irradiance_estimate(down_map, o, up, &is, nn).x, 3 / (PI * 16), 1e-12);
     is.run = 0;
     CHECK_CLOSE(t, irradiance_estimate(up_map, o, up, &is, nn).x,
-                8 / (PI * rising[7] * rising[7]), 1e-12);
+                7 / (PI * rising[7] * rising[7]), 1e-12);
     CHECK(t, vec3_length2(irradiance_estimate(up_map, o, vec3_neg(up), &is, nn)) == 0);
     is.max_r2 = 2.5 * 2.5; /* photons at 1 and 2 only: their sum over the disc of 2.5 */
     CHECK_CLOSE(t, irradiance_estimate(down_map, o, up, &is, nn).x, 2 / (PI * 6.25), 1e-12);

@@ -71,7 +71,7 @@ static const struct option_spec specs[] = {
      "photons, 1994, 1996: read the global work from FILE (saved by the same command but "
      "for -o, --crop and the like) instead of doing it"},
     {"--photons", OPT_INT, FIELD(photons), 1, MAX_PHOTONS, "N",
-     "photon modes: photons emitted (default: photons 200000, 1994 1000000, 1996 1000000 for "
+     "photon modes: photons emitted (default: photons 200000, 1994 1000000, 1996 4000000 for "
      "the global map)"},
     {"--gather", OPT_INT, FIELD(gather), 1, MAX_GATHER, "K",
      "photon modes: photons in each radiance or irradiance estimate (default 100)"},
@@ -81,7 +81,7 @@ static const struct option_spec specs[] = {
      "photon modes: cone filter constant k >= 1 (Jensen 1996 Eq. 4); 0 = none (default: "
      "photons 0, 1996 1 on caustics)"},
     {"--caustic-photons", OPT_INT, FIELD(caustic_photons), 0, MAX_PHOTONS, "N",
-     "1996: photons emitted towards specular objects for the caustic map (default 100000)"},
+     "1996: photons emitted towards specular objects for the caustic map (default 1000000)"},
     {"--caustic-gather", OPT_INT, FIELD(caustic_gather), 1, MAX_GATHER, "K",
      "1996: photons in each caustic estimate (default 60)"},
     {"--gather-rays", OPT_INT, FIELD(gather_rays), 2, J96_MAX_GATHER_RAYS, "N",

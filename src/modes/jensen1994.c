@@ -536,6 +536,7 @@ static void set_up(struct j94 *m, const struct scene *scene, const struct render
                                       js->differential_run};
     m->all_photons = all;
     m->caustic_photons = all;
+    m->caustic_photons.max_r2 *= CAUSTIC_RADIUS_FRACTION * CAUSTIC_RADIUS_FRACTION;
     m->caustic_photons.kinds = PHOTON_CAUSTIC;
     /* Ward and Heckbert's strata, m x n with n about pi m, one ray each */
     m->strata_theta = (int)floor(sqrt(js->gather_rays / PI) + 0.5);

@@ -62,10 +62,6 @@
 #include "photons.h"
 #include "surface.h"
 
-#define CAUSTIC_RADIUS_FRACTION 0.25 /* caustic estimates reach this much of the global
-                                        ones: caustic photons are dense where they are,
-                                        and a wide search would blur them over edges    */
-
 struct jensen1996_settings jensen1996_settings_default(void)
 {
     struct jensen1996_settings js;

@@ -8,7 +8,12 @@
  * the estimate of a uniform region unbiased. With k = 1 the k-th photon, the one on the
  * rim, has weight 0: the other k - 1 lie uniformly inside the disc, and for a Poisson
  * density lambda, E[(k - 1) / (pi r^2)] = lambda exactly, so the filtered estimate of a
- * uniform region has no bias, while the plain one's mean is lambda k / (k - 1).
+ * uniform region has no bias. Eq. 3 as printed counts the rim photon too, and its mean
+ * is lambda k / (k - 1): 1% too bright at k = 100, which showed as a ceiling lit only
+ * indirectly coming out 1% above the path tracer's. So the plain estimate here leaves
+ * out the photon on the rim (the one at d_p = r), as the cone filter does, and so does
+ * the 1994 irradiance estimate with each E_j. Where fewer than k photons lie within the
+ * maximum radius, r is that radius, no photon marks it, and all of them count.
  */
 #include "estimate.h"
 
@@ -29,8 +34,13 @@ struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_po
     if (nn->found == 0 || !(nn->r2 > 0))
         return vec3_zero(); /* no photons, or all exactly at x: no area */
     struct vec3 sum = vec3_zero();
+    int rim = nn->found >= 2; /* the photon on the rim is still to be left out */
     for (size_t i = 0; i < nn->found; i++) {
         const struct photon *p = nn->photon[i];
+        if (rim && nn->d2[i] == nn->r2) {
+            rim = 0;
+            continue; /* it marks the radius (see the top of the file) */
+        }
         struct vec3 wi = photon_direction(p);
         if (!(vec3_dot(wi, at->ng) > 0))
             continue; /* arrived at the other side: a thin wall's back, not this surface */
@@ -72,10 +82,12 @@ struct vec3 irradiance_estimate(const struct kdtree *map, struct vec3 x, struct 
     double previous = 0.0; /* luminance of E_{j-1}; 0 before the first with area */
     int rising = 0, falling = 0;
     for (size_t j = 0; j < nn->found; j++) {
+        struct vec3 inside = sum; /* the photons nearer than the j-th */
         sum = vec3_add(sum, accepted_energy(nn->photon[j], n));
         if (!(nn->d2[j] > 0))
             continue; /* photons exactly at x: no disc yet */
-        e = vec3_scale(sum, 1.0 / (PI * nn->d2[j])); /* E_j = sum e_i / (pi r_j^2) */
+        /* E_j = sum_{i<j} e_i / (pi r_j^2): the j-th photon marks the radius, on the rim */
+        e = vec3_scale(inside, 1.0 / (PI * nn->d2[j]));
         double now = vec3_luminance(e);
         rising = now > previous ? rising + 1 : 0;
         falling = now < previous ? falling + 1 : 0;
