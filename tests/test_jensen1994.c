@@ -364,10 +364,10 @@ static int caustic_copy_agrees(const struct irradiance_stores *st)
  *   photon maps everywhere and with illumination maps (on the Lambertian square alone:
  *   the mirror holds no photons, so it gets no map).
  * tolerance: away from the edges the CP estimate with 200 photons is within 6% RMS of
- *   the caustic's level, with checking and without (measured, seed 1: 2.7% and 1.9%;
+ *   the caustic's level, with checking and without (measured, seed 1: 2.8% and 1.9%;
  *   seeds 1-8 at most 3.2% and 2.4%: checking costs noise where nothing changes);
  *   within 0.1 of the edges differential checking lowers the RMS error below 0.9 times
- *   that without (seed 1: 5.3% against 6.0%, 0.87; seeds 1-8: 0.81 to 0.88). The CI map
+ *   that without (seed 1: 5.2% against 6.0%, 0.87; seeds 1-8: 0.81 to 0.88). The CI map
  *   is noisier, as the paper found of its box kernel (measured: 15% away from the edges,
  *   11% near them, with CI elements of 3 x 3 per DI element from the pretrace), and must
  *   be within 30% RMS away from the edges (without its caustic photons: 44%).
