@@ -12,7 +12,9 @@
 #include <stdlib.h>
 
 #include "../src/base/rng.h"
+#include "../src/modes/cache_pass.h"
 #include "../src/photon/irradiance_cache.h"
+#include "../src/scene/camera.h"
 #include "tests.h"
 #include "truths.h"
 
@@ -625,6 +627,35 @@ static void test_lookup_boundaries(struct check *t)
     irradiance_cache_free(NULL);
 }
 
+/* truth: cache_pass.h's contract, computed by hand: a 90-degree camera 100 pixels high at
+ *   the origin sees a pixel 2 tan 45 / 100 = 0.02 wide at distance 1, so at a point 10
+ *   away, faced squarely, r_min = 1.5 x 0.2 / a; a surface turned 60 degrees from the
+ *   camera doubles it, a grazing one is held at ten times; r_max is a fifth of the
+ *   diagonal unless r_min is larger. The bound depends on the point and the camera alone,
+ *   so a record made for a point seen in a mirror has the reach a direct view gives it.
+ * tolerance: 1e-12 relative (a few roundings).
+ * catches: the footprint taken from anything but the camera's distance to the point (the
+ *   path's length, which once gave records seen in the mirror ball a reach of 40 cm), the
+ *   slant ignored or not clamped, a instead of 1 / a. */
+static void test_record_radius_bounds(struct check *t)
+{
+    struct camera c;
+    c.from = vec3(0, 0, 0);
+    c.at = vec3(0, 0, 1);
+    c.up = vec3(0, 1, 0);
+    c.fov = 90;
+    camera_setup(&c, 100, 100);
+    double r_min, r_max, a = 0.15, square = 1.5 * 0.2 / a;
+    record_radius_bounds(&c, vec3(0, 0, 10), vec3(0, 0, -1), a, 1000, &r_min, &r_max);
+    CHECK_CLOSE(t, r_min, square, 1e-12 * square);
+    CHECK_CLOSE(t, r_max, 200, 1e-12 * 200);
+    record_radius_bounds(&c, vec3(0, 0, 10), vec3(0, sqrt(0.75), -0.5), a, 1000, &r_min, &r_max);
+    CHECK_CLOSE(t, r_min, 2 * square, 1e-12 * square);
+    record_radius_bounds(&c, vec3(0, 0, 10), vec3(0, 1, 0), a, 10, &r_min, &r_max);
+    CHECK_CLOSE(t, r_min, 10 * square, 1e-12 * square);
+    CHECK(t, r_max == r_min); /* a fifth of the diagonal, 2, is below r_min */
+}
+
 void test_cache(struct check *t)
 {
     RUN_TEST(t, test_strata_round_trip);
@@ -636,4 +667,5 @@ void test_cache(struct check *t)
     RUN_TEST(t, test_gradient_limits_radius);
     RUN_TEST(t, test_lookup_matches_brute_force);
     RUN_TEST(t, test_lookup_boundaries);
+    RUN_TEST(t, test_record_radius_bounds);
 }

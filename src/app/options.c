@@ -86,7 +86,7 @@ static const struct option_spec specs[] = {
      "1996: photons in each caustic estimate (default 60)"},
     {"--gather-rays", OPT_INT, FIELD(gather_rays), 2, J96_MAX_GATHER_RAYS, "N",
      "1994, 1996: rays of one final gather (1994: one per stratum; 1996: half stratified, "
-     "half by photon importance; default 256)"},
+     "half by photon importance; default 512)"},
     {"--glossy-rays", OPT_INT, FIELD(glossy_rays), 1, 1000, "N",
      "1996: rays sampling a glossy surface seen accurately (default 6, the paper's)"},
     {"--cache-accuracy", OPT_REAL, FIELD(cache_accuracy), 0, 10, "A",

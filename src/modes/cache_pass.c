@@ -4,6 +4,7 @@
  */
 #include "cache_pass.h"
 
+#include <math.h>
 #include <stdio.h>
 
 void fill_cache_pass(const struct scene *scene, uint64_t seed,
@@ -25,9 +26,12 @@ void fill_cache_pass(const struct scene *scene, uint64_t seed,
         fprintf(stderr, "\n");
 }
 
-void record_radius_bounds(const struct camera *camera, double distance, double cos_view,
+void record_radius_bounds(const struct camera *camera, struct vec3 p, struct vec3 n,
                           double accuracy, double diagonal, double *r_min, double *r_max)
 {
+    struct vec3 to_camera = vec3_sub(camera->from, p);
+    double distance = vec3_length(to_camera);
+    double cos_view = distance > 0 ? fabs(vec3_dot(to_camera, n)) / distance : 1.0;
     double footprint = distance * camera_footprint(camera) / fmax(cos_view, 0.1);
     *r_min = CACHE_MIN_REACH * footprint / accuracy;
     *r_max = fmax(*r_min, CACHE_R_MAX * diagonal);

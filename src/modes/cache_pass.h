@@ -32,12 +32,16 @@ void fill_cache_pass(const struct scene *scene, uint64_t seed,
                      struct radiance_estimator estimator, const struct irradiance_cache *cache,
                      int progress, struct render_counters *counters);
 
-/* Where a record's radius must lie. distance: from the camera along the path to the
- * record's point; cos_view: |wo . n| there; accuracy: the a the cache is read with;
- * diagonal: the scene's. A pixel seen at an angle covers 1 / cos more of the surface (up
- * to 10 times). Fills *r_min (CACHE_MIN_REACH footprints over a) and *r_max
- * (CACHE_R_MAX diagonals, at least r_min). */
-void record_radius_bounds(const struct camera *camera, double distance, double cos_view,
+/* Where the radius of a record at point p with unit normal n must lie. accuracy: the a
+ * the cache is read with; diagonal: the scene's. The footprint is that of a pixel seen
+ * straight from the camera, whatever path reached p: a pixel seen at an angle covers
+ * 1 / cos more of the surface (up to 10 times). A record is read by every path that
+ * reaches it, and a floor seen in a curved mirror at a grazing angle has footprints ten
+ * times a direct view's: a bound from that path gave its records a reach of 40 cm, and
+ * one noisy gather made for the mirror then lit a band of the floor seen directly 15%
+ * too dark. Fills *r_min (CACHE_MIN_REACH footprints over a) and *r_max (CACHE_R_MAX
+ * diagonals, at least r_min). */
+void record_radius_bounds(const struct camera *camera, struct vec3 p, struct vec3 n,
                           double accuracy, double diagonal, double *r_min, double *r_max);
 
 #endif

@@ -279,7 +279,6 @@ struct vec3 stored_irradiance(const struct irradiance_stores *stores,
 /* A path from the eye, or from a gather (whose surfaces read the irradiance stores). */
 struct path {
     struct vec3 beta; /* throughput since the eye or the gathering point                */
-    double distance;  /* length from the camera (eye paths: a record's radius bounds)   */
     int depth;        /* bounces so far                                                  */
     int secondary;    /* 1 on a gather ray: read the photon map, add no emission         */
 };
@@ -406,7 +405,7 @@ static struct irradiance_record gather_record(const struct j94 *m, const struct 
                                               struct path path, struct rng *rng,
                                               struct render_counters *counters)
 {
-    struct path gather = {vec3(1, 1, 1), path.distance, path.depth + 1, 1};
+    struct path gather = {vec3(1, 1, 1), path.depth + 1, 1};
     for (int j = 0; j < m->strata_theta; j++) {
         for (int k = 0; k < m->strata_phi; k++) {
             double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
@@ -431,8 +430,8 @@ static struct irradiance_record gather_record(const struct j94 *m, const struct 
         }
     }
     double r_min, r_max;
-    record_radius_bounds(&m->scene->camera, path.distance, fabs(vec3_dot(s->wo, frame->n)),
-                         m->js->cache_accuracy, m->diagonal, &r_min, &r_max);
+    record_radius_bounds(&m->scene->camera, s->p, frame->n, m->js->cache_accuracy,
+                         m->diagonal, &r_min, &r_max);
     return irradiance_record_make(s->p, frame->t, frame->b, frame->n, m->strata_theta,
                                   m->strata_phi, m->strata, r_min, r_max);
 }
@@ -508,14 +507,13 @@ static struct vec3 trace(const struct j94 *m, struct ray ray, struct path path, 
     double t;
     if (!ray_surface(m->scene, ray, counters, &s, &t))
         return m->scene->background;
-    path.distance += t;
     return trace_from(m, &s, path, rng, counters);
 }
 
 static struct vec3 j94_radiance(const void *mode, struct ray ray, struct rng *rng,
                                 struct render_counters *counters)
 {
-    struct path eye = {vec3(1, 1, 1), 0.0, 0, 0};
+    struct path eye = {vec3(1, 1, 1), 0, 0};
     return trace(mode, ray, eye, rng, counters);
 }
 

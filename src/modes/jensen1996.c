@@ -289,7 +289,6 @@ enum emission_rule {
 
 struct path {
     struct vec3 beta;        /* throughput from the camera                               */
-    double distance;         /* length from the camera to the surface it reaches         */
     int depth;               /* bounces so far                                           */
     enum evaluation eval;    /* how the surface it reaches is evaluated                  */
     enum emission_rule rule; /* which emission it may add                               */
@@ -430,7 +429,6 @@ static struct vec3 follow_specular(const struct j96 *m, const struct surface *s,
     next.beta = vec3_mul(path.beta, bs->weight);
     next.depth = path.depth + 1;
     next.split = split;
-    next.distance = path.distance;
     double q = roulette_odds(next.beta, path.depth);
     if (q < 1 && !(rng_uniform(rng) < q))
         return vec3_zero();
@@ -625,8 +623,7 @@ static struct irradiance_record gathered_record(const struct j96 *m, const struc
     final_gather(m, &m->cached, s, diffuse, 1, frame, path, rng, counters);
     double a = m->cache != NULL ? m->js->cache_accuracy : 1.0; /* no cache: R is unused */
     double r_min, r_max;
-    record_radius_bounds(&m->scene->camera, path.distance, fabs(vec3_dot(s->wo, frame->n)), a,
-                         m->diagonal, &r_min, &r_max);
+    record_radius_bounds(&m->scene->camera, s->p, frame->n, a, m->diagonal, &r_min, &r_max);
     return irradiance_record_make(s->p, frame->t, frame->b, frame->n, m->cached.theta,
                                   m->cached.phi, m->scratch->strata, r_min, r_max);
 }
@@ -744,7 +741,6 @@ static struct vec3 trace(const struct j96 *m, struct ray ray, struct path path, 
     double t;
     if (!ray_surface(m->scene, ray, counters, &s, &t))
         return m->scene->background;
-    path.distance += t;
     return surface_radiance(m, &s, path, rng, counters);
 }
 
@@ -752,7 +748,6 @@ static struct path camera_path(void)
 {
     struct path path;
     path.beta = vec3(1.0, 1.0, 1.0);
-    path.distance = 0.0;
     path.depth = 0;
     path.split = 0;
     path.eval = ACCURATE;

@@ -21,7 +21,9 @@
 #define J96_DEFAULT_CAUSTIC_PHOTONS 1000000 /* --caustic-photons: at 100,000 the glass
                                                ball's caustic spread 4% past its edges  */
 #define J96_DEFAULT_CAUSTIC_GATHER 60      /* photons in a caustic estimate               */
-#define J96_DEFAULT_GATHER_RAYS 256        /* --gather-rays: final gather rays per record */
+#define J96_DEFAULT_GATHER_RAYS 512        /* --gather-rays: final gather rays per record;
+                                              at 256 one record beside the glass ball
+                                              was 16% bright over an 8 x 8 patch      */
 #define J96_DEFAULT_GLOSSY_RAYS 6          /* --glossy-rays: the paper's "maximum of 6"   */
 #define J96_DEFAULT_CACHE_ACCURACY 0.15    /* --cache-accuracy: Ward's a                  */
 #define J96_DEFAULT_ACCURATE_DISTANCE 1.0  /* --accurate-distance (see jensen1996.c)      */
