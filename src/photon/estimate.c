@@ -34,7 +34,9 @@ struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_po
     if (nn->found == 0 || !(nn->r2 > 0))
         return vec3_zero(); /* no photons, or all exactly at x: no area */
     struct vec3 sum = vec3_zero();
-    int rim = nn->found >= 2; /* the photon on the rim is still to be left out */
+    /* A photon marks r when k were found, or when the search had no maximum radius (a
+     * map of fewer than k photons): that one, on the rim, is still to be left out. */
+    int rim = nn->found >= 2 && (nn->found == es->k || es->max_r2 == HUGE_VAL);
     for (size_t i = 0; i < nn->found; i++) {
         const struct photon *p = nn->photon[i];
         if (rim && nn->d2[i] == nn->r2) {
@@ -96,7 +98,8 @@ struct vec3 irradiance_estimate(const struct kdtree *map, struct vec3 x, struct 
             (rising >= is->run || falling >= is->run))
             return e; /* differential checking: a monotonic run, an edge */
     }
-    if (nn->found < is->n && nn->r2 > 0) /* fewer than n within max_r2: its whole disc */
-        e = vec3_scale(sum, 1.0 / (PI * nn->r2));
+    if (nn->found < is->n && is->max_r2 != HUGE_VAL && nn->r2 > 0)
+        e = vec3_scale(sum, 1.0 / (PI * nn->r2)); /* fewer than n within max_r2: all of
+                                                     them over its whole disc */
     return e;
 }
