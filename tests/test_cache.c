@@ -635,7 +635,7 @@ static void test_lookup_boundaries(struct check *t)
  *   so a record made for a point seen in a mirror has the reach a direct view gives it.
  * tolerance: 1e-12 relative (a few roundings).
  * catches: the footprint taken from anything but the camera's distance to the point (the
- *   path's length, which once gave records seen in the mirror ball a reach of 40 cm), the
+ *   path's length, which once gave records seen in the mirror ball a reach of 37 cm), the
  *   slant ignored or not clamped, a instead of 1 / a. */
 static void test_record_radius_bounds(struct check *t)
 {

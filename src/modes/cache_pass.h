@@ -37,7 +37,7 @@ void fill_cache_pass(const struct scene *scene, uint64_t seed,
  * straight from the camera, whatever path reached p: a pixel seen at an angle covers
  * 1 / cos more of the surface (up to 10 times). A record is read by every path that
  * reaches it, and a floor seen in a curved mirror at a grazing angle has footprints ten
- * times a direct view's: a bound from that path gave its records a reach of 40 cm, and
+ * times a direct view's: a bound from that path gave its records a reach of 37 cm, and
  * one noisy gather made for the mirror then lit a band of the floor seen directly 15%
  * too dark. Fills *r_min (CACHE_MIN_REACH footprints over a) and *r_max (CACHE_R_MAX
  * diagonals, at least r_min). */
