@@ -89,6 +89,7 @@ static int prepare_run(struct run *run, struct error *err)
     int height = o->height > 0 ? o->height : run->scene->height;
     run->rs.seed = o->seed;
     run->rs.spp = o->spp;
+    run->rs.specular_spp = o->specular_spp;
     run->rs.time_limit = o->time_limit;
     run->rs.max_depth = o->max_depth >= 0 ? o->max_depth
                         : o->mode == MODE_DIRECT ? DIRECT_MAX_DEPTH

@@ -548,6 +548,68 @@ static void test_adaptive_checkpoint_mean_and_work(struct check *t)
     scene_free(f.scene);
 }
 
+/* Whether the ray through (px, py) of the image meets one of the specular Cornell box's two
+ * balls (centres and radius from scenes/cornell-specular.scene), solved here as a
+ * quadratic: nothing stands between the camera and either ball. */
+static int ray_meets_a_ball(const struct scene *scene, double px, double py)
+{
+    static const double centres[2][3] = {{185, 90, 169}, {368, 90, 351}};
+    struct ray ray = camera_ray(&scene->camera, px, py);
+    for (int k = 0; k < 2; k++) {
+        struct vec3 oc = vec3_sub(ray.origin, vec3(centres[k][0], centres[k][1], centres[k][2]));
+        double b = vec3_dot(oc, ray.dir), c = vec3_dot(oc, oc) - 90.0 * 90.0;
+        if (b < 0 && b * b - vec3_dot(ray.dir, ray.dir) * c > 0)
+            return 1;
+    }
+    return 0;
+}
+
+/* truth: render.h's specular pixels, with the synthetic mode on the specular Cornell box's
+ *   camera and geometry: a pixel whose centre ray meets the glass or the mirror ball (a
+ *   quadratic solved here) takes specular_spp samples, one that no ray of a 3 x 3 grid over
+ *   its square (corners included) meets takes spp, and every pixel, in the whole image or
+ *   a crop, is exactly the mean of its own samples 0..n-1, n its count.
+ * tolerance: none: counts, and the same doubles added in the same order.
+ * catches: the count decided from the samples (or by their radiance), a pixel sampled past
+ *   its target, pixels seeing only diffuse walls boosted, a crop probing the crop's own
+ *   pixel numbers, passes stopping at spp. */
+static void test_specular_pixels_take_specular_spp(struct check *t)
+{
+    struct synthetic mode = {0.2, 1.0, 1};
+    struct fixture f;
+    f.scene = load_test_scene("scenes/cornell-specular.scene", 20, 20);
+    CHECK(t, f.scene != NULL);
+    if (f.scene == NULL)
+        return;
+    f.rs = render_settings_whole(f.scene, 7, 2, 1);
+    f.rs.specular_spp = 8;
+    f.mode = mode;
+    struct render_counters counters = {0, 0, 0, 0};
+    struct render_result whole = render_synthetic(&f, NULL, &counters);
+    CHECK(t, counters.passes == 8);
+    int boosted = 0, plain = 0;
+    for (int y = 0; y < 20; y++)
+        for (int x = 0; x < 20; x++) {
+            struct pixel_value p = render_one_pixel(&f, x, y);
+            int grid_meets = 0;
+            for (int k = 0; k < 9; k++)
+                grid_meets |= ray_meets_a_ball(f.scene, x + 0.5 * (k % 3), y + 0.5 * (k / 3));
+            if (ray_meets_a_ball(f.scene, x + 0.5, y + 0.5)) {
+                CHECK(t, p.n == 8);
+                boosted++;
+            } else if (!grid_meets) {
+                CHECK(t, p.n == 2);
+                plain++;
+            }
+            CHECK(t, p.n == 2 || p.n == 8);
+            struct pixel_value own = own_samples(&f, x, y, p.n);
+            CHECK(t, same_vec3(p.mean, own.mean) && same_vec3(image_get(whole.image, x, y), own.mean));
+        }
+    CHECK(t, boosted >= 10 && plain >= 200); /* both kinds are really there */
+    render_result_free(&whole);
+    scene_free(f.scene);
+}
+
 void test_render(struct check *t)
 {
     RUN_TEST(t, test_point_light_over_plane);
@@ -561,4 +623,5 @@ void test_render(struct check *t)
     RUN_TEST(t, test_adaptive_crop_matches_whole_image);
     RUN_TEST(t, test_adaptive_pixel_is_mean_of_own_samples);
     RUN_TEST(t, test_adaptive_checkpoint_mean_and_work);
+    RUN_TEST(t, test_specular_pixels_take_specular_spp);
 }

@@ -44,6 +44,9 @@ static const struct option_spec specs[] = {
     {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N",
      "camera samples per pixel (default 16; 1994 and 1996: 64; 2008: eye rays per pixel, "
      "default 16)"},
+    {"--specular-spp", OPT_INT, FIELD(specular_spp), 1, MAX_SPP, "N",
+     "camera samples of a pixel through which the camera sees an ideal mirror or glass "
+     "surface, at least --spp (default: --spp; 1996: 4 x --spp; not with 2008)"},
     {"--width", OPT_INT, FIELD(width), 1, MAX_IMAGE_SIDE, "N", "image width (default: scene's)"},
     {"--height", OPT_INT, FIELD(height), 1, MAX_IMAGE_SIDE, "N",
      "image height (default: scene's)"},
@@ -411,6 +414,16 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
                  : o->mode == MODE_JENSEN1996 ? J96_DEFAULT_SPP
                  : o->mode == MODE_JENSEN1994 ? J94_DEFAULT_SPP
                                               : DEFAULT_SPP;
+    if (o->mode == MODE_PPM2008 && o->specular_spp > 0)
+        return error_set(err, "", 0, "--specular-spp: not available with --mode 2008, whose "
+                                     "eye rays all store hit points once");
+    if (o->specular_spp == 0) /* spp <= MAX_SPP, so the product cannot overflow */
+        o->specular_spp = o->mode == MODE_JENSEN1996
+                              ? (int)fmin(J96_SPECULAR_SPP_FACTOR * o->spp, MAX_SPP)
+                              : o->spp;
+    if (o->specular_spp < o->spp)
+        return error_set(err, "", 0, "--specular-spp %d: expected at least --spp (%d)",
+                         o->specular_spp, o->spp);
     if (check_global_work_options(o, err) < 0)
         return -1;
     if (o->mode == MODE_PPM2008 && o->variance != NULL)

@@ -5,9 +5,10 @@
  * Invariant: after pass p, pixel i has taken n[i] <= p samples, samples 0..n[i]-1, and
  * sum[3i + c] holds the sum of their channel c, added in sample order; sum2 (when kept)
  * the sum of their squares, and lum (when adaptive) their luminance's mean and summed
- * squared deviation. Without the adaptive rule n[i] = p. A pixel stops only by the rule, and once
- * n[i] < p it never samples again: pass p samples pixel i exactly when n[i] = p and the
- * rule, read at n[i], does not stop it.
+ * squared deviation. A pixel stops by the rule or at its target (spp, or specular_spp where
+ * it sees an ideal specular surface), and once n[i] < p it never samples again: pass p
+ * samples pixel i exactly when n[i] = p < target[i] and the rule, read at n[i], does not
+ * stop it. Without the rule n[i] = min(p, target[i]).
  */
 #include "render.h"
 
@@ -20,6 +21,7 @@
 
 #include "../base/alloc.h"
 #include "../base/sequence02.h"
+#include "../scene/brdf.h"
 
 struct accumulator {
     int width, height;       /* of the window                                            */
@@ -29,7 +31,10 @@ struct accumulator {
                                 the mean m of the samples' luminance y, and the sum of
                                 their (y - m)^2                                          */
     int *n;                  /* owned: samples taken by each pixel, >= 1 after pass 1    */
+    int *target;             /* owned: the samples each pixel takes at most              */
+    int most;                /* the largest target: the passes run at most               */
     unsigned long long n_samples; /* sum of n[]                                          */
+    unsigned long long n_target;  /* sum of target[]                                     */
     size_t n_active;         /* pixels the last pass sampled                             */
 };
 
@@ -45,6 +50,7 @@ struct render_settings render_settings_whole(const struct scene *scene, uint64_t
     memset(&rs, 0, sizeof rs);
     rs.seed = seed;
     rs.spp = spp;
+    rs.specular_spp = 0;
     rs.max_depth = max_depth;
     rs.x1 = scene->width;
     rs.y1 = scene->height;
@@ -81,6 +87,45 @@ static int pixel_stops(const struct accumulator *acc, size_t i, const struct ren
     return sqrt(s2 / n) <= rs->adaptive_error * fmax(m, ADAPTIVE_FLOOR);
 }
 
+/* Whether the camera sees an ideal mirror or glass surface (an all-delta material) through
+ * pixel (x, y) of the whole image: rays through its centre and its four corners, counted.
+ * The pixel's own samples are not asked (render.h says why), and (x, y) alone decides, so
+ * a crop takes the same counts as the whole image. */
+static int pixel_sees_specular(const struct scene *scene, int x, int y,
+                               struct render_counters *counters)
+{
+    static const double at[5][2] = {{0.5, 0.5}, {0, 0}, {1, 0}, {0, 1}, {1, 1}};
+    for (int k = 0; k < 5; k++) {
+        struct hit hit;
+        counters->rays++;
+        if (scene_intersect(scene, camera_ray(&scene->camera, x + at[k][0], y + at[k][1]),
+                            INFINITY, &hit) &&
+            brdf_is_delta(&scene->materials[hit.material]))
+            return 1;
+    }
+    return 0;
+}
+
+/* Each pixel's target: rs->specular_spp where that is more than rs->spp and the pixel
+ * sees an ideal specular surface, else rs->spp; and their sum and largest. Nothing is
+ * probed when specular_spp is not more. */
+static void set_targets(const struct scene *scene, const struct render_settings *rs,
+                        struct accumulator *acc, struct render_counters *counters)
+{
+    acc->most = rs->spp;
+    acc->n_target = 0;
+    for (int y = rs->y0; y < rs->y1; y++)
+        for (int x = rs->x0; x < rs->x1; x++) {
+            size_t i = (size_t)(y - rs->y0) * (size_t)acc->width + (size_t)(x - rs->x0);
+            acc->target[i] = rs->spp;
+            if (rs->specular_spp > rs->spp && pixel_sees_specular(scene, x, y, counters)) {
+                acc->target[i] = rs->specular_spp;
+                acc->most = rs->specular_spp;
+            }
+            acc->n_target += (unsigned long long)acc->target[i];
+        }
+}
+
 /* Adds radiance l as pixel i's next sample. */
 static void add_sample(struct accumulator *acc, size_t i, struct vec3 l)
 {
@@ -114,8 +159,9 @@ static void render_pass(const struct scene *scene, const struct render_settings 
         for (int x = rs->x0; x < rs->x1; x++) {
             size_t i = (size_t)(y - rs->y0) * (size_t)acc->width + (size_t)(x - rs->x0);
             /* n[i] < s: stopped earlier (the rule, reading the same sums, would say so
-             * again; this test is cheaper), or the rule stops it now. */
-            if (acc->n[i] != s || pixel_stops(acc, i, rs))
+             * again; this test is cheaper), or its target is reached, or the rule stops
+             * it now. */
+            if (acc->n[i] != s || s == acc->target[i] || pixel_stops(acc, i, rs))
                 continue;
             struct rng rng;
             struct ray ray = camera_sample(scene, rs->seed, x, y, s, &rng);
@@ -166,18 +212,18 @@ static long long samples_per_pixel(const struct accumulator *acc)
     return (long long)((2 * acc->n_samples + pixels) / (2 * pixels));
 }
 
-/* Without adaptive sampling: passes and the time left at the rate so far. With it: passes,
+/* Without adaptive sampling: passes and the time left at the rate so far per sample (after
+ * at least one pass, so n_samples > 0). With it: passes,
  * and how many pixels the last pass sampled, since the time left cannot be foreseen. */
-static void show_progress(const struct render_settings *rs, const struct accumulator *acc,
-                          int passes, double seconds, int done)
+static void show_progress(const struct accumulator *acc, int passes, double seconds, int done)
 {
     if (acc->lum == NULL) {
-        double left = passes > 0 ? seconds * (rs->spp - passes) / passes : 0.0;
+        double left = seconds * (double)(acc->n_target - acc->n_samples) / acc->n_samples;
         fprintf(stderr, "\rphoton: %d/%d samples per pixel, %.1f s, about %.0f s left   ",
-                passes, rs->spp, seconds, left);
+                passes, acc->most, seconds, left);
     } else {
         fprintf(stderr, "\rphoton: pass %d of at most %d, %zu of %zu pixels sampling, %.1f s   ",
-                passes, rs->spp, acc->n_active, (size_t)acc->width * (size_t)acc->height,
+                passes, acc->most, acc->n_active, (size_t)acc->width * (size_t)acc->height,
                 seconds);
     }
     if (done)
@@ -185,7 +231,7 @@ static void show_progress(const struct render_settings *rs, const struct accumul
     fflush(stderr);
 }
 
-/* Takes sample passes until spp are done, every pixel has stopped or the time limit has
+/* Takes sample passes until every pixel has reached its target or stopped, or the time limit has
  * passed, calling the checkpoint after passes 1, 2, 4, ... and after the last. Returns the
  * passes that sampled a pixel and the rendering seconds (checkpoint work excluded) in
  * *seconds. */
@@ -198,18 +244,18 @@ static int run_passes(const struct scene *scene, const struct render_settings *r
     double excluded = 0.0, last_shown = 0.0;
     int passes = 0, checked = 0;
     struct image *mean = checkpoint != NULL ? image_create(acc->width, acc->height) : NULL;
-    while (passes < rs->spp &&
+    while (passes < acc->most &&
            !(passes > 0 && rs->time_limit > 0 && cpu_seconds(start) - excluded >= rs->time_limit)) {
         render_pass(scene, rs, est, passes, acc, counters);
         if (acc->n_active == 0)
-            break; /* the adaptive rule has stopped every pixel */
+            break; /* the adaptive rule has stopped every pixel still below its target */
         passes++;
         *seconds = cpu_seconds(start) - excluded;
-        if (rs->progress && (passes == rs->spp || *seconds - last_shown >= 0.5)) {
-            show_progress(rs, acc, passes, *seconds, passes == rs->spp);
+        if (rs->progress && (passes == acc->most || *seconds - last_shown >= 0.5)) {
+            show_progress(acc, passes, *seconds, passes == acc->most);
             last_shown = *seconds;
         }
-        int last = passes == rs->spp ||
+        int last = passes == acc->most ||
                    (rs->time_limit > 0 && *seconds >= rs->time_limit);
         if (mean != NULL && (is_power_of_two(passes) || last)) {
             mean_image(acc, mean);
@@ -218,8 +264,8 @@ static int run_passes(const struct scene *scene, const struct render_settings *r
             checked = passes;
         }
     }
-    if (rs->progress && passes != rs->spp)
-        show_progress(rs, acc, passes, *seconds, 1); /* ended early: end the line */
+    if (rs->progress && passes != acc->most)
+        show_progress(acc, passes, *seconds, 1); /* ended early: end the line */
     if (mean != NULL && checked != passes) {
         mean_image(acc, mean);
         checkpoint->at(checkpoint->context, mean, samples_per_pixel(acc), *seconds);
@@ -244,6 +290,8 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
     acc.sum2 = want_variance ? xcalloc(3 * n, sizeof *acc.sum2, "pixel squares") : NULL;
     acc.lum = adaptive ? xcalloc(2 * n, sizeof *acc.lum, "pixel luminance sums") : NULL;
     acc.n = xcalloc(n, sizeof *acc.n, "pixel sample counts");
+    acc.target = xcalloc(n, sizeof *acc.target, "pixel sample targets");
+    set_targets(scene, rs, &acc, counters);
     acc.n_samples = 0;
     acc.n_active = 0;
     struct render_result result;
@@ -254,6 +302,7 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
     result.image = image_create(acc.width, acc.height);
     mean_image(&acc, result.image);
     result.variance = want_variance ? variance_image(&acc) : NULL;
+    free(acc.target);
     free(acc.n);
     free(acc.lum);
     free(acc.sum2);

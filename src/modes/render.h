@@ -16,8 +16,9 @@
  *
  * Adaptive sampling (Jensen & Christensen 1994, Sec. 5: "each pixel has been sampled
  * adaptively based on the variance of each sample") is off when adaptive_error is 0, and
- * then every pixel takes every pass. When it is on, a pixel that has taken n samples, n a
- * power of two with min_spp <= n < spp, takes no more once
+ * then every pixel takes every pass up to its target. When it is on, a pixel that has taken n samples, n a
+ * power of two with min_spp <= n < spp (specular_spp where that applies, below), takes no
+ * more once
  *     sqrt(s^2 / n) <= adaptive_error * max(m, ADAPTIVE_FLOOR),
  * m and s^2 = (sum of (y - m)^2) / (n - 1) being the mean and the sample variance of the
  * luminance y (vec3_luminance) of its n samples: the estimated standard error of its mean
@@ -27,6 +28,15 @@
  * powers of two leaves each pixel's camera points stratified (camera_sample). The rule
  * reads nothing but the pixel's own samples, so the crop promise above still holds, and a
  * pixel that stops after n samples has exactly the value a render with spp = n gives it.
+ *
+ * Specular pixels. A pixel through which the camera sees an ideal mirror or glass surface
+ * takes specular_spp samples instead of spp. Light reaching the eye along a chain of ideal
+ * specular bounces (the light's image in a glass ball seen in a mirror, say) can be a
+ * bright speck far smaller than a pixel, which the pixel's camera points alone find: its
+ * noise falls only with more of them. Whether a pixel sees such a surface is decided by
+ * rays through its centre and four corners, not by its samples, so the number of samples
+ * does not depend on what they found and the mean stays unbiased; a pixel with n samples
+ * still has exactly the value a render with spp = n gives it.
  */
 #ifndef PHOTON_RENDER_H
 #define PHOTON_RENDER_H
@@ -61,6 +71,9 @@ struct render_settings {
                               bound on each pixel's standard error, relative to its mean */
     int min_spp;        /* with adaptive_error > 0: the samples every pixel takes before
                            the rule applies, a power of two >= 2 (it needs a variance)  */
+    int specular_spp;   /* when more than spp: the samples, in place of spp, of a pixel
+                           through which the camera sees an ideal mirror or glass
+                           surface; otherwise those take spp too                         */
 };
 
 struct render_counters {
@@ -103,7 +116,7 @@ struct render_result {
 };
 
 /* Settings for the whole image of scene (finished): seed, spp and max_depth as given, no
- * time limit, no progress line, adaptive sampling off. Callers change the window or the
+ * time limit, no progress line, adaptive sampling off, no specular pixels' samples. Callers change the window or the
  * rest as they need. */
 struct render_settings render_settings_whole(const struct scene *scene, uint64_t seed, int spp,
                                              int max_depth);
@@ -119,7 +132,8 @@ struct ray camera_sample(const struct scene *scene, uint64_t seed, int x, int y,
                          struct rng *rng);
 
 /* Renders the settings' window of the scene's image (width x1 - x0, height y1 - y0),
- * each pixel taking up to rs->spp samples (fewer by the adaptive rule or the time limit).
+ * each pixel taking up to rs->spp samples, or rs->specular_spp where it sees an ideal
+ * specular surface (fewer by the adaptive rule or the time limit).
  * The caller guarantees min_spp as documented when adaptive_error > 0 (asserted).
  * want_variance: also fill result->variance. checkpoint may be NULL. */
 struct render_result render_pixels(const struct scene *scene, const struct render_settings *rs,
