@@ -4,7 +4,8 @@
  * tracer, on the Cornell boxes whose references are in reference/.
  *
  * For each scene and each photon mode at its defaults (2008: 256 x 256, 16 eye rays, 64
- * passes of 100,000 photons; 1996: 64 samples per pixel, the maps, the irradiance cache),
+ * passes of 100,000 photons; 1996: 64 samples per pixel, 256 where the camera sees a
+ * mirror or glass, the maps, the irradiance cache),
  * the mode sets the target, the relmse it ends with, and its seconds to reach it; pt then
  * renders, with checkpoints after 1, 2, 4, ... samples per pixel, until it reaches the target
  * or has run four times as long. pt's time to the target is read off its checkpoints
@@ -87,6 +88,7 @@ static void render_2008(const struct scene *scene, const struct checkpoint *at)
 static void render_1996(const struct scene *scene, const struct checkpoint *at)
 {
     struct render_settings rs = render_settings_whole(scene, 1, J96_DEFAULT_SPP, MAX_DEPTH_LIMIT);
+    rs.specular_spp = J96_SPECULAR_SPP_FACTOR * J96_DEFAULT_SPP; /* as on the command line */
     struct jensen1996_settings js = jensen1996_settings_default();
     struct render_counters counters = {0, 0, 0, 0};
     struct jensen1996_stats stats;
