@@ -52,6 +52,10 @@ static void test_options(struct check *t)
              && log_contains("eye rays"));
     CHECK(t, photon("--mode 2008 --variance v.pfm scenes/cornell.scene") == 2 &&
              log_contains("--variance"));
+    CHECK(t, photon("--spp 8 --specular-spp 4 scenes/cornell.scene") == 2 &&
+             log_contains("--specular-spp"));
+    CHECK(t, photon("--mode 2008 --specular-spp 64 scenes/cornell.scene") == 2 &&
+             log_contains("--specular-spp"));
     CHECK(t, photon("") == 2 && log_contains("no scene"));
     CHECK(t, photon("a.scene b.scene") == 2 && log_contains("more than one"));
 }

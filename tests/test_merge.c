@@ -62,8 +62,8 @@ static const char *const same_pixels_options[] = {
     "--no-progress", "--save-photons w.work", "--load-photons w.work",
 };
 static const char *const other_pixels_options[] = {
-    "--mode pt", "--seed 2", "--spp 3", "--width 100", "--height 100", "--adaptive 0.1",
-    "--max-depth 3", "--photons 7", "--gather 9", "--max-radius 2", "--cone 2",
+    "--mode pt", "--seed 2", "--spp 3", "--specular-spp 40", "--width 100", "--height 100",
+    "--adaptive 0.1", "--max-depth 3", "--photons 7", "--gather 9", "--max-radius 2", "--cone 2",
     "--caustic-photons 5", "--caustic-gather 5", "--gather-rays 9", "--glossy-rays 2",
     "--cache-accuracy 0.2", "--accurate-distance 2", "--accurate-weight 0.2",
     "--no-shadow-photons", "--one-map", "--differential 3", "--light-samples 9",

@@ -46,7 +46,7 @@ static const struct option_spec specs[] = {
      "default 16)"},
     {"--specular-spp", OPT_INT, FIELD(specular_spp), 1, MAX_SPP, "N",
      "camera samples of a pixel through which the camera sees an ideal mirror or glass "
-     "surface, at least --spp (default: --spp; 1996: 4 x --spp; not with 2008)"},
+     "surface, at least --spp (default: --spp; 1994, 1996: 4 x --spp; not with 2008)"},
     {"--width", OPT_INT, FIELD(width), 1, MAX_IMAGE_SIDE, "N", "image width (default: scene's)"},
     {"--height", OPT_INT, FIELD(height), 1, MAX_IMAGE_SIDE, "N",
      "image height (default: scene's)"},
@@ -74,10 +74,10 @@ static const struct option_spec specs[] = {
      "photons, 1994, 1996: read the global work from FILE (saved by the same command but "
      "for -o, --crop and the like) instead of doing it"},
     {"--photons", OPT_INT, FIELD(photons), 1, MAX_PHOTONS, "N",
-     "photon modes: photons emitted (default: photons 200000, 1994 1000000, 1996 4000000 for "
+     "photon modes: photons emitted (default: photons 200000, 1994 4000000, 1996 4000000 for "
      "the global map)"},
     {"--gather", OPT_INT, FIELD(gather), 1, MAX_GATHER, "K",
-     "photon modes: photons in each radiance or irradiance estimate (default 100)"},
+     "photon modes: photons in each radiance or irradiance estimate (default 100; 1994: 50)"},
     {"--max-radius", OPT_REAL, FIELD(max_radius), 0, 1e30, "R",
      "photon modes: largest gathering radius (default: 1/10 of the scene's diagonal)"},
     {"--cone", OPT_REAL, FIELD(cone), 0, 1e6, "K",
@@ -184,7 +184,7 @@ static void set_defaults(struct options *o)
     o->progress = -1;
     o->exposure = 1.0;
     o->photons = 0; /* the mode's default, set after parsing */
-    o->gather = PHOTONS_DEFAULT_GATHER;
+    o->gather = 0; /* the mode's default, set after parsing */
     o->passes = PPM_DEFAULT_PASSES;
     o->photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
     o->alpha = PPM_DEFAULT_ALPHA;
@@ -401,6 +401,8 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         o->photons = o->mode == MODE_JENSEN1996   ? J96_DEFAULT_PHOTONS
                      : o->mode == MODE_JENSEN1994 ? J94_DEFAULT_PHOTONS
                                                   : PHOTONS_DEFAULT_N;
+    if (o->gather == 0)
+        o->gather = o->mode == MODE_JENSEN1994 ? J94_DEFAULT_GATHER : PHOTONS_DEFAULT_GATHER;
     if (o->mode == MODE_PPM2008 && o->adaptive > 0)
         return error_set(err, "", 0, "--adaptive: not available with --mode 2008, whose "
                                      "pixels are not means of independent samples");
@@ -418,8 +420,8 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         return error_set(err, "", 0, "--specular-spp: not available with --mode 2008, whose "
                                      "eye rays all store hit points once");
     if (o->specular_spp == 0) /* spp <= MAX_SPP, so the product cannot overflow */
-        o->specular_spp = o->mode == MODE_JENSEN1996
-                              ? (int)fmin(J96_SPECULAR_SPP_FACTOR * o->spp, MAX_SPP)
+        o->specular_spp = o->mode == MODE_JENSEN1996 || o->mode == MODE_JENSEN1994
+                              ? (int)fmin(SPECULAR_SPP_FACTOR * o->spp, MAX_SPP)
                               : o->spp;
     if (o->specular_spp < o->spp)
         return error_set(err, "", 0, "--specular-spp %d: expected at least --spp (%d)",

@@ -13,14 +13,17 @@
 #include "../photon/global_work.h"
 #include "render.h"
 
-#define J94_DEFAULT_PHOTONS 1000000    /* --photons: light rays of pass 1; searches cost
-                                          log N, so a large map is cheap (README)        */
+#define J94_DEFAULT_PHOTONS 4000000    /* --photons: light rays of pass 1; searches cost
+                                          log N, so a large map is cheap, and its
+                                          estimates' discs, hanging over the walls'
+                                          edges, are small (README)                      */
 #define J94_DEFAULT_SPP 64             /* --spp: the cache and maps are shared by all
                                           samples, so the final pass is the cheap part;
                                           16 leave the light's outline aliased by 4%    */
-#define J94_DEFAULT_GATHER 100         /* --gather: photons in an irradiance estimate (the
+#define J94_DEFAULT_GATHER 50          /* --gather: photons in an irradiance estimate (the
                                           paper used 40 on the desk, 80 on the landscape,
-                                          200 for its Fig. 8)                            */
+                                          200 for its Fig. 8); with 100 the discs at the
+                                          open front's corners left them 3.5% dark      */
 #define J94_DEFAULT_GATHER_RAYS 512    /* --gather-rays: irradiance-gradient rays of one
                                           cache record (Ward and Heckbert's strata); at
                                           256 a record's noise near the glass ball put

@@ -18,10 +18,6 @@
                                               balls still reached 5% (README)            */
 #define J96_DEFAULT_SPP 64                 /* --spp: the final pass costs little beside
                                               the maps and the cache all samples share   */
-#define J96_SPECULAR_SPP_FACTOR 4           /* --specular-spp is 4 x --spp: at 64 samples
-                                              the light's sub-pixel image in the glass
-                                              ball, seen in the mirror, left its block
-                                              4% off (README)                            */
 #define J96_DEFAULT_CAUSTIC_PHOTONS 1000000 /* --caustic-photons: at 100,000 the glass
                                                ball's caustic spread 4% past its edges  */
 #define J96_DEFAULT_CAUSTIC_GATHER 60      /* photons in a caustic estimate               */

@@ -88,7 +88,7 @@ static void render_2008(const struct scene *scene, const struct checkpoint *at)
 static void render_1996(const struct scene *scene, const struct checkpoint *at)
 {
     struct render_settings rs = render_settings_whole(scene, 1, J96_DEFAULT_SPP, MAX_DEPTH_LIMIT);
-    rs.specular_spp = J96_SPECULAR_SPP_FACTOR * J96_DEFAULT_SPP; /* as on the command line */
+    rs.specular_spp = SPECULAR_SPP_FACTOR * J96_DEFAULT_SPP; /* as on the command line */
     struct jensen1996_settings js = jensen1996_settings_default();
     struct render_counters counters = {0, 0, 0, 0};
     struct jensen1996_stats stats;
