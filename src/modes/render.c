@@ -6,7 +6,7 @@
  * sum[3i + c] holds the sum of their channel c, added in sample order; sum2 (when kept)
  * the sum of their squares, and lum (when adaptive) their luminance's mean and summed
  * squared deviation. A pixel stops by the rule or at its target (spp, or specular_spp where
- * it sees an ideal specular surface), and once n[i] < p it never samples again: pass p
+ * the camera sees a light through mirrors or glass in it), and once n[i] < p it never samples again: pass p
  * samples pixel i exactly when n[i] = p < target[i] and the rule, read at n[i], does not
  * stop it. Without the rule n[i] = min(p, target[i]).
  */
@@ -21,7 +21,12 @@
 
 #include "../base/alloc.h"
 #include "../base/sequence02.h"
-#include "../scene/brdf.h"
+#include "surface.h"
+
+#define SPECULAR_PROBES 16     /* a pixel's probe rays: 16 x 16, 1/16 of a pixel apart, finds
+                                  a light's image 1/10 of a pixel wide                     */
+#define SPECULAR_CHAIN_DEPTH 8 /* ideal specular surfaces a probe follows: a glass ball seen
+                                  in a mirror ball is three                                */
 
 struct accumulator {
     int width, height;       /* of the window                                            */
@@ -87,27 +92,60 @@ static int pixel_stops(const struct accumulator *acc, size_t i, const struct ren
     return sqrt(s2 / n) <= rs->adaptive_error * fmax(m, ADAPTIVE_FLOOR);
 }
 
-/* Whether the camera sees an ideal mirror or glass surface (an all-delta material) through
- * pixel (x, y) of the whole image: rays through its centre and its four corners, counted.
- * The pixel's own samples are not asked (render.h says why), and (x, y) alone decides, so
- * a crop takes the same counts as the whole image. */
-static int pixel_sees_specular(const struct scene *scene, int x, int y,
+/* Whether ray, followed through every lobe of each ideal mirror or glass surface (an
+ * all-delta material) it meets, at most SPECULAR_CHAIN_DEPTH of them, reaches a light's
+ * emitting side after bounces >= 1 of them. Its rays are counted. */
+static int chain_reaches_light(const struct scene *scene, struct ray ray, int bounces,
                                struct render_counters *counters)
 {
-    static const double at[5][2] = {{0.5, 0.5}, {0, 0}, {1, 0}, {0, 1}, {1, 1}};
-    for (int k = 0; k < 5; k++) {
-        struct hit hit;
-        counters->rays++;
-        if (scene_intersect(scene, camera_ray(&scene->camera, x + at[k][0], y + at[k][1]),
-                            INFINITY, &hit) &&
-            brdf_is_delta(&scene->materials[hit.material]))
+    struct surface s;
+    double t;
+    if (!ray_surface(scene, ray, counters, &s, &t))
+        return 0;
+    struct vec3 le = surface_emission(&s);
+    if (bounces > 0 && (le.x > 0 || le.y > 0 || le.z > 0))
+        return 1;
+    if (bounces == SPECULAR_CHAIN_DEPTH || !brdf_is_delta(s.material))
+        return 0;
+    struct shading_frame frame = shading_frame_from_normal(s.ns, s.front, TRANSPORT_RADIANCE);
+    struct brdf_sample lobes[2];
+    int n_lobes = brdf_delta_lobes(s.material, &frame, s.wo, lobes);
+    for (int k = 0; k < n_lobes; k++)
+        if (chain_reaches_light(scene, surface_ray(&s, lobes[k].wi, lobes[k].transmitted),
+                                bounces + 1, counters))
             return 1;
-    }
     return 0;
 }
 
-/* Each pixel's target: rs->specular_spp where that is more than rs->spp and the pixel
- * sees an ideal specular surface, else rs->spp; and their sum and largest. Nothing is
+/* Whether the camera sees a light through mirrors or glass in pixel (x, y) of the whole
+ * image (render.h): only where a ray through the pixel's centre or a corner meets such a
+ * surface first, a SPECULAR_PROBES x SPECULAR_PROBES grid of rays through the pixel,
+ * each followed by chain_reaches_light(). Nothing random and nothing of the pixel's own
+ * samples is read, and (x, y) alone decides, so a crop takes the same counts as the
+ * whole image. */
+static int pixel_sees_light_through_specular(const struct scene *scene, int x, int y,
+                                             struct render_counters *counters)
+{
+    static const double at[5][2] = {{0.5, 0.5}, {0, 0}, {1, 0}, {0, 1}, {1, 1}};
+    int specular = 0;
+    for (int k = 0; k < 5 && !specular; k++) {
+        struct surface s;
+        double t;
+        specular = ray_surface(scene, camera_ray(&scene->camera, x + at[k][0], y + at[k][1]),
+                               counters, &s, &t) &&
+                   brdf_is_delta(s.material);
+    }
+    for (int j = 0; j < SPECULAR_PROBES && specular; j++)
+        for (int i = 0; i < SPECULAR_PROBES; i++) {
+            double px = x + (i + 0.5) / SPECULAR_PROBES, py = y + (j + 0.5) / SPECULAR_PROBES;
+            if (chain_reaches_light(scene, camera_ray(&scene->camera, px, py), 0, counters))
+                return 1;
+        }
+    return 0;
+}
+
+/* Each pixel's target: rs->specular_spp where that is more than rs->spp and the camera
+ * sees a light through mirrors or glass in the pixel, else rs->spp; and their sum and largest. Nothing is
  * probed when specular_spp is not more. */
 static void set_targets(const struct scene *scene, const struct render_settings *rs,
                         struct accumulator *acc, struct render_counters *counters)
@@ -118,7 +156,8 @@ static void set_targets(const struct scene *scene, const struct render_settings 
         for (int x = rs->x0; x < rs->x1; x++) {
             size_t i = (size_t)(y - rs->y0) * (size_t)acc->width + (size_t)(x - rs->x0);
             acc->target[i] = rs->spp;
-            if (rs->specular_spp > rs->spp && pixel_sees_specular(scene, x, y, counters)) {
+            if (rs->specular_spp > rs->spp &&
+                pixel_sees_light_through_specular(scene, x, y, counters)) {
                 acc->target[i] = rs->specular_spp;
                 acc->most = rs->specular_spp;
             }
@@ -231,16 +270,15 @@ static void show_progress(const struct accumulator *acc, int passes, double seco
     fflush(stderr);
 }
 
-/* Takes sample passes until every pixel has reached its target or stopped, or the time limit has
- * passed, calling the checkpoint after passes 1, 2, 4, ... and after the last. Returns the
- * passes that sampled a pixel and the rendering seconds (checkpoint work excluded) in
- * *seconds. */
+/* Takes sample passes until every pixel has reached its target or stopped, or the time
+ * limit has passed, calling the checkpoint after passes 1, 2, 4, ... and after the last.
+ * Returns the passes that sampled a pixel and the rendering seconds since start
+ * (checkpoint work excluded) in *seconds. */
 static int run_passes(const struct scene *scene, const struct render_settings *rs,
-                      struct radiance_estimator est, struct accumulator *acc,
+                      struct radiance_estimator est, struct accumulator *acc, clock_t start,
                       const struct checkpoint *checkpoint, struct render_counters *counters,
                       double *seconds)
 {
-    clock_t start = clock();
     double excluded = 0.0, last_shown = 0.0;
     int passes = 0, checked = 0;
     struct image *mean = checkpoint != NULL ? image_create(acc->width, acc->height) : NULL;
@@ -291,12 +329,13 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
     acc.lum = adaptive ? xcalloc(2 * n, sizeof *acc.lum, "pixel luminance sums") : NULL;
     acc.n = xcalloc(n, sizeof *acc.n, "pixel sample counts");
     acc.target = xcalloc(n, sizeof *acc.target, "pixel sample targets");
+    clock_t start = clock(); /* the probes of set_targets() are rendering time too */
     set_targets(scene, rs, &acc, counters);
     acc.n_samples = 0;
     acc.n_active = 0;
     struct render_result result;
     result.seconds = 0.0;
-    counters->passes = run_passes(scene, rs, estimator, &acc, checkpoint, counters,
+    counters->passes = run_passes(scene, rs, estimator, &acc, start, checkpoint, counters,
                                   &result.seconds);
     counters->samples += acc.n_samples;
     result.image = image_create(acc.width, acc.height);

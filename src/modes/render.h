@@ -29,14 +29,17 @@
  * reads nothing but the pixel's own samples, so the crop promise above still holds, and a
  * pixel that stops after n samples has exactly the value a render with spp = n gives it.
  *
- * Specular pixels. A pixel through which the camera sees an ideal mirror or glass surface
- * takes specular_spp samples instead of spp. Light reaching the eye along a chain of ideal
- * specular bounces (the light's image in a glass ball seen in a mirror, say) can be a
- * bright speck far smaller than a pixel, which the pixel's camera points alone find: its
- * noise falls only with more of them. Whether a pixel sees such a surface is decided by
- * rays through its centre and four corners, not by its samples, so the number of samples
- * does not depend on what they found and the mean stays unbiased; a pixel with n samples
- * still has exactly the value a render with spp = n gives it.
+ * Specular pixels. A pixel in which the camera sees a light through mirrors or glass
+ * takes specular_spp samples instead of spp. The light's image after ideal specular
+ * bounces (in a glass ball seen in a mirror ball, say) can be a speck far smaller than a
+ * pixel and far brighter than the rest of it, which only the pixel's camera points find:
+ * its noise falls only with more of them (at 256 samples such a speck left a 16 x 16
+ * block of the specular Cornell box 2-3% noisy). Whether the camera sees one is decided
+ * by probe rays (render.c: a 16 x 16 grid through the pixel, followed through every lobe
+ * of each mirror or glass surface they meet, where a ray through its centre or a corner
+ * meets one), not by its samples, so the number of samples does not depend on what they
+ * found and the mean stays unbiased; a pixel with n samples still has exactly the value
+ * a render with spp = n gives it.
  */
 #ifndef PHOTON_RENDER_H
 #define PHOTON_RENDER_H
@@ -60,7 +63,7 @@
 /* 1994's and 1996's --specular-spp is this many times --spp: at 64 samples the light's
  * sub-pixel image in the glass ball, seen in the mirror ball, left its 16 x 16 block of
  * the specular Cornell box 3-4% off the path tracer's (README). */
-#define SPECULAR_SPP_FACTOR 4
+#define SPECULAR_SPP_FACTOR 64
 #define ADAPTIVE_MIN_SPP 4 /* the command line's min_spp: the paper's "average of 4 samples
                               pr. pixel" is where its adaptive sampling settled            */
 
@@ -76,8 +79,8 @@ struct render_settings {
     int min_spp;        /* with adaptive_error > 0: the samples every pixel takes before
                            the rule applies, a power of two >= 2 (it needs a variance)  */
     int specular_spp;   /* when more than spp: the samples, in place of spp, of a pixel
-                           through which the camera sees an ideal mirror or glass
-                           surface; otherwise those take spp too                         */
+                           in which the camera sees a light through mirrors or glass;
+                           otherwise those take spp too                                  */
 };
 
 struct render_counters {
@@ -136,8 +139,8 @@ struct ray camera_sample(const struct scene *scene, uint64_t seed, int x, int y,
                          struct rng *rng);
 
 /* Renders the settings' window of the scene's image (width x1 - x0, height y1 - y0),
- * each pixel taking up to rs->spp samples, or rs->specular_spp where it sees an ideal
- * specular surface (fewer by the adaptive rule or the time limit).
+ * each pixel taking up to rs->spp samples, or rs->specular_spp where the camera sees a
+ * light through mirrors or glass (fewer by the adaptive rule or the time limit).
  * The caller guarantees min_spp as documented when adaptive_error > 0 (asserted).
  * want_variance: also fill result->variance. checkpoint may be NULL. */
 struct render_result render_pixels(const struct scene *scene, const struct render_settings *rs,
