@@ -455,7 +455,8 @@ static void test_command_line(struct check *t)
                                  "photon_rays=", "bytes_per_photon=20.0\n", "gradient_rays=",
                                  "shadow_rays=", "seconds_photons=", "seconds_cache=",
                                  "seconds_render=", "cache_records=", "nonfinite_samples=0\n",
-                                 "spp=32\n", /* the balls' pixels take 4 x --spp */
+                                 "spp=512\n", /* pixels that see the light in a ball
+                                                  take 64 x --spp */
                                  "samples_per_pixel=", "illumination_ci_maps=",
                                  "projection_maps="};
     for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)

@@ -5,10 +5,10 @@
  * Invariant: after pass p, pixel i has taken n[i] <= p samples, samples 0..n[i]-1, and
  * sum[3i + c] holds the sum of their channel c, added in sample order; sum2 (when kept)
  * the sum of their squares, and lum (when adaptive) their luminance's mean and summed
- * squared deviation. A pixel stops by the rule or at its target (spp, or specular_spp where
- * the camera sees a light through mirrors or glass in it), and once n[i] < p it never samples again: pass p
- * samples pixel i exactly when n[i] = p < target[i] and the rule, read at n[i], does not
- * stop it. Without the rule n[i] = min(p, target[i]).
+ * squared deviation. A pixel stops by the rule or at its target (spp, or specular_spp
+ * where the camera sees a light through mirrors or glass in it), and once n[i] < p it
+ * never samples again: pass p samples pixel i exactly when n[i] = p < target[i] and the
+ * rule, read at n[i], does not stop it. Without the rule n[i] = min(p, target[i]).
  */
 #include "render.h"
 
@@ -120,9 +120,9 @@ static int chain_reaches_light(const struct scene *scene, struct ray ray, int bo
 /* Whether the camera sees a light through mirrors or glass in pixel (x, y) of the whole
  * image (render.h): only where a ray through the pixel's centre or a corner meets such a
  * surface first, a SPECULAR_PROBES x SPECULAR_PROBES grid of rays through the pixel,
- * each followed by chain_reaches_light(). Nothing random and nothing of the pixel's own
- * samples is read, and (x, y) alone decides, so a crop takes the same counts as the
- * whole image. */
+ * each followed by chain_reaches_light(), of which one must reach a light. Nothing random
+ * and nothing of the pixel's own samples is read, and (x, y) alone decides, so a crop
+ * takes the same counts as the whole image. */
 static int pixel_sees_light_through_specular(const struct scene *scene, int x, int y,
                                              struct render_counters *counters)
 {
@@ -145,8 +145,8 @@ static int pixel_sees_light_through_specular(const struct scene *scene, int x, i
 }
 
 /* Each pixel's target: rs->specular_spp where that is more than rs->spp and the camera
- * sees a light through mirrors or glass in the pixel, else rs->spp; and their sum and largest. Nothing is
- * probed when specular_spp is not more. */
+ * sees a light through mirrors or glass in the pixel, else rs->spp; and their sum and
+ * largest. Nothing is probed when specular_spp is not more. */
 static void set_targets(const struct scene *scene, const struct render_settings *rs,
                         struct accumulator *acc, struct render_counters *counters)
 {

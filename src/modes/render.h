@@ -16,9 +16,9 @@
  *
  * Adaptive sampling (Jensen & Christensen 1994, Sec. 5: "each pixel has been sampled
  * adaptively based on the variance of each sample") is off when adaptive_error is 0, and
- * then every pixel takes every pass up to its target. When it is on, a pixel that has taken n samples, n a
- * power of two with min_spp <= n < spp (specular_spp where that applies, below), takes no
- * more once
+ * then every pixel takes every pass up to its target. When it is on, a pixel that has
+ * taken n samples, n a power of two with min_spp <= n < spp (specular_spp where that
+ * applies, below), takes no more once
  *     sqrt(s^2 / n) <= adaptive_error * max(m, ADAPTIVE_FLOOR),
  * m and s^2 = (sum of (y - m)^2) / (n - 1) being the mean and the sample variance of the
  * luminance y (vec3_luminance) of its n samples: the estimated standard error of its mean
@@ -123,8 +123,8 @@ struct render_result {
 };
 
 /* Settings for the whole image of scene (finished): seed, spp and max_depth as given, no
- * time limit, no progress line, adaptive sampling off, no specular pixels' samples. Callers change the window or the
- * rest as they need. */
+ * time limit, no progress line, adaptive sampling off, no specular pixels' samples.
+ * Callers change the window or the rest as they need. */
 struct render_settings render_settings_whole(const struct scene *scene, uint64_t seed, int spp,
                                              int max_depth);
 
