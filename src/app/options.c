@@ -45,8 +45,8 @@ static const struct option_spec specs[] = {
      "camera samples per pixel (default 16; 1994 and 1996: 64; 2008: eye rays per pixel, "
      "default 16)"},
     {"--specular-spp", OPT_INT, FIELD(specular_spp), 1, MAX_SPP, "N",
-     "camera samples of a pixel through which the camera sees an ideal mirror or glass "
-     "surface, at least --spp (default: --spp; 1994, 1996: 4 x --spp; not with 2008)"},
+     "camera samples of a pixel in which the camera sees a light through mirrors or glass, "
+     "at least --spp (default: --spp; 1994, 1996: 64 x --spp; not with 2008)"},
     {"--width", OPT_INT, FIELD(width), 1, MAX_IMAGE_SIDE, "N", "image width (default: scene's)"},
     {"--height", OPT_INT, FIELD(height), 1, MAX_IMAGE_SIDE, "N",
      "image height (default: scene's)"},

@@ -22,8 +22,8 @@ struct options {
     enum mode mode;
     uint64_t seed;
     int spp;                      /* samples per pixel; 0 = the mode's default      */
-    int specular_spp;             /* samples of a pixel that sees an ideal mirror or
-                                     glass surface; 0 = the mode's default          */
+    int specular_spp;             /* samples of a pixel that sees a light through
+                                     mirrors or glass; 0 = the mode's default       */
     int max_depth;                /* longest path followed; -1 = the mode's default */
     int width, height;            /* 0 = the scene's own size                      */
     int crop[4];                  /* x0 y0 x1 y1; crop[2] == 0 means no crop       */

@@ -16,7 +16,9 @@
 #include "../scene/brdf.h"
 #include "options.h"
 
-#define PROBE_DEFAULT_GATHER 200 /* the paper's Fig. 8: "200 photons per estimate" */
+#define PROBE_DEFAULT_GATHER 200      /* the paper's Fig. 8: "200 photons per estimate"  */
+#define PROBE_DEFAULT_PHOTONS 1000000 /* light rays: reference/fig8-*.svg were made with
+                                         them (1994 renders default to more)            */
 #define PROBE_MAX_SAMPLES 1000000
 #define PROBE_USAGE "usage: photon probe SCENE --line X0 Y0 Z0 X1 Y1 Z1 --samples N " \
                     "-o FILE.csv [--normal NX NY NZ] [--photons N] [--gather N] "       \
@@ -87,6 +89,7 @@ static int parse_probe_args(int argc, char **argv, struct probe_args *args, stru
     args->seed = 1;
     args->js = jensen1994_settings_default();
     args->js.gather = PROBE_DEFAULT_GATHER;
+    args->js.n_photons = PROBE_DEFAULT_PHOTONS;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             printf("%s\n\nSamples the irradiance at N points along the line from (X0, Y0, Z0) to "
@@ -94,8 +97,8 @@ static int parse_probe_args(int argc, char **argv, struct probe_args *args, stru
                    "point: x,y,z,\nexact_direct,exact_caustic (point lights and flat mirrors "
                    "only; empty otherwise),\ncaustic_photons, caustic_photons_unchecked, "
                    "all_photons (mode 1994's estimates\nfrom --gather photons, default %d), "
-                   "caustic_illumination (its illumination map).\n", PROBE_USAGE,
-                   PROBE_DEFAULT_GATHER);
+                   "caustic_illumination (its illumination map).\n--photons: light rays, "
+                   "default %d.\n", PROBE_USAGE, PROBE_DEFAULT_GATHER, PROBE_DEFAULT_PHOTONS);
             return 1;
         }
         if (argv[i][0] == '-' && argv[i][1] != '\0') {

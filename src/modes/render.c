@@ -55,7 +55,6 @@ struct render_settings render_settings_whole(const struct scene *scene, uint64_t
     memset(&rs, 0, sizeof rs);
     rs.seed = seed;
     rs.spp = spp;
-    rs.specular_spp = 0;
     rs.max_depth = max_depth;
     rs.x1 = scene->width;
     rs.y1 = scene->height;
@@ -251,9 +250,9 @@ static long long samples_per_pixel(const struct accumulator *acc)
     return (long long)((2 * acc->n_samples + pixels) / (2 * pixels));
 }
 
-/* Without adaptive sampling: passes and the time left at the rate so far per sample (after
- * at least one pass, so n_samples > 0). With it: passes,
- * and how many pixels the last pass sampled, since the time left cannot be foreseen. */
+/* Without adaptive sampling: passes and the time left at the rate so far per sample (shown
+ * after a pass, so n_samples > 0). With it: passes, and how many pixels the last pass
+ * sampled, since the time left cannot be foreseen. */
 static void show_progress(const struct accumulator *acc, int passes, double seconds, int done)
 {
     if (acc->lum == NULL) {
