@@ -18,10 +18,10 @@ set -eu
 top=$(pwd)
 photon=$top/photon
 here=$top/scripts
-[ -x "$photon" ] && [ -f "$here/tile-windows.sh" ] || {
+if [ ! -x "$photon" ] || [ ! -f "$here/tile-windows.sh" ]; then
     echo "check-tiles.sh: run it from the top of the repository, after make" >&2
     exit 2
-}
+fi
 tmp=${TMPDIR:-/tmp}/check-tiles.$$
 mkdir "$tmp"
 trap 'rm -rf "$tmp"' EXIT
@@ -109,6 +109,7 @@ EOF
     chmod +x "$tmp/ssh"
     (
         cd "$tmp/here"
+        # shellcheck disable=SC2086 # the options are words, split on purpose
         "$here/tile-windows.sh" scenes/cornell.scene 2x2 $small >windows.txt
         render="./photon --no-progress $pt scenes/cornell.scene"
         mkdir -p tiles

@@ -42,7 +42,7 @@ case $tiles in
 *) cols=1 rows=$tiles ;;
 esac
 case $cols$rows in '' | *[!0-9]*) die "TILES: expected N or CxR, not '$tiles'" ;; esac
-[ "$cols" -ge 1 ] && [ "$rows" -ge 1 ] || die "TILES: at least one column and one row"
+if [ "$cols" -lt 1 ] || [ "$rows" -lt 1 ]; then die "TILES: at least one column and one row"; fi
 
 if [ -z "$size" ]; then
     [ -f "$scene" ] || die "$scene: no such file"

@@ -70,6 +70,7 @@ done <"$windows"
 
 # One tile: sh -c's arguments are photon, the directory, the scene, the window (one word,
 # split on purpose for --crop), then the photon options.
+# shellcheck disable=SC2016 # expanded by that sh, not this one
 render_tile='photon=$1 dir=$2 scene=$3 window=$4
 shift 4
 exec "$photon" --no-progress "$@" --crop $window -o "$dir/$(echo "$window" | tr " " _).pfm" "$scene"'
