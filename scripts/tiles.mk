@@ -16,7 +16,7 @@
 # OPTIONS, run the same command with `clean` first (merge refuses a mixture anyway: each
 # record keeps the hash of the scene and the options).
 
-PHOTON = ./photon
+PHOTON ?= ./photon
 TILES = 4
 OPTIONS =
 WORK =
