@@ -1,0 +1,70 @@
+#!/bin/sh
+# tests/docs.sh PHOTON -- the documentation says what is true: run from the top of the
+# repository by tests/test_docs.c.
+#
+#  1. Every file a document names (a path under scenes/, reference/, src/, tests/, scripts/)
+#     exists. Placeholders (NAME, FILE, *, $VAR) are not files and are passed over.
+#  2. Every option a document shows on a `./photon` command line is one that photon's
+#     --help (or its subcommand's usage) lists.
+#  3. The README's commands work as shown: every line of its ```sh blocks that starts with
+#     `./photon` or `mkdir` runs, in order, in an empty directory that sees only scenes/ and
+#     reference/, and must exit 0. Renders get `--quality preview` appended (an explicit
+#     option still wins over it), so the whole README runs in well under a minute.
+# Prints one line per problem and "docs: N problems"; exits 1 when there is any.
+set -u
+photon=$1
+case $photon in /*) ;; *) photon=$(pwd)/$photon ;; esac
+docs="README.md src/modes/README.md reference/README.md scripts/README.md tests/bench/README.md"
+problems=0
+problem() { echo "docs: $*"; problems=$((problems + 1)); }
+
+# 1. Files named.
+for doc in $docs; do
+    [ -f "$doc" ] || continue
+    dir=$(dirname "$doc")
+    grep -oE '(\.\./)?(scenes|reference|src|tests|scripts)/[A-Za-z0-9_.+/-]*[A-Za-z0-9_]' "$doc" |
+        sort -u | while read -r path; do
+            case $path in *[A-Z][A-Z][A-Z]*|*'*'*) continue ;; esac
+            [ -e "$path" ] || [ -e "$dir/$path" ] || echo "$doc names $path, which does not exist"
+        done
+done > docs-missing.tmp
+while read -r line; do problem "$line"; done < docs-missing.tmp
+rm -f docs-missing.tmp
+
+# 2. Options shown on command lines.
+usage=$("$photon" --help 2>&1)
+for doc in $docs; do
+    [ -f "$doc" ] || continue
+    grep -E '^\s*(\./)?photon ' "$doc" | grep -oE '(^|\s)--[a-z][a-z0-9-]*' | tr -d ' \t' |
+        sort -u | while read -r option; do
+            printf '%s\n' "$usage" | grep -qe "$option" || echo "$doc shows $option, which photon --help does not list"
+        done
+done > docs-options.tmp
+while read -r line; do problem "$line"; done < docs-options.tmp
+rm -f docs-options.tmp
+
+# 3. The README's commands, in a scratch directory.
+top=$(pwd)
+scratch=$(mktemp -d)
+ln -s "$top/scenes" "$scratch/scenes"
+ln -s "$top/reference" "$scratch/reference"
+awk '/^```sh$/ { inside = 1; next } /^```/ { inside = 0 } inside && /^(\.\/photon|mkdir) / { print }' \
+    README.md > "$scratch/commands"
+n=0
+while read -r command; do
+    n=$((n + 1))
+    case $command in
+    "./photon compare"*|"./photon plot"*|"./photon merge"*|"./photon probe"*) run=$command ;;
+    ./photon*) run="$command --quality preview --no-progress" ;;
+    *) run=$command ;;
+    esac
+    run=$(printf '%s\n' "$run" | sed "s#^\./photon#$photon#")
+    if ! (cd "$scratch" && sh -c "$run" > "$scratch/log" 2>&1); then
+        problem "README command fails: $command"
+        sed 's/^/    /' "$scratch/log" | head -n 5
+    fi
+done < "$scratch/commands"
+rm -rf "$scratch"
+[ "$n" -gt 0 ] || problem "no ./photon command found in README.md's sh blocks"
+echo "docs: $n README commands run, $problems problems"
+[ "$problems" -eq 0 ]
