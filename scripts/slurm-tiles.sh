@@ -6,7 +6,7 @@
 #
 # Submits two jobs with sbatch and prints their ids:
 #   1. an array job, one task per tile: task K renders its --crop window of the image into
-#      TILEDIR/tile-K.pfm (with tile-K.ppm and tile-K.pfm.window), one CPU each;
+#      TILEDIR/tile-K.pfm (with tile-K.png and tile-K.pfm.window), one CPU each;
 #   2. the merge, `photon merge -o OUT.pfm TILEDIR/tile-*.pfm`, submitted with
 #      --dependency=afterok:ARRAYJOB (it starts once every task has succeeded).
 # The same file is the job script: sbatch runs it again with an internal first argument
@@ -22,7 +22,7 @@ usage() {
 usage: scripts/slurm-tiles.sh [script options] SCENE OUT.pfm TILES [photon options ...]
 
 Renders SCENE with photon as a Slurm array job of tiles and merges them into OUT.pfm (and
-OUT.ppm) with a job that depends on the array. Prints the two job ids.
+OUT.png) with a job that depends on the array. Prints the two job ids.
 
   TILES              N     N horizontal bands of (nearly) equal height, task K = band K
                            from the top;
@@ -181,7 +181,7 @@ else
         die "photon could not render a pixel of $scene (see above); give --size WxH to skip this"
     size=$(sed -n 's/^image //p' "$probe.window") # "W H"
     width=${size% *} height=${size#* }
-    rm -f "$probe" "${probe%.pfm}.ppm" "$probe.window"
+    rm -f "$probe" "${probe%.pfm}.png" "$probe.window"
 fi
 case $width$height in '' | *[!0-9]*) die "image size: expected WxH, not '${width}x$height'" ;; esac
 if [ "$cols" -gt "$width" ] || [ "$rows" -gt "$height" ]; then
@@ -201,7 +201,7 @@ for item in $(echo "$array" | tr ',' ' '); do
         die "--only: '$item' is not a task or range of tasks 0..$((n - 1))"
     fi
     while [ "$dry_run" = 0 ] && [ "$k" -le "$last" ]; do
-        rm -f "$tiles_dir/tile-$k.pfm" "$tiles_dir/tile-$k.ppm" "$tiles_dir/tile-$k.pfm.window"
+        rm -f "$tiles_dir/tile-$k.pfm" "$tiles_dir/tile-$k.png" "$tiles_dir/tile-$k.pfm.window"
         k=$((k + 1))
     done
 done
