@@ -48,7 +48,7 @@ static unsigned char *read_whole_file(const char *name, size_t *n)
 
 static uint32_t big_endian_32(const unsigned char *p)
 {
-    return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3];
+    return ((uint32_t)p[0] << 24) | ((uint32_t)p[1] << 16) | ((uint32_t)p[2] << 8) | p[3];
 }
 
 /* PNG's CRC-32 (ISO/IEC 15948 Sec. 5.5) one bit at a time, as the definition reads: the
@@ -75,7 +75,7 @@ static uint32_t adler32_closed_form(const unsigned char *bytes, size_t n)
         s1 += bytes[i];
         s2 += (uint64_t)(n - i) * bytes[i];
     }
-    return (uint32_t)(s2 % 65521) << 16 | (uint32_t)(s1 % 65521);
+    return ((uint32_t)(s2 % 65521) << 16) | (uint32_t)(s1 % 65521);
 }
 
 /* What read_png() found. */
@@ -148,11 +148,11 @@ static int inflate_stored(struct png_read *pr)
         return refuse(pr, "not a zlib header of deflate without a dictionary");
     pr->raw = malloc(n); /* stored blocks hold fewer bytes than the stream */
     for (int final = 0; !final; pr->n_blocks++) {
-        if (at + 5 > n || (z[at] >> 1 & 3) != 0)
+        if (at + 5 > n || ((z[at] >> 1) & 3) != 0)
             return refuse(pr, "a block cut short, or not a stored one");
         final = z[at] & 1;
-        unsigned len = z[at + 1] | (unsigned)z[at + 2] << 8;
-        unsigned nlen = z[at + 3] | (unsigned)z[at + 4] << 8;
+        unsigned len = z[at + 1] | ((unsigned)z[at + 2] << 8);
+        unsigned nlen = z[at + 3] | ((unsigned)z[at + 4] << 8);
         if ((len ^ nlen) != 0xFFFF || len > n - at - 5)
             return refuse(pr, "a stored block's LEN and NLEN disagree, or it runs past");
         if (pr->raw != NULL)

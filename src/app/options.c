@@ -39,8 +39,8 @@ static const struct option_spec specs[] = {
     {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME",
      "rendering mode: direct, pt, photons, 1994, 1996 or 2008 (default direct)"},
     {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm|.png|.ppm",
-     "output image: FILE.pfm (linear radiance) and, beside it, FILE.png to look at; "
-     "-o FILE.ppm writes a PPM there instead (default: SCENE's name, .pfm)"},
+     "output: FILE.pfm (linear radiance) and FILE.png beside it for display; -o FILE.ppm "
+     "writes FILE.ppm in place of the PNG (default: SCENE's name)"},
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)"},
     {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N",
      "camera samples per pixel (default 16; 1994 and 1996: 64; 2008: eye rays per pixel, "
@@ -265,15 +265,14 @@ int read_output(const char *text, char *output, enum display_format *display,
                 struct error *err)
 {
     size_t n = text != NULL ? strlen(text) : 0;
-    const char *ending = n >= 5 ? text + n - 4 : "";
-    int pfm = strcmp(ending, ".pfm") == 0;
-    if (!pfm && strcmp(ending, display_suffix(DISPLAY_PNG)) != 0 &&
-        strcmp(ending, display_suffix(DISPLAY_PPM)) != 0)
+    const char *ending = n >= 5 ? text + n - 4 : ""; /* NAME is not empty */
+    int ppm = strcmp(ending, display_suffix(DISPLAY_PPM)) == 0;
+    if (!ppm && strcmp(ending, ".pfm") != 0 && strcmp(ending, display_suffix(DISPLAY_PNG)) != 0)
         return error_set(err, "", 0, "-o: expected a file name ending in .pfm, .png or .ppm, "
                          "got '%s'", text != NULL ? text : "nothing");
     if (n >= OUTPUT_PATH_MAX)
         return error_set(err, "", 0, "-o: the file name is too long");
-    *display = strcmp(ending, display_suffix(DISPLAY_PPM)) == 0 ? DISPLAY_PPM : DISPLAY_PNG;
+    *display = ppm ? DISPLAY_PPM : DISPLAY_PNG;
     sprintf(output, "%.*s.pfm", (int)(n - 4), text); /* the PFM is always written */
     return 0;
 }

@@ -15,10 +15,10 @@
  *
  * The zlib stream (RFC 1950) is uncompressed deflate (RFC 1951, Sec. 3.2.4: stored
  * blocks): compressing is a program of its own, and the display image is a convenience
- * beside the PFM of record. It costs 5 bytes per 65535 of pixels and the zlib header and
- * trailer. The writer keeps one block in memory and sends it as one IDAT chunk, so any
- * image is written in constant memory and no chunk comes near PNG's 2^31 - 1 byte limit.
- * Written atomically through output_open()/output_commit().
+ * beside the PFM of record. Stored blocks cost 5 bytes per 65535, and the zlib header and
+ * trailer 6 in all. The writer keeps one block in memory and sends it as one IDAT chunk,
+ * so an image of any size is written in constant memory and no chunk nears PNG's limit
+ * of 2^31 - 1 bytes. Written atomically through output_open()/output_commit().
  */
 #include "png.h"
 
@@ -35,21 +35,21 @@
 /* One PNG being written: the CRC table, the running Adler-32 and the block of raw
  * (filtered) scanline bytes not yet sent. */
 struct png_stream {
-    FILE *f;                                /* borrowed: output_open()'s stream       */
-    uint32_t crc_table[256];                /* CRC of each byte value (make_crc_table) */
-    uint32_t crc;                           /* running CRC of the chunk being written */
-    uint32_t adler;                         /* Adler-32 of every raw byte so far       */
-    int header_sent;                        /* whether the zlib header went out       */
-    size_t n;                               /* raw bytes in block[]                   */
-    unsigned char block[STORED_BLOCK_MAX];
+    FILE *f;                 /* borrowed: output_open()'s stream                 */
+    uint32_t crc_table[256]; /* the CRC of each byte value (make_crc_table)      */
+    uint32_t crc;            /* the CRC register of the chunk being written      */
+    uint32_t adler;          /* Adler-32 of every raw byte so far                */
+    int header_sent;         /* whether the zlib header went out                 */
+    size_t n;                /* raw bytes waiting in block[], <= STORED_BLOCK_MAX */
+    unsigned char block[STORED_BLOCK_MAX]; /* the next stored block's bytes      */
 };
 
 /* The big-endian 32-bit integer of Sec. 7.1, into out[0..3]. */
 static void put_u32(unsigned char *out, uint32_t v)
 {
     out[0] = (unsigned char)(v >> 24);
-    out[1] = (unsigned char)(v >> 16 & 0xFF);
-    out[2] = (unsigned char)(v >> 8 & 0xFF);
+    out[1] = (unsigned char)((v >> 16) & 0xFF);
+    out[2] = (unsigned char)((v >> 8) & 0xFF);
     out[3] = (unsigned char)(v & 0xFF);
 }
 
@@ -102,7 +102,7 @@ static uint32_t update_adler32(uint32_t adler, const unsigned char *bytes, size_
         s1 = (s1 + bytes[i]) % ADLER_BASE;
         s2 = (s2 + s1) % ADLER_BASE;
     }
-    return s2 << 16 | s1;
+    return (s2 << 16) | s1;
 }
 
 /* Sends block[] as one IDAT chunk holding one stored block (RFC 1951 Sec. 3.2.4): a
