@@ -137,13 +137,13 @@ static int write_tile_record(const struct run *run, struct error *err)
     return tile_record_write(run->o.output, &r, err);
 }
 
-/* -o's PFM (the name ends in .pfm: parse_options) and the PPM beside it, the variance and,
- * for a crop, its record. A whole render writes no record, so its files stay as before,
- * and removes one an earlier crop left under its name (tile.h). */
+/* -o's PFM (the name ends in .pfm: parse_options) and the display image beside it, the
+ * variance and, for a crop, its record. A whole render writes no record, so its files stay
+ * as before, and removes one an earlier crop left under its name (tile.h). */
 static int write_outputs(struct run *run, struct error *err)
 {
     const struct options *o = &run->o;
-    if (image_write_pair(o->output, run->result.image, o->exposure, err) < 0)
+    if (image_write_pair(o->output, o->display, run->result.image, o->exposure, err) < 0)
         return -1;
     if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
         return -1;
@@ -168,7 +168,7 @@ static double write_snapshot(void *context, const struct image *image, long long
     clock_t start = clock();
     const struct options *o = context;
     struct error err;
-    if (image_write_pair(o->output, image, o->exposure, &err) < 0)
+    if (image_write_pair(o->output, o->display, image, o->exposure, &err) < 0)
         error_print(&err);
     return seconds_since(start);
 }

@@ -17,6 +17,7 @@ struct room {
 
 static const struct room rooms[] = {
     {"base", test_base},         {"image", test_image},         {"compare", test_compare},
+    {"png", test_png},
     {"plot", test_plot},         {"geom", test_geom},           {"scene", test_scene},
     {"brdf", test_brdf},         {"shapes", test_shapes},       {"import", test_import},
     {"photon", test_photon},     {"projection", test_projection}, {"trace", test_trace},

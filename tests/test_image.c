@@ -347,7 +347,7 @@ static void test_ppm_matches_its_pfm(struct check *t)
         image_set(img, k, 1, vec3(c - 1e-13, c - 1e-13, c - 1e-13));
     }
     struct error err;
-    CHECK(t, image_write_pair(pfm, img, 1.0, &err) == 0);
+    CHECK(t, image_write_pair(pfm, DISPLAY_PPM, img, 1.0, &err) == 0);
     struct image *back = pfm_read(pfm, &err);
     CHECK(t, back != NULL && ppm_write(again, back, 1.0, &err) == 0);
     CHECK(t, files_equal(ppm, again));

@@ -369,7 +369,7 @@ static void test_command_line(struct check *t)
     CHECK(t, img != NULL && img->width == 16 && img->height == 16);
     image_free(img);
     remove(OUT ".pfm");
-    remove(OUT ".ppm");
+    remove(OUT ".png");
     remove(OUT ".log");
 }
 

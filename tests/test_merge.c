@@ -258,7 +258,7 @@ static void test_merged_tiles_equal_whole_render(struct check *t)
                                             : "--stats --exposure 4 --progress") == 0);
         CHECK(t, merge_four_tiles() == 0);
         int same = files_equal(OUT "_full.pfm", OUT "_whole.pfm") &&
-                   files_equal(OUT "_full.ppm", OUT "_whole.ppm");
+                   files_equal(OUT "_full.png", OUT "_whole.png");
         CHECK(t, same);
         if (!same)
             fprintf(stderr, "test_merge: mode %s: merged tiles differ from the whole\n", mode);
@@ -273,14 +273,14 @@ static int render_window(const char *name, const int *w, const char *extra)
 }
 
 /* Whether "photon merge -o OUT_full.pfm TILES" exits 2 with message in its output and
- * leaves no OUT_full.pfm, OUT_full.ppm or temporary behind. */
+ * leaves no OUT_full.pfm, OUT_full.png or temporary behind. */
 static int merge_refused(const char *tile_names, const char *message)
 {
     remove(OUT "_full.pfm");
-    remove(OUT "_full.ppm");
+    remove(OUT "_full.png");
     int refused = photon("merge -o " OUT "_full.pfm %s", tile_names) == 2 &&
                   log_contains(message) && !file_exists(OUT "_full.pfm") &&
-                  !file_exists(OUT "_full.ppm") && !file_exists(OUT "_full.pfm.tmp");
+                  !file_exists(OUT "_full.png") && !file_exists(OUT "_full.pfm.tmp");
     if (!refused)
         fprintf(stderr, "test_merge: 'merge %s' was not refused with '%s'\n", tile_names,
                 message);
@@ -330,7 +330,7 @@ static void test_merge_refuses_bad_tile_sets(struct check *t)
                            "_tile3.pfm) and tile 5 (" OUT "_again.pfm) are both the window"));
     CHECK(t, merge_refused("", "at least one tile"));
     CHECK(t, merge_refused("--frobnicate " THREE_TILES, "unknown option '--frobnicate'"));
-    CHECK(t, photon("merge -o " OUT "_full.png " THREE_TILES) == 2 && log_contains(".pfm"));
+    CHECK(t, photon("merge -o " OUT "_full.jpg " THREE_TILES) == 2 && log_contains(".png or"));
     CHECK(t, photon("merge -o " OUT "_full.pfm " THREE_TILES OUT "_tile3.pfm") == 0);
     CHECK(t, photon("merge --help") == 0 && log_contains("usage: photon merge"));
 }
@@ -594,7 +594,7 @@ static void test_loaded_work_renders_same_bytes(struct check *t)
         int same = files_equal(OUT "_made.pfm", OUT "_plain.pfm") &&
                    files_equal(OUT "_loaded.pfm", OUT "_plain.pfm") &&
                    files_equal(OUT "_full.pfm", OUT "_plain.pfm") &&
-                   files_equal(OUT "_full.ppm", OUT "_plain.ppm") &&
+                   files_equal(OUT "_full.png", OUT "_plain.png") &&
                    files_equal(OUT "_made.work", OUT "_crop.work");
         CHECK(t, same);
         if (!same)
@@ -635,9 +635,9 @@ static void write_changed_work(long keep, long flip, size_t extra)
 static int render_refused(const char *render, const char *extra, const char *message)
 {
     remove(OUT "_refused.pfm");
-    remove(OUT "_refused.ppm");
+    remove(OUT "_refused.png");
     int refused = render_work(render, "refused", extra) == 2 && log_contains(message) &&
-                  !file_exists(OUT "_refused.pfm") && !file_exists(OUT "_refused.ppm");
+                  !file_exists(OUT "_refused.pfm") && !file_exists(OUT "_refused.png");
     if (!refused)
         fprintf(stderr, "test_merge: '%s' with --mode %s not refused with '%s'\n", extra,
                 render, message);

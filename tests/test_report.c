@@ -127,11 +127,11 @@ void test_report(struct check *t)
     RUN_TEST(t, test_point_light_in_pt);
     remove(OUT ".log");
     remove(OUT ".pfm");
-    remove(OUT ".ppm");
+    remove(OUT ".png");
     remove(OUT ".csv");
     remove(OUT "_ref.pfm");
-    remove(OUT "_ref.ppm");
+    remove(OUT "_ref.png");
     remove(OUT "_pl.pfm");
-    remove(OUT "_pl.ppm");
+    remove(OUT "_pl.png");
     remove(OUT "_plv.pfm");
 }

@@ -8,6 +8,7 @@
 
 void test_base(struct check *t);   /* test_base.c: rng, allocation, errors       */
 void test_image(struct check *t);  /* test_image.c: PFM/PPM, compare metrics      */
+void test_png(struct check *t);    /* test_png.c: PNG files, outside readers      */
 void test_compare(struct check *t); /* test_compare.c: per-pixel statistical test */
 void test_plot(struct check *t);   /* test_plot.c: CSV reading, SVG plots         */
 void test_geom(struct check *t);   /* test_geom.c: primitives, BVH, robustness    */

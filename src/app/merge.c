@@ -23,7 +23,8 @@
 
 struct merge_args {
     char output[OUTPUT_PATH_MAX]; /* FULL.pfm; "" until -o                         */
-    double exposure;              /* for FULL.ppm, as a render's --exposure         */
+    enum display_format display;  /* FULL.png or FULL.ppm beside it, as -o's ending */
+    double exposure;              /* for the display image, as a render's --exposure */
     char **tiles;                 /* borrowed from argv: the tiles' PFMs            */
     int n_tiles;
 };
@@ -32,6 +33,7 @@ struct merge_args {
 static int parse_merge_args(int argc, char **argv, struct merge_args *args, struct error *err)
 {
     args->output[0] = '\0';
+    args->display = DISPLAY_PNG;
     args->exposure = 1.0;
     args->tiles = xmalloc((size_t)argc, sizeof *args->tiles, "tile names");
     args->n_tiles = 0;
@@ -39,13 +41,16 @@ static int parse_merge_args(int argc, char **argv, struct merge_args *args, stru
         const char *value = i + 1 < argc ? argv[i + 1] : NULL;
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             printf("%s\n\nPuts crops (renders with --crop, each with its FILE.pfm.window) "
-                   "back into the\nwhole image: FULL.pfm and FULL.ppm. Refused, with exit "
-                   "status 2 and nothing\nwritten: tiles of different images, scenes, modes, "
-                   "seeds or options; tiles\nrendered with --time-limit; overlaps, and a tile "
-                   "given twice; gaps (named as\n--crop windows to render).\n", MERGE_USAGE);
+                   "back into the\nwhole image: FULL.pfm and FULL.png beside it (-o FULL.png "
+                   "means the same; -o\nFULL.ppm writes FULL.pfm and FULL.ppm). Refused, with "
+                   "exit status 2 and nothing\nwritten: tiles of different images, scenes, "
+                   "modes, seeds or options; tiles\nrendered with --time-limit; overlaps, and "
+                   "a tile given twice; gaps (named as\n--crop windows to render).\n",
+                   MERGE_USAGE);
             return 1;
         }
-        if (strcmp(argv[i], "-o") == 0 && read_output(value, args->output, err) < 0)
+        if (strcmp(argv[i], "-o") == 0 &&
+            read_output(value, args->output, &args->display, err) < 0)
             return -1;
         if (strcmp(argv[i], "--exposure") == 0 &&
             read_number("--exposure", value, 0, 1e30, 0, &args->exposure, err) < 0)
@@ -215,10 +220,9 @@ static int merge_tiles(const struct merge_args *args, struct tile_record *record
     if (check_overlaps(args, records, err) < 0 || check_coverage(args, records, err) < 0)
         return -1;
     struct image *full = image_create(records[0].width, records[0].height);
-    int status = paste_tiles(args, records, full, err) < 0 ||
-                         image_write_pair(args->output, full, args->exposure, err) < 0
-                     ? -1
-                     : 0;
+    int status = paste_tiles(args, records, full, err);
+    if (status == 0)
+        status = image_write_pair(args->output, args->display, full, args->exposure, err);
     image_free(full);
     return status;
 }

@@ -38,8 +38,9 @@ struct option_spec {
 static const struct option_spec specs[] = {
     {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME",
      "rendering mode: direct, pt, photons, 1994, 1996 or 2008 (default direct)"},
-    {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm",
-     "output image; FILE.ppm is written beside it (default: SCENE's name, .pfm)"},
+    {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm|.png|.ppm",
+     "output: FILE.pfm (linear radiance) and FILE.png beside it for display; -o FILE.ppm "
+     "writes FILE.ppm in place of the PNG (default: SCENE's name)"},
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)"},
     {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N",
      "camera samples per pixel (default 16; 1994 and 1996: 64; 2008: eye rays per pixel, "
@@ -126,7 +127,8 @@ static const struct option_spec specs[] = {
     {"--checkpoint", OPT_INT, FIELD(checkpoint), 1, MAX_PASSES, "K",
      "2008: write the image (-o) every K passes, each write complete (default: at the end)"},
     {"--exposure", OPT_REAL, FIELD(exposure), 0, 1e30, "E",
-     "PPM only: multiply radiance by E before sRGB encoding (default 1)"},
+     "PNG or PPM only (not the PFM): multiply radiance by E before sRGB encoding "
+     "(default 1)"},
     {"--stats", OPT_FLAG, FIELD(stats), 0, 0, "", "print key=value statistics on stderr"},
     {"--progress", OPT_FLAG, FIELD(progress), 0, 0, "", "show a progress line on stderr"},
     {"--no-progress", OPT_FLAG, FIELD(progress), 0, 0, "", "never show the progress line"},
@@ -183,6 +185,7 @@ static void set_defaults(struct options *o)
     o->max_depth = -1;
     o->progress = -1;
     o->exposure = 1.0;
+    o->display = DISPLAY_PNG;
     o->photons = 0; /* the mode's default, set after parsing */
     o->gather = 0; /* the mode's default, set after parsing */
     o->passes = PPM_DEFAULT_PASSES;
@@ -258,14 +261,19 @@ static int read_store(const char *text, int *illumination, struct error *err)
                      text != NULL ? text : "nothing");
 }
 
-int read_output(const char *text, char *output, struct error *err)
+int read_output(const char *text, char *output, enum display_format *display,
+                struct error *err)
 {
     size_t n = text != NULL ? strlen(text) : 0;
-    if (n < 5 || strcmp(text + n - 4, ".pfm") != 0)
-        return error_set(err, "", 0, "-o: the output must be a file name ending in .pfm");
+    const char *ending = n >= 5 ? text + n - 4 : ""; /* NAME is not empty */
+    int ppm = strcmp(ending, display_suffix(DISPLAY_PPM)) == 0;
+    if (!ppm && strcmp(ending, ".pfm") != 0 && strcmp(ending, display_suffix(DISPLAY_PNG)) != 0)
+        return error_set(err, "", 0, "-o: expected a file name ending in .pfm, .png or .ppm, "
+                         "got '%s'", text != NULL ? text : "nothing");
     if (n >= OUTPUT_PATH_MAX)
         return error_set(err, "", 0, "-o: the file name is too long");
-    strcpy(output, text);
+    *display = ppm ? DISPLAY_PPM : DISPLAY_PNG;
+    sprintf(output, "%.*s.pfm", (int)(n - 4), text); /* the PFM is always written */
     return 0;
 }
 
@@ -299,7 +307,7 @@ static int apply_option(const struct option_spec *spec, char **argv, int argc, i
         return read_mode(value, (enum mode *)field, err);
     case OPT_OUTPUT:
         (*i)++;
-        return read_output(value, field, err);
+        return read_output(value, field, &o->display, err);
     case OPT_STORE:
         (*i)++;
         return read_store(value, (int *)field, err);

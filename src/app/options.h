@@ -10,6 +10,7 @@
 #include <stdint.h>
 
 #include "../base/error.h"
+#include "../image/image.h"
 
 #define PHOTON_VERSION "0.1.0"
 #define OUTPUT_PATH_MAX 1024
@@ -18,7 +19,8 @@ enum mode { MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1994, MODE_JENSEN1996
 
 struct options {
     const char *scene_path;       /* the scene file (borrowed from argv)           */
-    char output[OUTPUT_PATH_MAX]; /* the PFM to write; the PPM goes beside it      */
+    char output[OUTPUT_PATH_MAX]; /* the PFM to write, whatever -o's name ended in  */
+    enum display_format display;  /* the display image beside it: -o's ending       */
     enum mode mode;
     uint64_t seed;
     int spp;                      /* samples per pixel; 0 = the mode's default      */
@@ -29,7 +31,7 @@ struct options {
     int crop[4];                  /* x0 y0 x1 y1; crop[2] == 0 means no crop       */
     int stats;                    /* print key=value statistics on stderr          */
     int progress;                 /* 1 on, 0 off, -1 decided from the environment  */
-    double exposure;              /* multiplier applied before the PPM's sRGB curve */
+    double exposure;              /* multiplier applied before the display sRGB curve */
     double time_limit;            /* CPU seconds, 0 = none                          */
     const char *reference;        /* --reference REF.pfm, or NULL (borrowed)        */
     const char *report;           /* --report FILE.csv, or NULL (borrowed)          */
@@ -77,9 +79,12 @@ int read_number(const char *name, const char *text, double min, double max, int 
 /* A --seed value: a whole number from 0 to 2^64 - 1; -1 with *err filled otherwise. */
 int read_seed(const char *text, uint64_t *seed, struct error *err);
 
-/* An -o value: a file name ending in .pfm, shorter than OUTPUT_PATH_MAX, copied to
- * output[OUTPUT_PATH_MAX]; -1 with *err filled otherwise. Also for photon merge. */
-int read_output(const char *text, char *output, struct error *err);
+/* An -o value: a file name NAME.pfm, NAME.png or NAME.ppm (NAME not empty) shorter than
+ * OUTPUT_PATH_MAX. Puts NAME.pfm, the image of record always written, in
+ * output[OUTPUT_PATH_MAX], and the display image beside it in *display: PPM for NAME.ppm,
+ * else PNG. -1 with *err filled otherwise. Also for photon merge. */
+int read_output(const char *text, char *output, enum display_format *display,
+                struct error *err);
 
 /* h folded with this program's version and every option of o that changes pixels, each as
  * "name=value\n" in the order of the option table, after defaults are applied (so spelling

@@ -1,8 +1,8 @@
 /*
  * app/tile.h -- the record beside a crop's PFM that lets `photon merge` put it back.
  *
- * A render with --crop writes FILE.pfm.window beside FILE.pfm (and FILE.ppm), five lines of
- * text in this order:
+ * A render with --crop writes FILE.pfm.window beside FILE.pfm (and its display image), five
+ * lines of text in this order:
  *
  *   photon-window 1                    the format and its version
  *   window X0 Y0 X1 Y1                 the crop, [X0, X1) x [Y0, Y1), (0, 0) at the top left

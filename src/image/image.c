@@ -3,7 +3,7 @@
  *
  * An image owns its pixel array; image_free() releases both. Sizes are the caller's to
  * check against MAX_IMAGE_SIDE first (readers refuse larger ones as bad input), so here
- * they are asserted, not reported. Files live elsewhere: pfm.c, ppm.c.
+ * they are asserted, not reported. Files live elsewhere: pfm.c, display.c, png.c, ppm.c.
  */
 #include "image.h"
 

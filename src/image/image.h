@@ -42,15 +42,31 @@ struct image *pfm_read(const char *name, struct error *err);
 /* The value a PFM keeps of v: v rounded to the nearest binary32 (clamped to +-FLT_MAX). */
 double pfm_stored_value(double v);
 
-/* Binary PPM (P6) for display: each channel as the PFM keeps it (pfm_stored_value), times
- * exposure, clamped to [0, 1], sRGB-encoded, 8 bits; so a PPM made from a PFM read back
- * (photon merge) has the same bytes as the one written beside it. */
+/* The display image written beside the PFM: an 8-bit sRGB picture for people to look at. */
+enum display_format {
+    DISPLAY_PNG, /* png.c: RGB PNG, the default */
+    DISPLAY_PPM  /* ppm.c: binary PPM (P6), asked for by -o NAME.ppm */
+};
+
+/* Row y of img as the display image shows it, into rgb[0 .. 3 * width - 1] (R, G, B of
+ * each pixel, left to right): each channel as the PFM keeps it (pfm_stored_value), times
+ * exposure, clamped to [0, 1], sRGB-encoded, rounded to 8 bits; so the display image made
+ * from a PFM read back (photon merge) has the same bytes as the one written beside it.
+ * exposure is finite and >= 0 (the caller checked). */
+void display_encode_row(const struct image *img, int y, double exposure, unsigned char *rgb);
+
+/* The file-name ending of format: ".png" or ".ppm", as long as ".pfm". */
+const char *display_suffix(enum display_format format);
+
+/* Binary PPM (P6) of the bytes display_encode_row() makes, written atomically through
+ * output_open()/output_commit(). -1 with *err filled when the file cannot be written. */
 int ppm_write(const char *name, const struct image *img, double exposure, struct error *err);
 
 /* The pair every image-making command writes: the PFM pfm_name, which ends in ".pfm" (the
- * caller checked), and the PPM of the same name ending in ".ppm" beside it, each written
- * whole or not at all. */
-int image_write_pair(const char *pfm_name, const struct image *img, double exposure,
-                     struct error *err);
+ * caller checked), then the display image of the same name ending in display_suffix()
+ * beside it, each written whole or not at all. -1 with *err filled when either cannot be
+ * written (the display image is not tried when the PFM failed). */
+int image_write_pair(const char *pfm_name, enum display_format display,
+                     const struct image *img, double exposure, struct error *err);
 
 #endif

@@ -1,0 +1,14 @@
+/*
+ * image/png.h -- PNG files of the display image: 8-bit RGB, uncompressed (png.c).
+ */
+#ifndef PHOTON_PNG_H
+#define PHOTON_PNG_H
+
+#include "image.h"
+
+/* Writes img as an 8-bit RGB PNG (colour type 2) of the bytes display_encode_row() makes
+ * (the PPM's), deflate in stored blocks, atomically through output_open()/output_commit().
+ * -1 with *err filled when the file cannot be written. exposure: as display_encode_row's. */
+int png_write(const char *name, const struct image *img, double exposure, struct error *err);
+
+#endif
