@@ -26,7 +26,7 @@ static const struct room rooms[] = {
     {"trace", test_trace, 0},       {"ppm", test_ppm, 0},         {"cache", test_cache, 0},
     {"render", test_render, 0},     {"pt", test_pt, 0},           {"jensen1994", test_jensen1994, 0},
     {"jensen1996", test_jensen1996, 0}, {"report", test_report, 0}, {"merge", test_merge, 0},
-    {"cli", test_cli, 0},
+    {"cli", test_cli, 0},           {"spd", test_spd, 1},
 };
 
 /* Whether the command line asks for the room (no names: every room not run only by name). */
