@@ -19,14 +19,14 @@ struct room {
 };
 
 static const struct room rooms[] = {
-    {"base", test_base, 0},         {"image", test_image, 0},     {"compare", test_compare, 0},
-    {"plot", test_plot, 0},         {"geom", test_geom, 0},       {"scene", test_scene, 0},
-    {"brdf", test_brdf, 0},         {"shapes", test_shapes, 0},   {"import", test_import, 0},
-    {"photon", test_photon, 0},     {"projection", test_projection, 0},
-    {"trace", test_trace, 0},       {"ppm", test_ppm, 0},         {"cache", test_cache, 0},
-    {"render", test_render, 0},     {"pt", test_pt, 0},           {"jensen1994", test_jensen1994, 0},
+    {"base", test_base, 0},       {"image", test_image, 0},         {"compare", test_compare, 0},
+    {"plot", test_plot, 0},       {"geom", test_geom, 0},           {"scene", test_scene, 0},
+    {"brdf", test_brdf, 0},       {"shapes", test_shapes, 0},       {"import", test_import, 0},
+    {"photon", test_photon, 0},   {"projection", test_projection, 0}, {"trace", test_trace, 0},
+    {"ppm", test_ppm, 0},         {"cache", test_cache, 0},         {"render", test_render, 0},
+    {"pt", test_pt, 0},           {"jensen1994", test_jensen1994, 0},
     {"jensen1996", test_jensen1996, 0}, {"report", test_report, 0}, {"merge", test_merge, 0},
-    {"cli", test_cli, 0},           {"spd", test_spd, 1},
+    {"cli", test_cli, 0},         {"spd", test_spd, 1},
 };
 
 /* Whether the command line asks for the room (no names: every room not run only by name). */

@@ -397,10 +397,11 @@ static void test_ear_clipping(struct check *t)
 
 /* ---- NFF: the databases ---------------------------------------------------------------- */
 
-/* truth: the SPD files' census (tests/data/README.md; SPD's own table, recounted with a
- *   separate script): balls-s3 820 spheres + 1 quad (2 triangles); tree-s5 63 spheres + 63
- *   cones + 1 quad, 7 lights; the head of gears-s3 a quad and a gear face of 144 vertices
- *   (142 triangles), 5 lights; views as printed.
+/* truth: the SPD files' census (counted when the files were made, by a strict line-by-line
+ *   reader that is not ours, and recounted by a separate script): balls-s3 820 spheres +
+ *   1 quad (2 triangles); tree-s5 63 spheres + 63 cones + 1 quad, 7 lights; the head of
+ *   gears-s3 a quad and a gear face of 144 vertices (142 triangles), 5 lights; views as
+ *   printed.
  * tolerance: none, counts. catches: the one-line `c` swallowing the next entities, the
  *   polygon count formula broken, lights dropped, materials not shared. */
 static void test_spd_counts(struct check *t)

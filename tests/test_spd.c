@@ -5,9 +5,9 @@
  * it (run_tests spd). The same truths for the files the repository keeps, and figures for
  * the rest, are in test_import.c and test_shapes.c, which `make test` runs.
  *
- * Truths: the files' census (entity counts, views), made with a line-by-line reader
- * outside this project and written down with the files (SPD README); balls-s4.nff's
- * spheres as Haines' balls.c printed them.
+ * Truths: the files' census (entity counts, views), counted when the files were made by a
+ * strict line-by-line reader that is not ours; balls-s4.nff's spheres as Haines' balls.c
+ * printed them.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,10 +15,10 @@
 #include "spd.h"
 #include "tests.h"
 
-/* truth: the census of the 22 files (the SPD README's table, recounted with a separate
+/* truth: the census of the 22 files (that reader's table, recounted by a separate
  *   script): prims = s + c + sum over p and pp of (vertices - 2); every pp is a triangle,
- *   gears' "more" polygons have 144 vertices; materials are the distinct `f` lines (sort
- *   -u); lights the `l` lines; views and backgrounds as printed.
+ *   gears' "more" polygons have 144 vertices; materials are the distinct `f` lines (by
+ *   the script); lights the `l` lines; views and backgrounds as printed.
  * tolerance: none, counts and printed numbers.
  * catches: the one-line `c` swallowing the next entities, the polygon count broken on
  *   any of the shapes the generators write, lights dropped, materials not shared, view
