@@ -2,10 +2,15 @@
 #
 #   make            build ./photon with the system cc
 #   make run        build, then render scenes/cornell.scene to out/cornell.pfm (+ .ppm)
-#   make test       build and run every test; ends with "N passed, N failed"
+#   make test       build and run every test; ends with "N passed, N failed". Needs nothing
+#                   outside the repository (outside data it reads is in tests/data/)
+#   make test-spd SPD=DIR
+#                   the tests against all 22 files of Haines' Standard Procedural Databases,
+#                   read from the folder DIR (too large to keep here: tests/data/README.md)
 #   make check      the tests built by gcc and clang with -Werror, by tcc, and under
 #                   AddressSanitizer + UndefinedBehaviorSanitizer
-#   make bench      benchmark figures (ONLY=rays|knn|...|tiles runs one workload)
+#   make bench      benchmark figures (ONLY=rays|knn|...|tiles runs one workload); SPD=DIR
+#                   adds the workloads on SPD files, which are skipped without it
 #   make fuzz       libFuzzer targets for the four readers, built with clang (development)
 #   make clean
 #
@@ -34,7 +39,17 @@ MAIN_OBJ := $(BUILD)/src/main.o
 TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)))
 BENCH_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/bench/*.c)))
 
-.PHONY: all run test check bench fuzz clean
+.PHONY: all run test test-spd check bench fuzz clean
+
+# test-spd refuses at once, before building anything, when it has no folder of SPD files.
+ifneq ($(filter test-spd,$(MAKECMDGOALS)),)
+ifeq ($(SPD),)
+$(error make test-spd needs SPD=DIR, a folder of the SPD .nff files (balls-s4.nff, ...))
+endif
+ifeq ($(wildcard $(SPD)/*.nff),)
+$(error make test-spd: SPD=$(SPD) is not a folder of .nff files)
+endif
+endif
 
 all: $(BIN)
 
@@ -59,6 +74,10 @@ run: $(BIN)
 test: $(BIN) $(BUILD)/run_tests
 	PHOTON=./$(BIN) ./$(BUILD)/run_tests
 
+# Only the room spd (tests/test_spd.c), which reads the files from PHOTON_SPD.
+test-spd: $(BUILD)/run_tests
+	PHOTON_SPD='$(SPD)' ./$(BUILD)/run_tests spd
+
 # Each variant builds in its own directory with its own binary, so none disturbs ./photon.
 check:
 	$(MAKE) --no-print-directory BUILD=build/gcc BIN=build/gcc/photon CC=gcc EXTRA=-Werror test
@@ -77,7 +96,7 @@ check:
 
 # The tiles workload (tests/bench/tiles.sh) runs ./$(BIN) as separate processes.
 bench: $(BIN) $(BUILD)/bench
-	PHOTON=./$(BIN) BENCH_TMP=$(BUILD)/bench-tiles ./$(BUILD)/bench $(ONLY)
+	PHOTON=./$(BIN) PHOTON_SPD='$(SPD)' BENCH_TMP=$(BUILD)/bench-tiles ./$(BUILD)/bench $(ONLY)
 
 # Fuzz targets (a development tool, not part of the product build): one per reader. Run
 # e.g. build/fuzz/fuzz_nff -max_len=8192 -max_total_time=600 CORPUS_DIR < /dev/null

@@ -6,12 +6,10 @@
 #include <math.h>
 #include <stdlib.h>
 
-#define MAX_REPORTS_PER_TEST 10 /* enough to see a pattern, few enough to read */
-
 void check_failed(struct check *t, const char *file, int line, const char *expr)
 {
     t->failures_in_test++;
-    if (t->reports_in_test++ < MAX_REPORTS_PER_TEST)
+    if (t->reports_in_test++ < CHECK_MAX_REPORTS)
         fprintf(stderr, "%s:%d: check failed: %s\n", file, line, expr);
 }
 
@@ -21,7 +19,7 @@ void check_close(struct check *t, double a, double b, double tol, const char *fi
     if (fabs(a - b) <= tol)
         return;
     t->failures_in_test++;
-    if (t->reports_in_test++ < MAX_REPORTS_PER_TEST)
+    if (t->reports_in_test++ < CHECK_MAX_REPORTS)
         fprintf(stderr, "%s:%d: check failed: %s (%.17g vs %.17g, tolerance %.3g)\n", file,
                 line, expr, a, b, tol);
 }
@@ -30,13 +28,26 @@ void run_test(struct check *t, void (*test)(struct check *), const char *name)
 {
     t->failures_in_test = 0;
     t->reports_in_test = 0;
+    t->running = name;
     test(t);
+    t->running = NULL;
     if (t->failures_in_test == 0) {
         t->passed++;
     } else {
         t->failed++;
         fprintf(stderr, "FAILED: %s\n", name);
     }
+}
+
+void check_summary(struct check *t)
+{
+    if (t->running != NULL) {
+        t->failed++;
+        fprintf(stderr, "FAILED: %s (the program exited inside it)\n", t->running);
+        t->running = NULL;
+    }
+    printf("%d passed, %d failed\n", t->passed, t->failed);
+    fflush(stdout);
 }
 
 const char *photon_binary(void)

@@ -1,10 +1,12 @@
 /*
  * tests/run_tests.c -- runs every room's tests and prints "N passed, N failed".
  * Exit status 1 when anything failed. Run from the top of the repository (make test),
- * since tests read scenes/ and run the photon binary (environment PHOTON).
+ * since tests read scenes/ and tests/data/ and run the photon binary (environment PHOTON).
  * `run_tests ROOM...` runs only the named rooms (e.g. `run_tests trace cache`), for a
- * quicker loop while working on one of them.
+ * quicker loop while working on one of them. The room spd runs only when named: it reads
+ * the Standard Procedural Databases' files from the folder PHOTON_SPD (make test-spd).
  */
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
@@ -13,35 +15,60 @@
 struct room {
     const char *name;
     void (*run)(struct check *t);
+    int when_named; /* 1: not among "every room" (needs files from outside the repository) */
 };
 
 static const struct room rooms[] = {
-    {"base", test_base},         {"image", test_image},         {"compare", test_compare},
-    {"png", test_png},
-    {"plot", test_plot},         {"geom", test_geom},           {"scene", test_scene},
-    {"brdf", test_brdf},         {"shapes", test_shapes},       {"import", test_import},
-    {"photon", test_photon},     {"projection", test_projection}, {"trace", test_trace},
-    {"ppm", test_ppm},           {"cache", test_cache},         {"render", test_render},
-    {"pt", test_pt},             {"jensen1994", test_jensen1994}, {"jensen1996", test_jensen1996},
-    {"report", test_report},     {"merge", test_merge},         {"cli", test_cli},
-    {"docs", test_docs},
+    {"base", test_base, 0},       {"image", test_image, 0},         {"compare", test_compare, 0},
+    {"png", test_png, 0},
+    {"plot", test_plot, 0},       {"geom", test_geom, 0},           {"scene", test_scene, 0},
+    {"brdf", test_brdf, 0},       {"shapes", test_shapes, 0},       {"import", test_import, 0},
+    {"photon", test_photon, 0},   {"projection", test_projection, 0}, {"trace", test_trace, 0},
+    {"ppm", test_ppm, 0},         {"cache", test_cache, 0},         {"render", test_render, 0},
+    {"pt", test_pt, 0},           {"jensen1994", test_jensen1994, 0},
+    {"jensen1996", test_jensen1996, 0}, {"report", test_report, 0}, {"merge", test_merge, 0},
+    {"cli", test_cli, 0},         {"docs", test_docs, 0},           {"spd", test_spd, 1},
 };
 
-/* Whether the command line asks for room (no names: every room). */
-static int wanted(const char *room, int argc, char **argv)
+/* Whether the command line asks for the room (no names: every room not run only by name). */
+static int wanted(const struct room *room, int argc, char **argv)
 {
     for (int i = 1; i < argc; i++)
-        if (strcmp(argv[i], room) == 0)
+        if (strcmp(argv[i], room->name) == 0)
             return 1;
-    return argc < 2;
+    return argc < 2 && !room->when_named;
+}
+
+/* Static, so that the summary printed at exit sees it even when a test ends the program. */
+static struct check t;
+
+static void summary_at_exit(void)
+{
+    check_summary(&t);
+}
+
+/* Whether every name on the command line is a room's (a misspelt one would run nothing). */
+static int all_rooms_known(int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++) {
+        size_t k = 0;
+        while (k < sizeof rooms / sizeof rooms[0] && strcmp(argv[i], rooms[k].name) != 0)
+            k++;
+        if (k == sizeof rooms / sizeof rooms[0]) {
+            fprintf(stderr, "run_tests: no room named '%s'\n", argv[i]);
+            return 0;
+        }
+    }
+    return 1;
 }
 
 int main(int argc, char **argv)
 {
-    struct check t = {0, 0, 0, 0};
+    if (!all_rooms_known(argc, argv))
+        return 2;
+    atexit(summary_at_exit);
     for (size_t i = 0; i < sizeof rooms / sizeof rooms[0]; i++)
-        if (wanted(rooms[i].name, argc, argv))
+        if (wanted(&rooms[i], argc, argv))
             rooms[i].run(&t);
-    printf("%d passed, %d failed\n", t.passed, t.failed);
     return t.failed == 0 ? 0 : 1;
 }

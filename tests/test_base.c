@@ -1,5 +1,6 @@
 /*
- * tests/test_base.c -- the base room: keyed random streams, errors, atomic outputs, FNV-1a.
+ * tests/test_base.c -- the base room: keyed random streams, errors, atomic outputs, FNV-1a;
+ * and the harness's REQUIRE (check.h).
  */
 #include <math.h>
 #include <stdio.h>
@@ -169,8 +170,37 @@ static void test_fnv1a_vectors(struct check *t)
                  UINT64_C(0x85944171f73967e8));
 }
 
+/* ---- the harness itself (check.h) ---------------------------------------------------- */
+
+static int reached_after_require; /* set by the line after the failing REQUIRE */
+
+static void passes_then_requires_false(struct check *t)
+{
+    REQUIRE(t, 1 + 1 == 2);
+    CHECK(t, 1 + 1 == 3);
+    REQUIRE(t, 1 + 1 == 3);
+    reached_after_require = 1;
+    CHECK(t, 1 + 1 == 3);
+}
+
+/* truth: check.h's contract: a REQUIRE that holds does nothing; one that fails counts one
+ *   failed check and returns from the test function there. Run on a harness of its own
+ *   whose report budget is spent, so the deliberate failures print nothing.
+ * tolerance: none, counts.
+ * catches: REQUIRE going on after a failure (what it guards would run on a NULL pointer or
+ *   a wrong size), a failure not counted, one counted twice. */
+static void test_require_stops_the_test(struct check *t)
+{
+    struct check inner = {0, 0, 0, CHECK_MAX_REPORTS, NULL};
+    reached_after_require = 0;
+    passes_then_requires_false(&inner);
+    CHECK(t, inner.failures_in_test == 2);
+    CHECK(t, !reached_after_require);
+}
+
 void test_base(struct check *t)
 {
+    RUN_TEST(t, test_require_stops_the_test);
     RUN_TEST(t, test_streams_are_keyed);
     RUN_TEST(t, test_uniform_numbers);
     RUN_TEST(t, test_sequence02_is_a_net);

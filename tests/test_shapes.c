@@ -1,6 +1,7 @@
 /*
- * tests/test_shapes.c -- the procedural shapes: the sphere flake (against Haines' balls-s4.nff
- * and against its own spheres) and the fractal heightfield (against its own triangles).
+ * tests/test_shapes.c -- the procedural shapes: the sphere flake (against Haines' balls-s3.nff,
+ * figures of balls-s4.nff, and its own spheres) and the fractal heightfield (against its
+ * own triangles).
  *
  * The truths are the expansions: the same spheres or triangles as plain primitives, tested
  * one by one (brute force) or through geometry's BVH. Both sides run the shared sphere.c and
@@ -20,9 +21,8 @@
 #include "../src/geom/sphere.h"
 #include "../src/geom/sphereflake.h"
 #include "../src/geom/triangle.h"
+#include "spd.h"
 #include "tests.h"
-
-#define BALLS_S4 "../shared/spd/balls-s4.nff" /* from the top of the repository */
 
 /* ---- helpers: sphere lists ----------------------------------------------------------- */
 
@@ -72,112 +72,45 @@ static struct sphereflake *flake_make(struct vec3 centre, double radius, int lev
     return sphereflake_create(&p, &err);
 }
 
-/* ---- the sphere flake against balls-s4.nff ------------------------------------------ */
+/* ---- the sphere flake against Haines' balls.c ---------------------------------------- */
 
-/* The "s x y z r" lines of an NFF file; NULL when the file cannot be read. */
-static double *read_nff_spheres(const char *name, size_t *n)
-{
-    FILE *f = fopen(name, "r");
-    if (f == NULL)
-        return NULL;
-    size_t cap = 1024;
-    double *s = xmalloc(cap, 4 * sizeof *s, "NFF spheres");
-    char line[256];
-    *n = 0;
-    while (fgets(line, sizeof line, f) != NULL) {
-        double *v = s + 4 * *n;
-        if (strncmp(line, "s ", 2) != 0 ||
-            sscanf(line + 2, "%lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3]) != 4)
-            continue;
-        if (++*n == cap) {
-            cap *= 2;
-            s = xrealloc(s, cap, 4 * sizeof *s, "NFF spheres");
-        }
-    }
-    fclose(f);
-    return s;
-}
-
-/* |ours - printed| within what %g's six significant digits allow: the printed value is
- * within half a unit of the 6th digit, <= 5e-6 |x|, of balls.c's double, which differs from
- * ours by rounding only (~1e-16 of the flake's size, 1e-12 allowed; it prints e.g.
- * 1.11022e-16 for our 0). */
-static int matches_printed(const double ours[4], const double printed[4])
-{
-    for (int k = 0; k < 4; k++)
-        if (!(fabs(ours[k] - printed[k]) <= 5.0001e-6 * fabs(printed[k]) + 1e-12))
-            return 0;
-    return 1;
-}
-
-/* qsort order of sphere indices by centre x, ties by index: a total order. */
-static const struct sphere *sorting_spheres;
-
-static int compare_centre_x(const void *a, const void *b)
-{
-    size_t i = *(const size_t *)a, k = *(const size_t *)b;
-    double xi = sorting_spheres[i].centre.x, xk = sorting_spheres[k].centre.x;
-    if (xi != xk)
-        return xi < xk ? -1 : 1;
-    return (i > k) - (i < k);
-}
-
-/* The sphere of ours (by_x: indices sorted by centre x) that matches printed p, or n when
- * none does. Candidates are those with x within p's tolerance. */
-static size_t match_printed(const struct sphere_list *ours, const size_t *by_x, const double *p)
-{
-    double tolerance = 5.0001e-6 * fabs(p[0]) + 1e-12;
-    size_t lo = 0, hi = ours->n; /* first position with x >= p[0] - tolerance */
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (ours->spheres[by_x[mid]].centre.x < p[0] - tolerance)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    for (size_t k = lo; k < ours->n && ours->spheres[by_x[k]].centre.x <= p[0] + tolerance;
-         k++) {
-        const struct sphere *s = &ours->spheres[by_x[k]];
-        double o[4] = {s->centre.x, s->centre.y, s->centre.z, s->radius};
-        if (matches_printed(o, p))
-            return by_x[k];
-    }
-    return ours->n;
-}
-
-/* truth: Haines' own output, balls-s4.nff (SPD 3.14 balls.c at size factor 4, README in
- *   ../shared/spd): 7381 spheres, centres and radii printed with %g.
- * tolerance: the printing's, 5e-6 relative per number (matches_printed()). Matched as a
- *   set: each printed sphere to one of ours within tolerance (spheres are >= 0.012 apart,
- *   far more than it, so at most one can match), each of ours matched exactly once.
+/* truth: Haines' own output, balls-s3.nff (SPD 3.14 balls.c at size factor 3, kept in
+ *   tests/data/spd/): 820 spheres, centres and radii printed with %g.
+ * tolerance: the printing's, 5e-6 relative per number (spd.c). Matched as a set: each
+ *   printed sphere to one of ours within tolerance (spheres are >= 0.012 apart, far more
+ *   than it, so at most one can match), each of ours matched exactly once.
  * catches: a wrong child direction, frame, scale or radius ratio; the +-z special cases of
- *   balls.c's frame (axes exactly -z occur from level 2); a missing or extra level. */
-static void test_sphereflake_is_balls_s4(struct check *t)
+ *   balls.c's frame (axes exactly -z occur from depth 2, so their children, at depth 3, are
+ *   the first spheres they place: balls-s2 could not see them); a missing or extra level. */
+static void test_sphereflake_is_balls_s3(struct check *t)
 {
-    size_t n_printed = 0;
-    double *printed = read_nff_spheres(BALLS_S4, &n_printed);
-    CHECK(t, printed != NULL);
-    if (printed == NULL)
-        return;
-    struct sphereflake *flake = flake_make(vec3(0, 0, 0), 0.5, 4, vec3(0, 0, 1));
-    struct sphere_list ours = flake_spheres(flake);
-    CHECK(t, n_printed == 7381 && ours.n == 7381);
-    size_t *by_x = xmalloc(ours.n, sizeof *by_x, "sphere order");
-    for (size_t k = 0; k < ours.n; k++)
-        by_x[k] = k;
-    sorting_spheres = ours.spheres;
-    qsort(by_x, ours.n, sizeof *by_x, compare_centre_x);
-    char *matched = xcalloc(ours.n + 1, 1, "matched");
-    for (size_t i = 0; i < n_printed; i++) {
-        size_t k = match_printed(&ours, by_x, printed + 4 * i);
-        CHECK(t, k < ours.n && !matched[k]);
-        matched[k] = 1;
-    }
-    free(matched);
-    free(by_x);
-    sphere_list_free(&ours);
-    sphereflake_free(flake);
+    size_t n_printed, n_ours;
+    double *printed = nff_spheres(SPD_DATA "/balls-s3.nff", &n_printed);
+    REQUIRE(t, printed != NULL);
+    double *ours = balls_spheres(3, &n_ours);
+    CHECK(t, n_printed == 820);
+    check_same_spheres(t, ours, n_ours, printed, n_printed);
+    free(ours);
     free(printed);
+}
+
+/* truth: balls-s4.nff (balls.c at size factor 4, the SPD benchmark size; not in the
+ *   repository), kept as figures in spd.h: its 7381 spheres and the digest of their
+ *   printed text. Our spheres printed the same way give the same digest only if every
+ *   one prints as one of the file's (test_spd.c compares them one by one, and checks the
+ *   figures against the file).
+ * tolerance: none: the digest compares printed text. Our doubles differ from balls.c's by
+ *   rounding only (~1e-16 relative), so they print as the file does unless one lies that
+ *   close to a rounding boundary of the 6th digit (odds ~1e-10 a number; none of the
+ *   29,524 does); the noise balls.c prints for zero is written as 0 on both sides.
+ * catches: what the balls-s3 test catches, in the deepest level's 6561 spheres. */
+static void test_sphereflake_prints_as_balls_s4(struct check *t)
+{
+    size_t n;
+    double *ours = balls_spheres(4, &n);
+    CHECK(t, n == BALLS_S4_SPHERES);
+    CHECK(t, spheres_digest(ours, n) == BALLS_S4_SPHERE_DIGEST);
+    free(ours);
 }
 
 /* ---- the sphere flake's structure ---------------------------------------------------- */
@@ -278,7 +211,7 @@ static void test_sphereflake_refuses_bad_parameters(struct check *t)
     }
     p.levels = SPHEREFLAKE_MAX_LEVELS;
     struct sphereflake *deepest = sphereflake_create(&p, &err);
-    CHECK(t, deepest != NULL);
+    REQUIRE(t, deepest != NULL);
     CHECK(t, sphereflake_expand(deepest, NULL) == -1); /* 3.9e9 > MAX_PRIMITIVES */
     sphereflake_free(deepest);
     sphereflake_free(NULL);
@@ -404,6 +337,7 @@ static void test_sphereflake_matches_brute_force(struct check *t)
     }
     struct sphereflake *deepest = flake_make(vec3(0, 0, 0), 1, SPHEREFLAKE_MAX_LEVELS,
                                              vec3(0, 1, 0));
+    REQUIRE(t, deepest != NULL);
     struct hit h;
     CHECK(t, sphereflake_ops.intersect(deepest, make_ray(vec3(0, 5, 0), vec3(0, -1, 0)),
                                        INFINITY, &h));
@@ -654,7 +588,8 @@ static void test_heightfield_structure(struct check *t)
         struct heightfield_params p = landscape(n, 0.8, (uint64_t)s);
         struct error err;
         struct heightfield *hf = heightfield_create(&p, &err);
-        CHECK(t, hf != NULL && heightfield_check(hf));
+        REQUIRE(t, hf != NULL);
+        CHECK(t, heightfield_check(hf));
         struct triangle_list list = heightfield_list(hf);
         CHECK(t, list.n == 2 * (size_t)(n - 1) * (size_t)(n - 1) && list.material == 5);
         struct aabb box = heightfield_ops.bounds(hf);
@@ -908,7 +843,8 @@ static void test_heightfield_matches_expansion(struct check *t)
 
 void test_shapes(struct check *t)
 {
-    RUN_TEST(t, test_sphereflake_is_balls_s4);
+    RUN_TEST(t, test_sphereflake_is_balls_s3);
+    RUN_TEST(t, test_sphereflake_prints_as_balls_s4);
     RUN_TEST(t, test_sphereflake_structure);
     RUN_TEST(t, test_sphereflake_refuses_bad_parameters);
     RUN_TEST(t, test_sphereflake_matches_brute_force);

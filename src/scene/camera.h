@@ -1,7 +1,8 @@
 /*
  * scene/camera.h -- the pinhole camera.
  *
- * Frame (as ../shared/BENCH.md defines it, so our rays match other renderers'):
+ * Frame (the usual reading of NFF's `v` block, `angle` the full vertical field of view, so
+ * our rays match other renderers' on the same file):
  * w = normalize(at - from), u = normalize(w x up), v = u x w. A point (px, py) on the
  * image plane, in pixels of the whole image with (0, 0) the top-left corner, maps to the
  * direction normalize(w + (2 px / W - 1) t (W / H) u + (1 - 2 py / H) t v), t = tan(fov / 2),

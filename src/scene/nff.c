@@ -6,8 +6,10 @@
  *           `hither d`, (optionally `yon d`), `resolution w h`, in that order -> the
  *           camera at from looking at at, with up as its up hint (neither unit nor
  *           orthogonal need it be: the camera builds its frame from it), angle as the
- *           image's full vertical field of view (../shared/BENCH.md's reading), and the
- *           image size w x h. hither and yon are ignored. One `v` per file, required.
+ *           image's full vertical field of view (as ray-casting benchmarks on the SPD
+ *           files read it; NFF's description measures it between the centres of the
+ *           outermost pixels, half a pixel less per edge), and the image size w x h.
+ *           hither and yon are ignored. One `v` per file, required.
  *   b r g b -> the background radiance.
  *   l x y z [r g b] -> a point light. NFF lights have no power; the convention: with n
  *           lights in the file, each has intensity I = sqrt(n) / (2 n) (SPD's Readme.txt)

@@ -1,6 +1,6 @@
 /*
  * scene/nff.h -- reading Eric Haines' Neutral File Format (NFF), the output of the Standard
- * Procedural Databases (../shared/spd/), into a scene.
+ * Procedural Databases (SPD; a few of its files are in tests/data/spd/), into a scene.
  *
  * nff.c's opening comment states exactly how NFF's entities become our camera, lights,
  * materials and primitives (README, "NFF files", copies it).

@@ -1,5 +1,5 @@
 /*
- * tests/bench/bench.h -- `make bench`: figures, never verdicts (../shared/BENCH.md).
+ * tests/bench/bench.h -- `make bench`: figures, never verdicts.
  *
  * Each workload prints "name=value" lines, medians of BENCH_REPEATS runs, with the
  * checksums that show the work was the same. Times are CPU seconds from clock(): the

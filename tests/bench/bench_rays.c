@@ -3,7 +3,8 @@
  * primary and secondary Mrays/s, and the checksums that show the work was the same.
  *
  * bench_ray_workload() runs the workload on any scene; bench_rays() runs it on the SPD
- * scenes balls-s4 and mount-s6 read by our NFF importer, on our generated scene terrain1m
+ * scenes balls-s4 and mount-s6 read by our NFF importer (from the folder PHOTON_SPD, make
+ * bench SPD=DIR; skipped, saying so, without it), on our generated scene terrain1m
  * (a 725 x 725 grid of quads over a sum of sines, two triangles each: 1,051,250 triangles),
  * and on the default Cornell box. For files, build_s includes reading the file.
  */
@@ -204,16 +205,9 @@ static struct geometry *build_scene_file(void *ctx)
 }
 
 /* The workload through the file's own camera, named by the file name without directory
- * and extension (BENCH.md: balls-s4, mount-s6). The SPD files live outside the repository
- * (../shared/spd/), so a missing file is skipped with a note rather than ending the bench. */
+ * and extension (BENCH.md: balls-s4, mount-s6). */
 static void bench_scene_file(const char *path)
 {
-    FILE *probe = fopen(path, "rb");
-    if (probe == NULL) {
-        fprintf(stderr, "bench: %s not found, its ray workload skipped\n", path);
-        return;
-    }
-    fclose(probe);
     struct scene *scene = load_scene_file(path);
     struct bench_camera camera = {scene->camera.from, scene->camera.at, scene->camera.up,
                                   scene->camera.fov};
@@ -225,10 +219,33 @@ static void bench_scene_file(const char *path)
     bench_ray_workload(name, build_scene_file, (void *)path, &camera);
 }
 
+/* The SPD files are not in the repository: they are read from the folder PHOTON_SPD
+ * (make bench SPD=DIR), and without it their workloads are skipped, saying so. */
+static void bench_spd_files(void)
+{
+    static const char *const files[] = {"balls-s4", "mount-s6"};
+    const char *folder = getenv("PHOTON_SPD");
+    size_t n_files = sizeof files / sizeof files[0];
+    if (folder == NULL || folder[0] == '\0') {
+        fputs("bench: skipped:", stderr);
+        for (size_t i = 0; i < n_files; i++)
+            fprintf(stderr, "%s rays.%s", i > 0 ? "," : "", files[i]);
+        fputs(" (give SPD=DIR, a folder of the SPD .nff files)\n", stderr);
+        return;
+    }
+    for (size_t i = 0; i < n_files; i++) {
+        char path[1024];
+        if (snprintf(path, sizeof path, "%s/%s.nff", folder, files[i]) >= (int)sizeof path) {
+            fprintf(stderr, "bench: PHOTON_SPD is too long a path\n");
+            exit(2);
+        }
+        bench_scene_file(path);
+    }
+}
+
 void bench_rays(void)
 {
-    bench_scene_file("../shared/spd/balls-s4.nff");
-    bench_scene_file("../shared/spd/mount-s6.nff");
+    bench_spd_files();
     struct terrain terrain;
     terrain.side = TERRAIN_QUADS + 1;
     terrain.vertices = xmalloc((size_t)terrain.side * terrain.side, sizeof *terrain.vertices,

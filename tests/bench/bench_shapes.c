@@ -88,7 +88,7 @@ static struct geometry *build_landscape_expanded(void *ctx)
 
 void bench_shapes(void)
 {
-    /* balls-s4.nff's view (../shared/spd/README.md) */
+    /* the view of SPD's balls-s4.nff (its `v` block: from, at, up, angle) */
     struct bench_camera balls = {{2.1, 1.3, 1.7}, {0, 0, 0}, {0, 0, 1}, 45.0};
     bench_ray_workload("shapes_flake6_procedural", build_flake_procedural, NULL, &balls);
     bench_ray_workload("shapes_flake6_expanded", build_flake_expanded, NULL, &balls);

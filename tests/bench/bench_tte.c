@@ -1,7 +1,7 @@
 /*
- * tests/bench/bench_tte.c -- time to error (../shared/BENCH.md Sec. 3): how long each mode
- * needs to reach a given relmse against a scene's converged reference, beside the path
- * tracer, on the Cornell boxes whose references are in reference/.
+ * tests/bench/bench_tte.c -- time to error: how long each mode needs to reach a given
+ * relmse against a scene's converged reference, beside the path tracer, on the Cornell
+ * boxes whose references are in reference/.
  *
  * For each scene and each photon mode at its defaults (2008: 256 x 256, 16 eye rays, 64
  * passes of 100,000 photons; 1996: 64 samples per pixel, 256 where the camera sees a

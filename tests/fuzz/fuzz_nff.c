@@ -6,7 +6,7 @@
  * is finished (camera set up, BVH built over its spheres, triangles and cones), so the
  * reader's every accepted output is also checked to build. A crash, a sanitizer report or
  * a leak is a bug; bad input must end in a struct error and nothing else.
- *   build/fuzz/fuzz_nff -max_len=8192 CORPUS_DIR ../shared/spd/balls-s2.nff ...
+ *   build/fuzz/fuzz_nff -max_len=8192 CORPUS_DIR tests/data/spd scenes
  */
 #include <stdint.h>
 
