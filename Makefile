@@ -11,6 +11,8 @@
 #                   AddressSanitizer + UndefinedBehaviorSanitizer
 #   make bench      benchmark figures (ONLY=rays|knn|...|tiles runs one workload); SPD=DIR
 #                   adds the workloads on SPD files, which are skipped without it
+#   make figures    re-measure the figures README.md states and write them into it (long;
+#                   ONLY=presets|bench for one part)
 #   make fuzz       libFuzzer targets for the four readers, built with clang (development)
 #   make clean
 #
@@ -39,7 +41,7 @@ MAIN_OBJ := $(BUILD)/src/main.o
 TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)))
 BENCH_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/bench/*.c)))
 
-.PHONY: all run test test-spd check bench fuzz clean
+.PHONY: all run test test-spd check bench figures fuzz clean
 
 # test-spd refuses at once, before building anything, when it has no folder of SPD files.
 ifneq ($(filter test-spd,$(MAKECMDGOALS)),)
@@ -97,6 +99,10 @@ check:
 # The tiles workload (tests/bench/tiles.sh) runs ./$(BIN) as separate processes.
 bench: $(BIN) $(BUILD)/bench
 	PHOTON=./$(BIN) PHOTON_SPD='$(SPD)' BENCH_TMP=$(BUILD)/bench-tiles ./$(BUILD)/bench $(ONLY)
+
+# The figures README.md states, re-measured and written into it (ONLY=presets or bench).
+figures: $(BIN) $(BUILD)/bench
+	SPD='$(SPD)' sh scripts/figures.sh $(ONLY)
 
 # Fuzz targets (a development tool, not part of the product build): one per reader. Run
 # e.g. build/fuzz/fuzz_nff -max_len=8192 -max_total_time=600 CORPUS_DIR < /dev/null
