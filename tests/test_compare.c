@@ -346,7 +346,8 @@ static void test_compare_command_line(struct check *t)
     }
     snprintf(args, sizeof args, "%s %s --block 4", f.image, f.image);
     CHECK(t, photon_compare(args, f.log) == 0 &&
-             file_contains(f.log, " worst_block=0 worst_block_at=0,0\n"));
+             file_contains(f.log, " worst_block=0 worst_block_at=0,0 blocks=1 "
+                                   "blocks_within_3_percent=1\n"));
     snprintf(args, sizeof args, "%s %s --block 0", f.image, f.image);
     CHECK(t, photon_compare(args, f.log) == 2 && file_contains(f.log, "--block"));
     snprintf(args, sizeof args, "%s %s --alpha 0.05", f.image, f.image);
@@ -364,10 +365,11 @@ static void test_compare_command_line(struct check *t)
 
 /* truth: block means worked by hand. b is all ones (luminance 1); in a, the full block at
  *   (16, 0) is 5% brighter and the partial 8 x 4 block at the bottom-right corner (32, 16)
- *   10% darker: the worst is that corner, 0.1. A black reference block under a lit one
- *   is infinitely wrong; equal images have no error.
+ *   10% darker: the worst is that corner, 0.1, and 4 of the 3 x 2 blocks are within 3%.
+ *   A black reference block under a lit one is infinitely wrong; equal images have no
+ *   error.
  * catches: partial edge blocks skipped, rows and columns swapped, sums not divided by the
- *   partial block's own pixel count. */
+ *   partial block's own pixel count, blocks off by more than 3% counted as within. */
 static void test_worst_block(struct check *t)
 {
     struct image *a = image_create(40, 20), *b = image_create(40, 20);
@@ -379,7 +381,9 @@ static void test_worst_block(struct check *t)
         }
     struct block_error w = image_worst_block(a, b, 16);
     CHECK(t, w.x0 == 32 && w.y0 == 16 && fabs(w.relative_error - 0.1) < 1e-12);
-    CHECK(t, image_worst_block(b, b, 16).relative_error == 0);
+    CHECK(t, w.n_blocks == 6 && w.n_within == 4);
+    w = image_worst_block(b, b, 16);
+    CHECK(t, w.relative_error == 0 && w.n_blocks == 6 && w.n_within == 6);
     for (int y = 16; y < 20; y++)
         for (int x = 32; x < 40; x++)
             image_set(b, x, y, vec3(0, 0, 0));

@@ -213,7 +213,7 @@ static double block_mean(const struct image *image, int x0, int y0, int x1, int 
 
 struct block_error image_worst_block(const struct image *a, const struct image *b, int size)
 {
-    struct block_error worst = {0, 0, 0.0};
+    struct block_error worst = {0, 0, 0.0, 0, 0};
     for (int y0 = 0; y0 < a->height; y0 += size)
         for (int x0 = 0; x0 < a->width; x0 += size) {
             int x1 = x0 + size < a->width ? x0 + size : a->width;
@@ -222,6 +222,8 @@ struct block_error image_worst_block(const struct image *a, const struct image *
             double relative = mean_a == mean_b ? 0.0
                               : mean_b != 0.0  ? fabs(mean_a - mean_b) / fabs(mean_b)
                                                : INFINITY;
+            worst.n_blocks++;
+            worst.n_within += relative <= BLOCK_TOLERANCE;
             if (relative > worst.relative_error) {
                 worst.x0 = x0;
                 worst.y0 = y0;
@@ -381,7 +383,8 @@ static void print_results(const struct image_error *e, const struct compare_inpu
     print_metrics(e);
     if (args->block > 0) {
         struct block_error w = image_worst_block(in->a, in->b, args->block);
-        printf(" worst_block=%.6g worst_block_at=%d,%d", w.relative_error, w.x0, w.y0);
+        printf(" worst_block=%.6g worst_block_at=%d,%d blocks=%d blocks_within_3_percent=%d",
+               w.relative_error, w.x0, w.y0, w.n_blocks, w.n_within);
     }
     if (in->var_a != NULL || in->var_b != NULL) {
         struct consistency s = image_consistency(in->a, in->b, in->var_a, in->var_b,

@@ -19,16 +19,21 @@ struct image_error {
 /* Metrics of test image a against reference b (same size, checked by the caller). */
 struct image_error image_compare(const struct image *a, const struct image *b);
 
-/* The block of image_worst_block(): where it is and how far off its mean is. */
+#define BLOCK_TOLERANCE 0.03 /* README's criterion: a block is within 3% of the reference */
+
+/* The block of image_worst_block(): where it is and how far off its mean is; and how many
+ * blocks there are, and how many of them are within BLOCK_TOLERANCE. */
 struct block_error {
     int x0, y0;            /* its top-left pixel                                          */
     double relative_error; /* |mean_a - mean_b| / mean_b of the block's luminance           */
+    int n_blocks;          /* blocks in the image                                         */
+    int n_within;          /* blocks whose relative error is at most BLOCK_TOLERANCE      */
 };
 
 /* Splits the images (same size) into size x size blocks from the top left (those at the
  * right and bottom edges may be smaller) and returns the block whose mean luminance in a
- * differs most, relatively, from its mean in b. Blocks whose mean in b is zero count
- * when a's is not (relative error +Inf). size >= 1. */
+ * differs most, relatively, from its mean in b, with the counts. Blocks whose mean in b
+ * is zero count when a's is not (relative error +Inf). size >= 1. */
 struct block_error image_worst_block(const struct image *a, const struct image *b, int size);
 
 /* The per-pixel test of image_consistency(); definitions in compare.c. */
