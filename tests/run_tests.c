@@ -23,6 +23,7 @@ static const struct room rooms[] = {
     {"ppm", test_ppm},           {"cache", test_cache},         {"render", test_render},
     {"pt", test_pt},             {"jensen1994", test_jensen1994}, {"jensen1996", test_jensen1996},
     {"report", test_report},     {"merge", test_merge},         {"cli", test_cli},
+    {"presets", test_presets},
 };
 
 /* Whether the command line asks for room (no names: every room). */

@@ -27,5 +27,6 @@ void test_jensen1996(struct check *t); /* test_jensen1996.c: --mode 1996, photon
 void test_report(struct check *t); /* test_report.c: --report, --time-limit, ...  */
 void test_merge(struct check *t);  /* test_merge.c: tile records, photon merge      */
 void test_cli(struct check *t);    /* test_cli.c: the command line, exit statuses */
+void test_presets(struct check *t); /* test_presets.c: --quality's presets         */
 
 #endif
