@@ -27,7 +27,8 @@ static const struct room rooms[] = {
     {"ppm", test_ppm, 0},         {"cache", test_cache, 0},         {"render", test_render, 0},
     {"pt", test_pt, 0},           {"jensen1994", test_jensen1994, 0},
     {"jensen1996", test_jensen1996, 0}, {"report", test_report, 0}, {"merge", test_merge, 0},
-    {"cli", test_cli, 0},         {"docs", test_docs, 0},           {"spd", test_spd, 1},
+    {"cli", test_cli, 0},         {"presets", test_presets, 0},     {"docs", test_docs, 0},
+    {"spd", test_spd, 1},
 };
 
 /* Whether the command line asks for the room (no names: every room not run only by name). */

@@ -59,7 +59,7 @@ static uint64_t hash_of(const char *words)
 static const char *const same_pixels_options[] = {
     "-o build/x.pfm", "--crop 0 0 4 4", "--time-limit 5", "--reference r.pfm --report r.csv",
     "--variance v.pfm", "--checkpoint 3", "--exposure 2", "--stats", "--progress",
-    "--no-progress", "--save-photons w.work", "--load-photons w.work",
+    "--no-progress", "--save-photons w.work", "--load-photons w.work", "--quality default",
 };
 static const char *const other_pixels_options[] = {
     "--mode pt", "--seed 2", "--spp 3", "--specular-spp 40", "--width 100", "--height 100",

@@ -19,9 +19,11 @@
 #include "../modes/ppm2008.h"
 #include "../modes/render.h"
 #include "../photon/trace.h"
+#include "presets.h"
 
 enum option_kind {
-    OPT_FLAG, OPT_INT, OPT_SEED, OPT_REAL, OPT_MODE, OPT_OUTPUT, OPT_FILE, OPT_CROP, OPT_STORE
+    OPT_FLAG, OPT_INT, OPT_SEED, OPT_REAL, OPT_MODE, OPT_QUALITY, OPT_OUTPUT, OPT_FILE, OPT_CROP,
+    OPT_STORE
 };
 
 struct option_spec {
@@ -38,6 +40,9 @@ struct option_spec {
 static const struct option_spec specs[] = {
     {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME",
      "rendering mode: direct, pt, photons, 1994, 1996 or 2008 (default direct)"},
+    {"--quality", OPT_QUALITY, FIELD(quality), 0, 0, "NAME",
+     "preview, default or reference: the mode's preset of options (listed below), applied "
+     "before the other options given (default default)"},
     {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm|.png|.ppm",
      "output: FILE.pfm (linear radiance) and FILE.png beside it for display; -o FILE.ppm "
      "writes FILE.ppm in place of the PNG (default: SCENE's name)"},
@@ -174,12 +179,14 @@ static void print_help(void)
     }
     printf("  %-26s %s\n  %-26s %s\n", "--help", "print this and exit", "--version",
            "print the version and exit");
+    print_presets();
 }
 
 static void set_defaults(struct options *o)
 {
     memset(o, 0, sizeof *o);
     o->mode = MODE_DIRECT;
+    o->quality = QUALITY_DEFAULT;
     o->seed = 1;
     o->spp = 0;
     o->max_depth = -1;
@@ -305,6 +312,9 @@ static int apply_option(const struct option_spec *spec, char **argv, int argc, i
     case OPT_MODE:
         (*i)++;
         return read_mode(value, (enum mode *)field, err);
+    case OPT_QUALITY:
+        (*i)++;
+        return read_quality(value, (enum quality *)field, err);
     case OPT_OUTPUT:
         (*i)++;
         return read_output(value, field, &o->display, err);
@@ -370,10 +380,12 @@ static int check_global_work_options(const struct options *o, struct error *err)
     return 0;
 }
 
-int parse_options(int argc, char **argv, struct options *o, struct error *err)
+/* Applies the words argv[first ... argc - 1] to *o: options by specs[], any other word as
+ * the scene file. Returns 1 once --help or --version is printed, -1 with *err filled on a
+ * bad word, else 0. */
+static int apply_words(int first, int argc, char **argv, struct options *o, struct error *err)
 {
-    set_defaults(o);
-    for (int i = 1; i < argc; i++) {
+    for (int i = first; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             print_help();
             return 1;
@@ -395,6 +407,41 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
             o->scene_path = argv[i];
         }
     }
+    return 0;
+}
+
+/* The defaults, the preset's words, then the user's (argv[1 ...]). The mode and the
+ * quality are known only once the user's words are read, so a first pass reads them
+ * alone (refusing a bad one before anything else); the second starts again from the
+ * defaults. Returns what apply_words() returns. */
+static int apply_preset_and_words(int argc, char **argv, struct options *o,
+                                  struct error *err)
+{
+    set_defaults(o);
+    int status = apply_words(1, argc, argv, o, err);
+    if (status != 0)
+        return status;
+    enum quality quality = o->quality;
+    int user_specular_spp = o->specular_spp;
+    struct preset_words preset;
+    preset_words(o->mode, quality, &preset);
+    set_defaults(o);
+    struct error inner;
+    if (apply_words(0, preset.n_words, preset.word, o, &inner) != 0)
+        return error_set(err, "", 0, "--quality %s: %s", quality_name(quality), inner.message);
+    status = apply_words(1, argc, argv, o, err); /* 0: the first pass read the same words */
+    /* A preset's --specular-spp gives way to a larger --spp of the user's: fewer samples
+     * in the specular pixels than in the others is what the user did not ask for. */
+    if (user_specular_spp == 0 && o->specular_spp > 0 && o->specular_spp < o->spp)
+        o->specular_spp = o->spp;
+    return status;
+}
+
+int parse_options(int argc, char **argv, struct options *o, struct error *err)
+{
+    int status = apply_preset_and_words(argc, argv, o, err);
+    if (status != 0)
+        return status;
     if (o->scene_path == NULL)
         return error_set(err, "", 0, "no scene file given (see photon --help)");
     if (o->output[0] == '\0')
@@ -448,10 +495,11 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
  * otherwise compute itself, bit for bit (tests/test_merge.c). options_hash() covers every
  * other option, so one added to specs[] is hashed unless it is named here. --time-limit
  * is here because a hash cannot capture it: it makes the pixels depend on the machine's
- * speed, so tile.h records it apart. */
+ * speed, so tile.h records it apart. --quality is here because the options its words set
+ * are hashed themselves: a preset and its words spelled out make the same tiles. */
 static const char *const outside_pixels[] = {
-    "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure", "--reference",
-    "--report", "--variance", "--checkpoint", "--time-limit", "--save-photons",
+    "--quality", "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure",
+    "--reference", "--report", "--variance", "--checkpoint", "--time-limit", "--save-photons",
     "--load-photons",
 };
 
@@ -485,6 +533,7 @@ static void option_text(const struct option_spec *spec, const struct options *o,
     case OPT_STORE:
         snprintf(text, size, "%s=%d\n", spec->name, *(const int *)field);
         return;
+    case OPT_QUALITY:
     case OPT_OUTPUT:
     case OPT_FILE:
     case OPT_CROP:
@@ -492,7 +541,7 @@ static void option_text(const struct option_spec *spec, const struct options *o,
     }
     /* A file that changes pixels must have its bytes hashed where it is read, as the
      * scene's lines are (scene_hash_line); its name says nothing of them. */
-    assert(!"options that name files or the window are in outside_pixels[]");
+    assert(!"--quality and the options naming files or the window are in outside_pixels[]");
     snprintf(text, size, "%s\n", spec->name);
 }
 

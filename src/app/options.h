@@ -17,11 +17,15 @@
 
 enum mode { MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1994, MODE_JENSEN1996, MODE_PPM2008 };
 
+/* --quality: which of a mode's presets (app/presets.h) stands before the user's options. */
+enum quality { QUALITY_PREVIEW, QUALITY_DEFAULT, QUALITY_REFERENCE };
+
 struct options {
     const char *scene_path;       /* the scene file (borrowed from argv)           */
     char output[OUTPUT_PATH_MAX]; /* the PFM to write, whatever -o's name ended in  */
     enum display_format display;  /* the display image beside it: -o's ending       */
     enum mode mode;
+    enum quality quality;         /* the preset applied before the command line's words */
     uint64_t seed;
     int spp;                      /* samples per pixel; 0 = the mode's default      */
     int specular_spp;             /* samples of a pixel that sees a light through
@@ -65,7 +69,9 @@ struct options {
     int checkpoint;               /* 2008: write the image every this many passes  */
 };
 
-/* Parses argv into *o. Returns 0 to render, 1 when --help or --version was printed
+/* Parses argv into *o: the defaults, then the words of the preset that --quality names for
+ * --mode's mode (app/presets.h), then argv's words, so an option given in argv wins
+ * wherever it stands. Returns 0 to render, 1 when --help or --version was printed
  * (exit 0), -1 with *err filled for bad options (exit 2). */
 int parse_options(int argc, char **argv, struct options *o, struct error *err);
 

@@ -1,0 +1,93 @@
+/*
+ * app/presets.c -- the quality presets (presets.h).
+ *
+ * preview: a quick look at a scene. Each photon mode renders the 256 x 256 Cornell boxes
+ *   (scenes/cornell.scene, scenes/cornell-specular.scene) in at most ~10 CPU seconds and
+ *   shows every effect of the scene without blotches; a first look, not a figure.
+ * default: the defaults of options.c and the modes' headers (no words), chosen there.
+ * reference: what makes a reference image: pt's is the setting of reference/cornell-pt.pfm;
+ *   the photon modes' converge further than their defaults at a few times their time.
+ * The measured seconds and errors of each row are in README (Quality presets);
+ * scripts/presets.sh measures them again. A list names only options its mode takes.
+ */
+#include "presets.h"
+
+#include <assert.h>
+#include <stdio.h>
+#include <string.h>
+
+struct preset {
+    enum mode mode;
+    enum quality quality;
+    const char *words; /* option words, one space apart */
+};
+
+static const struct preset presets[] = {
+    {MODE_DIRECT, QUALITY_PREVIEW, "--spp 4"},
+    {MODE_DIRECT, QUALITY_REFERENCE, "--spp 1024"},
+    {MODE_PT, QUALITY_PREVIEW, "--spp 4"},
+    {MODE_PT, QUALITY_REFERENCE, "--spp 4096"},
+    {MODE_PHOTONS, QUALITY_PREVIEW, "--spp 4"},
+    {MODE_PHOTONS, QUALITY_REFERENCE, "--photons 4000000 --gather 400 --spp 64"},
+    {MODE_JENSEN1994, QUALITY_PREVIEW,
+     "--photons 200000 --gather-rays 64 --cache-accuracy 0.3 --spp 8 --specular-spp 8"},
+    {MODE_JENSEN1994, QUALITY_REFERENCE, "--photons 8000000 --gather-rays 1024"},
+    {MODE_JENSEN1996, QUALITY_PREVIEW,
+     "--photons 200000 --caustic-photons 50000 --gather-rays 32 --cache-accuracy 0.3 "
+     "--spp 8 --specular-spp 8"},
+    {MODE_JENSEN1996, QUALITY_REFERENCE,
+     "--photons 8000000 --caustic-photons 2000000 --gather-rays 1024"},
+    {MODE_PPM2008, QUALITY_PREVIEW, "--passes 8 --spp 4"},
+    {MODE_PPM2008, QUALITY_REFERENCE, "--passes 256"},
+};
+
+const char *quality_name(enum quality quality)
+{
+    switch (quality) {
+    case QUALITY_PREVIEW:
+        return "preview";
+    case QUALITY_DEFAULT:
+        return "default";
+    case QUALITY_REFERENCE:
+        return "reference";
+    }
+    return "?";
+}
+
+int read_quality(const char *text, enum quality *quality, struct error *err)
+{
+    static const enum quality qualities[] = {QUALITY_PREVIEW, QUALITY_DEFAULT,
+                                             QUALITY_REFERENCE};
+    for (size_t i = 0; text != NULL && i < sizeof qualities / sizeof qualities[0]; i++)
+        if (strcmp(text, quality_name(qualities[i])) == 0) {
+            *quality = qualities[i];
+            return 0;
+        }
+    return error_set(err, "", 0,
+                     "--quality: unknown quality '%s' (available: preview, default, reference)",
+                     text != NULL ? text : "nothing");
+}
+
+void preset_words(enum mode mode, enum quality quality, struct preset_words *out)
+{
+    const char *words = "";
+    for (size_t i = 0; i < sizeof presets / sizeof presets[0]; i++)
+        if (presets[i].mode == mode && presets[i].quality == quality)
+            words = presets[i].words;
+    assert(strlen(words) < sizeof out->text); /* the table's lists are short */
+    strcpy(out->text, words);
+    out->n_words = 0;
+    for (char *w = strtok(out->text, " "); w != NULL; w = strtok(NULL, " ")) {
+        assert(out->n_words < PRESET_MAX_WORDS);
+        out->word[out->n_words++] = w;
+    }
+}
+
+void print_presets(void)
+{
+    printf("\nquality presets (--quality NAME; default: the defaults above; the options given\n"
+           "on the command line win over the preset's, wherever they stand):\n");
+    for (size_t i = 0; i < sizeof presets / sizeof presets[0]; i++)
+        printf("  --mode %-7s %-9s  %s\n", mode_name(presets[i].mode),
+               quality_name(presets[i].quality), presets[i].words);
+}
