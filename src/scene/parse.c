@@ -141,13 +141,10 @@ static int parse_background(struct parser *ps, struct error *err)
     return expect_end(ps, err);
 }
 
-/* Reports a failed scene_add_*(): the only cause is a documented limit. */
+/* Reports a failed scene_add_*(): the only causes are documented limits. */
 int check_added(struct parser *ps, int id, struct error *err)
 {
-    if (id >= 0)
-        return 0;
-    return error_set(err, ps->file, ps->line, "%s: more than %d primitives or %d lights",
-                     ps->tokens[0], MAX_PRIMITIVES, MAX_LIGHTS);
+    return scene_add_error(id, ps->file, ps->line, ps->tokens[0], err);
 }
 
 /* Reads a file name into path[MAX_PATH_LENGTH], relative to the directory of the file
