@@ -89,6 +89,73 @@ static void test_bad_scene_leaves_no_output(struct check *t)
     remove(OUT "_old.pfm");
 }
 
+/* Writes text to the scene file OUT_name.scene; its path goes to path[COMMAND_MAX]. */
+static const char *scene_file(char *path, const char *name, const char *text)
+{
+    snprintf(path, COMMAND_MAX, OUT "_%s.scene", name);
+    write_text_file(path, text);
+    return path;
+}
+
+/* Whether "PHOTON --mode MODE args SCENE -o OUT_x.pfm" exits with status and leaves no
+ * image (when status != 0) or one (when 0); the log then holds its stderr. */
+static int mode_exits(const char *mode, const char *args, const char *scene, int status)
+{
+    char command[COMMAND_MAX];
+    remove(OUT "_x.pfm");
+    snprintf(command, sizeof command, "--no-progress --mode %s %s %s -o " OUT "_x.pfm", mode,
+             args, scene);
+    int ran = photon(command);
+    int written = file_exists(OUT "_x.pfm");
+    remove(OUT "_x.pfm");
+    remove(OUT "_x.ppm");
+    return ran == status && written == (status == 0);
+}
+
+#define SMALL "--width 8 --height 8 --spp 1 --photons 2000 --caustic-photons 2000 " \
+              "--gather-rays 16"
+
+/* truth: DESIGN.md: no assertion is reachable from input. Each scene below once reached
+ *   one: a light of 1e300 W (the photon record's power, photon.c), a mirror facing the
+ *   camera squarely, so that a path comes back through the camera's own position (a
+ *   cache record's r_min = 0, irradiance_cache.c), an object reaching past DBL_MAX (the
+ *   cache's box, irradiance_cache.c). The first is refused at its line with the limit
+ *   (scene.h's MAX_LIGHT_POWER) in every mode; the others render.
+ * tolerance: none.
+ * catches: an abort (status 134) or a crash instead of a message, a partial output. */
+static void test_no_assertion_reachable_from_scenes(struct check *t)
+{
+    static const char *modes[] = {"direct", "pt", "photons", "1994", "1996", "2008"};
+    char bright[COMMAND_MAX], retro[COMMAND_MAX], wide[COMMAND_MAX];
+    scene_file(bright, "bright",
+               "camera 0 0 -5 0 0 0 0 1 0 40\n"
+               "material w lambert 0.5 0.5 0.5\nsphere 0 0 0 1 w\n"
+               "light point 0 0 -4 1e300 1e300 1e300\n");
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        const char *args = strcmp(modes[m], "2008") == 0 ? "--width 8 --height 8" : SMALL;
+        CHECK(t, mode_exits(modes[m], args, bright, 2));
+        CHECK(t, log_contains(OUT "_bright.scene:4: light: the lights' total power would "
+                              "exceed 1e+30 W"));
+    }
+    scene_file(retro, "retro",
+               "image 1 1\ncamera 0 0 0 0 0 1 0 1 0 40\n"
+               "material w lambert 0.7 0.7 0.7\nmaterial m mirror 1 1 1\n"
+               "quad -5 -5 0 -5 5 0 5 5 0 5 -5 0 w\n"
+               "quad -5 -5 1 5 -5 1 5 5 1 -5 5 1 m\n"
+               "light point 0 0 0.5 1 1 1\n");
+    CHECK(t, mode_exits("1994", SMALL, retro, 0));
+    CHECK(t, mode_exits("1996", SMALL, retro, 0));
+    scene_file(wide, "wide",
+               "image 4 4\ncamera 0 0 -5 0 0 0 0 1 0 40\n"
+               "material w lambert 0.7 0.7 0.7\nsphere 0 0 0 1 w\n"
+               "sphere 1.5e308 0 0 1e308 w\nlight point 0 3 -3 10 10 10\n");
+    CHECK(t, mode_exits("1994", SMALL, wide, 0));
+    CHECK(t, mode_exits("1996", SMALL, wide, 0));
+    remove(bright);
+    remove(retro);
+    remove(wide);
+}
+
 /* truth: same scene and seed give a bit-identical PFM (DESIGN.md, Determinism); the
  *   written files are a valid PFM and PPM of the requested size; --stats prints the keys
  *   the issue names; compare of a file with itself is all zeros.
@@ -164,6 +231,7 @@ void test_cli(struct check *t)
 {
     RUN_TEST(t, test_options);
     RUN_TEST(t, test_bad_scene_leaves_no_output);
+    RUN_TEST(t, test_no_assertion_reachable_from_scenes);
     RUN_TEST(t, test_render_writes_deterministic_files);
     RUN_TEST(t, test_nff_file_is_a_scene);
     RUN_TEST(t, test_ppm_command);
