@@ -55,7 +55,7 @@ static int choose_window(const struct options *o, int width, int height,
                          struct render_settings *rs, struct error *err)
 {
     int whole[4] = {0, 0, width, height};
-    const int *w = o->crop[2] == 0 ? whole : o->crop;
+    const int *w = o->has_crop ? o->crop : whole;
     if (!(w[0] < w[2] && w[2] <= width && w[1] < w[3] && w[3] <= height))
         return error_set(err, "", 0,
                          "--crop %d %d %d %d: need X0 < X1 <= %d and Y0 < Y1 <= %d (the image)",
@@ -147,7 +147,7 @@ static int write_outputs(struct run *run, struct error *err)
         return -1;
     if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
         return -1;
-    if (o->crop[2] != 0 ? write_tile_record(run, err) < 0
+    if (o->has_crop ? write_tile_record(run, err) < 0
                         : tile_record_remove(o->output, err) < 0)
         return -1;
     clock_t start = clock();

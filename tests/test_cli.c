@@ -43,6 +43,9 @@ static void test_options(struct check *t)
     CHECK(t, photon("-o out.png scenes/cornell.scene") == 2 && log_contains(".pfm"));
     CHECK(t, photon("--crop 0 0 300 10 scenes/cornell.scene") == 2 && log_contains("--crop"));
     CHECK(t, photon("--crop 5 5 5 10 scenes/cornell.scene") == 2);
+    CHECK(t, photon("--crop 5 5 0 10 scenes/cornell.scene") == 2 && log_contains("--crop"));
+    CHECK(t, photon("--crop 0 0 0 0 scenes/cornell.scene") == 2 && log_contains("--crop"));
+    CHECK(t, photon("--crop 0 10 4 0 scenes/cornell.scene") == 2 && log_contains("--crop"));
     CHECK(t, photon("--crop 1 2 3 scenes/cornell.scene") == 2);
     CHECK(t, photon("--mode 2008 --alpha 1 scenes/cornell.scene") == 2 &&
              log_contains("--alpha"));

@@ -317,6 +317,7 @@ static int apply_option(const struct option_spec *spec, char **argv, int argc, i
                 return -1;
             ((int *)field)[k] = (int)v;
         }
+        o->has_crop = 1; /* apart from the values: 0 0 0 0 is an empty window, not none */
         return 0;
     }
     return -1;

@@ -26,7 +26,8 @@ struct options {
                                      mirrors or glass; 0 = the mode's default       */
     int max_depth;                /* longest path followed; -1 = the mode's default */
     int width, height;            /* 0 = the scene's own size                      */
-    int crop[4];                  /* x0 y0 x1 y1; crop[2] == 0 means no crop       */
+    int crop[4];                  /* --crop's x0 y0 x1 y1, when has_crop           */
+    int has_crop;                 /* whether --crop was given                      */
     int stats;                    /* print key=value statistics on stderr          */
     int progress;                 /* 1 on, 0 off, -1 decided from the environment  */
     double exposure;              /* multiplier applied before the PPM's sRGB curve */
