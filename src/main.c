@@ -3,6 +3,8 @@
  *
  * Exit status: 0 on success, 2 for bad input (options, scene files, image files; the
  * message names file:line), 1 for a machine failure (out of memory, a failed write).
+ * An output whose directory is missing or not writable is bad input, found before any
+ * work (output_check); a write that fails later (a full disk) is a machine failure.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -336,20 +338,31 @@ static struct render_result render_mode(struct run *run, struct error *err)
     return render_direct(run->scene, &run->rs, want_variance, checkpoint, &run->counters);
 }
 
+/* Every file the render will write can be created where it is to go (error.h). */
+static int check_outputs(const struct options *o, struct error *err)
+{
+    const char *outputs[] = {o->output, o->variance, o->report, o->save_photons};
+    for (size_t i = 0; i < sizeof outputs / sizeof outputs[0]; i++)
+        if (outputs[i] != NULL && output_check(outputs[i], err) < 0)
+            return -1;
+    return 0;
+}
+
 static int render_command(struct run *run, struct error *err)
 {
-    if (prepare_run(run, err) < 0)
-        return 2;
+    if (check_outputs(&run->o, err) < 0 || prepare_run(run, err) < 0)
+        return error_exit_status(err);
     clock_t start = clock();
     if (run->o.load_photons != NULL &&
         work_file_read(run->o.load_photons, render_hash(run), &run->work, err) < 0)
         return 2;
     run->seconds_work_file = seconds_since(start);
     run->result = render_mode(run, err);
-    if (run->result.image == NULL || write_outputs(run, err) < 0)
+    if (run->result.image == NULL)
         return 2;
-    if (run->reference != NULL && report_close(&run->report, err) < 0)
-        return 2;
+    if (write_outputs(run, err) < 0 ||
+        (run->reference != NULL && report_close(&run->report, err) < 0))
+        return 1; /* every output could be created before the render: a failed write */
     if (run->o.stats)
         print_stats(run);
     return 0;

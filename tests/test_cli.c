@@ -159,6 +159,64 @@ static void test_no_assertion_reachable_from_scenes(struct check *t)
     remove(wide);
 }
 
+#define TINY "--no-progress --width 4 --height 4 --spp 1"
+
+/* truth: main.c's exit statuses: an output that cannot be created where it is to go (a
+ *   missing directory, a path through a file) is bad input, found before the scene is
+ *   read: status 2, the file named, nothing written; the same for each output of the
+ *   render (-o, --variance, --report, --save-photons) and of merge -o, compare --diff,
+ *   plot -o and probe -o (each given inputs that do not exist, so only a check made
+ *   first names the output).
+ * catches: the output's directory found missing only after the render (once exit 2 after
+ *   all the work), a check that leaves its temporary behind or misses an output. */
+static void test_unwritable_output_refused_at_once(struct check *t)
+{
+    static const char *commands[][2] = {
+        {"-o /nonexistent/x.pfm build/no_such.scene", "/nonexistent/x.pfm: cannot create"},
+        {"-o " OUT ".log/x.pfm build/no_such.scene", OUT ".log/x.pfm: cannot create"},
+        {"-o " OUT "_x.pfm --variance /nonexistent/v.pfm build/no_such.scene",
+         "/nonexistent/v.pfm: cannot create"},
+        {"-o " OUT "_x.pfm --reference build/no_such.pfm --report /nonexistent/r.csv "
+         "build/no_such.scene", "/nonexistent/r.csv: cannot create"},
+        {"-o " OUT "_x.pfm --mode photons --save-photons /nonexistent/w build/no_such.scene",
+         "/nonexistent/w: cannot create"},
+        {"merge -o /nonexistent/x.pfm build/no_such.pfm", "/nonexistent/x.pfm: cannot create"},
+        {"compare build/no_such.pfm build/no_such.pfm --diff /nonexistent/d.ppm",
+         "/nonexistent/d.ppm: cannot create"},
+        {"plot build/no_such.csv -o /nonexistent/p.svg", "/nonexistent/p.svg: cannot create"},
+        {"probe build/no_such.scene --line 0 0 0 1 1 1 --samples 2 -o /nonexistent/p.csv",
+         "/nonexistent/p.csv: cannot create"},
+    };
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        remove(OUT "_x.pfm");
+        CHECK(t, photon(commands[i][0]) == 2 && log_contains(commands[i][1]));
+        CHECK(t, !file_exists(OUT "_x.pfm") && !file_exists(OUT "_x.pfm.tmp"));
+    }
+}
+
+/* truth: main.c's exit statuses: a write that fails after the work (here the disk is
+ *   full: the PPM's temporary is a link to /dev/full, which refuses every write with
+ *   ENOSPC) is a machine failure, status 1, for a render and for photon merge; the
+ *   failed file is not left, the PFM written before it is whole.
+ * catches: a failed write reported as bad input (status 2), a partial PPM left. */
+static void test_failed_write_exits_1(struct check *t)
+{
+    CHECK(t, photon(TINY " --crop 0 0 4 4 -o " OUT "_tile.pfm scenes/cornell.scene") == 0);
+    static const char *commands[] = {TINY " -o " OUT "_full.pfm scenes/cornell.scene",
+                                     "merge -o " OUT "_full.pfm " OUT "_tile.pfm"};
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        remove(OUT "_full.ppm.tmp");
+        CHECK(t, run_command("ln -s /dev/full " OUT "_full.ppm.tmp") == 0);
+        CHECK(t, photon(commands[i]) == 1 && log_contains(OUT "_full.ppm: cannot write"));
+        CHECK(t, !file_exists(OUT "_full.ppm") && !file_exists(OUT "_full.ppm.tmp"));
+        CHECK(t, file_exists(OUT "_full.pfm"));
+        remove(OUT "_full.pfm");
+    }
+    remove(OUT "_tile.pfm");
+    remove(OUT "_tile.ppm");
+    remove(OUT "_tile.pfm.window");
+}
+
 /* truth: same scene and seed give a bit-identical PFM (DESIGN.md, Determinism); the
  *   written files are a valid PFM and PPM of the requested size; --stats prints the keys
  *   the issue names; compare of a file with itself is all zeros.
@@ -235,6 +293,8 @@ void test_cli(struct check *t)
     RUN_TEST(t, test_options);
     RUN_TEST(t, test_bad_scene_leaves_no_output);
     RUN_TEST(t, test_no_assertion_reachable_from_scenes);
+    RUN_TEST(t, test_unwritable_output_refused_at_once);
+    RUN_TEST(t, test_failed_write_exits_1);
     RUN_TEST(t, test_render_writes_deterministic_files);
     RUN_TEST(t, test_nff_file_is_a_scene);
     RUN_TEST(t, test_ppm_command);

@@ -423,9 +423,11 @@ int compare_command(int argc, char **argv)
     assert(argc >= 1 && strcmp(argv[0], "compare") == 0);
     struct error err;
     struct compare_args args;
-    if (parse_compare_args(argc, argv, &args, &err) != 0 || compare_files(&args, &err) != 0) {
+    if (parse_compare_args(argc, argv, &args, &err) != 0 ||
+        (args.diff != NULL && output_check(args.diff, &err) < 0) ||
+        compare_files(&args, &err) != 0) {
         error_print(&err);
-        return 2;
+        return error_exit_status(&err); /* 1: the diff's write failed */
     }
     return 0;
 }
