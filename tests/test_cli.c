@@ -9,6 +9,7 @@
 #include "../src/image/image.h"
 #include "files.h"
 #include "tests.h"
+#include "truths.h"
 
 #define COMMAND_MAX 1024
 #define OUT "build/test_cli"
@@ -26,8 +27,10 @@ static int log_contains(const char *text)
 }
 
 /* truth: the command-line contract (DESIGN.md): --help and --version exit 0; any bad
- *   option exits 2 with a one-line message.
- * catches: a bad value accepted (spp 0, a negative size), an unknown option ignored. */
+ *   option exits 2 with a one-line message, and so does an option that means nothing
+ *   for the mode (the option table's modes, which --help prints).
+ * catches: a bad value accepted (spp 0, a negative size), an unknown option ignored, an
+ *   option of another mode silently ignored. */
 static void test_options(struct check *t)
 {
     CHECK(t, photon("--help") == 0 && log_contains("--crop") && log_contains("--spp"));
@@ -59,6 +62,21 @@ static void test_options(struct check *t)
              log_contains("--specular-spp"));
     CHECK(t, photon("--mode 2008 --specular-spp 64 scenes/cornell.scene") == 2 &&
              log_contains("--specular-spp"));
+    CHECK(t, photon("--mode pt --passes 3 --gather 7 scenes/cornell.scene") == 2 &&
+             log_contains("--passes: only for --mode 2008 (this render is --mode pt)"));
+    CHECK(t, photon("--gather 7 scenes/cornell.scene") == 2 &&
+             log_contains("--gather: only for --mode photons, 1994 or 1996"));
+    CHECK(t, photon("--cone 2 --mode 1994 scenes/cornell.scene") == 2 &&
+             log_contains("--cone: only for --mode photons or 1996 (this render is --mode 1994)"));
+    CHECK(t, photon("--mode 1994 --caustic-photons 5 scenes/cornell.scene") == 2 &&
+             log_contains("--caustic-photons: only for --mode 1996"));
+    CHECK(t, photon("--mode 2008 --irradiance-store photon scenes/cornell.scene") == 2 &&
+             log_contains("--irradiance-store: only for --mode 1994"));
+    CHECK(t, photon("--mode pt --save-photons w.work scenes/cornell.scene") == 2 &&
+             log_contains("no global work to save"));
+    CHECK(t, photon("--help") == 0 && log_contains("2008: photon passes") &&
+             log_contains("photons, 1994, 1996: photons emitted") &&
+             log_contains("not with 2008: also write each pixel's variance"));
     CHECK(t, photon("") == 2 && log_contains("no scene"));
     CHECK(t, photon("a.scene b.scene") == 2 && log_contains("more than one"));
 }
@@ -100,23 +118,21 @@ static const char *scene_file(char *path, const char *name, const char *text)
     return path;
 }
 
-/* Whether "PHOTON --mode MODE args SCENE -o OUT_x.pfm" exits with status and leaves no
- * image (when status != 0) or one (when 0); the log then holds its stderr. */
-static int mode_exits(const char *mode, const char *args, const char *scene, int status)
+/* Whether "PHOTON --mode MODE SMALL SCENE -o OUT_x.pfm", SMALL one sample per pixel and
+ * the mode's work cut short (truths.h), exits with status and leaves no image (when
+ * status != 0) or one (when 0); the log then holds its stderr. */
+static int mode_exits(const char *mode, const char *scene, int status)
 {
     char command[COMMAND_MAX];
     remove(OUT "_x.pfm");
-    snprintf(command, sizeof command, "--no-progress --mode %s %s %s -o " OUT "_x.pfm", mode,
-             args, scene);
+    snprintf(command, sizeof command, "--no-progress --mode %s --spp 1 %s %s -o " OUT "_x.pfm",
+             mode, mode_work_options(mode), scene);
     int ran = photon(command);
     int written = file_exists(OUT "_x.pfm");
     remove(OUT "_x.pfm");
     remove(OUT "_x.ppm");
     return ran == status && written == (status == 0);
 }
-
-#define SMALL "--width 8 --height 8 --spp 1 --photons 2000 --caustic-photons 2000 " \
-              "--gather-rays 16"
 
 /* truth: DESIGN.md: no assertion is reachable from input. Each scene below once reached
  *   one: a light of 1e300 W (the photon record's power, photon.c), a mirror facing the
@@ -131,13 +147,12 @@ static void test_no_assertion_reachable_from_scenes(struct check *t)
     static const char *modes[] = {"direct", "pt", "photons", "1994", "1996", "2008"};
     char bright[COMMAND_MAX], retro[COMMAND_MAX], wide[COMMAND_MAX];
     scene_file(bright, "bright",
-               "camera 0 0 -5 0 0 0 0 1 0 40\n"
+               "image 8 8\ncamera 0 0 -5 0 0 0 0 1 0 40\n"
                "material w lambert 0.5 0.5 0.5\nsphere 0 0 0 1 w\n"
                "light point 0 0 -4 1e300 1e300 1e300\n");
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
-        const char *args = strcmp(modes[m], "2008") == 0 ? "--width 8 --height 8" : SMALL;
-        CHECK(t, mode_exits(modes[m], args, bright, 2));
-        CHECK(t, log_contains(OUT "_bright.scene:4: light: the lights' total power would "
+        CHECK(t, mode_exits(modes[m], bright, 2));
+        CHECK(t, log_contains(OUT "_bright.scene:5: light: the lights' total power would "
                               "exceed 1e+30 W"));
     }
     scene_file(retro, "retro",
@@ -146,14 +161,14 @@ static void test_no_assertion_reachable_from_scenes(struct check *t)
                "quad -5 -5 0 -5 5 0 5 5 0 5 -5 0 w\n"
                "quad -5 -5 1 5 -5 1 5 5 1 -5 5 1 m\n"
                "light point 0 0 0.5 1 1 1\n");
-    CHECK(t, mode_exits("1994", SMALL, retro, 0));
-    CHECK(t, mode_exits("1996", SMALL, retro, 0));
+    CHECK(t, mode_exits("1994", retro, 0));
+    CHECK(t, mode_exits("1996", retro, 0));
     scene_file(wide, "wide",
                "image 4 4\ncamera 0 0 -5 0 0 0 0 1 0 40\n"
                "material w lambert 0.7 0.7 0.7\nsphere 0 0 0 1 w\n"
                "sphere 1.5e308 0 0 1e308 w\nlight point 0 3 -3 10 10 10\n");
-    CHECK(t, mode_exits("1994", SMALL, wide, 0));
-    CHECK(t, mode_exits("1996", SMALL, wide, 0));
+    CHECK(t, mode_exits("1994", wide, 0));
+    CHECK(t, mode_exits("1996", wide, 0));
     remove(bright);
     remove(retro);
     remove(wide);

@@ -65,7 +65,8 @@ struct options {
 };
 
 /* Parses argv into *o. Returns 0 to render, 1 when --help or --version was printed
- * (exit 0), -1 with *err filled for bad options (exit 2). */
+ * (exit 0), -1 with *err filled for bad options (exit 2), among them an option that
+ * means nothing for the mode ("--passes: only for --mode 2008 ..."). */
 int parse_options(int argc, char **argv, struct options *o, struct error *err);
 
 const char *mode_name(enum mode mode);
@@ -86,7 +87,7 @@ int read_output(const char *text, char *output, struct error *err);
  * "name=value\n" in the order of the option table, after defaults are applied (so spelling
  * and order on the command line do not matter). Left out: the options that change no
  * pixel (-o, --crop, --stats, ...) and --time-limit (app/tile.h). An option that does not
- * apply to o->mode is hashed too: refusing tiles that differ only there is safe. */
+ * apply to o->mode keeps its default (parse_options refuses it) and is hashed too. */
 uint64_t options_hash(const struct options *o, uint64_t h);
 
 #endif
