@@ -205,8 +205,8 @@ static void print_jensen1996_stats(const struct jensen1996_stats *js)
             js->photons_global, js->photons_caustic, js->photons_shadow);
     fprintf(stderr, "bytes_global_map=%zu\nbytes_caustic_map=%zu\nbytes_visibility_maps=%zu\n",
             js->bytes_global_map, js->bytes_caustic_map, js->bytes_visibility_maps);
-    fprintf(stderr, "seconds_photons=%.3f\nseconds_cache=%.3f\nseconds_render=%.3f\n",
-            js->seconds_photons, js->seconds_cache, js->seconds_render);
+    fprintf(stderr, "seconds_photons=%.3f\nseconds_cache=%.3f\nseconds_final_pass=%.3f\n",
+            js->seconds_photons, js->seconds_cache, js->seconds_final_pass);
     fprintf(stderr, "shadow_rays=%llu\nshadow_rays_avoided=%llu\n", js->shadow_rays,
             js->shadow_rays_avoided);
     fprintf(stderr, "shadow_rays_avoided_fraction=%.4f\n",
@@ -234,8 +234,8 @@ static void print_jensen1994_stats(const struct jensen1994_stats *js)
             js->illumination_maps, js->illumination_di_elements);
     fprintf(stderr, "illumination_ci_maps=%zu\nbytes_illumination_maps=%zu\n",
             js->illumination_ci_maps, js->bytes_illumination_maps);
-    fprintf(stderr, "seconds_photons=%.3f\nseconds_cache=%.3f\nseconds_render=%.3f\n",
-            js->seconds_photons, js->seconds_cache, js->seconds_render);
+    fprintf(stderr, "seconds_photons=%.3f\nseconds_cache=%.3f\nseconds_final_pass=%.3f\n",
+            js->seconds_photons, js->seconds_cache, js->seconds_final_pass);
     fprintf(stderr, "cache_records=%zu\nbytes_cache=%zu\ngradient_rays=%llu\n",
             js->cache_records, js->bytes_cache, js->gradient_rays);
     fprintf(stderr, "gather_fallbacks=%llu\nshadow_rays=%llu\nstrata=%dx%d\n",

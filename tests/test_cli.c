@@ -264,6 +264,52 @@ static void test_render_writes_deterministic_files(struct check *t)
     remove(OUT ".log");
 }
 
+/* Whether every "key=value" line of the log has a key no other line has; counts the
+ * lines in *n. */
+static int stats_keys_unique(size_t *n)
+{
+    char *log = read_text_file(OUT ".log");
+    int unique = log != NULL;
+    *n = 0;
+    for (char *line = log != NULL ? log : ""; *line != '\0';) {
+        size_t length = strcspn(line, "\n"), key = strcspn(line, "=\n");
+        if (key < length) {
+            (*n)++;
+            for (char *other = line + length; (other = strstr(other, "\n")) != NULL;) {
+                other++;
+                if (strncmp(other, line, key + 1) == 0) {
+                    fprintf(stderr, "test_cli: --stats prints '%.*s' twice\n", (int)key, line);
+                    unique = 0;
+                }
+            }
+        }
+        line += length + (line[length] == '\n');
+    }
+    free(log);
+    return unique;
+}
+
+/* truth: --stats prints each key once (README: key=value lines), in every mode, and
+ *   seconds_render is the whole render's time in every mode.
+ * tolerance: none.
+ * catches: a mode's own figures printed under a key the common ones use (1994 and 1996
+ *   once printed seconds_render twice, their final pass's under the whole render's key). */
+static void test_stats_keys_once_in_every_mode(struct check *t)
+{
+    static const char *modes[] = {"direct", "pt", "photons", "1994", "1996", "2008"};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        char command[COMMAND_MAX];
+        snprintf(command, sizeof command, "--no-progress --stats --mode %s --width 16 "
+                 "--height 16 --spp 2 %s scenes/cornell-specular.scene -o " OUT "_stats.pfm",
+                 modes[m], mode_work_options(modes[m]));
+        size_t n = 0;
+        CHECK(t, photon(command) == 0 && log_contains("seconds_render="));
+        CHECK(t, stats_keys_unique(&n) && n > 10);
+    }
+    remove(OUT "_stats.pfm");
+    remove(OUT "_stats.ppm");
+}
+
 /* truth: an NFF file is a scene of its own (README, "NFF files"): photon renders it by its
  *   .nff name, and a bad NFF line is reported as file:line with exit status 2 and no output.
  * catches: .nff files sent to the scene-file parser, an NFF error without its line. */
@@ -311,6 +357,7 @@ void test_cli(struct check *t)
     RUN_TEST(t, test_unwritable_output_refused_at_once);
     RUN_TEST(t, test_failed_write_exits_1);
     RUN_TEST(t, test_render_writes_deterministic_files);
+    RUN_TEST(t, test_stats_keys_once_in_every_mode);
     RUN_TEST(t, test_nff_file_is_a_scene);
     RUN_TEST(t, test_ppm_command);
 }
