@@ -255,8 +255,14 @@ static void print_stats(const struct run *run)
     fprintf(stderr, "objects=%zu\nlights=%zu\nbvh_nodes=%zu\nbytes_geometry=%zu\n",
             geometry_primitive_count(scene->geometry), scene->n_lights,
             geometry_bvh_nodes(scene->geometry), geometry_bytes(scene->geometry));
+    /* spp: the samples of a pixel (the passes that ran, at most --spp); pixels that see a
+     * light through mirrors or glass take specular_spp (render.h), shown apart */
+    int spp = c->passes < run->rs.spp ? c->passes : run->rs.spp;
     fprintf(stderr, "width=%d\nheight=%d\nspp=%d\nseed=%llu\n", scene->width, scene->height,
-            c->passes, (unsigned long long)run->o.seed);
+            spp, (unsigned long long)run->o.seed);
+    if (run->o.mode != MODE_PPM2008)
+        fprintf(stderr, "specular_spp=%d\nspecular_pixels=%zu\n",
+                c->specular_pixels > 0 ? c->passes : run->rs.specular_spp, c->specular_pixels);
     double pixels = (double)(run->rs.x1 - run->rs.x0) * (double)(run->rs.y1 - run->rs.y0);
     if (run->o.mode != MODE_PPM2008)
         fprintf(stderr, "samples_per_pixel=%.3f\n", (double)c->samples / pixels);

@@ -310,6 +310,47 @@ static void test_stats_keys_once_in_every_mode(struct check *t)
     remove(OUT "_stats.ppm");
 }
 
+/* The number --stats printed for key in the last command's log; -1 when it did not. */
+static double logged_stat(const char *key)
+{
+    return file_stat(OUT ".log", key);
+}
+
+/* truth: render.h: in 1994 and 1996 a pixel in which the camera sees a light through
+ *   mirrors or glass takes --specular-spp = 64 x --spp samples, every other --spp; the
+ *   stats say both and how many pixels take the larger count (spp=16, specular_spp=1024,
+ *   specular_pixels=N), and the mean they print must be the two counts' mix,
+ *   (16 (1024 - N) + 1024 N) / 1024 on 32 x 32 pixels (to %.3f's rounding); a scene with
+ *   nothing specular has no such pixel. The progress line names the two counts apart.
+ * tolerance: 0.0005, half the last printed digit of samples_per_pixel.
+ * catches: spp printed as the passes run (1024, the specular pixels' count), a count of
+ *   specular pixels that is not the one the samples were taken for, a progress line
+ *   saying "1024/1024 samples per pixel". */
+static void test_specular_pixels_in_stats(struct check *t)
+{
+    static const char *modes[] = {"1994", "1996"};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        char command[COMMAND_MAX];
+        snprintf(command, sizeof command, "--progress --stats --mode %s --spp 16 --width 32 "
+                 "--height 32 %s scenes/cornell-specular.scene -o " OUT "_spec.pfm",
+                 modes[m], mode_work_options(modes[m]));
+        CHECK(t, photon(command) == 0);
+        double n = logged_stat("specular_pixels");
+        CHECK(t, logged_stat("spp") == 16 && logged_stat("specular_spp") == 1024 && n > 0);
+        double mean = (16 * (1024 - n) + 1024 * n) / 1024;
+        CHECK_CLOSE(t, logged_stat("samples_per_pixel"), mean, 0.0005);
+        CHECK(t, log_contains("16 samples per pixel, 1024 in the ") &&
+                 !log_contains("/1024 samples per pixel"));
+    }
+    CHECK(t, photon("--no-progress --stats --mode 1994 --spp 16 --width 16 --height 16 "
+                    "--photons 20000 --gather-rays 32 scenes/cornell.scene -o " OUT
+                    "_spec.pfm") == 0);
+    CHECK(t, logged_stat("spp") == 16 && logged_stat("specular_pixels") == 0 &&
+             logged_stat("samples_per_pixel") == 16);
+    remove(OUT "_spec.pfm");
+    remove(OUT "_spec.ppm");
+}
+
 /* truth: an NFF file is a scene of its own (README, "NFF files"): photon renders it by its
  *   .nff name, and a bad NFF line is reported as file:line with exit status 2 and no output.
  * catches: .nff files sent to the scene-file parser, an NFF error without its line. */
@@ -358,6 +399,7 @@ void test_cli(struct check *t)
     RUN_TEST(t, test_failed_write_exits_1);
     RUN_TEST(t, test_render_writes_deterministic_files);
     RUN_TEST(t, test_stats_keys_once_in_every_mode);
+    RUN_TEST(t, test_specular_pixels_in_stats);
     RUN_TEST(t, test_nff_file_is_a_scene);
     RUN_TEST(t, test_ppm_command);
 }

@@ -590,11 +590,7 @@ static int render_work(const char *render, const char *name, const char *extra)
 /* The number --stats printed for key in the last command's output; -1 when it did not. */
 static double logged_stat(const char *key)
 {
-    char *log = read_text_file(OUT ".log");
-    const char *at = log != NULL ? strstr(log, key) : NULL;
-    double value = at != NULL && at[strlen(key)] == '=' ? atof(at + strlen(key) + 1) : -1;
-    free(log);
-    return value;
+    return file_stat(OUT ".log", key);
 }
 
 /* truth: the global work is the same whatever window is rendered (DESIGN.md: a crop
