@@ -232,6 +232,36 @@ static void test_failed_write_exits_1(struct check *t)
     remove(OUT "_tile.pfm.window");
 }
 
+/* Whether the log holds only printable ASCII and line ends. */
+static int log_is_text(void)
+{
+    char *log = read_text_file(OUT ".log");
+    int text = log != NULL;
+    for (const unsigned char *c = (const unsigned char *)log; text && *c != '\0'; c++)
+        text = *c == '\n' || (*c >= 0x20 && *c < 0x7F);
+    free(log);
+    return text;
+}
+
+/* truth: base/error.h: a message that echoes input quotes its bytes outside printable
+ *   ASCII as \xNN: a scene file's binary garbage (a terminal escape among it), a name of
+ *   a missing file, an unknown option given on the command line.
+ * catches: raw control bytes on the user's terminal (the escape turned it red). */
+static void test_messages_quote_binary_input(struct check *t)
+{
+    static const unsigned char garbage[] = "sphere \x01\xff\x1b[31m 1 2\n";
+    write_bytes_file(OUT "_garbage.scene", garbage, sizeof garbage - 1);
+    CHECK(t, photon("-o " OUT "_x.pfm " OUT "_garbage.scene") == 2 && log_is_text() &&
+             log_contains(OUT "_garbage.scene:1: sphere: '\\x01\\xff\\x1b[31m' is not a "
+                          "number"));
+    CHECK(t, photon("-o " OUT "_x.pfm 'build/no\033[31m.scene'") == 2 && log_is_text() &&
+             log_contains("build/no\\x1b[31m.scene: cannot open"));
+    CHECK(t, photon("'--\001' scenes/cornell.scene") == 2 && log_is_text() &&
+             log_contains("unknown option '--\\x01'"));
+    CHECK(t, !file_exists(OUT "_x.pfm"));
+    remove(OUT "_garbage.scene");
+}
+
 /* truth: same scene and seed give a bit-identical PFM (DESIGN.md, Determinism); the
  *   written files are a valid PFM and PPM of the requested size; --stats prints the keys
  *   the issue names; compare of a file with itself is all zeros.
@@ -397,6 +427,7 @@ void test_cli(struct check *t)
     RUN_TEST(t, test_no_assertion_reachable_from_scenes);
     RUN_TEST(t, test_unwritable_output_refused_at_once);
     RUN_TEST(t, test_failed_write_exits_1);
+    RUN_TEST(t, test_messages_quote_binary_input);
     RUN_TEST(t, test_render_writes_deterministic_files);
     RUN_TEST(t, test_stats_keys_once_in_every_mode);
     RUN_TEST(t, test_specular_pixels_in_stats);

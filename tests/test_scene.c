@@ -144,7 +144,8 @@ static void test_bad_scenes_are_refused(struct check *t)
          "cannot open"},
         {"material m lambert 1 1 1\n", 0, "no camera"},
         {"", 0, "no camera"},
-        {"\x01\x02\xff\xfe binary\n", 1, "unknown keyword"},
+        {"\x01\x02\xff\xfe binary\n", 1, "unknown keyword '\\x01\\x02\\xff\\xfe'"},
+        {"sphere \x01\xff\x1b[31m 1 2\n", 1, "'\\x01\\xff\\x1b[31m' is not a number"},
         {"camera 0 0 0 0 0 1 0 1 0 40 # a comment\nsphere", 2, "expected 4 numbers"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\n"
          "sphereflake 0 0 0 1 11 0 0 1 m\n", 3, "levels"},

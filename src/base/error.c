@@ -22,15 +22,36 @@ struct open_output {
 
 static struct open_output outputs[MAX_OPEN_OUTPUTS];
 
+/* text into out[size] with every byte outside printable ASCII (a control byte, DEL, or
+ * any byte >= 0x80) written as \xNN, so that a message echoing a file's bytes or a
+ * command line's cannot move the terminal's cursor or change its colours; cut, whole
+ * bytes and escapes only, where out is full. */
+static void copy_quoted(char *out, size_t size, const char *text)
+{
+    size_t n = 0;
+    for (const unsigned char *c = (const unsigned char *)text; *c != '\0'; c++) {
+        int printable = *c >= 0x20 && *c < 0x7F;
+        if (n + (printable ? 1 : 4) >= size)
+            break;
+        if (printable)
+            out[n++] = (char)*c;
+        else
+            n += (size_t)sprintf(out + n, "\\x%02x", *c);
+    }
+    out[n] = '\0';
+}
+
 int error_set(struct error *err, const char *file, int line, const char *format, ...)
 {
     if (err == NULL)
         return -1;
+    char message[ERROR_MESSAGE_MAX];
     va_list args;
     va_start(args, format);
-    vsnprintf(err->message, sizeof err->message, format, args);
+    vsnprintf(message, sizeof message, format, args);
     va_end(args);
-    snprintf(err->file, sizeof err->file, "%s", file != NULL ? file : "");
+    copy_quoted(err->message, sizeof err->message, message);
+    copy_quoted(err->file, sizeof err->file, file != NULL ? file : "");
     err->line = line;
     err->failed_write = 0;
     return -1;

@@ -31,7 +31,8 @@ struct error {
 };
 
 /* Fills *err (if err is not NULL) with a printf-style message; returns -1 so that
- * callers can write "return error_set(err, ...)". */
+ * callers can write "return error_set(err, ...)". Bytes of the message and the file name
+ * outside printable ASCII are written as \xNN (input echoed in a message stays text). */
 int error_set(struct error *err, const char *file, int line, const char *format, ...);
 
 /* Prints err as "file:line: message" (or "photon: message" without a file) on stderr. */
