@@ -262,6 +262,32 @@ static void test_messages_quote_binary_input(struct check *t)
     remove(OUT "_garbage.scene");
 }
 
+/* truth: a file a scene names (include, obj, nff) that cannot be opened is reported at
+ *   the line that names it, "scene:line: keyword: cannot open 'path': reason", the path
+ *   as resolved beside the scene; status 2, no output.
+ * catches: a message naming only the missing file (which scene, which line?). */
+static void test_missing_named_file_names_its_line(struct check *t)
+{
+    static const char *lines[][2] = {
+        /* the names are relative to the scene's directory, build/ */
+        {"include test_cli_nothere.scene",
+         "include: cannot open '" OUT "_nothere.scene': No such"},
+        {"obj test_cli_nothere.obj w", "obj: cannot open '" OUT "_nothere.obj': No such"},
+        {"nff test_cli_nothere.nff", "nff: cannot open '" OUT "_nothere.nff': No such"},
+    };
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
+        char text[256], expected[256];
+        snprintf(text, sizeof text, "camera 0 0 0 0 0 1 0 1 0 40\nmaterial w lambert 1 1 1\n"
+                 "%s\n", lines[i][0]);
+        write_text_file(OUT "_names.scene", text);
+        snprintf(expected, sizeof expected, OUT "_names.scene:3: %s", lines[i][1]);
+        CHECK(t, photon("-o " OUT "_x.pfm " OUT "_names.scene") == 2 &&
+                 log_contains(expected));
+        CHECK(t, !file_exists(OUT "_x.pfm"));
+    }
+    remove(OUT "_names.scene");
+}
+
 /* truth: same scene and seed give a bit-identical PFM (DESIGN.md, Determinism); the
  *   written files are a valid PFM and PPM of the requested size; --stats prints the keys
  *   the issue names; compare of a file with itself is all zeros.
@@ -428,6 +454,7 @@ void test_cli(struct check *t)
     RUN_TEST(t, test_unwritable_output_refused_at_once);
     RUN_TEST(t, test_failed_write_exits_1);
     RUN_TEST(t, test_messages_quote_binary_input);
+    RUN_TEST(t, test_missing_named_file_names_its_line);
     RUN_TEST(t, test_render_writes_deterministic_files);
     RUN_TEST(t, test_stats_keys_once_in_every_mode);
     RUN_TEST(t, test_specular_pixels_in_stats);

@@ -967,8 +967,9 @@ static void test_scene_keyword_errors(struct check *t)
     sprintf(missing, "material m lambert 1 1 1\nobj %s.none m\n", base_name(scratch_mesh));
     write_text_file(scratch_scene, missing);
     struct error err;
-    CHECK(t, scene_load(scratch_scene, &err) == NULL && err.line == 0 &&
-                 strstr(err.message, "cannot open") != NULL);
+    CHECK(t, scene_load(scratch_scene, &err) == NULL && err.line == 2 &&
+                 strstr(err.message, "obj: cannot open") != NULL);
+    CHECK(t, strcmp(err.file, scratch_scene) == 0); /* the line that names the mesh */
 }
 
 void test_import(struct check *t)
