@@ -636,9 +636,10 @@ static void test_lookup_boundaries(struct check *t)
  *   built over an infinite side (NaN corners), a record lost outside the cube. */
 static void test_cache_over_unbounded_box(struct check *t)
 {
-    const struct aabb boxes[] = {{{0, 0, 0}, {HUGE_VAL, 1, 1}},
+    const double inf = HUGE_VAL;
+    const struct aabb boxes[] = {{{0, 0, 0}, {inf, 1, 1}},
                                  {{-1.7e308, 0, 0}, {1.7e308, 1, 1}},
-                                 {{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}}};
+                                 {{inf, inf, inf}, {-inf, -inf, -inf}}};
     const struct vec3 z = vec3(0, 0, 1), at[2] = {{0.5, 0.5, 0.5}, {1e300, 0.5, 0.5}};
     for (size_t b = 0; b < sizeof boxes / sizeof boxes[0]; b++) {
         struct irradiance_cache *cache = irradiance_cache_create(boxes[b], 0.3);

@@ -8,9 +8,9 @@
  * [128, 256]; 256 does not fit, so then e grows by one and the bytes are recomputed
  * (the largest becomes 128). Each channel's error is at most half a step, 2^(e-9), and
  * v >= 127.75 * 2^(e-8), so the error is at most v / 255.5 on every channel, however
- * strongly coloured. Range: v < 2^127, PHOTON_POWER_MAX (asserted; photon.h). Below 2^-128, e stays at -127 and the
- * bytes lose precision gradually (absolute error <= 2^-136); all-zero power packs to
- * four zero bytes and decodes to exact zero.
+ * strongly coloured. Range: v < 2^127 = PHOTON_POWER_MAX (asserted; photon.h). Below
+ * 2^-128, e stays at -127 and the bytes lose precision gradually (absolute error <=
+ * 2^-136); all-zero power packs to four zero bytes and decodes to exact zero.
  *
  * Direction: theta = angle from +z in [0, pi], 256 steps that include both poles
  * (theta = i pi / 255, error <= pi / 510); phi = angle about z from +x in [0, 2 pi), 256
