@@ -3,6 +3,8 @@
  *
  * Exit status: 0 on success, 2 for bad input (options, scene files, image files; the
  * message names file:line), 1 for a machine failure (out of memory, a failed write).
+ * An output whose directory is missing or not writable is bad input, found before any
+ * work (output_check); a write that fails later (a full disk) is a machine failure.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -55,7 +57,7 @@ static int choose_window(const struct options *o, int width, int height,
                          struct render_settings *rs, struct error *err)
 {
     int whole[4] = {0, 0, width, height};
-    const int *w = o->crop[2] == 0 ? whole : o->crop;
+    const int *w = o->has_crop ? o->crop : whole;
     if (!(w[0] < w[2] && w[2] <= width && w[1] < w[3] && w[3] <= height))
         return error_set(err, "", 0,
                          "--crop %d %d %d %d: need X0 < X1 <= %d and Y0 < Y1 <= %d (the image)",
@@ -147,7 +149,7 @@ static int write_outputs(struct run *run, struct error *err)
         return -1;
     if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
         return -1;
-    if (o->crop[2] != 0 ? write_tile_record(run, err) < 0
+    if (o->has_crop ? write_tile_record(run, err) < 0
                         : tile_record_remove(o->output, err) < 0)
         return -1;
     clock_t start = clock();
@@ -203,8 +205,8 @@ static void print_jensen1996_stats(const struct jensen1996_stats *js)
             js->photons_global, js->photons_caustic, js->photons_shadow);
     fprintf(stderr, "bytes_global_map=%zu\nbytes_caustic_map=%zu\nbytes_visibility_maps=%zu\n",
             js->bytes_global_map, js->bytes_caustic_map, js->bytes_visibility_maps);
-    fprintf(stderr, "seconds_photons=%.3f\nseconds_cache=%.3f\nseconds_render=%.3f\n",
-            js->seconds_photons, js->seconds_cache, js->seconds_render);
+    fprintf(stderr, "seconds_photons=%.3f\nseconds_cache=%.3f\nseconds_final_pass=%.3f\n",
+            js->seconds_photons, js->seconds_cache, js->seconds_final_pass);
     fprintf(stderr, "shadow_rays=%llu\nshadow_rays_avoided=%llu\n", js->shadow_rays,
             js->shadow_rays_avoided);
     fprintf(stderr, "shadow_rays_avoided_fraction=%.4f\n",
@@ -232,8 +234,8 @@ static void print_jensen1994_stats(const struct jensen1994_stats *js)
             js->illumination_maps, js->illumination_di_elements);
     fprintf(stderr, "illumination_ci_maps=%zu\nbytes_illumination_maps=%zu\n",
             js->illumination_ci_maps, js->bytes_illumination_maps);
-    fprintf(stderr, "seconds_photons=%.3f\nseconds_cache=%.3f\nseconds_render=%.3f\n",
-            js->seconds_photons, js->seconds_cache, js->seconds_render);
+    fprintf(stderr, "seconds_photons=%.3f\nseconds_cache=%.3f\nseconds_final_pass=%.3f\n",
+            js->seconds_photons, js->seconds_cache, js->seconds_final_pass);
     fprintf(stderr, "cache_records=%zu\nbytes_cache=%zu\ngradient_rays=%llu\n",
             js->cache_records, js->bytes_cache, js->gradient_rays);
     fprintf(stderr, "gather_fallbacks=%llu\nshadow_rays=%llu\nstrata=%dx%d\n",
@@ -253,8 +255,14 @@ static void print_stats(const struct run *run)
     fprintf(stderr, "objects=%zu\nlights=%zu\nbvh_nodes=%zu\nbytes_geometry=%zu\n",
             geometry_primitive_count(scene->geometry), scene->n_lights,
             geometry_bvh_nodes(scene->geometry), geometry_bytes(scene->geometry));
+    /* spp: the samples of a pixel (the passes that ran, at most --spp); pixels that see a
+     * light through mirrors or glass take specular_spp (render.h), shown apart */
+    int spp = c->passes < run->rs.spp ? c->passes : run->rs.spp;
     fprintf(stderr, "width=%d\nheight=%d\nspp=%d\nseed=%llu\n", scene->width, scene->height,
-            c->passes, (unsigned long long)run->o.seed);
+            spp, (unsigned long long)run->o.seed);
+    if (run->o.mode != MODE_PPM2008)
+        fprintf(stderr, "specular_spp=%d\nspecular_pixels=%zu\n",
+                c->specular_pixels > 0 ? c->passes : run->rs.specular_spp, c->specular_pixels);
     double pixels = (double)(run->rs.x1 - run->rs.x0) * (double)(run->rs.y1 - run->rs.y0);
     if (run->o.mode != MODE_PPM2008)
         fprintf(stderr, "samples_per_pixel=%.3f\n", (double)c->samples / pixels);
@@ -336,20 +344,31 @@ static struct render_result render_mode(struct run *run, struct error *err)
     return render_direct(run->scene, &run->rs, want_variance, checkpoint, &run->counters);
 }
 
+/* Every file the render will write can be created where it is to go (error.h). */
+static int check_outputs(const struct options *o, struct error *err)
+{
+    const char *outputs[] = {o->output, o->variance, o->report, o->save_photons};
+    for (size_t i = 0; i < sizeof outputs / sizeof outputs[0]; i++)
+        if (outputs[i] != NULL && output_check(outputs[i], err) < 0)
+            return -1;
+    return 0;
+}
+
 static int render_command(struct run *run, struct error *err)
 {
-    if (prepare_run(run, err) < 0)
-        return 2;
+    if (check_outputs(&run->o, err) < 0 || prepare_run(run, err) < 0)
+        return error_exit_status(err);
     clock_t start = clock();
     if (run->o.load_photons != NULL &&
         work_file_read(run->o.load_photons, render_hash(run), &run->work, err) < 0)
         return 2;
     run->seconds_work_file = seconds_since(start);
     run->result = render_mode(run, err);
-    if (run->result.image == NULL || write_outputs(run, err) < 0)
+    if (run->result.image == NULL)
         return 2;
-    if (run->reference != NULL && report_close(&run->report, err) < 0)
-        return 2;
+    if (write_outputs(run, err) < 0 ||
+        (run->reference != NULL && report_close(&run->report, err) < 0))
+        return 1; /* every output could be created before the render: a failed write */
     if (run->o.stats)
         print_stats(run);
     return 0;

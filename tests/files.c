@@ -104,6 +104,20 @@ int files_equal(const char *a, const char *b)
     return same;
 }
 
+double file_stat(const char *log, const char *key)
+{
+    char *text = read_text_file(log);
+    size_t n = strlen(key);
+    double value = -1;
+    for (const char *line = text; line != NULL && value < 0; line = strchr(line, '\n')) {
+        line += *line == '\n';
+        if (strncmp(line, key, n) == 0 && line[n] == '=')
+            value = atof(line + n + 1);
+    }
+    free(text);
+    return value;
+}
+
 int photon_logged(const char *subcommand, const char *args, const char *log)
 {
     char command[COMMAND_MAX];

@@ -29,6 +29,10 @@ int file_equals_text(const char *name, const char *text);
 /* Whether both files can be read and hold the same bytes. */
 int files_equal(const char *a, const char *b);
 
+/* The number of the "key=value" line (as --stats prints) for key in file log; -1 when the
+ * file has no such line. */
+double file_stat(const char *log, const char *key);
+
 /* Runs "PHOTON subcommand args" (subcommand may be "") with stdout and stderr captured in
  * log; the exit status, or -1 if the command is too long or did not exit. */
 int photon_logged(const char *subcommand, const char *args, const char *log);

@@ -120,16 +120,33 @@ static void test_sequence02_points_are_uniform(struct check *t)
     }
 }
 
-/* truth: error.h's contract: the message is formatted, file and line kept, -1 returned.
- * catches: a truncated or missing message, a lost line number. */
+/* truth: error.h's contract: the message is formatted, file and line kept, -1 returned;
+ *   bytes outside printable ASCII (0x20 to 0x7e) in the message and the file name come
+ *   out as \xNN, in lower-case hex, and a message too long to quote whole is cut before
+ *   an escape, never inside one. Quoting is idempotent (a quoted message passed on
+ *   through "%s" stays as it is).
+ * catches: a truncated or missing message, a lost line number, a file's raw bytes (a
+ *   terminal escape) echoed, an escape cut in half, space or '~' quoted. */
 static void test_error_set(struct check *t)
 {
-    struct error err;
+    struct error err, again;
     CHECK(t, error_set(&err, "a.scene", 12, "expected %d numbers", 4) == -1);
     CHECK(t, strcmp(err.file, "a.scene") == 0);
     CHECK(t, err.line == 12);
     CHECK(t, strcmp(err.message, "expected 4 numbers") == 0);
     CHECK(t, error_set(NULL, "x", 1, "no record") == -1);
+    error_set(&err, "b\tc\x7f.scene", 3, "'%s' is not a number", "\x01\xff\x1b[31m ~\n");
+    CHECK(t, strcmp(err.file, "b\\x09c\\x7f.scene") == 0);
+    CHECK(t, strcmp(err.message, "'\\x01\\xff\\x1b[31m ~\\x0a' is not a number") == 0);
+    error_set(&again, err.file, 3, "%s", err.message);
+    CHECK(t, strcmp(again.message, err.message) == 0 && strcmp(again.file, err.file) == 0);
+    char long_text[ERROR_MESSAGE_MAX];
+    memset(long_text, '\x1b', sizeof long_text - 1);
+    long_text[sizeof long_text - 1] = '\0';
+    error_set(&err, "", 0, "ab%s", long_text);
+    size_t n = strlen(err.message);
+    CHECK(t, n < ERROR_MESSAGE_MAX && n >= ERROR_MESSAGE_MAX - 4 && (n - 2) % 4 == 0 &&
+             strncmp(err.message + n - 4, "\\x1b", 4) == 0);
 }
 
 /* truth: outputs are whole or absent (DESIGN.md): before commit only NAME.tmp exists;

@@ -627,6 +627,36 @@ static void test_lookup_boundaries(struct check *t)
     irradiance_cache_free(NULL);
 }
 
+/* truth: irradiance_cache.h's contract: the box only places the octree, so a cache over
+ *   a box that is not finite (a scene with an object reaching past DBL_MAX: hi = inf, or
+ *   hi - lo overflowing) or empty (lo = inf, hi = -inf) still finds each record at its
+ *   own point, near the origin and far out.
+ * tolerance: rounding (1e-15).
+ * catches: such a box refused by an assertion (reached from a scene file), an octree
+ *   built over an infinite side (NaN corners), a record lost outside the cube. */
+static void test_cache_over_unbounded_box(struct check *t)
+{
+    const double inf = HUGE_VAL;
+    const struct aabb boxes[] = {{{0, 0, 0}, {inf, 1, 1}},
+                                 {{-1.7e308, 0, 0}, {1.7e308, 1, 1}},
+                                 {{inf, inf, inf}, {-inf, -inf, -inf}}};
+    const struct vec3 z = vec3(0, 0, 1), at[2] = {{0.5, 0.5, 0.5}, {1e300, 0.5, 0.5}};
+    for (size_t b = 0; b < sizeof boxes / sizeof boxes[0]; b++) {
+        struct irradiance_cache *cache = irradiance_cache_create(boxes[b], 0.3);
+        for (int i = 0; i < 2; i++) {
+            struct irradiance_record r = plain_record(at[i], z, vec3(1, 2, i + 3.0), 0.1);
+            irradiance_cache_add(cache, &r);
+        }
+        CHECK(t, irradiance_cache_check(cache) && irradiance_cache_records(cache) == 2);
+        for (int i = 0; i < 2; i++) {
+            struct vec3 e = vec3_zero();
+            CHECK(t, irradiance_cache_lookup(cache, at[i], z, 0.3, &e) == 1);
+            CHECK(t, close_to(e.y, 2, 1e-15) && close_to(e.z, i + 3.0, 1e-15));
+        }
+        irradiance_cache_free(cache);
+    }
+}
+
 /* truth: cache_pass.h's contract, computed by hand: a 90-degree camera 100 pixels high at
  *   the origin sees a pixel 2 tan 45 / 100 = 0.02 wide at distance 1, so at a point 10
  *   away, faced squarely, r_min = 1.5 x 0.2 / a; a surface turned 60 degrees from the
@@ -636,7 +666,9 @@ static void test_lookup_boundaries(struct check *t)
  * tolerance: 1e-12 relative (a few roundings).
  * catches: the footprint taken from anything but the camera's distance to the point (the
  *   path's length, which once gave records seen in the mirror ball a reach of 37 cm), the
- *   slant ignored or not clamped, a instead of 1 / a. */
+ *   slant ignored or not clamped, a instead of 1 / a, r_min = 0 at the camera's position
+ *   (an assertion in irradiance_record_make(), reached by a scene with a mirror facing the
+ *   camera squarely: tests/test_cli.c). */
 static void test_record_radius_bounds(struct check *t)
 {
     struct camera c;
@@ -654,6 +686,13 @@ static void test_record_radius_bounds(struct check *t)
     record_radius_bounds(&c, vec3(0, 0, 10), vec3(0, 1, 0), a, 10, &r_min, &r_max);
     CHECK_CLOSE(t, r_min, 10 * square, 1e-12 * square);
     CHECK(t, r_max == r_min); /* a fifth of the diagonal, 2, is below r_min */
+    /* A path back through the camera's position (a mirror facing it squarely): no
+     * footprint there, so the floor is the ray offset, 1e-9 x max(1, |p|) (geom/ray.h),
+     * and irradiance_record_make()'s r_min > 0 holds. */
+    record_radius_bounds(&c, c.from, vec3(0, 0, 1), a, 1000, &r_min, &r_max);
+    CHECK(t, r_min == 1e-9 && r_max == 200);
+    record_radius_bounds(&c, vec3(0, 0, 1e-30), vec3(0, 0, -1), a, 1000, &r_min, &r_max);
+    CHECK(t, r_min == 1e-9);
 }
 
 void test_cache(struct check *t)
@@ -667,5 +706,6 @@ void test_cache(struct check *t)
     RUN_TEST(t, test_gradient_limits_radius);
     RUN_TEST(t, test_lookup_matches_brute_force);
     RUN_TEST(t, test_lookup_boundaries);
+    RUN_TEST(t, test_cache_over_unbounded_box);
     RUN_TEST(t, test_record_radius_bounds);
 }

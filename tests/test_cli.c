@@ -9,6 +9,7 @@
 #include "../src/image/image.h"
 #include "files.h"
 #include "tests.h"
+#include "truths.h"
 
 #define COMMAND_MAX 1024
 #define OUT "build/test_cli"
@@ -26,8 +27,10 @@ static int log_contains(const char *text)
 }
 
 /* truth: the command-line contract (DESIGN.md): --help and --version exit 0; any bad
- *   option exits 2 with a one-line message.
- * catches: a bad value accepted (spp 0, a negative size), an unknown option ignored. */
+ *   option exits 2 with a one-line message, and so does an option that means nothing
+ *   for the mode (the option table's modes, which --help prints).
+ * catches: a bad value accepted (spp 0, a negative size), an unknown option ignored, an
+ *   option of another mode silently ignored. */
 static void test_options(struct check *t)
 {
     CHECK(t, photon("--help") == 0 && log_contains("--crop") && log_contains("--spp"));
@@ -46,6 +49,9 @@ static void test_options(struct check *t)
     CHECK(t, photon("-o out.PNG scenes/cornell.scene") == 2 && log_contains("-o: expected"));
     CHECK(t, photon("--crop 0 0 300 10 scenes/cornell.scene") == 2 && log_contains("--crop"));
     CHECK(t, photon("--crop 5 5 5 10 scenes/cornell.scene") == 2);
+    CHECK(t, photon("--crop 5 5 0 10 scenes/cornell.scene") == 2 && log_contains("--crop"));
+    CHECK(t, photon("--crop 0 0 0 0 scenes/cornell.scene") == 2 && log_contains("--crop"));
+    CHECK(t, photon("--crop 0 10 4 0 scenes/cornell.scene") == 2 && log_contains("--crop"));
     CHECK(t, photon("--crop 1 2 3 scenes/cornell.scene") == 2);
     CHECK(t, photon("--mode 2008 --alpha 1 scenes/cornell.scene") == 2 &&
              log_contains("--alpha"));
@@ -59,6 +65,21 @@ static void test_options(struct check *t)
              log_contains("--specular-spp"));
     CHECK(t, photon("--mode 2008 --specular-spp 64 scenes/cornell.scene") == 2 &&
              log_contains("--specular-spp"));
+    CHECK(t, photon("--mode pt --passes 3 --gather 7 scenes/cornell.scene") == 2 &&
+             log_contains("--passes: only for --mode 2008 (this render is --mode pt)"));
+    CHECK(t, photon("--gather 7 scenes/cornell.scene") == 2 &&
+             log_contains("--gather: only for --mode photons, 1994 or 1996"));
+    CHECK(t, photon("--cone 2 --mode 1994 scenes/cornell.scene") == 2 &&
+             log_contains("--cone: only for --mode photons or 1996 (this render is --mode 1994)"));
+    CHECK(t, photon("--mode 1994 --caustic-photons 5 scenes/cornell.scene") == 2 &&
+             log_contains("--caustic-photons: only for --mode 1996"));
+    CHECK(t, photon("--mode 2008 --irradiance-store photon scenes/cornell.scene") == 2 &&
+             log_contains("--irradiance-store: only for --mode 1994"));
+    CHECK(t, photon("--mode pt --save-photons w.work scenes/cornell.scene") == 2 &&
+             log_contains("no global work to save"));
+    CHECK(t, photon("--help") == 0 && log_contains("2008: photon passes") &&
+             log_contains("photons, 1994, 1996: photons emitted") &&
+             log_contains("not with 2008: also write each pixel's variance"));
     CHECK(t, photon("") == 2 && log_contains("no scene"));
     CHECK(t, photon("a.scene b.scene") == 2 && log_contains("more than one"));
 }
@@ -92,6 +113,184 @@ static void test_bad_scene_leaves_no_output(struct check *t)
     remove(OUT "_old.pfm");
 }
 
+/* Writes text to the scene file OUT_name.scene; its path goes to path[COMMAND_MAX]. */
+static const char *scene_file(char *path, const char *name, const char *text)
+{
+    snprintf(path, COMMAND_MAX, OUT "_%s.scene", name);
+    write_text_file(path, text);
+    return path;
+}
+
+/* Whether "PHOTON --mode MODE SMALL SCENE -o OUT_x.pfm", SMALL one sample per pixel and
+ * the mode's work cut short (truths.h), exits with status and leaves no image (when
+ * status != 0) or one (when 0); the log then holds its stderr. */
+static int mode_exits(const char *mode, const char *scene, int status)
+{
+    char command[COMMAND_MAX];
+    remove(OUT "_x.pfm");
+    snprintf(command, sizeof command, "--no-progress --mode %s --spp 1 %s %s -o " OUT "_x.pfm",
+             mode, mode_work_options(mode), scene);
+    int ran = photon(command);
+    int written = file_exists(OUT "_x.pfm");
+    remove(OUT "_x.pfm");
+    remove(OUT "_x.ppm");
+    return ran == status && written == (status == 0);
+}
+
+/* truth: DESIGN.md: no assertion is reachable from input. Each scene below once reached
+ *   one: a light of 1e300 W (the photon record's power, photon.c), a mirror facing the
+ *   camera squarely, so that a path comes back through the camera's own position (a
+ *   cache record's r_min = 0, irradiance_cache.c), an object reaching past DBL_MAX (the
+ *   cache's box, irradiance_cache.c). The first is refused at its line with the limit
+ *   (scene.h's MAX_LIGHT_POWER) in every mode; the others render.
+ * tolerance: none.
+ * catches: an abort (status 134) or a crash instead of a message, a partial output. */
+static void test_no_assertion_reachable_from_scenes(struct check *t)
+{
+    static const char *modes[] = {"direct", "pt", "photons", "1994", "1996", "2008"};
+    char bright[COMMAND_MAX], retro[COMMAND_MAX], wide[COMMAND_MAX];
+    scene_file(bright, "bright",
+               "image 8 8\ncamera 0 0 -5 0 0 0 0 1 0 40\n"
+               "material w lambert 0.5 0.5 0.5\nsphere 0 0 0 1 w\n"
+               "light point 0 0 -4 1e300 1e300 1e300\n");
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        CHECK(t, mode_exits(modes[m], bright, 2));
+        CHECK(t, log_contains(OUT "_bright.scene:5: light: the lights' total power would "
+                              "exceed 1e+30 W"));
+    }
+    scene_file(retro, "retro",
+               "image 1 1\ncamera 0 0 0 0 0 1 0 1 0 40\n"
+               "material w lambert 0.7 0.7 0.7\nmaterial m mirror 1 1 1\n"
+               "quad -5 -5 0 -5 5 0 5 5 0 5 -5 0 w\n"
+               "quad -5 -5 1 5 -5 1 5 5 1 -5 5 1 m\n"
+               "light point 0 0 0.5 1 1 1\n");
+    CHECK(t, mode_exits("1994", retro, 0));
+    CHECK(t, mode_exits("1996", retro, 0));
+    scene_file(wide, "wide",
+               "image 4 4\ncamera 0 0 -5 0 0 0 0 1 0 40\n"
+               "material w lambert 0.7 0.7 0.7\nsphere 0 0 0 1 w\n"
+               "sphere 1.5e308 0 0 1e308 w\nlight point 0 3 -3 10 10 10\n");
+    CHECK(t, mode_exits("1994", wide, 0));
+    CHECK(t, mode_exits("1996", wide, 0));
+    remove(bright);
+    remove(retro);
+    remove(wide);
+}
+
+#define TINY "--no-progress --width 4 --height 4 --spp 1"
+
+/* truth: main.c's exit statuses: an output that cannot be created where it is to go (a
+ *   missing directory, a path through a file) is bad input, found before the scene is
+ *   read: status 2, the file named, nothing written; the same for each output of the
+ *   render (-o, --variance, --report, --save-photons) and of merge -o, compare --diff,
+ *   plot -o and probe -o (each given inputs that do not exist, so only a check made
+ *   first names the output).
+ * catches: the output's directory found missing only after the render (once exit 2 after
+ *   all the work), a check that leaves its temporary behind or misses an output. */
+static void test_unwritable_output_refused_at_once(struct check *t)
+{
+    static const char *commands[][2] = {
+        {"-o /nonexistent/x.pfm build/no_such.scene", "/nonexistent/x.pfm: cannot create"},
+        {"-o " OUT ".log/x.pfm build/no_such.scene", OUT ".log/x.pfm: cannot create"},
+        {"-o " OUT "_x.pfm --variance /nonexistent/v.pfm build/no_such.scene",
+         "/nonexistent/v.pfm: cannot create"},
+        {"-o " OUT "_x.pfm --reference build/no_such.pfm --report /nonexistent/r.csv "
+         "build/no_such.scene", "/nonexistent/r.csv: cannot create"},
+        {"-o " OUT "_x.pfm --mode photons --save-photons /nonexistent/w build/no_such.scene",
+         "/nonexistent/w: cannot create"},
+        {"merge -o /nonexistent/x.pfm build/no_such.pfm", "/nonexistent/x.pfm: cannot create"},
+        {"compare build/no_such.pfm build/no_such.pfm --diff /nonexistent/d.ppm",
+         "/nonexistent/d.ppm: cannot create"},
+        {"plot build/no_such.csv -o /nonexistent/p.svg", "/nonexistent/p.svg: cannot create"},
+        {"probe build/no_such.scene --line 0 0 0 1 1 1 --samples 2 -o /nonexistent/p.csv",
+         "/nonexistent/p.csv: cannot create"},
+    };
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        remove(OUT "_x.pfm");
+        CHECK(t, photon(commands[i][0]) == 2 && log_contains(commands[i][1]));
+        CHECK(t, !file_exists(OUT "_x.pfm") && !file_exists(OUT "_x.pfm.tmp"));
+    }
+}
+
+/* truth: main.c's exit statuses: a write that fails after the work (here the disk is
+ *   full: the PPM's temporary is a link to /dev/full, which refuses every write with
+ *   ENOSPC) is a machine failure, status 1, for a render and for photon merge; the
+ *   failed file is not left, the PFM written before it is whole.
+ * catches: a failed write reported as bad input (status 2), a partial PPM left. */
+static void test_failed_write_exits_1(struct check *t)
+{
+    CHECK(t, photon(TINY " --crop 0 0 4 4 -o " OUT "_tile.pfm scenes/cornell.scene") == 0);
+    static const char *commands[] = {TINY " -o " OUT "_full.pfm scenes/cornell.scene",
+                                     "merge -o " OUT "_full.pfm " OUT "_tile.pfm"};
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        remove(OUT "_full.ppm.tmp");
+        CHECK(t, run_command("ln -s /dev/full " OUT "_full.ppm.tmp") == 0);
+        CHECK(t, photon(commands[i]) == 1 && log_contains(OUT "_full.ppm: cannot write"));
+        CHECK(t, !file_exists(OUT "_full.ppm") && !file_exists(OUT "_full.ppm.tmp"));
+        CHECK(t, file_exists(OUT "_full.pfm"));
+        remove(OUT "_full.pfm");
+    }
+    remove(OUT "_tile.pfm");
+    remove(OUT "_tile.ppm");
+    remove(OUT "_tile.pfm.window");
+}
+
+/* Whether the log holds only printable ASCII and line ends. */
+static int log_is_text(void)
+{
+    char *log = read_text_file(OUT ".log");
+    int text = log != NULL;
+    for (const unsigned char *c = (const unsigned char *)log; text && *c != '\0'; c++)
+        text = *c == '\n' || (*c >= 0x20 && *c < 0x7F);
+    free(log);
+    return text;
+}
+
+/* truth: base/error.h: a message that echoes input quotes its bytes outside printable
+ *   ASCII as \xNN: a scene file's binary garbage (a terminal escape among it), a name of
+ *   a missing file, an unknown option given on the command line.
+ * catches: raw control bytes on the user's terminal (the escape turned it red). */
+static void test_messages_quote_binary_input(struct check *t)
+{
+    static const unsigned char garbage[] = "sphere \x01\xff\x1b[31m 1 2\n";
+    write_bytes_file(OUT "_garbage.scene", garbage, sizeof garbage - 1);
+    CHECK(t, photon("-o " OUT "_x.pfm " OUT "_garbage.scene") == 2 && log_is_text() &&
+             log_contains(OUT "_garbage.scene:1: sphere: '\\x01\\xff\\x1b[31m' is not a "
+                          "number"));
+    CHECK(t, photon("-o " OUT "_x.pfm 'build/no\033[31m.scene'") == 2 && log_is_text() &&
+             log_contains("build/no\\x1b[31m.scene: cannot open"));
+    CHECK(t, photon("'--\001' scenes/cornell.scene") == 2 && log_is_text() &&
+             log_contains("unknown option '--\\x01'"));
+    CHECK(t, !file_exists(OUT "_x.pfm"));
+    remove(OUT "_garbage.scene");
+}
+
+/* truth: a file a scene names (include, obj, nff) that cannot be opened is reported at
+ *   the line that names it, "scene:line: keyword: cannot open 'path': reason", the path
+ *   as resolved beside the scene; status 2, no output.
+ * catches: a message naming only the missing file (which scene, which line?). */
+static void test_missing_named_file_names_its_line(struct check *t)
+{
+    static const char *lines[][2] = {
+        /* the names are relative to the scene's directory, build/ */
+        {"include test_cli_nothere.scene",
+         "include: cannot open '" OUT "_nothere.scene': No such"},
+        {"obj test_cli_nothere.obj w", "obj: cannot open '" OUT "_nothere.obj': No such"},
+        {"nff test_cli_nothere.nff", "nff: cannot open '" OUT "_nothere.nff': No such"},
+    };
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
+        char text[256], expected[256];
+        snprintf(text, sizeof text, "camera 0 0 0 0 0 1 0 1 0 40\nmaterial w lambert 1 1 1\n"
+                 "%s\n", lines[i][0]);
+        write_text_file(OUT "_names.scene", text);
+        snprintf(expected, sizeof expected, OUT "_names.scene:3: %s", lines[i][1]);
+        CHECK(t, photon("-o " OUT "_x.pfm " OUT "_names.scene") == 2 &&
+                 log_contains(expected));
+        CHECK(t, !file_exists(OUT "_x.pfm"));
+    }
+    remove(OUT "_names.scene");
+}
+
 /* truth: same scene and seed give a bit-identical PFM (DESIGN.md, Determinism); the
  *   written files are a valid PFM of the requested size with a PNG beside it; --stats
  *   prints the keys the issue names; compare of a file with itself is all zeros.
@@ -122,6 +321,93 @@ static void test_render_writes_deterministic_files(struct check *t)
     remove(OUT "_a.png");
     remove(OUT "_b.png");
     remove(OUT ".log");
+}
+
+/* Whether every "key=value" line of the log has a key no other line has; counts the
+ * lines in *n. */
+static int stats_keys_unique(size_t *n)
+{
+    char *log = read_text_file(OUT ".log");
+    int unique = log != NULL;
+    *n = 0;
+    for (char *line = log != NULL ? log : ""; *line != '\0';) {
+        size_t length = strcspn(line, "\n"), key = strcspn(line, "=\n");
+        if (key < length) {
+            (*n)++;
+            for (char *other = line + length; (other = strstr(other, "\n")) != NULL;) {
+                other++;
+                if (strncmp(other, line, key + 1) == 0) {
+                    fprintf(stderr, "test_cli: --stats prints '%.*s' twice\n", (int)key, line);
+                    unique = 0;
+                }
+            }
+        }
+        line += length + (line[length] == '\n');
+    }
+    free(log);
+    return unique;
+}
+
+/* truth: --stats prints each key once (README: key=value lines), in every mode, and
+ *   seconds_render is the whole render's time in every mode.
+ * tolerance: none.
+ * catches: a mode's own figures printed under a key the common ones use (1994 and 1996
+ *   once printed seconds_render twice, their final pass's under the whole render's key). */
+static void test_stats_keys_once_in_every_mode(struct check *t)
+{
+    static const char *modes[] = {"direct", "pt", "photons", "1994", "1996", "2008"};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        char command[COMMAND_MAX];
+        snprintf(command, sizeof command, "--no-progress --stats --mode %s --width 16 "
+                 "--height 16 --spp 2 %s scenes/cornell-specular.scene -o " OUT "_stats.pfm",
+                 modes[m], mode_work_options(modes[m]));
+        size_t n = 0;
+        CHECK(t, photon(command) == 0 && log_contains("seconds_render="));
+        CHECK(t, stats_keys_unique(&n) && n > 10);
+    }
+    remove(OUT "_stats.pfm");
+    remove(OUT "_stats.ppm");
+}
+
+/* The number --stats printed for key in the last command's log; -1 when it did not. */
+static double logged_stat(const char *key)
+{
+    return file_stat(OUT ".log", key);
+}
+
+/* truth: render.h: in 1994 and 1996 a pixel in which the camera sees a light through
+ *   mirrors or glass takes --specular-spp = 64 x --spp samples, every other --spp; the
+ *   stats say both and how many pixels take the larger count (spp=16, specular_spp=1024,
+ *   specular_pixels=N), and the mean they print must be the two counts' mix,
+ *   (16 (1024 - N) + 1024 N) / 1024 on 32 x 32 pixels (to %.3f's rounding); a scene with
+ *   nothing specular has no such pixel. The progress line names the two counts apart.
+ * tolerance: 0.0005, half the last printed digit of samples_per_pixel.
+ * catches: spp printed as the passes run (1024, the specular pixels' count), a count of
+ *   specular pixels that is not the one the samples were taken for, a progress line
+ *   saying "1024/1024 samples per pixel". */
+static void test_specular_pixels_in_stats(struct check *t)
+{
+    static const char *modes[] = {"1994", "1996"};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        char command[COMMAND_MAX];
+        snprintf(command, sizeof command, "--progress --stats --mode %s --spp 16 --width 32 "
+                 "--height 32 %s scenes/cornell-specular.scene -o " OUT "_spec.pfm",
+                 modes[m], mode_work_options(modes[m]));
+        CHECK(t, photon(command) == 0);
+        double n = logged_stat("specular_pixels");
+        CHECK(t, logged_stat("spp") == 16 && logged_stat("specular_spp") == 1024 && n > 0);
+        double mean = (16 * (1024 - n) + 1024 * n) / 1024;
+        CHECK_CLOSE(t, logged_stat("samples_per_pixel"), mean, 0.0005);
+        CHECK(t, log_contains("16 samples per pixel, 1024 in the ") &&
+                 !log_contains("/1024 samples per pixel"));
+    }
+    CHECK(t, photon("--no-progress --stats --mode 1994 --spp 16 --width 16 --height 16 "
+                    "--photons 20000 --gather-rays 32 scenes/cornell.scene -o " OUT
+                    "_spec.pfm") == 0);
+    CHECK(t, logged_stat("spp") == 16 && logged_stat("specular_pixels") == 0 &&
+             logged_stat("samples_per_pixel") == 16);
+    remove(OUT "_spec.pfm");
+    remove(OUT "_spec.ppm");
 }
 
 /* truth: an NFF file is a scene of its own (README, "NFF files"): photon renders it by its
@@ -274,7 +560,14 @@ void test_cli(struct check *t)
 {
     RUN_TEST(t, test_options);
     RUN_TEST(t, test_bad_scene_leaves_no_output);
+    RUN_TEST(t, test_no_assertion_reachable_from_scenes);
+    RUN_TEST(t, test_unwritable_output_refused_at_once);
+    RUN_TEST(t, test_failed_write_exits_1);
+    RUN_TEST(t, test_messages_quote_binary_input);
+    RUN_TEST(t, test_missing_named_file_names_its_line);
     RUN_TEST(t, test_render_writes_deterministic_files);
+    RUN_TEST(t, test_stats_keys_once_in_every_mode);
+    RUN_TEST(t, test_specular_pixels_in_stats);
     RUN_TEST(t, test_nff_file_is_a_scene);
     RUN_TEST(t, test_ppm_command);
     RUN_TEST(t, test_output_names);

@@ -322,8 +322,9 @@ static void make_cli_files(struct cli_files *files)
  *   what it always was; with one, the same line goes on with the test's three fields;
  *   bad options or variance files exit 2 with a message and print nothing on stdout.
  * tolerance: none; whole lines.
- * catches: the old line changed (scripts parse it), a second line, --alpha outside (0, 1)
- *   or without a variance accepted, a negative variance file accepted. */
+ * catches: the old line changed (scripts parse it), a second line, --alpha outside
+ *   [1e-300, 1) or without a variance accepted (a tiny positive one reached an
+ *   assertion), a negative variance file accepted. */
 static void test_compare_command_line(struct check *t)
 {
     struct cli_files f;
@@ -338,7 +339,12 @@ static void test_compare_command_line(struct check *t)
     snprintf(args, sizeof args, "%s %s --test-variance %s --alpha 0.05", f.image, f.image,
              f.var);
     CHECK(t, photon_compare(args, f.log) == 0 && file_contains(f.log, " alpha=0.05\n"));
-    static const char *bad_alpha[] = {"0", "1", "-0.1", "abc", "0.01x", "nan"};
+    snprintf(args, sizeof args, "%s %s --test-variance %s --alpha 1e-300", f.image, f.image,
+             f.var); /* the smallest level (compare.c's ALPHA_MIN) */
+    CHECK(t, photon_compare(args, f.log) == 0 && file_contains(f.log, " alpha=1e-300\n"));
+    /* 5e-324 and 1e-310 are positive, but their per-channel levels round to 0 */
+    static const char *bad_alpha[] = {"0", "1", "-0.1", "abc", "0.01x", "nan", "5e-324",
+                                      "1e-310"};
     for (size_t i = 0; i < sizeof bad_alpha / sizeof bad_alpha[0]; i++) {
         snprintf(args, sizeof args, "%s %s --ref-variance %s --alpha %s", f.image, f.image,
                  f.var, bad_alpha[i]);

@@ -611,6 +611,7 @@ static const struct bad_input bad_nff[] = {
     {VIEW "l 0 0 0 1\n", 8, "expected 6 numbers"},
     {VIEW "l 0 0 0 1 -1 1\n", 8, "negative"},
     {VIEW "l 1e200 0 0\n", 8, "overflows"},
+    {VIEW "l 1e16 0 0\n", 8, "total power would exceed 1e+30 W"}, /* 2e33 W: scene.h */
     {VIEW "tpp 3\n", 8, "unknown keyword 'tpp'"},
     {VIEW "v\n", 8, "a second view"},
     {"v\nfrom 0 0 -5\nat 0 0 0\nangle 40\n", 4, "expected the line 'up'"},
@@ -735,6 +736,29 @@ static void test_bad_files_are_refused(struct check *t)
     CHECK(t, obj_import(scene, "scenes", &place, &err) < 0 && strstr(err.message, "directory"));
     CHECK(t, nff_load("/nonexistent/a.nff", &err) == NULL && strstr(err.message, "cannot open"));
     CHECK(t, obj_import(scene, "/nonexistent/a.obj", &place, &err) < 0 && err.line == 0);
+    scene_free(scene);
+}
+
+/* truth: scene.h's limit on the lights' total power, MAX_LIGHT_POWER = 1e30 W per
+ *   channel: an OBJ face of an emitting material is an area light of power pi Le A, so
+ *   with Le = 1 a right triangle of legs 7e14 (pi 2.45e29 = 7.7e29 W) is taken, and a
+ *   second one (1.54e30 W in all) is refused on its own line.
+ * tolerance: none.
+ * catches: a mesh's emitting faces left out of the sum, the refusal without its line. */
+static void test_emitting_mesh_power_limit(struct check *t)
+{
+    struct scene *scene = scene_create();
+    struct material m;
+    memset(&m, 0, sizeof m);
+    m.kind = MATERIAL_LAMBERT;
+    m.emission = vec3(1, 1, 1);
+    scene_add_material(scene, &m);
+    write_text_file(scratch_obj, "v 0 0 0\nv 7e14 0 0\nv 0 7e14 0\nf 1 2 3\nf 1 2 3\n");
+    struct obj_placement place = {0, 1.0, {0, 0, 0}};
+    struct error err;
+    memset(&err, 0, sizeof err);
+    CHECK(t, obj_import(scene, scratch_obj, &place, &err) < 0);
+    CHECK(t, scene->n_lights == 1 && err.line == 5 && strstr(err.message, "total power"));
     scene_free(scene);
 }
 
@@ -905,8 +929,9 @@ static void test_scene_keyword_errors(struct check *t)
     sprintf(missing, "material m lambert 1 1 1\nobj %s.none m\n", base_name(scratch_mesh));
     write_text_file(scratch_scene, missing);
     struct error err;
-    CHECK(t, scene_load(scratch_scene, &err) == NULL && err.line == 0 &&
-                 strstr(err.message, "cannot open") != NULL);
+    CHECK(t, scene_load(scratch_scene, &err) == NULL && err.line == 2 &&
+                 strstr(err.message, "obj: cannot open") != NULL);
+    CHECK(t, strcmp(err.file, scratch_scene) == 0); /* the line that names the mesh */
 }
 
 void test_import(struct check *t)
@@ -925,6 +950,7 @@ void test_import(struct check *t)
     RUN_TEST(t, test_nff_materials);
     RUN_TEST(t, test_nff_cone_layouts);
     RUN_TEST(t, test_bad_files_are_refused);
+    RUN_TEST(t, test_emitting_mesh_power_limit);
     RUN_TEST(t, test_polygon_limit);
     RUN_TEST(t, test_obj_negative_indices);
     RUN_TEST(t, test_obj_placement);

@@ -454,7 +454,7 @@ static void test_command_line(struct check *t)
     static const char *keys[] = {"mode=1994\n", "photons_stored=", "photons_caustic=",
                                  "photon_rays=", "bytes_per_photon=20.0\n", "gradient_rays=",
                                  "shadow_rays=", "seconds_photons=", "seconds_cache=",
-                                 "seconds_render=", "cache_records=", "nonfinite_samples=0\n",
+                                 "seconds_final_pass=", "cache_records=", "nonfinite_samples=0\n",
                                  "spp=512\n", /* pixels that see the light in a ball
                                                   take 64 x --spp */
                                  "samples_per_pixel=", "illumination_ci_maps=",

@@ -359,7 +359,7 @@ static void test_command_line(struct check *t)
                            OUT ".log") == 0);
     static const char *keys[] = {"mode=1996\n", "photons_global=", "photons_caustic=",
                                  "bytes_global_map=", "bytes_caustic_map=", "seconds_photons=",
-                                 "seconds_cache=", "seconds_render=",
+                                 "seconds_cache=", "seconds_final_pass=",
                                  "shadow_rays_avoided_fraction=", "cache_records=",
                                  "gather_rays=", "nonfinite_samples=0\n"};
     for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)

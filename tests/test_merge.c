@@ -14,6 +14,7 @@
 #include "../src/base/hash.h"
 #include "files.h"
 #include "tests.h"
+#include "truths.h"
 
 #define OUT "build/test_merge"
 #define ARGS_MAX 2048
@@ -55,21 +56,39 @@ static uint64_t hash_of(const char *words)
 
 /* Options that change no pixel (checked for the pixels themselves by
  * test_merged_tiles_equal_whole_render and README's measurements), and one changed value of
- * each option that does. */
+ * each option that does; an option for other modes than photons comes after its mode,
+ * and is compared with that mode's hash (base_of). */
 static const char *const same_pixels_options[] = {
     "-o build/x.pfm", "--crop 0 0 4 4", "--time-limit 5", "--reference r.pfm --report r.csv",
-    "--variance v.pfm", "--checkpoint 3", "--exposure 2", "--stats", "--progress",
+    "--variance v.pfm", "--mode 2008 --checkpoint 3", "--exposure 2", "--stats", "--progress",
     "--no-progress", "--save-photons w.work", "--load-photons w.work", "--quality default",
 };
 static const char *const other_pixels_options[] = {
     "--mode pt", "--seed 2", "--spp 3", "--specular-spp 40", "--width 100", "--height 100",
     "--adaptive 0.1", "--max-depth 3", "--photons 7", "--gather 9", "--max-radius 2", "--cone 2",
-    "--caustic-photons 5", "--caustic-gather 5", "--gather-rays 9", "--glossy-rays 2",
-    "--cache-accuracy 0.2", "--accurate-distance 2", "--accurate-weight 0.2",
-    "--no-shadow-photons", "--one-map", "--differential 3", "--light-samples 9",
-    "--irradiance-store illumination", "--no-projection-maps", "--passes 3",
-    "--photons-per-pass 7", "--alpha 0.5", "--radius 2",
+    "--mode 1996 --caustic-photons 5", "--mode 1996 --caustic-gather 5",
+    "--mode 1996 --gather-rays 9", "--mode 1996 --glossy-rays 2",
+    "--mode 1996 --cache-accuracy 0.2", "--mode 1996 --accurate-distance 2",
+    "--mode 1996 --accurate-weight 0.2", "--mode 1996 --no-shadow-photons",
+    "--mode 1996 --one-map", "--mode 1994 --differential 3", "--mode 1994 --light-samples 9",
+    "--mode 1994 --irradiance-store illumination", "--mode 1994 --no-projection-maps",
+    "--mode 2008 --passes 3", "--mode 2008 --photons-per-pass 7", "--mode 2008 --alpha 0.5",
+    "--mode 2008 --radius 2",
 };
+
+/* The hash words are compared with: that of their leading "--mode M" alone when more
+ * words follow it, else that of no words (--mode photons). */
+static uint64_t base_of(const char *words)
+{
+    char mode[32];
+    int n = 0;
+    if (sscanf(words, "--mode %31s %n", mode, &n) == 1 && n > 0 && words[n] != '\0') {
+        char alone[64];
+        snprintf(alone, sizeof alone, "--mode %s", mode);
+        return hash_of(alone);
+    }
+    return hash_of("");
+}
 
 #define N_SAME (sizeof same_pixels_options / sizeof same_pixels_options[0])
 #define N_OTHER (sizeof other_pixels_options / sizeof other_pixels_options[0])
@@ -127,10 +146,11 @@ static void test_options_hash_covers_pixel_options(struct check *t)
     CHECK(t, base != 0);
     CHECK(t, hash_of("--seed 1 --spp 16") == base && hash_of("--spp 016 --seed 01") == base);
     for (size_t i = 0; i < N_SAME; i++)
-        CHECK(t, hash_of(same_pixels_options[i]) == base);
+        CHECK(t, hash_of(same_pixels_options[i]) == base_of(same_pixels_options[i]));
     for (size_t i = 0; i < N_OTHER; i++) {
         uint64_t h = hash_of(other_pixels_options[i]);
-        CHECK(t, h != 0 && h != base);
+        base = base_of(other_pixels_options[i]);
+        CHECK(t, h != 0 && base != 0 && h != base);
         if (h == 0 || h == base)
             fprintf(stderr, "test_merge: '%s' does not change the hash\n",
                     other_pixels_options[i]);
@@ -203,13 +223,18 @@ static void test_bad_tile_records_are_refused(struct check *t)
              strstr(err.message, "cannot open") != NULL);
 }
 
-/* A small render with every mode's work cut to a fraction of a second (the counts of
- * `make check`'s determinism loop), of the specular box unless a test says otherwise. */
-#define TILE_OPTIONS "--no-progress --width 32 --height 24 --spp 2 --photons 20000 " \
-                     "--passes 2 --photons-per-pass 20000 --caustic-photons 20000 "   \
-                     "--gather-rays 32"
+/* The options of a small render of the mode that render (a mode, then anything) starts
+ * with (truths.h). A static string, for one call. */
+static const char *tile_options(const char *render)
+{
+    static char text[128];
+    snprintf(text, sizeof text, "--no-progress --width 32 --height 24 --spp 2 %s",
+             mode_work_options(render));
+    return text;
+}
+
+/* The scene of the small renders unless a test says otherwise. */
 #define BOX "scenes/cornell-specular.scene"
-#define TILE_SETTINGS TILE_OPTIONS " " BOX
 
 /* Four tiles of the 32 x 24 image with edges at odd places (13, 7, 5), so an off-by-one in
  * a window's placement shows. */
@@ -220,8 +245,9 @@ static const int tiles[4][4] = {{0, 0, 13, 7}, {13, 0, 32, 7}, {0, 7, 5, 24}, {5
  * they win); the exit status. */
 static int render_tile(const char *render, int k, const char *extra)
 {
-    return photon("--mode %s " TILE_OPTIONS " %s --crop %d %d %d %d -o " OUT "_tile%d.pfm",
-                  render, extra, tiles[k][0], tiles[k][1], tiles[k][2], tiles[k][3], k);
+    return photon("--mode %s %s %s --crop %d %d %d %d -o " OUT "_tile%d.pfm", render,
+                  tile_options(render), extra, tiles[k][0], tiles[k][1], tiles[k][2],
+                  tiles[k][3], k);
 }
 
 /* Merges the four tiles of tiles[], in another order, into OUT_full.pfm; the status. */
@@ -249,7 +275,8 @@ static void test_merged_tiles_equal_whole_render(struct check *t)
         char render[64];
         snprintf(render, sizeof render, "%s " BOX, mode);
         remove(OUT "_whole.pfm.window");
-        CHECK(t, photon("--mode %s %s -o " OUT "_whole.pfm", mode, TILE_SETTINGS) == 0);
+        CHECK(t, photon("--mode %s %s " BOX " -o " OUT "_whole.pfm", mode,
+                        tile_options(mode)) == 0);
         CHECK(t, !file_exists(OUT "_whole.pfm.window"));
         for (int k = 0; k < 3; k++)
             CHECK(t, render_tile(render, k, "") == 0);
@@ -268,8 +295,8 @@ static void test_merged_tiles_equal_whole_render(struct check *t)
 /* Renders the window w (x0 y0 x1 y1) in mode direct, extra options last, to name. */
 static int render_window(const char *name, const int *w, const char *extra)
 {
-    return photon("--mode direct " TILE_SETTINGS " %s --crop %d %d %d %d -o %s", extra, w[0],
-                  w[1], w[2], w[3], name);
+    return photon("--mode direct %s " BOX " %s --crop %d %d %d %d -o %s",
+                  tile_options("direct"), extra, w[0], w[1], w[2], w[3], name);
 }
 
 /* Whether "photon merge -o OUT_full.pfm TILES" exits 2 with message in its output and
@@ -305,7 +332,8 @@ static void test_merge_refuses_bad_tile_sets(struct check *t)
     CHECK(t, render_window(OUT "_timed.pfm", tiles[3], "--time-limit 1000") == 0);
     CHECK(t, render_window(OUT "_wide.pfm", tiles[3], "--width 40") == 0);
     CHECK(t, render_window(OUT "_over.pfm", overlapping, "") == 0);
-    CHECK(t, photon("--mode direct %s -o " OUT "_plain.pfm", TILE_SETTINGS) == 0);
+    CHECK(t, photon("--mode direct %s " BOX " -o " OUT "_plain.pfm",
+                    tile_options("direct")) == 0);
     CHECK(t, run_command("cp " OUT "_tile2.pfm " OUT "_wrong.pfm && cp " OUT "_tile3.pfm.window "
                          OUT "_wrong.pfm.window") == 0);
     CHECK(t, merge_refused(THREE_TILES, "uncovered: --crop 5 7 32 24"));
@@ -347,10 +375,11 @@ static void test_whole_render_removes_stale_record(struct check *t)
 {
     static const int whole[4] = {0, 0, 32, 24};
     CHECK(t, render_window(OUT "_stale.pfm", whole, "--seed 2") == 0);
-    CHECK(t, photon("--mode photons %s --load-photons " OUT "_none.work -o " OUT "_stale.pfm",
-                    TILE_SETTINGS) == 2);
+    CHECK(t, photon("--mode photons %s " BOX " --load-photons " OUT "_none.work -o " OUT
+                    "_stale.pfm", tile_options("photons")) == 2);
     CHECK(t, file_exists(OUT "_stale.pfm.window"));
-    CHECK(t, photon("--mode direct %s -o " OUT "_stale.pfm", TILE_SETTINGS) == 0);
+    CHECK(t, photon("--mode direct %s " BOX " -o " OUT "_stale.pfm",
+                    tile_options("direct")) == 0);
     CHECK(t, !file_exists(OUT "_stale.pfm.window"));
     CHECK(t, merge_refused(OUT "_stale.pfm", OUT "_stale.pfm.window: cannot open"));
 }
@@ -544,27 +573,24 @@ static void test_bad_illumination_maps_are_refused(struct check *t)
 
 /* What the work-file tests render: each mode with global work on the specular box, and
  * 1994 with illumination maps on the PPM box, whose shrouds (quads) catch its lenses'
- * caustics, so that CI sub-maps are made (268 at TILE_OPTIONS), saved and loaded. */
+ * caustics, so that CI sub-maps are made (268 at tile_options()'s), saved and loaded. */
 #define ILLUMINATION_RENDER "1994 --irradiance-store illumination scenes/ppm-box.scene"
 static const char *const work_renders[] = {
     "photons " BOX, "1994 " BOX, "1996 " BOX, ILLUMINATION_RENDER,
 };
 
-/* Renders render (mode, options, scene) with TILE_OPTIONS, extra options last, to
+/* Renders render (mode, options, scene) with tile_options(), extra options last, to
  * OUT_NAME.pfm; the status. */
 static int render_work(const char *render, const char *name, const char *extra)
 {
-    return photon("--mode %s " TILE_OPTIONS " %s -o " OUT "_%s.pfm", render, extra, name);
+    return photon("--mode %s %s %s -o " OUT "_%s.pfm", render, tile_options(render), extra,
+                  name);
 }
 
 /* The number --stats printed for key in the last command's output; -1 when it did not. */
 static double logged_stat(const char *key)
 {
-    char *log = read_text_file(OUT ".log");
-    const char *at = log != NULL ? strstr(log, key) : NULL;
-    double value = at != NULL && at[strlen(key)] == '=' ? atof(at + strlen(key) + 1) : -1;
-    free(log);
-    return value;
+    return file_stat(OUT ".log", key);
 }
 
 /* truth: the global work is the same whatever window is rendered (DESIGN.md: a crop
@@ -630,7 +656,7 @@ static void write_changed_work(long keep, long flip, size_t extra)
     write_bytes_file(OUT "_bad.work", bytes, n + extra);
 }
 
-/* Whether "photon --mode RENDER TILE_OPTIONS EXTRA -o OUT_refused.pfm" exits 2 with
+/* Whether "photon --mode RENDER tile_options() EXTRA -o OUT_refused.pfm" exits 2 with
  * message in its output and leaves no image. */
 static int render_refused(const char *render, const char *extra, const char *message)
 {
@@ -648,7 +674,7 @@ static int render_refused(const char *render, const char *extra, const char *mes
 
 /* truth: work_file.h's promise that a file of global work is used only when it is whole,
  *   undamaged and made for this render, and the modes that have none refuse the options.
- *   The 1996 file of TILE_SETTINGS is some 1.2 MB: the cuts fall in the header, in the
+ *   The 1996 file of tile_options() is some 1.2 MB: the cuts fall in the header, in the
  *   first map's photons, in the cache's records and in the checksum. The illumination
  *   maps end a 1994 file that holds them (the PPM box's, over 50 kB: 2,036 DI elements
  *   of 24 bytes): cuts and flipped bytes from the last byte before the checksum to 9 kB

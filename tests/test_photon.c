@@ -71,6 +71,23 @@ static void test_photon_power_round_trip(struct check *t)
     }
 }
 
+/* truth: photon.h: photon_power_fits() is exactly photon_pack()'s range, every channel in
+ *   [0, 2^127); the largest double below 2^127 packs within the RGBE bound (it rounds up
+ *   into the top exponent, 128).
+ * tolerance: as test_photon_power_round_trip.
+ * catches: a range one exponent too wide (2^127 would wrap the exponent byte) or too
+ *   narrow, NaN or a negative channel let through, only the largest channel tested. */
+static void test_photon_power_range(struct check *t)
+{
+    double below = nextafter(PHOTON_POWER_MAX, 0);
+    CHECK(t, PHOTON_POWER_MAX == ldexp(1.0, 127));
+    CHECK(t, photon_power_fits(vec3(below, 0, 0)) && photon_power_fits(vec3(0, 0, 0)));
+    CHECK(t, power_within_bound(vec3(below, below / 3, 0)));
+    CHECK(t, !photon_power_fits(vec3(0, PHOTON_POWER_MAX, 0)));
+    CHECK(t, !photon_power_fits(vec3(1, 1, HUGE_VAL)) && !photon_power_fits(vec3(1, -1e-300, 1)));
+    CHECK(t, !photon_power_fits(vec3(NAN, 1, 1)) && !photon_power_fits(vec3(1, 1, NAN)));
+}
+
 /* Angle in radians between a and b (any lengths), well conditioned at 0 and pi. */
 static double angle_between(struct vec3 a, struct vec3 b)
 {
@@ -529,6 +546,7 @@ static void test_for_each_photon_within_matches_linear_scan(struct check *t)
 void test_photon(struct check *t)
 {
     RUN_TEST(t, test_photon_power_round_trip);
+    RUN_TEST(t, test_photon_power_range);
     RUN_TEST(t, test_photon_direction_round_trip);
     RUN_TEST(t, test_photon_position_and_flags);
     RUN_TEST(t, test_balance_kdtree_keeps_photons_in_order);

@@ -148,7 +148,7 @@ static struct image *seeded_image(const struct scene *scene, uint64_t seed,
 {
     struct render_settings rs = render_settings_whole(scene, seed, 1, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(photons_per_pass, passes);
-    struct render_counters counters = {0, 0, 0, 0};
+    struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     return render_ppm(scene, &rs, &ps, &counters, &stats).image;
 }
@@ -197,7 +197,7 @@ static void converge(const char *path, int width, long passes, size_t photons_pe
     struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(photons_per_pass, passes);
     struct checkpoint checkpoint = {record_error, c};
-    struct render_counters counters = {0, 0, 0, 0};
+    struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     ps.report = &checkpoint;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
@@ -335,7 +335,7 @@ static struct image *small_cornell(const char *path, uint64_t seed, const int *w
         rs.y1 = window[3];
     }
     struct ppm_settings ps = ppm_defaults(20000, 16);
-    struct render_counters counters = {0, 0, 0, 0};
+    struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
     scene_free(scene);
@@ -517,7 +517,7 @@ static void test_checkpoints(struct check *t)
     struct ppm_settings ps = ppm_defaults(100, 5);
     ps.snapshot_every = 2;
     ps.snapshot = &at_snapshot;
-    struct render_counters counters = {0, 0, 0, 0};
+    struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     ps.report = &at_report;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
@@ -568,7 +568,7 @@ static void test_tracked_hit_points(struct check *t)
     struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(5000, 24);
     ps.observer = &observer;
-    struct render_counters counters = {0, 0, 0, 0};
+    struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
     CHECK(t, tr.passes == 24 && tr.shrinking && tr.growing && tr.moved);

@@ -126,15 +126,30 @@ static void test_bad_scenes_are_refused(struct check *t)
          "triangle 0 0 0 1 1 1 2 2 2 e\n", 3, "non-zero area"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nlight point 0 1 0 -1 1 1\n", 2, "negative"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nlight spot 0 1 0 1 1 1\n", 2, "point, sphere or quad"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nlight point 0 1 0 1e300 1 1\n", 2,
+         "total power would exceed 1e+30 W"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nlight point 0 1 0 6e29 1 1\n"
+         "light point 0 2 0 6e29 1 1\n", 3, "total power"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nlight sphere 0 0 5 1e15 1 1 1\n", 2,
+         "total power"}, /* 4 pi^2 r^2 Le = 3.9e31 W */
+        {"camera 0 0 0 0 0 1 0 1 0 40\nlight sphere 0 0 5 1e200 0 1 0\n", 2,
+         "total power"}, /* the area overflows: 0 x inf in red */
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial e lambert 0 0 0 emit 1 1 1\n"
+         "triangle 0 0 0 1e16 0 0 0 1e16 0 e\n", 3, "total power"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m mirror 1 1 1 emit 1 -1 1\n", 2, "negative"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nsmooth_triangle 0 0 0 1 0 0 0 1 0 0 0 1 0 0 0 0 0 1 m\n",
          2, "normal is zero"},
         {"camera 0 0 0 0 0 1 0 1 0 40\ninclude test_scene_bad.scene\n", 2, "nested"},
-        {"camera 0 0 0 0 0 1 0 1 0 40\ninclude no_such_file.scene\n", 0,
-         "cannot open"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\ninclude no_such_file.scene\n", 2,
+         "include: cannot open 'build/no_such_file.scene': "},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\nobj nothere.obj m\n", 3,
+         "obj: cannot open 'build/nothere.obj': "},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nnff nothere.nff\n", 2,
+         "nff: cannot open 'build/nothere.nff': "},
         {"material m lambert 1 1 1\n", 0, "no camera"},
         {"", 0, "no camera"},
-        {"\x01\x02\xff\xfe binary\n", 1, "unknown keyword"},
+        {"\x01\x02\xff\xfe binary\n", 1, "unknown keyword '\\x01\\x02\\xff\\xfe'"},
+        {"sphere \x01\xff\x1b[31m 1 2\n", 1, "'\\x01\\xff\\x1b[31m' is not a number"},
         {"camera 0 0 0 0 0 1 0 1 0 40 # a comment\nsphere", 2, "expected 4 numbers"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\n"
          "sphereflake 0 0 0 1 11 0 0 1 m\n", 3, "levels"},
@@ -176,6 +191,23 @@ static void test_bad_scenes_are_refused(struct check *t)
         CHECK(t, strstr(err.message, cases[i].message) != NULL);
     }
     remove(path);
+}
+
+/* truth: scene.h's limit: the lights' power summed per channel may reach MAX_LIGHT_POWER
+ *   exactly, in each channel on its own, and not pass it.
+ * tolerance: none (1e30 + 1 rounds to 1e30, so the step past it is 1e15).
+ * catches: the limit applied to each light instead of the sum, to the channels' total
+ *   instead of each channel, with < for <=; a refused light left in the scene. */
+static void test_light_power_limit(struct check *t)
+{
+    struct scene *scene = scene_create();
+    CHECK(t, scene_add_point_light(scene, vec3_zero(), vec3(MAX_LIGHT_POWER, 0, 0)) == 0);
+    CHECK(t, scene_add_point_light(scene, vec3_zero(), vec3(0, MAX_LIGHT_POWER, 1)) == 1);
+    CHECK(t, scene_add_point_light(scene, vec3_zero(), vec3(0, 0, MAX_LIGHT_POWER - 1)) == 2);
+    CHECK(t, scene_add_point_light(scene, vec3_zero(), vec3(1e15, 0, 0)) == SCENE_TOO_BRIGHT);
+    CHECK(t, scene_add_point_light(scene, vec3_zero(), vec3(0, 0, 1e15)) == SCENE_TOO_BRIGHT);
+    CHECK(t, scene->n_lights == 3);
+    scene_free(scene);
 }
 
 /* truth: the scene-file grammar (README): "glass IOR R G B" lets R G B through at each
@@ -402,6 +434,7 @@ void test_scene(struct check *t)
     RUN_TEST(t, test_cornell_scene_loads);
     RUN_TEST(t, test_shipped_scenes_load);
     RUN_TEST(t, test_bad_scenes_are_refused);
+    RUN_TEST(t, test_light_power_limit);
     RUN_TEST(t, test_glass_filter_parsed);
     RUN_TEST(t, test_unreadable_scenes_are_refused);
     RUN_TEST(t, test_source_hash_covers_every_file);

@@ -23,6 +23,7 @@
 #include "../src/photon/trace.h"
 #include "../src/scene/emit.h"
 #include "check.h"
+#include "files.h"
 #include "tests.h"
 #include "truths.h"
 
@@ -570,6 +571,47 @@ static void test_trace_refuses_overflow(struct check *t)
     scene_free(scene);
 }
 
+/* truth: photon.h's contract: photon_pack() takes powers below PHOTON_POWER_MAX (2^127 W)
+ *   only, and trace.c promises no photon outside that range is stored. A light's power is
+ *   set past the scene's limit by hand here (the parser refuses it: test_scene.c), so
+ *   that photons leave at just under 2^127 W and a Ward lobe of rho_s = 1 between two
+ *   facing planes scatters them with weights up to 2, out of range.
+ * tolerance: none.
+ * catches: a photon whose power grew past the record's range packed (an assertion, or
+ *   a wrapped exponent byte), a light of non-representable power emitting at all. */
+static void test_trace_keeps_powers_in_range(struct check *t)
+{
+    char path[256];
+    temp_name(path, sizeof path, "trace", "slab.scene");
+    write_text_file(path, "camera 0 0.5 -5 0 0.5 0 0 1 0 40\n"
+                          "material w ward 0 0 0 1 1 1 0.3 0.3\n"
+                          "quad -50 0 -50 -50 0 50 50 0 50 50 0 -50 w\n"
+                          "quad -50 1 -50 50 1 -50 50 1 50 -50 1 50 w\n"
+                          "light point 0 0.5 0 1 1 1\n");
+    struct scene *scene = load_test_scene(path, 8, 8);
+    remove(path);
+    CHECK(t, scene != NULL && scene->n_lights == 1);
+    if (scene == NULL)
+        return;
+    const size_t n = 200;
+    scene->lights[0].power = vec3_scale(vec3(1, 0.5, 0.25), 0.99 * PHOTON_POWER_MAX * n);
+    struct photon_trace tr = trace(scene, n, PHOTON_MAP_GLOBAL, 0, NULL);
+    CHECK(t, tr.n_photons > n); /* the first hits, and later ones that stayed in range */
+    size_t lost = 0;
+    for (size_t i = 0; i < tr.n_photons; i++) {
+        struct vec3 power = photon_power(&tr.photons[i]);
+        CHECK(t, vec3_is_finite(power) && vec3_max_component(power) <= PHOTON_POWER_MAX);
+        lost += !(vec3_max_component(power) > 0);
+    }
+    CHECK(t, lost == 0);
+    photon_trace_free(&tr);
+    scene->lights[0].power = vec3(1e300, 1e300, 1e300);
+    tr = trace(scene, n, PHOTON_MAP_GLOBAL, 0, NULL);
+    CHECK(t, tr.n_photons == 0);
+    photon_trace_free(&tr);
+    scene_free(scene);
+}
+
 /* ---- estimates ---- */
 
 /* The mean over a 17 x 17 grid of points |x|, |z| <= 2 on the floor of
@@ -977,7 +1019,7 @@ static void test_photons_mode_cornell(struct check *t)
     }
     struct render_settings rs = render_settings_whole(scene, 3, 16, TEST_MAX_DEPTH);
     struct photon_settings ps = {100000, 100, 0, 0, NULL};
-    struct render_counters counters = {0, 0, 0, 0};
+    struct render_counters counters = {0, 0, 0, 0, 0};
     struct photon_stats stats;
     struct render_result r = render_photons(scene, &rs, &ps, 0, NULL, &counters, &stats, &err);
     CHECK(t, r.image != NULL && counters.nonfinite_samples == 0);
@@ -1105,7 +1147,7 @@ static void test_photons_mode_mirror(struct check *t)
     struct scene *scene = mirror_view_scene();
     struct render_settings rs = render_settings_whole(scene, 5, 4, TEST_MAX_DEPTH);
     struct photon_settings ps = {400000, 200, 0, 0, NULL};
-    struct render_counters counters = {0, 0, 0, 0};
+    struct render_counters counters = {0, 0, 0, 0, 0};
     struct photon_stats stats;
     struct error err;
     struct render_result r = render_photons(scene, &rs, &ps, 0, NULL, &counters, &stats, &err);
@@ -1137,6 +1179,7 @@ void test_trace(struct check *t)
     RUN_TEST(t, test_shadow_photons);
     RUN_TEST(t, test_trace_determinism);
     RUN_TEST(t, test_trace_refuses_overflow);
+    RUN_TEST(t, test_trace_keeps_powers_in_range);
     RUN_TEST(t, test_point_over_plane_estimate);
     RUN_TEST(t, test_cone_filter_uniform);
     RUN_TEST(t, test_estimate_boundaries);

@@ -220,3 +220,18 @@ struct image *rendered_image(struct render_result r, const struct error *err)
     image_free(r.variance);
     return r.image;
 }
+
+const char *mode_work_options(const char *render)
+{
+    static const char *const work[][2] = {
+        {"photons", "--photons 20000"},
+        {"1994", "--photons 20000 --gather-rays 32"},
+        {"1996", "--photons 20000 --caustic-photons 20000 --gather-rays 32"},
+        {"2008", "--passes 2 --photons-per-pass 20000"},
+    };
+    size_t n = strcspn(render, " ");
+    for (size_t i = 0; i < sizeof work / sizeof work[0]; i++)
+        if (strlen(work[i][0]) == n && strncmp(render, work[i][0], n) == 0)
+            return work[i][1];
+    return "";
+}

@@ -91,4 +91,9 @@ void finish_test_scene(struct scene *scene);
 void finish_with_camera(struct scene *scene, struct vec3 from, struct vec3 at, double fov,
                         int width, int height);
 
+/* The options that cut the work of the mode that render starts with (a mode's name, then
+ * anything) to a fraction of a second on the test scenes, the counts of `make check`'s
+ * determinism loop; only options that mode takes ("" for direct and pt). */
+const char *mode_work_options(const char *render);
+
 #endif

@@ -232,8 +232,8 @@ int merge_command(int argc, char **argv)
     struct merge_args args;
     struct error err;
     int parsed = parse_merge_args(argc, argv, &args, &err);
-    int status = parsed;
-    if (parsed == 0) {
+    int status = parsed == 0 ? output_check(args.output, &err) : parsed;
+    if (status == 0) {
         struct tile_record *records = xmalloc((size_t)args.n_tiles, sizeof *records,
                                               "tile records");
         status = merge_tiles(&args, records, &err);
@@ -242,5 +242,5 @@ int merge_command(int argc, char **argv)
     if (status < 0)
         error_print(&err);
     free(args.tiles);
-    return status < 0 ? 2 : 0;
+    return status < 0 ? error_exit_status(&err) : 0; /* 1: --help was printed */
 }

@@ -33,111 +33,131 @@ struct option_spec {
     double min, max;  /* limits for numbers             */
     const char *args; /* what follows the name in --help */
     const char *help;
+    unsigned modes;   /* the modes it means something for: bit 1 << m for enum mode m;
+                         given for another, it is refused (check_modes), and --help
+                         prints the modes before its text                            */
 };
 
 #define FIELD(f) offsetof(struct options, f)
 
+/* Sets of modes for option_spec.modes. */
+#define FOR_DIRECT (1u << MODE_DIRECT)
+#define FOR_PT (1u << MODE_PT)
+#define FOR_PHOTONS (1u << MODE_PHOTONS)
+#define FOR_1994 (1u << MODE_JENSEN1994)
+#define FOR_1996 (1u << MODE_JENSEN1996)
+#define FOR_2008 (1u << MODE_PPM2008)
+#define FOR_ALL (FOR_DIRECT | FOR_PT | FOR_PHOTONS | FOR_1994 | FOR_1996 | FOR_2008)
+#define FOR_PHOTON_MAPS (FOR_PHOTONS | FOR_1994 | FOR_1996) /* the modes that keep maps */
+#define FOR_SAMPLES (FOR_ALL & ~FOR_2008) /* pixels that are means of independent samples */
+
 static const struct option_spec specs[] = {
     {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME",
-     "rendering mode: direct, pt, photons, 1994, 1996 or 2008 (default direct)"},
+     "rendering mode: direct, pt, photons, 1994, 1996 or 2008 (default direct)", FOR_ALL},
     {"--quality", OPT_QUALITY, FIELD(quality), 0, 0, "NAME",
      "preview, default or reference: the mode's preset of options (listed below), applied "
-     "before the other options given (default default)"},
+     "before the other options given (default default)", FOR_ALL},
     {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm|.png|.ppm",
      "output: FILE.pfm (linear radiance) and FILE.png beside it for display; -o FILE.ppm "
-     "writes FILE.ppm in place of the PNG (default: SCENE's name)"},
-    {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)"},
+     "writes FILE.ppm in place of the PNG (default: SCENE's name)", FOR_ALL},
+    {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)", FOR_ALL},
     {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N",
      "camera samples per pixel (default 16; 1994 and 1996: 64; 2008: eye rays per pixel, "
-     "default 16)"},
+     "default 16)", FOR_ALL},
     {"--specular-spp", OPT_INT, FIELD(specular_spp), 1, MAX_SPP, "N",
      "camera samples of a pixel in which the camera sees a light through mirrors or glass, "
-     "at least --spp (default: --spp; 1994, 1996: 64 x --spp; not with 2008)"},
-    {"--width", OPT_INT, FIELD(width), 1, MAX_IMAGE_SIDE, "N", "image width (default: scene's)"},
+     "at least --spp (default: --spp; 1994, 1996: 64 x --spp)", FOR_SAMPLES},
+    {"--width", OPT_INT, FIELD(width), 1, MAX_IMAGE_SIDE, "N", "image width (default: scene's)",
+     FOR_ALL},
     {"--height", OPT_INT, FIELD(height), 1, MAX_IMAGE_SIDE, "N",
-     "image height (default: scene's)"},
+     "image height (default: scene's)", FOR_ALL},
     {"--crop", OPT_CROP, FIELD(crop), 0, MAX_IMAGE_SIDE, "X0 Y0 X1 Y1",
      "render only pixels X0 <= x < X1, Y0 <= y < Y1 of the whole image (0,0 = top left); "
-     "also writes FILE.pfm.window for photon merge"},
+     "also writes FILE.pfm.window for photon merge", FOR_ALL},
     {"--adaptive", OPT_REAL, FIELD(adaptive), 0, 1e6, "E",
      "stop sampling a pixel (after 4 samples, at powers of two) once its mean's standard "
-     "error is at most E times the mean (Jensen & Christensen 1994); 0 = off (default 0; "
-     "not with 2008)"},
+     "error is at most E times the mean (Jensen & Christensen 1994); 0 = off (default 0)",
+     FOR_SAMPLES},
     {"--max-depth", OPT_INT, FIELD(max_depth), 0, MAX_DEPTH_LIMIT, "N",
-     "longest chain of bounces followed (default: direct 16, others 1000)"},
+     "longest chain of bounces followed (default: direct 16, others 1000)", FOR_ALL},
     {"--time-limit", OPT_REAL, FIELD(time_limit), 0, 1e9, "SECONDS",
-     "stop after the sample pass that crosses this many CPU seconds (default: none)"},
+     "stop after the sample pass that crosses this many CPU seconds (default: none)", FOR_ALL},
     {"--reference", OPT_FILE, FIELD(reference), 0, 0, "REF.pfm",
-     "with --report: the converged image to measure error against (whole-image size)"},
+     "with --report: the converged image to measure error against (whole-image size)", FOR_ALL},
     {"--report", OPT_FILE, FIELD(report), 0, 0, "FILE.csv",
-     "write seconds,work,rmse,relmse at work 1, 2, 4, ... and at the end"},
+     "write seconds,work,rmse,relmse at work 1, 2, 4, ... and at the end", FOR_ALL},
     {"--variance", OPT_FILE, FIELD(variance), 0, 0, "FILE.pfm",
-     "also write each pixel's variance of the mean (needs --spp >= 2)"},
+     "also write each pixel's variance of the mean (needs --spp >= 2)", FOR_SAMPLES},
     {"--save-photons", OPT_FILE, FIELD(save_photons), 0, 0, "FILE",
-     "photons, 1994, 1996: also write the global work (photon maps, 1994's illumination "
-     "maps, irradiance cache) to FILE, for --load-photons"},
+     "also write the global work (photon maps, 1994's illumination "
+     "maps, irradiance cache) to FILE, for --load-photons", FOR_PHOTON_MAPS},
     {"--load-photons", OPT_FILE, FIELD(load_photons), 0, 0, "FILE",
-     "photons, 1994, 1996: read the global work from FILE (saved by the same command but "
-     "for -o, --crop and the like) instead of doing it"},
+     "read the global work from FILE (saved by the same command but "
+     "for -o, --crop and the like) instead of doing it", FOR_PHOTON_MAPS},
     {"--photons", OPT_INT, FIELD(photons), 1, MAX_PHOTONS, "N",
-     "photon modes: photons emitted (default: photons 200000, 1994 4000000, 1996 4000000 for "
-     "the global map)"},
+     "photons emitted (default: photons 200000, 1994 4000000, 1996 4000000 for "
+     "the global map)", FOR_PHOTON_MAPS},
     {"--gather", OPT_INT, FIELD(gather), 1, MAX_GATHER, "K",
-     "photon modes: photons in each radiance or irradiance estimate (default 100; 1994: 50)"},
+     "photons in each radiance or irradiance estimate (default 100; 1994: 50)",
+     FOR_PHOTON_MAPS},
     {"--max-radius", OPT_REAL, FIELD(max_radius), 0, 1e30, "R",
-     "photon modes: largest gathering radius (default: 1/10 of the scene's diagonal)"},
+     "largest gathering radius (default: 1/10 of the scene's diagonal)",
+     FOR_PHOTON_MAPS},
     {"--cone", OPT_REAL, FIELD(cone), 0, 1e6, "K",
-     "photon modes: cone filter constant k >= 1 (Jensen 1996 Eq. 4); 0 = none (default: "
-     "photons 0, 1996 1 on caustics)"},
+     "cone filter constant k >= 1 (Jensen 1996 Eq. 4); 0 = none (default: "
+     "photons 0, 1996 1 on caustics)", FOR_PHOTONS | FOR_1996},
     {"--caustic-photons", OPT_INT, FIELD(caustic_photons), 0, MAX_PHOTONS, "N",
-     "1996: photons emitted towards specular objects for the caustic map (default 1000000)"},
+     "photons emitted towards specular objects for the caustic map (default 1000000)",
+     FOR_1996},
     {"--caustic-gather", OPT_INT, FIELD(caustic_gather), 1, MAX_GATHER, "K",
-     "1996: photons in each caustic estimate (default 60)"},
+     "photons in each caustic estimate (default 60)", FOR_1996},
     {"--gather-rays", OPT_INT, FIELD(gather_rays), 2, J96_MAX_GATHER_RAYS, "N",
-     "1994, 1996: rays of one final gather (1994: one per stratum; 1996: half stratified, "
-     "half by photon importance; default 512)"},
+     "rays of one final gather (1994: one per stratum; 1996: half stratified, "
+     "half by photon importance; default 512)", FOR_1994 | FOR_1996},
     {"--glossy-rays", OPT_INT, FIELD(glossy_rays), 1, 1000, "N",
-     "1996: rays sampling a glossy surface seen accurately (default 6, the paper's)"},
+     "rays sampling a glossy surface seen accurately (default 6, the paper's)", FOR_1996},
     {"--cache-accuracy", OPT_REAL, FIELD(cache_accuracy), 0, 10, "A",
-     "1994, 1996: irradiance cache accuracy a (Ward 1988); 1996 only: 0 = gather at every "
-     "point (default 0.15)"},
+     "irradiance cache accuracy a (Ward 1988); 1996 only: 0 = gather at every "
+     "point (default 0.15)", FOR_1994 | FOR_1996},
     {"--accurate-distance", OPT_REAL, FIELD(accurate_distance), 0, 1e6, "F",
-     "1996: gather rays shorter than F radii of the estimate they reach are evaluated "
-     "accurately (default 1)"},
+     "gather rays shorter than F radii of the estimate they reach are evaluated "
+     "accurately (default 1)", FOR_1996},
     {"--accurate-weight", OPT_REAL, FIELD(accurate_weight), 0, 1, "W",
-     "1996: rays with throughput below W are evaluated approximately (default 0.1)"},
+     "rays with throughput below W are evaluated approximately (default 0.1)", FOR_1996},
     {"--no-shadow-photons", OPT_FLAG, FIELD(shadow_photons), 0, 0, "",
-     "1996: cast every shadow ray instead of deciding from shadow photons"},
+     "cast every shadow ray instead of deciding from shadow photons", FOR_1996},
     {"--one-map", OPT_FLAG, FIELD(one_map), 0, 0, "",
-     "1996: one global map of as many photons instead of a caustic and a global map"},
+     "one global map of as many photons instead of a caustic and a global map", FOR_1996},
     {"--differential", OPT_INT, FIELD(differential_run), 0, 100000, "R",
-     "1994: stop an irradiance estimate after R additions that all raise or all lower it "
-     "(differential checking); 0 = off (default 10)"},
+     "stop an irradiance estimate after R additions that all raise or all lower it "
+     "(differential checking); 0 = off (default 10)", FOR_1994},
     {"--light-samples", OPT_INT, FIELD(light_samples), 1, J94_MAX_LIGHT_SAMPLES, "N",
-     "1994: stratified samples of each light, rounded down to a square (default 4)"},
+     "stratified samples of each light, rounded down to a square (default 4)", FOR_1994},
     {"--irradiance-store", OPT_STORE, FIELD(illumination_maps), 0, 0, "photon|illumination",
-     "1994: photon maps everywhere (the paper's Fig. 5), or illumination maps on quads and "
-     "spheres and photon maps elsewhere (Fig. 4) (default photon)"},
+     "photon maps everywhere (the paper's Fig. 5), or illumination maps on quads and "
+     "spheres and photon maps elsewhere (Fig. 4) (default photon)", FOR_1994},
     {"--no-projection-maps", OPT_FLAG, FIELD(projection_maps), 0, 0, "",
-     "1994: emit photons into all directions instead of through projection maps"},
+     "emit photons into all directions instead of through projection maps", FOR_1994},
     {"--passes", OPT_INT, FIELD(passes), 1, MAX_PASSES, "N",
-     "2008: photon passes (default 64; --time-limit may stop sooner)"},
+     "photon passes (default 64; --time-limit may stop sooner)", FOR_2008},
     {"--photons-per-pass", OPT_INT, FIELD(photons_per_pass), 1, MAX_PHOTONS, "N",
-     "2008: photons traced in each pass (default 100000)"},
+     "photons traced in each pass (default 100000)", FOR_2008},
     {"--alpha", OPT_REAL, FIELD(alpha), 0, 1, "A",
-     "2008: fraction of new photons kept, 0 < A < 1 (Eq. 7; default 0.7)"},
+     "fraction of new photons kept, 0 < A < 1 (Eq. 7; default 0.7)", FOR_2008},
     {"--radius", OPT_REAL, FIELD(radius), 0, 1e30, "R",
-     "2008: initial radius in scene units (default: one pixel footprint at each hit point, "
-     "shortened by a wall across its disc)"},
+     "initial radius in scene units (default: one pixel footprint at each hit point, "
+     "shortened by a wall across its disc)", FOR_2008},
     {"--checkpoint", OPT_INT, FIELD(checkpoint), 1, MAX_PASSES, "K",
-     "2008: write the image (-o) every K passes, each write complete (default: at the end)"},
+     "write the image (-o) every K passes, each write complete (default: at the end)",
+     FOR_2008},
     {"--exposure", OPT_REAL, FIELD(exposure), 0, 1e30, "E",
      "PNG or PPM only (not the PFM): multiply radiance by E before sRGB encoding "
-     "(default 1)"},
-    {"--stats", OPT_FLAG, FIELD(stats), 0, 0, "", "print key=value statistics on stderr"},
-    {"--progress", OPT_FLAG, FIELD(progress), 0, 0, "", "show a progress line on stderr"},
-    {"--no-progress", OPT_FLAG, FIELD(progress), 0, 0, "", "never show the progress line"},
+     "(default 1)", FOR_ALL},
+    {"--stats", OPT_FLAG, FIELD(stats), 0, 0, "", "print key=value statistics on stderr", FOR_ALL},
+    {"--progress", OPT_FLAG, FIELD(progress), 0, 0, "", "show a progress line on stderr", FOR_ALL},
+    {"--no-progress", OPT_FLAG, FIELD(progress), 0, 0, "", "never show the progress line", FOR_ALL},
 };
+#define N_SPECS (sizeof specs / sizeof specs[0])
 
 const char *mode_name(enum mode mode)
 {
@@ -158,6 +178,42 @@ const char *mode_name(enum mode mode)
     return "?";
 }
 
+static const enum mode every_mode[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1994,
+                                       MODE_JENSEN1996, MODE_PPM2008};
+#define N_MODES (sizeof every_mode / sizeof every_mode[0])
+
+/* The modes of set (an option_spec.modes) into text[size], in the order of every_mode,
+ * separated by ", ", the last by last (", " or " or "): "photons, 1994 or 1996". */
+static void mode_list(unsigned set, const char *last, char *text, size_t size)
+{
+    size_t n = 0, listed = 0, count = 0;
+    for (size_t m = 0; m < N_MODES; m++)
+        count += (set >> every_mode[m]) & 1u;
+    text[0] = '\0';
+    for (size_t m = 0; m < N_MODES && n < size; m++) {
+        if (!((set >> every_mode[m]) & 1u))
+            continue;
+        const char *separator = listed == 0 ? "" : listed + 1 == count ? last : ", ";
+        n += (size_t)snprintf(text + n, size - n, "%s%s", separator, mode_name(every_mode[m]));
+        listed++;
+    }
+}
+
+/* What --help says of the modes an option is for, before its text: nothing when it is for
+ * every mode, "not with MODES: " when it is for most, else "MODES: ". */
+static void mode_note(unsigned set, char *text, size_t size)
+{
+    char modes[64];
+    unsigned missing = FOR_ALL & ~set;
+    if (missing == 0) {
+        text[0] = '\0';
+        return;
+    }
+    int most = (missing & (missing - 1)) == 0; /* one mode missing */
+    mode_list(most ? missing : set, ", ", modes, sizeof modes);
+    snprintf(text, size, "%s%s: ", most ? "not with " : "", modes);
+}
+
 static void print_help(void)
 {
     printf("usage: photon [options] SCENE       render SCENE: a scene file, or an NFF file by its\n"
@@ -172,10 +228,11 @@ static void print_help(void)
            "                   [--differential R] [--seed S]   (irradiance along a line)\n"
            "       photon merge -o FULL.pfm TILE.pfm [TILE.pfm ...] [--exposure E]\n"
            "\noptions:\n");
-    for (size_t i = 0; i < sizeof specs / sizeof specs[0]; i++) {
-        char left[40];
+    for (size_t i = 0; i < N_SPECS; i++) {
+        char left[40], note[80];
         snprintf(left, sizeof left, "%s %s", specs[i].name, specs[i].args);
-        printf("  %-26s %s\n", left, specs[i].help);
+        mode_note(specs[i].modes, note, sizeof note);
+        printf("  %-26s %s%s\n", left, note, specs[i].help);
     }
     printf("  %-26s %s\n  %-26s %s\n", "--help", "print this and exit", "--version",
            "print the version and exit");
@@ -245,11 +302,9 @@ int read_seed(const char *text, uint64_t *seed, struct error *err)
 
 static int read_mode(const char *text, enum mode *mode, struct error *err)
 {
-    static const enum mode modes[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1994,
-                                      MODE_JENSEN1996, MODE_PPM2008};
-    for (size_t i = 0; text != NULL && i < sizeof modes / sizeof modes[0]; i++)
-        if (strcmp(text, mode_name(modes[i])) == 0) {
-            *mode = modes[i];
+    for (size_t i = 0; text != NULL && i < N_MODES; i++)
+        if (strcmp(text, mode_name(every_mode[i])) == 0) {
+            *mode = every_mode[i];
             return 0;
         }
     return error_set(err, "", 0,
@@ -335,6 +390,7 @@ static int apply_option(const struct option_spec *spec, char **argv, int argc, i
                 return -1;
             ((int *)field)[k] = (int)v;
         }
+        o->has_crop = 1; /* apart from the values: 0 0 0 0 is an empty window, not none */
         return 0;
     }
     return -1;
@@ -354,7 +410,7 @@ static void default_output(const char *scene_path, char *output)
 
 static const struct option_spec *find_spec(const char *name)
 {
-    for (size_t i = 0; i < sizeof specs / sizeof specs[0]; i++)
+    for (size_t i = 0; i < N_SPECS; i++)
         if (strcmp(specs[i].name, name) == 0)
             return &specs[i];
     return NULL;
@@ -380,12 +436,39 @@ static int check_global_work_options(const struct options *o, struct error *err)
     return 0;
 }
 
-/* Applies the words argv[first ... argc - 1] to *o: options by specs[], any other word as
- * the scene file. Returns 1 once --help or --version is printed, -1 with *err filled on a
- * bad word, else 0. */
-static int apply_words(int first, int argc, char **argv, struct options *o, struct error *err)
+/* The option given first on the command line (given[k]: the argv index of specs[k], 0
+ * when absent) that means nothing for o->mode (option_spec.modes): -1 with *err naming
+ * the modes it is for. */
+static int check_modes(const struct options *o, const int given[N_SPECS], struct error *err)
 {
-    for (int i = first; i < argc; i++) {
+    size_t first = N_SPECS;
+    for (size_t k = 0; k < N_SPECS; k++)
+        if (given[k] > 0 && !((specs[k].modes >> o->mode) & 1u) &&
+            (first == N_SPECS || given[k] < given[first]))
+            first = k;
+    if (first == N_SPECS)
+        return 0;
+    char modes[64];
+    mode_list(specs[first].modes, " or ", modes, sizeof modes);
+    return error_set(err, "", 0, "%s: only for --mode %s (this render is --mode %s)",
+                     specs[first].name, modes, mode_name(o->mode));
+}
+
+/* Words to apply: word[first ... n - 1]. */
+struct words {
+    char **word;
+    int first, n;
+};
+
+/* Applies the words w to *o: options by specs[], any other word as the scene file; given[k]
+ * becomes the index of the word that gave specs[k]. Returns 1 once --help or --version is
+ * printed, -1 with *err filled on a bad word, else 0. */
+static int apply_words(const struct words *w, struct options *o, int given[N_SPECS],
+                       struct error *err)
+{
+    char **argv = w->word;
+    int argc = w->n;
+    for (int i = w->first; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             print_help();
             return 1;
@@ -396,6 +479,7 @@ static int apply_words(int first, int argc, char **argv, struct options *o, stru
         }
         const struct option_spec *spec = find_spec(argv[i]);
         if (spec != NULL) {
+            given[spec - specs] = i;
             if (apply_option(spec, argv, argc, &i, o, err) < 0)
                 return -1;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
@@ -413,23 +497,27 @@ static int apply_words(int first, int argc, char **argv, struct options *o, stru
 /* The defaults, the preset's words, then the user's (argv[1 ...]). The mode and the
  * quality are known only once the user's words are read, so a first pass reads them
  * alone (refusing a bad one before anything else); the second starts again from the
- * defaults. Returns what apply_words() returns. */
+ * defaults. given[] ends as the user's words left it (a preset names only options of its
+ * own mode). Returns what apply_words() returns. */
 static int apply_preset_and_words(int argc, char **argv, struct options *o,
-                                  struct error *err)
+                                  int given[N_SPECS], struct error *err)
 {
+    struct words user = {argv, 1, argc};
     set_defaults(o);
-    int status = apply_words(1, argc, argv, o, err);
+    int status = apply_words(&user, o, given, err);
     if (status != 0)
         return status;
     enum quality quality = o->quality;
     int user_specular_spp = o->specular_spp;
     struct preset_words preset;
     preset_words(o->mode, quality, &preset);
+    struct words preset_list = {preset.word, 0, preset.n_words};
+    int preset_given[N_SPECS] = {0};
     set_defaults(o);
     struct error inner;
-    if (apply_words(0, preset.n_words, preset.word, o, &inner) != 0)
+    if (apply_words(&preset_list, o, preset_given, &inner) != 0)
         return error_set(err, "", 0, "--quality %s: %s", quality_name(quality), inner.message);
-    status = apply_words(1, argc, argv, o, err); /* 0: the first pass read the same words */
+    status = apply_words(&user, o, given, err); /* 0: the first pass read the same words */
     /* A preset's --specular-spp gives way to a larger --spp of the user's: fewer samples
      * in the specular pixels than in the others is what the user did not ask for. */
     if (user_specular_spp == 0 && o->specular_spp > 0 && o->specular_spp < o->spp)
@@ -439,7 +527,8 @@ static int apply_preset_and_words(int argc, char **argv, struct options *o,
 
 int parse_options(int argc, char **argv, struct options *o, struct error *err)
 {
-    int status = apply_preset_and_words(argc, argv, o, err);
+    int given[N_SPECS] = {0};
+    int status = apply_preset_and_words(argc, argv, o, given, err);
     if (status != 0)
         return status;
     if (o->scene_path == NULL)
@@ -486,7 +575,7 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
     if (o->mode == MODE_PPM2008 && o->variance != NULL)
         return error_set(err, "", 0, "--variance: not available with --mode 2008, whose "
                                      "pixels are not means of independent samples");
-    return 0;
+    return check_modes(o, given, err); /* after the checks above, whose messages say why */
 }
 
 /* The options that change no pixel of the PFM: where outputs go, what is printed or shown,
@@ -550,7 +639,7 @@ uint64_t options_hash(const struct options *o, uint64_t h)
     char text[128];
     snprintf(text, sizeof text, "photon %s\n", PHOTON_VERSION);
     h = fnv1a(h, text, strlen(text));
-    for (size_t i = 0; i < sizeof specs / sizeof specs[0]; i++)
+    for (size_t i = 0; i < N_SPECS; i++)
         if (changes_pixels(&specs[i])) {
             option_text(&specs[i], o, text, sizeof text);
             h = fnv1a(h, text, strlen(text));

@@ -32,7 +32,8 @@ struct options {
                                      mirrors or glass; 0 = the mode's default       */
     int max_depth;                /* longest path followed; -1 = the mode's default */
     int width, height;            /* 0 = the scene's own size                      */
-    int crop[4];                  /* x0 y0 x1 y1; crop[2] == 0 means no crop       */
+    int crop[4];                  /* --crop's x0 y0 x1 y1, when has_crop           */
+    int has_crop;                 /* whether --crop was given                      */
     int stats;                    /* print key=value statistics on stderr          */
     int progress;                 /* 1 on, 0 off, -1 decided from the environment  */
     double exposure;              /* multiplier applied before the display sRGB curve */
@@ -72,7 +73,8 @@ struct options {
 /* Parses argv into *o: the defaults, then the words of the preset that --quality names for
  * --mode's mode (app/presets.h), then argv's words, so an option given in argv wins
  * wherever it stands. Returns 0 to render, 1 when --help or --version was printed
- * (exit 0), -1 with *err filled for bad options (exit 2). */
+ * (exit 0), -1 with *err filled for bad options (exit 2), among them an option that
+ * means nothing for the mode ("--passes: only for --mode 2008 ..."). */
 int parse_options(int argc, char **argv, struct options *o, struct error *err);
 
 const char *mode_name(enum mode mode);
@@ -96,7 +98,7 @@ int read_output(const char *text, char *output, enum display_format *display,
  * "name=value\n" in the order of the option table, after defaults are applied (so spelling
  * and order on the command line do not matter). Left out: the options that change no
  * pixel (-o, --crop, --stats, ...) and --time-limit (app/tile.h). An option that does not
- * apply to o->mode is hashed too: refusing tiles that differ only there is safe. */
+ * apply to o->mode keeps its default (parse_options refuses it) and is hashed too. */
 uint64_t options_hash(const struct options *o, uint64_t h);
 
 #endif

@@ -249,22 +249,13 @@ static void write_profile(FILE *f, const struct scene *scene, const struct probe
 static int write_probe(const struct scene *scene, const struct probe_stores *st,
                        const struct probe_args *args, struct error *err)
 {
-    char tmp[OUTPUT_PATH_MAX + 8];
-    if (strlen(args->output) >= OUTPUT_PATH_MAX)
-        return error_set(err, "", 0, "probe: -o: the file name is too long");
-    sprintf(tmp, "%s.tmp", args->output);
-    FILE *f = fopen(tmp, "w");
+    FILE *f = output_open(args->output, err);
     if (f == NULL)
-        return error_set(err, tmp, 0, "cannot open for writing");
+        return -1;
     struct nearest *nn = nearest_create(args->js.gather);
     write_profile(f, scene, st, args, nn);
     nearest_free(nn);
-    int failed = ferror(f) | fclose(f);
-    if (failed || rename(tmp, args->output) != 0) {
-        remove(tmp);
-        return error_set(err, args->output, 0, "cannot write");
-    }
-    return 0;
+    return output_commit(f, err); /* a failed write shows in ferror(), checked there */
 }
 
 int probe_command(int argc, char **argv)
@@ -277,7 +268,9 @@ int probe_command(int argc, char **argv)
             error_print(&err);
         return parsed < 0 ? 2 : 0;
     }
-    struct scene *scene = scene_load(args.scene_path, &err);
+    struct scene *scene = output_check(args.output, &err) == 0
+                              ? scene_load(args.scene_path, &err)
+                              : NULL;
     if (scene == NULL) {
         error_print(&err);
         return 2;
@@ -295,7 +288,7 @@ int probe_command(int argc, char **argv)
                                           &st.illumination, &stats, &err) == 0 &&
                          write_probe(scene, &st, &args, &err) == 0
                      ? 0
-                     : 2;
+                     : error_exit_status(&err);
     if (status != 0)
         error_print(&err);
     irradiance_stores_free(&st.photons);

@@ -47,6 +47,10 @@
                       "[--ref-variance VB.pfm] [--test-variance VA.pfm] [--alpha ALPHA] " \
                       "[--block N]"
 #define DEFAULT_ALPHA 0.01 /* family-wise level of the test when --alpha is not given */
+/* Documented limit: the smallest --alpha. Sidak's per-channel level alpha / (3 pixels)
+ * stays a positive double down to here for every image size (3 x 2^30 channels at most
+ * give 3e-310), as normal_critical_two_sided() needs; a smaller level would round to 0. */
+#define ALPHA_MIN 1e-300
 #define SQRT2 1.41421356237309504880
 /* Upper end of the critical value's bracket: erfc(40 / sqrt(2)) ~ 4e-350 is below the
  * smallest double, so every p > 0 has its root in [0, 40] (p = 1e-300 gives 37.07). */
@@ -260,9 +264,11 @@ static int parse_alpha(struct compare_args *args, struct error *err)
                                      "--test-variance; " COMPARE_USAGE);
     char *end;
     args->alpha = strtod(args->alpha_text, &end);
-    if (end == args->alpha_text || *end != '\0' || !(args->alpha > 0 && args->alpha < 1))
-        return error_set(err, "", 0, "compare: --alpha '%s' must be a number between 0 and "
-                                     "1 (exclusive), such as 0.01", args->alpha_text);
+    if (end == args->alpha_text || *end != '\0' ||
+        !(args->alpha >= ALPHA_MIN && args->alpha < 1))
+        return error_set(err, "", 0, "compare: --alpha '%s' must be a number from %g up to "
+                                     "1 (exclusive), such as 0.01", args->alpha_text,
+                         ALPHA_MIN);
     return 0;
 }
 
@@ -420,9 +426,11 @@ int compare_command(int argc, char **argv)
     assert(argc >= 1 && strcmp(argv[0], "compare") == 0);
     struct error err;
     struct compare_args args;
-    if (parse_compare_args(argc, argv, &args, &err) != 0 || compare_files(&args, &err) != 0) {
+    if (parse_compare_args(argc, argv, &args, &err) != 0 ||
+        (args.diff != NULL && output_check(args.diff, &err) < 0) ||
+        compare_files(&args, &err) != 0) {
         error_print(&err);
-        return 2;
+        return error_exit_status(&err); /* 1: the diff's write failed */
     }
     return 0;
 }

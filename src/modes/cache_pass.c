@@ -33,6 +33,10 @@ void record_radius_bounds(const struct camera *camera, struct vec3 p, struct vec
     double distance = vec3_length(to_camera);
     double cos_view = distance > 0 ? fabs(vec3_dot(to_camera, n)) / distance : 1.0;
     double footprint = distance * camera_footprint(camera) / fmax(cos_view, 0.1);
-    *r_min = CACHE_MIN_REACH * footprint / accuracy;
+    /* A path that comes back through the camera's own position sees no footprint there;
+     * the radius still needs a positive floor: the ray offset at p, below which the
+     * renderer tells no two points apart (geom/ray.h). */
+    double resolution = RAY_OFFSET_REL * fmax(1.0, vec3_max_abs(p));
+    *r_min = fmax(CACHE_MIN_REACH * footprint / accuracy, resolution);
     *r_max = fmax(*r_min, CACHE_R_MAX * diagonal);
 }

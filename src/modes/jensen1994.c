@@ -629,7 +629,7 @@ struct render_result render_jensen1994(const struct scene *scene,
     stats->cache_records = irradiance_cache_records(m.cache);
     stats->bytes_cache = irradiance_cache_bytes(m.cache);
     result = render_pixels(scene, rs, estimator, want_variance, NULL, counters);
-    stats->seconds_render = result.seconds;
+    stats->seconds_final_pass = result.seconds;
     result.seconds += stats->seconds_photons + stats->seconds_cache;
     tear_down(&m);
     global_work_free(&own_work);

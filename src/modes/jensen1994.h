@@ -71,7 +71,7 @@ struct jensen1994_stats {
     size_t bytes_illumination_maps;
     double seconds_photons;          /* pass 1, tracing and balancing                     */
     double seconds_cache;            /* the irradiance cache's pre-pass                   */
-    double seconds_render;           /* the final pass                                    */
+    double seconds_final_pass;       /* the final pass                                    */
     size_t cache_records;
     size_t bytes_cache;
     unsigned long long gradient_rays; /* rays of the irradiance records (IG rays)          */

@@ -894,7 +894,7 @@ struct render_result render_jensen1996(const struct scene *scene,
     struct checkpoint report = {j96_checkpoint_at, &jc};
     result = render_pixels(scene, rs, estimator, want_variance,
                            js->report != NULL ? &report : NULL, counters);
-    stats->seconds_render = result.seconds;
+    stats->seconds_final_pass = result.seconds;
     result.seconds += before;
     scratch_free(m.scratch);
     irradiance_cache_free(m.cache);

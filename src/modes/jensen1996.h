@@ -74,7 +74,7 @@ struct jensen1996_stats {
     unsigned long long photon_rays;   /* rays cast tracing photons                         */
     double seconds_photons;           /* CPU seconds tracing and balancing the maps        */
     double seconds_cache;             /* CPU seconds of the irradiance cache's pre-pass    */
-    double seconds_render;            /* CPU seconds of the final pass                     */
+    double seconds_final_pass;        /* CPU seconds of the final pass                     */
     unsigned long long shadow_rays;   /* shadow rays cast at accurate points               */
     unsigned long long shadow_rays_avoided; /* light tests the shadow photons decided      */
     size_t cache_records;             /* records made by the pre-pass                     */

@@ -37,7 +37,9 @@ struct accumulator {
                                 their (y - m)^2                                          */
     int *n;                  /* owned: samples taken by each pixel, >= 1 after pass 1    */
     int *target;             /* owned: the samples each pixel takes at most              */
+    int spp;                 /* the target of every pixel but the specular ones         */
     int most;                /* the largest target: the passes run at most               */
+    size_t n_specular;       /* pixels whose target is above spp (render_settings)       */
     unsigned long long n_samples; /* sum of n[]                                          */
     unsigned long long n_target;  /* sum of target[]                                     */
     size_t n_active;         /* pixels the last pass sampled                             */
@@ -149,7 +151,9 @@ static int pixel_sees_light_through_specular(const struct scene *scene, int x, i
 static void set_targets(const struct scene *scene, const struct render_settings *rs,
                         struct accumulator *acc, struct render_counters *counters)
 {
+    acc->spp = rs->spp;
     acc->most = rs->spp;
+    acc->n_specular = 0;
     acc->n_target = 0;
     for (int y = rs->y0; y < rs->y1; y++)
         for (int x = rs->x0; x < rs->x1; x++) {
@@ -159,6 +163,7 @@ static void set_targets(const struct scene *scene, const struct render_settings 
                 pixel_sees_light_through_specular(scene, x, y, counters)) {
                 acc->target[i] = rs->specular_spp;
                 acc->most = rs->specular_spp;
+                acc->n_specular++;
             }
             acc->n_target += (unsigned long long)acc->target[i];
         }
@@ -251,14 +256,20 @@ static long long samples_per_pixel(const struct accumulator *acc)
 }
 
 /* Without adaptive sampling: passes and the time left at the rate so far per sample (shown
- * after a pass, so n_samples > 0). With it: passes, and how many pixels the last pass
- * sampled, since the time left cannot be foreseen. */
+ * after a pass, so n_samples > 0); the pixels that see a light through mirrors or glass,
+ * when there are any, are named with their own count, so that theirs is not taken for
+ * every pixel's. With it: passes, and how many pixels the last pass sampled, since the
+ * time left cannot be foreseen. */
 static void show_progress(const struct accumulator *acc, int passes, double seconds, int done)
 {
-    if (acc->lum == NULL) {
-        double left = seconds * (double)(acc->n_target - acc->n_samples) / acc->n_samples;
+    double left = seconds * (double)(acc->n_target - acc->n_samples) / acc->n_samples;
+    if (acc->lum == NULL && acc->n_specular == 0) {
         fprintf(stderr, "\rphoton: %d/%d samples per pixel, %.1f s, about %.0f s left   ",
                 passes, acc->most, seconds, left);
+    } else if (acc->lum == NULL) {
+        fprintf(stderr, "\rphoton: pass %d of %d: %d samples per pixel, %d in the %zu "
+                "specular pixels, %.1f s, about %.0f s left   ", passes, acc->most, acc->spp,
+                acc->most, acc->n_specular, seconds, left);
     } else {
         fprintf(stderr, "\rphoton: pass %d of at most %d, %zu of %zu pixels sampling, %.1f s   ",
                 passes, acc->most, acc->n_active, (size_t)acc->width * (size_t)acc->height,
@@ -337,6 +348,7 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
     counters->passes = run_passes(scene, rs, estimator, &acc, start, checkpoint, counters,
                                   &result.seconds);
     counters->samples += acc.n_samples;
+    counters->specular_pixels = acc.n_specular;
     result.image = image_create(acc.width, acc.height);
     mean_image(&acc, result.image);
     result.variance = want_variance ? variance_image(&acc) : NULL;

@@ -92,7 +92,11 @@ struct render_counters {
                                              window (added to, like rays): divided by
                                              the window's pixels, the mean spp          */
     int passes;                           /* sample passes run: the most samples a pixel
-                                             took (spp reached when adaptive is off)     */
+                                             took (spp reached when adaptive is off;
+                                             specular_spp when specular_pixels > 0)     */
+    size_t specular_pixels;               /* pixels of the window that take specular_spp
+                                             samples: the camera sees a light through
+                                             mirrors or glass in them (set, not added)  */
 };
 
 /* Radiance arriving at the camera along ray, estimated by a mode from its own state. */

@@ -263,12 +263,14 @@ static struct cache_node empty_node(void)
 
 struct irradiance_cache *irradiance_cache_create(struct aabb bounds, double accuracy)
 {
-    assert(accuracy > 0 && vec3_is_finite(bounds.lo) && vec3_is_finite(bounds.hi));
+    assert(accuracy > 0);
     struct irradiance_cache *cache = xmalloc(1, sizeof *cache, "irradiance cache");
-    cache->origin = bounds.lo;
-    /* Any positive side is correct; an empty or flat-to-a-point box gets side 1. */
+    /* Any cube is correct (records outside it stay in the root); an empty or
+     * flat-to-a-point box gets side 1, and so does one whose side is no finite double (a
+     * scene reaching past DBL_MAX), at the origin when its corner is not finite either. */
     double side = vec3_max_component(vec3_sub(bounds.hi, bounds.lo));
-    cache->side = side > 0 ? side : 1;
+    cache->origin = vec3_is_finite(bounds.lo) ? bounds.lo : vec3_zero();
+    cache->side = side > 0 && isfinite(side) ? side : 1;
     cache->accuracy = accuracy;
     cache->capacity = NODES_INITIAL;
     cache->nodes = xmalloc(cache->capacity, sizeof *cache->nodes, "irradiance cache nodes");

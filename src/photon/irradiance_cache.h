@@ -85,8 +85,9 @@ struct irradiance_record irradiance_record_make(struct vec3 p, struct vec3 t, st
 
 struct irradiance_cache; /* owns its records and its octree */
 
-/* An empty cache over bounds (the scene's box; lo <= hi, finite; records outside it are
- * accepted too, at a cost: see irradiance_cache.c) with Ward's accuracy a > 0 (e.g.
+/* An empty cache over bounds (the scene's box; records outside it are accepted too, at a
+ * cost: see irradiance_cache.c; an empty box, or one not finite, stands for the unit cube
+ * at the origin) with Ward's accuracy a > 0 (e.g.
  * 0.15; below 1, records on surfaces facing away, n . n_i <= 0, are never usable). */
 struct irradiance_cache *irradiance_cache_create(struct aabb bounds, double accuracy);
 void irradiance_cache_free(struct irradiance_cache *cache); /* NULL is a no-op */

@@ -8,9 +8,9 @@
  * [128, 256]; 256 does not fit, so then e grows by one and the bytes are recomputed
  * (the largest becomes 128). Each channel's error is at most half a step, 2^(e-9), and
  * v >= 127.75 * 2^(e-8), so the error is at most v / 255.5 on every channel, however
- * strongly coloured. Range: v < 2^127 (asserted). Below 2^-128, e stays at -127 and the
- * bytes lose precision gradually (absolute error <= 2^-136); all-zero power packs to
- * four zero bytes and decodes to exact zero.
+ * strongly coloured. Range: v < 2^127 = PHOTON_POWER_MAX (asserted; photon.h). Below
+ * 2^-128, e stays at -127 and the bytes lose precision gradually (absolute error <=
+ * 2^-136); all-zero power packs to four zero bytes and decodes to exact zero.
  *
  * Direction: theta = angle from +z in [0, pi], 256 steps that include both poles
  * (theta = i pi / 255, error <= pi / 510); phi = angle about z from +x in [0, 2 pi), 256
@@ -27,7 +27,6 @@
 
 #define RGBE_BIAS 127          /* exponent byte = e + 127, e in [-127, 128]             */
 #define RGBE_E_MIN (-127)      /* smaller exponents clamp here: gradual underflow        */
-#define POWER_MAX 1.7014118346046923e38 /* 2^127: keeps e <= 128 after rounding up     */
 #define DIRECTION_STEPS 256    /* Jensen 1996: one byte per angle                       */
 
 char photon_is_20_bytes[sizeof(struct photon) == 20 ? 1 : -1];
@@ -59,11 +58,16 @@ static unsigned char rounded_byte(double c, double scale)
     return (unsigned char)(c * scale + 0.5);
 }
 
+int photon_power_fits(struct vec3 power)
+{
+    return power.x >= 0 && power.x < PHOTON_POWER_MAX && power.y >= 0 &&
+           power.y < PHOTON_POWER_MAX && power.z >= 0 && power.z < PHOTON_POWER_MAX;
+}
+
 static void pack_power(struct vec3 power, unsigned char rgbe[4])
 {
-    assert(power.x >= 0 && power.y >= 0 && power.z >= 0); /* also refuses NaN */
+    assert(photon_power_fits(power)); /* the caller's guarantee (photon.h) */
     double v = vec3_max_component(power);
-    assert(v < POWER_MAX);                                 /* also refuses +Inf */
     int e = 0;
     frexp(v, &e);                /* v = m 2^e, m in [0.5, 1) */
     if (v == 0 || e < RGBE_E_MIN)

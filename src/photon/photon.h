@@ -43,8 +43,16 @@ struct photon {
 };
 extern char photon_is_20_bytes[sizeof(struct photon) == 20 ? 1 : -1];
 
+/* The bound on each channel of a photon's power that RGBE's exponent byte can hold:
+ * 2^127 W, exactly, so that rounding the largest channel up keeps e <= 128. */
+#define PHOTON_POWER_MAX 1.7014118346046923e38
+
+/* Whether photon_pack() can store power: every channel in [0, PHOTON_POWER_MAX), so
+ * neither NaN nor Inf. The tracer ends a photon that leaves this range (trace.c). */
+int photon_power_fits(struct vec3 power);
+
 /* Packs a photon. position: where it is stored (finite). power: its flux in watts per
- * channel, each channel in [0, 2^127), about 1.7e38 W (asserted). direction: wi, pointing
+ * channel, photon_power_fits(power) (asserted). direction: wi, pointing
  * AWAY from the surface, back towards where the photon came from (the opposite of the
  * direction it travelled), so that it goes to a BRDF beside wo as it is; finite and
  * non-zero, of any length. flags: PHOTON_* bits, at most 255. plane is set to 0. */

@@ -33,6 +33,12 @@
  * emitter the `light` keyword makes) holds no photons: they could add nothing to its own
  * estimates and would only join a neighbour's (the Cornell light hangs 0.1 mm below the
  * ceiling).
+ *
+ * Departs from Sec. 3: a photon whose power leaves the range of the 20-byte record
+ * (photon_power_fits(): below 2^127 W per channel, not NaN) is not emitted or ends where
+ * it scatters. Under the scene's limit on the lights' power (MAX_LIGHT_POWER, scene.h)
+ * every photon leaves within range; only a BRDF weight above 1 (glossy lobes at grazing
+ * angles), repeated over dozens of bounces, could carry one out of it.
  */
 #include "trace.h"
 
@@ -166,7 +172,7 @@ static int emit_photon(const struct scene *scene, const struct trace_settings *t
     struct vec3 origin = vec3_length2(e.normal) > 0 ? offset_origin(e.origin, e.normal)
                                                     : e.origin;
     *ray = make_ray(origin, e.dir);
-    return vec3_max_component(path->power) > 0;
+    return vec3_max_component(path->power) > 0 && photon_power_fits(path->power);
 }
 
 /* Jensen and Christensen 1995: the emitted ray followed on through the surfaces behind
@@ -208,6 +214,8 @@ static int scatter(const struct photon_hit *h, struct rng *rng, struct photon_pa
     if (!(rng_uniform(rng) < q))
         return 0; /* absorbed; also ends a zero or NaN weight */
     path->power = vec3_scale(vec3_mul(path->power, bs.weight), 1.0 / q); /* q > 0: u < q */
+    if (!photon_power_fits(path->power))
+        return 0; /* beyond the record's range: the departure at the top of the file */
     path->specular_only = path->specular_only && bs.delta;
     struct vec3 side = bs.transmitted ? vec3_neg(h->ng) : h->ng;
     *ray = make_ray(offset_origin(h->p, side), bs.wi);

@@ -347,8 +347,9 @@ static int add_lights(struct nff_reader *rd, struct error *err)
         if (!vec3_is_finite(power))
             return error_set(err, rd->file, l->line, "l: the light is too far from the "
                                                      "view's 'at' point (its power overflows)");
-        if (scene_add_point_light(rd->scene, l->position, power) < 0)
-            return error_set(err, rd->file, l->line, "l: more than %d lights", MAX_LIGHTS);
+        if (scene_add_error(scene_add_point_light(rd->scene, l->position, power), rd->file,
+                            l->line, "l", err) < 0)
+            return -1;
     }
     return 0;
 }
@@ -470,9 +471,7 @@ static int current_material(struct nff_reader *rd, struct error *err)
 
 static int check_added(struct nff_reader *rd, int id, struct error *err)
 {
-    if (id >= 0)
-        return 0;
-    return nff_error(rd, err, "more than %d primitives", MAX_PRIMITIVES);
+    return scene_add_error(id, rd->file, rd->line, rd->entity, err);
 }
 
 /* "s x y z r" */

@@ -254,9 +254,9 @@ static int add_face(struct obj_reader *rd, int n, int smooth, struct error *err)
             v[j] = rd->face_v[rd->triangles[3 * k + j]];
             normals[j] = rd->face_n[rd->triangles[3 * k + j]];
         }
-        if (scene_add_triangle(rd->scene, v, smooth ? normals : NULL, rd->place->material) < 0)
-            return obj_error(rd, err, "more than %d primitives or %d lights", MAX_PRIMITIVES,
-                             MAX_LIGHTS);
+        int id = scene_add_triangle(rd->scene, v, smooth ? normals : NULL, rd->place->material);
+        if (scene_add_error(id, rd->file, rd->line, rd->keyword, err) < 0)
+            return -1;
     }
     return 0;
 }

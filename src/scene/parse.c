@@ -10,6 +10,7 @@
  * caller frees the partial scene (scene_load), and nothing has been written anywhere.
  */
 #include <ctype.h>
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -141,13 +142,10 @@ static int parse_background(struct parser *ps, struct error *err)
     return expect_end(ps, err);
 }
 
-/* Reports a failed scene_add_*(): the only cause is a documented limit. */
+/* Reports a failed scene_add_*(): the only causes are documented limits. */
 int check_added(struct parser *ps, int id, struct error *err)
 {
-    if (id >= 0)
-        return 0;
-    return error_set(err, ps->file, ps->line, "%s: more than %d primitives or %d lights",
-                     ps->tokens[0], MAX_PRIMITIVES, MAX_LIGHTS);
+    return scene_add_error(id, ps->file, ps->line, ps->tokens[0], err);
 }
 
 /* Reads a file name into path[MAX_PATH_LENGTH], relative to the directory of the file
@@ -165,11 +163,24 @@ int read_path(struct parser *ps, char *path, struct error *err)
     return 0;
 }
 
+int check_named_file(struct parser *ps, const char *path, struct error *err)
+{
+    errno = 0;
+    FILE *f = fopen(path, "r");
+    if (f != NULL) {
+        fclose(f);
+        return 0;
+    }
+    return error_set(err, ps->file, ps->line, "%s: cannot open '%s'%s%s", ps->tokens[0], path,
+                     errno != 0 ? ": " : "", errno != 0 ? strerror(errno) : "");
+}
+
 /* "include FILE": FILE is relative to the directory of the including file. */
 static int parse_include(struct parser *ps, struct error *err)
 {
     char path[MAX_PATH_LENGTH];
-    if (read_path(ps, path, err) < 0 || expect_end(ps, err) < 0)
+    if (read_path(ps, path, err) < 0 || expect_end(ps, err) < 0 ||
+        check_named_file(ps, path, err) < 0)
         return -1;
     if (ps->depth + 1 > MAX_INCLUDE_DEPTH)
         return error_set(err, ps->file, ps->line,

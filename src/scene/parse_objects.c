@@ -277,7 +277,8 @@ int parse_heightfield(struct parser *ps, struct error *err)
 int parse_nff(struct parser *ps, struct error *err)
 {
     char path[MAX_PATH_LENGTH];
-    if (read_path(ps, path, err) < 0 || expect_end(ps, err) < 0)
+    if (read_path(ps, path, err) < 0 || expect_end(ps, err) < 0 ||
+        check_named_file(ps, path, err) < 0)
         return -1;
     return nff_import(ps->scene, path, err);
 }
@@ -308,6 +309,8 @@ int parse_obj(struct parser *ps, struct error *err)
     if (word != NULL)
         return error_set(err, ps->file, ps->line, "obj: unexpected '%s' (expected scale S, "
                          "then translate X Y Z)", word);
+    if (check_named_file(ps, path, err) < 0)
+        return -1;
     return obj_import(ps->scene, path, &place, err);
 }
 

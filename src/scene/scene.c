@@ -25,6 +25,7 @@ struct scene *scene_create(void)
     scene->width = 256;
     scene->height = 256;
     scene->background = vec3_zero();
+    scene->light_power = vec3_zero();
     scene->geometry = geometry_create();
     scene->source_hash = FNV1A_OFFSET_BASIS;
     return scene;
@@ -65,10 +66,21 @@ int scene_find_material(const struct scene *scene, const char *name)
     return -1;
 }
 
+/* Whether every channel of power is at most MAX_LIGHT_POWER (and none is NaN). */
+static int within_light_power(struct vec3 power)
+{
+    return power.x <= MAX_LIGHT_POWER && power.y <= MAX_LIGHT_POWER &&
+           power.z <= MAX_LIGHT_POWER;
+}
+
 static int add_light(struct scene *scene, const struct light *l)
 {
     if (scene->n_lights >= MAX_LIGHTS)
-        return -1;
+        return SCENE_FULL;
+    struct vec3 total = vec3_add(scene->light_power, light_power(l));
+    if (!within_light_power(total))
+        return SCENE_TOO_BRIGHT;
+    scene->light_power = total;
     scene->lights = xrealloc(scene->lights, scene->n_lights + 1, sizeof *scene->lights,
                              "lights");
     scene->lights[scene->n_lights] = *l;
@@ -76,11 +88,11 @@ static int add_light(struct scene *scene, const struct light *l)
 }
 
 /* Records primitive id (just added, or -1 for failure) and, if its material emits, the
- * area light described by l. Returns id, or -1 when either limit is reached. */
+ * area light described by l. Returns id, or add_light()'s failure, or SCENE_FULL. */
 static int register_prim(struct scene *scene, int id, int material, struct light *l)
 {
     if (id < 0)
-        return -1;
+        return SCENE_FULL;
     assert((size_t)id == scene->n_prims);
     scene->light_of_prim = xrealloc(scene->light_of_prim, scene->n_prims + 1,
                                     sizeof *scene->light_of_prim, "light table");
@@ -92,7 +104,7 @@ static int register_prim(struct scene *scene, int id, int material, struct light
     l->prim = id;
     int light = add_light(scene, l);
     if (light < 0)
-        return -1;
+        return light;
     scene->light_of_prim[id] = light;
     return id;
 }
@@ -150,6 +162,20 @@ int scene_add_point_light(struct scene *scene, struct vec3 position, struct vec3
     l.power = power;
     l.prim = -1;
     return add_light(scene, &l);
+}
+
+int scene_add_error(int id, const char *file, int line, const char *keyword,
+                    struct error *err)
+{
+    if (id >= 0)
+        return 0;
+    if (id == SCENE_TOO_BRIGHT)
+        return error_set(err, file, line, "%s: the lights' total power would exceed %g W in "
+                         "a channel (an area light's power is pi x radiance x area; the "
+                         "limit keeps every photon within its record)", keyword,
+                         MAX_LIGHT_POWER);
+    return error_set(err, file, line, "%s: more than %d primitives or %d lights", keyword,
+                     MAX_PRIMITIVES, MAX_LIGHTS);
 }
 
 /* The cumulative distribution of picking lights by power (scene_pick_light). */

@@ -24,6 +24,16 @@
 
 #define MAX_MATERIALS 65536 /* documented limit: far beyond any real scene, bounds memory */
 #define MAX_LIGHTS 65536    /* likewise; direct lighting samples every light at each hit */
+/* Documented limit on the lights' total power Phi, in W per channel (a point light's
+ * power, an area light's pi Le A), summed over all lights. A photon leaves a light with
+ * Phi_l weight / (p_pick N) (photon/trace.c); p_pick >= lum(Phi_l) / lum(total) and the
+ * emission weights stay below 2^18, so under this limit every emitted photon is below
+ * 2^122 W, within the 4-byte RGBE power of the 20-byte photon record (2^127 W, photon.h). */
+#define MAX_LIGHT_POWER 1e30
+
+/* Why a scene_add_*() failed: its result when negative. */
+#define SCENE_FULL (-1)       /* MAX_PRIMITIVES or MAX_LIGHTS reached                  */
+#define SCENE_TOO_BRIGHT (-2) /* the lights' total power would pass MAX_LIGHT_POWER   */
 
 struct scene {
     int width, height;           /* image size given by the file (options may override) */
@@ -34,6 +44,8 @@ struct scene {
     size_t n_materials;
     struct light *lights;        /* owned; n_lights of them                             */
     size_t n_lights;
+    struct vec3 light_power;     /* sum of the lights' light_power(), each channel at
+                                    most MAX_LIGHT_POWER                                 */
     double *light_cdf;           /* owned, set by scene_finish(): n_lights + 1 entries,
                                     light_cdf[i + 1] - light_cdf[i] = light i's probability
                                     of being picked, proportional to its power           */
@@ -59,8 +71,9 @@ int scene_add_material(struct scene *scene, const struct material *m);
 /* Index of the material named name, or -1. */
 int scene_find_material(const struct scene *scene, const char *name);
 
-/* Add primitives; each returns the primitive id or -1 beyond a limit (MAX_PRIMITIVES,
- * MAX_LIGHTS). An emitting material makes the primitive an area light as well. */
+/* Add primitives; each returns the primitive id, or SCENE_FULL beyond MAX_PRIMITIVES or
+ * MAX_LIGHTS, or SCENE_TOO_BRIGHT when an emitting primitive would take the lights' power
+ * past MAX_LIGHT_POWER. An emitting material makes the primitive an area light as well. */
 int scene_add_sphere(struct scene *scene, struct vec3 centre, double radius, int material);
 int scene_add_triangle(struct scene *scene, const struct vec3 v[3], const struct vec3 *normals,
                        int material);
@@ -68,8 +81,14 @@ int scene_add_quad(struct scene *scene, struct vec3 p0, struct vec3 e1, struct v
                    int material);
 /* Procedural shape (ownership passes to the scene); its material must not emit. */
 int scene_add_shape(struct scene *scene, const struct shape_ops *ops, void *shape, int material);
-/* A point light of power Phi (W per channel); returns its light index or -1. */
+/* A point light of power Phi (W per channel); returns its light index, or SCENE_FULL or
+ * SCENE_TOO_BRIGHT as above. */
 int scene_add_point_light(struct scene *scene, struct vec3 position, struct vec3 power);
+
+/* The readers' report of a scene_add_*() result: 0 when id >= 0, else -1 with *err filled
+ * as "file:line: keyword: " and what limit id < 0 ran into. */
+int scene_add_error(int id, const char *file, int line, const char *keyword,
+                    struct error *err);
 
 /* Sets the image size, sets up the camera and builds the BVH. Call once, after the adds. */
 void scene_finish(struct scene *scene, int width, int height);

@@ -77,7 +77,7 @@ static void render_2008(const struct scene *scene, const struct checkpoint *at)
 {
     struct render_settings rs = render_settings_whole(scene, 1, PPM_DEFAULT_SPP, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_settings_default();
-    struct render_counters counters = {0, 0, 0, 0};
+    struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     ps.report = at;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
@@ -90,7 +90,7 @@ static void render_1996(const struct scene *scene, const struct checkpoint *at)
     struct render_settings rs = render_settings_whole(scene, 1, J96_DEFAULT_SPP, MAX_DEPTH_LIMIT);
     rs.specular_spp = SPECULAR_SPP_FACTOR * J96_DEFAULT_SPP; /* as on the command line */
     struct jensen1996_settings js = jensen1996_settings_default();
-    struct render_counters counters = {0, 0, 0, 0};
+    struct render_counters counters = {0, 0, 0, 0, 0};
     struct jensen1996_stats stats;
     struct error err;
     js.report = at;
@@ -118,7 +118,7 @@ static void time_to_error_on(const char *mode,
     render(scene, &at_photon);
     double target = photon.relmse[photon.n - 1], photon_seconds = time_to(&photon, target);
     struct render_settings rs = render_settings_whole(scene, 1, MAX_SPP, MAX_DEPTH_LIMIT);
-    struct render_counters counters = {0, 0, 0, 0};
+    struct render_counters counters = {0, 0, 0, 0, 0};
     rs.time_limit = 4 * photon_seconds;
     struct render_result result = render_pt(scene, &rs, 0, &at_pt, &counters);
     render_result_free(&result);
