@@ -22,7 +22,7 @@ CC ?= cc
 BUILD ?= build
 BIN ?= photon
 OPT ?= -O2
-# No FMA contraction: gcc, clang and tcc must round every operation alike (DESIGN.md).
+# No FMA contraction: gcc, clang and tcc must round every operation alike (README).
 FPFLAGS ?= -ffp-contract=off
 # gcc 12's SLP vectoriser drops double -> float -> double roundings at -O2 (three adjacent
 # (float) casts stored into doubles come out unrounded), so gcc builds turn it off.

@@ -1,6 +1,6 @@
 #!/bin/sh
 # scripts/presets.sh -- measure the quality presets (photon --help, "quality presets") on
-# the two Cornell boxes and write them as a markdown table (README, "Quality presets").
+# the two Cornell boxes and write them as a markdown table (README, "Presets").
 #
 #   scripts/presets.sh PHOTON OUT.md [MODE ...]
 #

@@ -149,7 +149,7 @@ static void test_error_set(struct check *t)
              strncmp(err.message + n - 4, "\\x1b", 4) == 0);
 }
 
-/* truth: outputs are whole or absent (DESIGN.md): before commit only NAME.tmp exists;
+/* truth: outputs are whole or absent (README): before commit only NAME.tmp exists;
  *   after commit only NAME; after abandon neither.
  * catches: writing the final name directly, leaving temporaries behind. */
 static void test_outputs_are_atomic(struct check *t)

@@ -26,7 +26,7 @@ static int log_contains(const char *text)
     return file_contains(OUT ".log", text);
 }
 
-/* truth: the command-line contract (DESIGN.md): --help and --version exit 0; any bad
+/* truth: the command-line contract (README): --help and --version exit 0; any bad
  *   option exits 2 with a one-line message, and so does an option that means nothing
  *   for the mode (the option table's modes, which --help prints).
  * catches: a bad value accepted (spp 0, a negative size), an unknown option ignored, an
@@ -137,7 +137,7 @@ static int mode_exits(const char *mode, const char *scene, int status)
     return ran == status && written == (status == 0);
 }
 
-/* truth: DESIGN.md: no assertion is reachable from input. Each scene below once reached
+/* truth: the README's promise: no assertion is reachable from input. Each scene below once reached
  *   one: a light of 1e300 W (the photon record's power, photon.c), a mirror facing the
  *   camera squarely, so that a path comes back through the camera's own position (a
  *   cache record's r_min = 0, irradiance_cache.c), an object reaching past DBL_MAX (the
@@ -213,25 +213,26 @@ static void test_unwritable_output_refused_at_once(struct check *t)
 }
 
 /* truth: main.c's exit statuses: a write that fails after the work (here the disk is
- *   full: the PPM's temporary is a link to /dev/full, which refuses every write with
+ *   full: the PNG's temporary is a link to /dev/full, which refuses every write with
  *   ENOSPC) is a machine failure, status 1, for a render and for photon merge; the
  *   failed file is not left, the PFM written before it is whole.
- * catches: a failed write reported as bad input (status 2), a partial PPM left. */
+ * catches: a failed write reported as bad input (status 2), a partial PNG left. */
 static void test_failed_write_exits_1(struct check *t)
 {
     CHECK(t, photon(TINY " --crop 0 0 4 4 -o " OUT "_tile.pfm scenes/cornell.scene") == 0);
     static const char *commands[] = {TINY " -o " OUT "_full.pfm scenes/cornell.scene",
                                      "merge -o " OUT "_full.pfm " OUT "_tile.pfm"};
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
-        remove(OUT "_full.ppm.tmp");
-        CHECK(t, run_command("ln -s /dev/full " OUT "_full.ppm.tmp") == 0);
-        CHECK(t, photon(commands[i]) == 1 && log_contains(OUT "_full.ppm: cannot write"));
-        CHECK(t, !file_exists(OUT "_full.ppm") && !file_exists(OUT "_full.ppm.tmp"));
+        remove(OUT "_full.png");
+        remove(OUT "_full.png.tmp");
+        CHECK(t, run_command("ln -s /dev/full " OUT "_full.png.tmp") == 0);
+        CHECK(t, photon(commands[i]) == 1 && log_contains(OUT "_full.png: cannot write"));
+        CHECK(t, !file_exists(OUT "_full.png") && !file_exists(OUT "_full.png.tmp"));
         CHECK(t, file_exists(OUT "_full.pfm"));
         remove(OUT "_full.pfm");
     }
     remove(OUT "_tile.pfm");
-    remove(OUT "_tile.ppm");
+    remove(OUT "_tile.png");
     remove(OUT "_tile.pfm.window");
 }
 
@@ -291,7 +292,7 @@ static void test_missing_named_file_names_its_line(struct check *t)
     remove(OUT "_names.scene");
 }
 
-/* truth: same scene and seed give a bit-identical PFM (DESIGN.md, Determinism); the
+/* truth: same scene and seed give a bit-identical PFM (README); the
  *   written files are a valid PFM of the requested size with a PNG beside it; --stats
  *   prints the keys the issue names; compare of a file with itself is all zeros.
  * catches: time- or address-dependent results, a missing PNG, stats keys renamed. */
@@ -348,7 +349,7 @@ static int stats_keys_unique(size_t *n)
     return unique;
 }
 
-/* truth: --stats prints each key once (README: key=value lines), in every mode, and
+/* truth: --stats prints each key once (README, "Options": each key once), in every mode, and
  *   seconds_render is the whole render's time in every mode.
  * tolerance: none.
  * catches: a mode's own figures printed under a key the common ones use (1994 and 1996
@@ -410,7 +411,7 @@ static void test_specular_pixels_in_stats(struct check *t)
     remove(OUT "_spec.ppm");
 }
 
-/* truth: an NFF file is a scene of its own (README, "NFF files"): photon renders it by its
+/* truth: an NFF file is a scene of its own (README, "Scene files"): photon renders it by its
  *   .nff name, and a bad NFF line is reported as file:line with exit status 2 and no output.
  * catches: .nff files sent to the scene-file parser, an NFF error without its line. */
 static void test_nff_file_is_a_scene(struct check *t)
@@ -535,17 +536,17 @@ static void test_default_output_names(struct check *t)
     remove("build/cornell.png");
 }
 
-/* truth: outputs are whole or absent (DESIGN.md). Where the PNG cannot be put (its name
+/* truth: outputs are whole or absent (README). Where the PNG cannot be put (its name
  *   is a directory, so the rename of NAME.png.tmp fails after every byte was written), the
- *   render fails with the PNG's name in the message and leaves no NAME.png.tmp; the PFM
- *   was written first, and whole.
+ *   render fails as a machine failure (status 1: the work was done) with the PNG's name in
+ *   the message and leaves no NAME.png.tmp; the PFM was written first, and whole.
  * catches: a failed display write reported as success, its temporary left behind. */
 static void test_failed_png_leaves_nothing(struct check *t)
 {
     remove_outputs(OUT "_dir");
     CHECK(t, run_command("mkdir -p " OUT "_dir.png") == 0);
     CHECK(t, photon("-o " OUT "_dir.png --width 4 --height 4 --spp 1 scenes/cornell.scene")
-                 == 2);
+                 == 1);
     CHECK(t, log_contains(OUT "_dir.png: cannot write output file"));
     CHECK(t, !file_exists(OUT "_dir.png.tmp") && run_command("test -d " OUT "_dir.png") == 0);
     struct error err;

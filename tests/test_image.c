@@ -393,7 +393,7 @@ static void test_compare_metrics(struct check *t)
     image_free(a);
 }
 
-/* truth: outputs are whole or absent (DESIGN.md): a write into a directory that does not
+/* truth: outputs are whole or absent (README): a write into a directory that does not
  *   exist fails with an error naming the file, and leaves neither NAME nor NAME.tmp.
  * tolerance: none.
  * catches: a crash on a NULL stream, a success status for a failed write, an error

@@ -433,7 +433,7 @@ static void test_harder_scenes_are_finite(struct check *t)
 
 /* ---- the command line ---- */
 
-/* truth: the command-line contract (DESIGN.md): a bad value of a 1994 option exits 2
+/* truth: the command-line contract (README): a bad value of a 1994 option exits 2
  *   with a message naming the option and leaves no output; a good run exits 0, writes
  *   the image and prints the paper's Fig. 9 statistics with --stats, and the mean
  *   samples per pixel of adaptive sampling (the rule itself: test_render.c).

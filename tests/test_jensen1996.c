@@ -338,7 +338,7 @@ static void test_harder_scenes_are_finite(struct check *t)
 
 /* ---- the command line ---- */
 
-/* truth: the command-line contract (DESIGN.md): a bad value of a 1996 option exits 2
+/* truth: the command-line contract (README): a bad value of a 1996 option exits 2
  *   with a message naming the option and leaves no output; a good run exits 0, writes
  *   the image and prints the statistics the issue names with --stats.
  * catches: a limit missing from the option table (gather rays 1, a negative accuracy or

@@ -133,7 +133,7 @@ static int every_option_classified(void)
     return all;
 }
 
-/* truth: what determines a render's pixels (DESIGN.md, Determinism): the scene, the mode,
+/* truth: what determines a render's pixels (README): the scene, the mode,
  *   the seed and the settings; not where the files go, what is printed, the PPM's
  *   exposure or the window. The hash is of values, so spelling and order do not count.
  * tolerance: none.
@@ -258,7 +258,7 @@ static int merge_four_tiles(void)
                   "_tile3.pfm " OUT "_tile1.pfm");
 }
 
-/* truth: DESIGN.md's promise that a crop renders bit-identically to the same window of
+/* truth: README's promise that a crop renders bit-identically to the same window of
  *   the whole image, in every mode, so the merged tiles are byte for byte the whole
  *   render's PFM and PPM; a whole render writes no record (its files are as before).
  *   Tile 3 is made with options that change no pixel (--stats, --exposure, --progress,
@@ -593,7 +593,7 @@ static double logged_stat(const char *key)
     return file_stat(OUT ".log", key);
 }
 
-/* truth: the global work is the same whatever window is rendered (DESIGN.md: a crop
+/* truth: the global work is the same whatever window is rendered (README: a crop
  *   equals its window of the whole image), so a render that loads it instead of doing it
  *   writes the bytes of the plain render, whole and as tiles merged, and a crop saves the
  *   same file as the whole render. The render that loads 1994's illumination maps must

@@ -366,7 +366,7 @@ static int photon_plot(const char *args, const char *log)
     return photon_logged("plot", args, log);
 }
 
-/* truth: the command-line contract (DESIGN.md): bad input exits 2 with "file:line:
+/* truth: the command-line contract (README): bad input exits 2 with "file:line:
  *   message" or "photon: message", and writes nothing; good input exits 0 silently and
  *   writes the SVG.
  * tolerance: none.

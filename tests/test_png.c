@@ -411,7 +411,7 @@ static void test_png_outside_readers(struct check *t)
     remove(log);
 }
 
-/* truth: outputs are whole or absent (DESIGN.md): a PNG written into a directory that
+/* truth: outputs are whole or absent (README): a PNG written into a directory that
  *   does not exist fails with an error naming the file and leaves neither it nor its
  *   temporary (test_cli.c checks a failure after the bytes were written).
  * catches: a crash on a NULL stream, a success status for a failed write, a stray file. */

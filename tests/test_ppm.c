@@ -342,7 +342,7 @@ static struct image *small_cornell(const char *path, uint64_t seed, const int *w
     return result.image;
 }
 
-/* truth: DESIGN.md's determinism: a crop's pixels are the same window of the whole image,
+/* truth: the determinism README states: a crop's pixels are the same window of the whole image,
  *   bit for bit, though the crop's hit-point tree is another tree.
  * catches: a pixel's value depending on the order of other hit points, an initial radius
  *   taken from the window rather than the hit point. */

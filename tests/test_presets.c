@@ -142,7 +142,7 @@ static void test_explicit_option_beats_preset(struct check *t)
     remove(OUT ".ppm");
 }
 
-/* truth: the command-line contract (DESIGN.md): a bad value exits 2 with a message that
+/* truth: the command-line contract (README): a bad value exits 2 with a message that
  *   says what is expected.
  * catches: an unknown quality taken as default, a message that does not list the three. */
 static void test_unknown_quality_refused(struct check *t)

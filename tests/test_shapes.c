@@ -369,7 +369,7 @@ static struct ray flake_ray_of(const void *context, uint64_t q)
                           q + 100000);
 }
 
-#define EXPANSION_RAYS 500000 /* per level: a million in all, as issue 3 asks */
+#define EXPANSION_RAYS 500000 /* per level: a million in all */
 
 /* truth: the expansion, sphereflake_expand() into a geometry (BVH over 820 and 7381 plain
  *   spheres), against the shape alone in another geometry: geometry_intersect() both ways.
@@ -771,7 +771,7 @@ static void test_heightfield_is_watertight(struct check *t)
 
 /* truth: brute force, every triangle of the expansion tested with triangle.c (the same
  *   watertight test on the same vertex doubles), closest kept.
- * tolerance: t and p to 1e-9 relative, issue 3's figure (both sides run the same doubles
+ * tolerance: t and p to 1e-9 relative, the workload's figure (both sides run the same doubles
  *   and in fact agree to the ulp; a ray through a shared edge may report either triangle);
  *   ns to 1e-9; ng not compared (two triangles meet at an edge with different ng).
  * catches: a pruned node holding the nearest hit (box too small, y range from too few

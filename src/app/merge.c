@@ -102,7 +102,7 @@ static int same_window(const struct tile_record *a, const struct tile_record *b)
 
 /* No pixel in two tiles: each pair's windows must not intersect (n^2 pairs, for the few
  * tiles an image is cut into). Two tiles of one window are one tile given twice, under
- * one name or two: their hashes agree (read_record), so by DESIGN.md's determinism their
+ * one name or two: their hashes agree (read_record), so by the determinism README states their
  * pixels do too; the message says so and names both arguments, not an overlap. */
 static int check_overlaps(const struct merge_args *args, const struct tile_record *records,
                           struct error *err)

@@ -7,7 +7,7 @@
  * tiles must be windows of one image: the same image size and the same hash (scene bytes,
  * mode, seed, options), none made with --time-limit, each PFM the size of its window, no
  * two overlapping, and together covering every pixel. Then FULL.pfm is the whole image,
- * byte for byte the file a render without --crop writes (DESIGN.md: a crop renders
+ * byte for byte the file a render without --crop writes (README: a crop renders
  * bit-identically to the same window of the whole image), and its display image is beside
  * it: FULL.png, or FULL.ppm for -o FULL.ppm (-o as for a render, options.h read_output;
  * --exposure too). Anything else exits 2 with a message naming the file, the

@@ -217,7 +217,7 @@ static void mode_note(unsigned set, char *text, size_t size)
 static void print_help(void)
 {
     printf("usage: photon [options] SCENE       render SCENE: a scene file, or an NFF file by its\n"
-           "                                    .nff name (see README: Scene files, NFF files)\n"
+           "                                    .nff name (see README: Scene files)\n"
            "       photon compare A.pfm B.pfm [--diff OUT.ppm] [--ref-variance VB.pfm]\n"
            "                      [--test-variance VA.pfm] [--alpha ALPHA] [--block N]\n"
            "       photon plot A.csv [B.csv ...] -o PLOT.svg      (relmse against seconds)\n"
@@ -432,7 +432,7 @@ static int check_global_work_options(const struct options *o, struct error *err)
     if (o->mode == MODE_PPM2008)
         return error_set(err, "", 0, "%s: mode 2008 traces new photons in every pass; they "
                          "are not saved (their tracing is the smaller part of a tile's "
-                         "work: README, Tiles and merging)", name);
+                         "work: scripts/README.md)", name);
     return 0;
 }
 

@@ -7,7 +7,7 @@
  * default: the defaults of options.c and the modes' headers (no words), chosen there.
  * reference: what makes a reference image: pt's is the setting of reference/cornell-pt.pfm;
  *   the photon modes' converge further than their defaults at a few times their time.
- * The measured seconds and errors of each row are in README (Quality presets);
+ * The measured seconds and errors of each row are in README (Presets);
  * scripts/presets.sh measures them again. A list names only options its mode takes.
  */
 #include "presets.h"

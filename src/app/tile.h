@@ -13,14 +13,14 @@
  * The hash is FNV-1a, 64 bits (base/hash.h), over every line the scene readers read from
  * the scene file and the files it includes and imports (scene.h, source_hash), then this
  * program's version and every option that changes pixels (options_hash): two tiles with the
- * same hash come from the same scene bytes, mode, seed and settings, so by DESIGN.md's
- * determinism they are windows of one image. --time-limit cannot be hashed that way (it
+ * same hash come from the same scene bytes, mode, seed and settings, so by the determinism
+ * README states they are windows of one image. --time-limit cannot be hashed that way (it
  * makes pixels depend on the machine's speed), so it is kept on a line of its own and merge
  * refuses tiles that had one.
  *
  * Why a file beside the PFM, not a '#' line in its header: PFM has no comment syntax, and
  * netpbm's pfmtopam (11.1) refuses a header with a comment line wherever it stands
- * (README, "Tiles and merging"), so the tile stays a plain PFM any reader takes.
+ * (scripts/README.md), so the tile stays a plain PFM any reader takes.
  */
 #ifndef PHOTON_TILE_H
 #define PHOTON_TILE_H

@@ -1,7 +1,7 @@
 /*
  * geom/ray.h -- rays, bounding boxes and the shading record every intersection fills.
  *
- * This is the whole vocabulary modes share with geometry (DESIGN.md): a mode builds a
+ * This is the whole vocabulary modes share with geometry (one call, one record): a mode builds a
  * ray, asks geometry_intersect() for the closest hit and reads a struct hit. Nothing else
  * about an object is visible outside geom/.
  */
@@ -34,7 +34,7 @@ static inline struct aabb aabb_union(struct aabb a, struct aabb b)
     return u;
 }
 
-/* What an intersection reports: the shading record of DESIGN.md. */
+/* What an intersection reports: the shading record. */
 struct hit {
     double t;        /* ray parameter of the hit, in (0, tmax)                              */
     struct vec3 p;   /* hit position                                                        */
@@ -59,7 +59,7 @@ static inline struct ray make_ray(struct vec3 origin, struct vec3 dir)
 
 /* The origin of a ray leaving surface point p on the side of the unit normal n (pass -n to
  * go through the surface): offset scaled to p's magnitude, so it works in millimetres and
- * in kilometres alike (DESIGN.md, Numbers). */
+ * in kilometres alike (README). */
 static inline struct vec3 offset_origin(struct vec3 p, struct vec3 n)
 {
     return vec3_madd(p, n, RAY_OFFSET_REL * fmax(1.0, vec3_max_abs(p)));

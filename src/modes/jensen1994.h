@@ -16,7 +16,7 @@
 #define J94_DEFAULT_PHOTONS 4000000    /* --photons: light rays of pass 1; searches cost
                                           log N, so a large map is cheap, and its
                                           estimates' discs, hanging over the walls'
-                                          edges, are small (README)                      */
+                                          edges, are small (src/modes/README.md)                */
 #define J94_DEFAULT_SPP 64             /* --spp: the cache and maps are shared by all
                                           samples, so the final pass is the cheap part;
                                           16 leave the light's outline aliased by 4%    */

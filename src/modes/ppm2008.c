@@ -32,7 +32,7 @@
  * photon lands in the part of the disc beyond it, though pi R^2 counts it: so a hit
  * point's R0 stops at the nearest wall that rays along its tangent plane find (departs
  * from the paper, which leaves R0 to the user; an open edge, where the surface just ends,
- * is not found this way). README, `--mode 2008`, has the measurements.
+ * is not found this way). src/modes/README.md has the measurements.
  *
  * Determinism: photon i of pass p draws from rng_stream(seed, STREAM_PHOTON, p, i) and eye
  * sample s of pixel (x, y) from its camera stream (render.h); each hit point receives its
@@ -273,7 +273,7 @@ static void ray_tracing_pass(struct ppm *ppm)
  * back of the hit point's own surface). Departs from Sec. 4.2, which takes every photon
  * within R: the sphere of radius R also reaches through thin walls. A photon on a wall at
  * right angles is not counted either, though its disc's area pi R^2 still counts the part
- * beyond the corner, where no photon lands: the corner's bias (README). No cosine: it is
+ * beyond the corner, where no photon lands: the corner's bias (modes/README.md). No cosine: it is
  * in the photon's flux already. */
 static void add_flux(void *context, size_t i)
 {

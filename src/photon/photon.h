@@ -34,7 +34,7 @@
 
 /* The paper's 20 bytes per photon; photon.c alone packs and unpacks them. */
 struct photon {
-    float pos[3];             /* bytes 0-11: position (float only here; DESIGN.md)         */
+    float pos[3];             /* bytes 0-11: position (float only here)                      */
     unsigned char power[4];   /* 12-15: RGB power, Ward's RGBE: mantissas R, G, B, exponent */
     unsigned char theta, phi; /* 16-17: direction wi (see photon_pack), 256 steps each      */
     unsigned char plane;      /* 18: split axis 0..2 of this kd-tree node, set by

@@ -1,7 +1,7 @@
 /*
  * scene/nff.c -- the NFF reader (Haines, "Neutral File Format", as SPD 3.14 writes it).
  *
- * How NFF becomes a photon scene (README, "NFF files", copies this):
+ * How NFF becomes a photon scene (README, "Scene files", in short):
  *   v       `v`, then the lines `from x y z`, `at x y z`, `up x y z`, `angle deg`,
  *           `hither d`, (optionally `yon d`), `resolution w h`, in that order -> the
  *           camera at from looking at at, with up as its up hint (neither unit nor

@@ -3,7 +3,7 @@
  * Procedural Databases (SPD; a few of its files are in tests/data/spd/), into a scene.
  *
  * nff.c's opening comment states exactly how NFF's entities become our camera, lights,
- * materials and primitives (README, "NFF files", copies it).
+ * materials and primitives (README, "Scene files", in short).
  */
 #ifndef PHOTON_NFF_H
 #define PHOTON_NFF_H

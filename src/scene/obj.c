@@ -1,7 +1,7 @@
 /*
  * scene/obj.c -- the Wavefront OBJ reader: polygon meshes, as triangles.
  *
- * What is read (README, "OBJ meshes"):
+ * What is read (README, "Scene files", in short):
  *   v x y z [w | r g b]  a vertex, placed at scale * (x, y, z) + translation; a fourth
  *                        number (w) or three more (a vertex colour) are read and ignored.
  *   vn x y z             a vertex normal (normalised; a zero normal is refused).

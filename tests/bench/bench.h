@@ -8,7 +8,7 @@
 #ifndef PHOTON_BENCH_H
 #define PHOTON_BENCH_H
 
-#define BENCH_REPEATS 3 /* BENCH.md: the median of at least 3 repetitions */
+#define BENCH_REPEATS 3 /* bench/README.md: the median of at least 3 repetitions */
 
 double bench_seconds(void);                       /* CPU seconds since start */
 double bench_median(double *values, int count);   /* sorts values in place   */
@@ -18,12 +18,12 @@ struct scene;
  * cannot be read. The caller frees it with scene_free(). */
 struct scene *bench_scene(const char *path);
 
-void bench_rays(void);   /* bench_rays.c: BENCH.md Sec. 1 on generated and shipped scenes */
-void bench_knn(void);    /* bench_knn.c: BENCH.md Sec. 2, Cornell-wall k-nearest          */
+void bench_rays(void);   /* bench_rays.c: bench/README.md, rays on generated and shipped scenes */
+void bench_knn(void);    /* bench_knn.c: bench/README.md, knn, Cornell-wall k-nearest          */
 void bench_shapes(void); /* bench_shapes.c: procedural objects against their expansions   */
 void bench_photons(void); /* bench_photons.c: photons traced and stored per second        */
 void bench_ppm(void);     /* bench_ppm.c: --mode 2008 hit points and photons per second    */
-void bench_tte(void);     /* bench_tte.c: BENCH.md Sec. 3, time to error beside pt         */
+void bench_tte(void);     /* bench_tte.c: bench/README.md, tte, time to error beside pt         */
 void bench_tiles(void);   /* bench_tiles.c: 2 tile processes against 1, wall time (tiles.sh) */
 
 #endif

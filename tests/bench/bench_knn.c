@@ -1,12 +1,12 @@
 /*
- * tests/bench/bench_knn.c -- BENCH.md Sec. 2: k-nearest photons on Cornell-box walls.
+ * tests/bench/bench_knn.c -- bench/README.md, knn: k-nearest photons on Cornell-box walls.
  *
- * Points on the five inner walls of the unit box, made by SplitMix64 exactly as BENCH.md
+ * Points on the five inner walls of the unit box, made by SplitMix64 exactly as bench/README.md
  * spells it (not our keyed rng.h streams: the points must be the ones any outside
  * library, e.g. nanoflann, is given), seed 1 for the photons and seed 2 for the
  * queries. For N = 100k and 1M: the map's build (balance_kdtree) timed, then 100,000
  * exact k-nearest queries with no maximum radius for k = 50 and k = 500, each figure the
- * median of BENCH_REPEATS runs, with the checksums BENCH.md documents.
+ * median of BENCH_REPEATS runs, with the checksums bench/README.md documents.
  */
 #include "bench.h"
 
@@ -18,11 +18,11 @@
 #include "../../src/base/alloc.h"
 #include "../../src/photon/kdtree.h"
 
-#define N_QUERIES 100000   /* BENCH.md Sec. 2 */
-#define PHOTON_SEED 1u     /* BENCH.md Sec. 2: seed 1 for photons, 2 for query points */
+#define N_QUERIES 100000   /* bench/README.md, knn */
+#define PHOTON_SEED 1u     /* bench/README.md, knn: seed 1 for photons, 2 for query points */
 #define QUERY_SEED 2u
 
-/* One SplitMix64 step, BENCH.md's definition (wrapping unsigned 64-bit arithmetic). */
+/* One SplitMix64 step, bench/README.md's definition (wrapping unsigned 64-bit arithmetic). */
 static uint64_t splitmix_next(uint64_t *s)
 {
     *s += 0x9E3779B97F4A7C15u;
@@ -62,7 +62,7 @@ static struct vec3 *wall_points(uint64_t seed, size_t n)
     return points;
 }
 
-/* BENCH.md: sum over i of (i + 1) (x_i + 2 y_i + 3 z_i), in double. */
+/* bench/README.md: sum over i of (i + 1) (x_i + 2 y_i + 3 z_i), in double. */
 static double points_checksum(const struct vec3 *points, size_t n)
 {
     double sum = 0;
@@ -71,7 +71,7 @@ static double points_checksum(const struct vec3 *points, size_t n)
     return sum;
 }
 
-/* Photons at the points; power and direction are any constant (BENCH.md). */
+/* Photons at the points; power and direction are any constant (bench/README.md). */
 static struct photon *photons_at(const struct vec3 *points, size_t n)
 {
     struct photon *photons = xmalloc(n, sizeof *photons, "bench photons");
@@ -148,7 +148,7 @@ static void bench_one_size(const char *name, const struct vec3 *points, size_t n
 
 void bench_knn(void)
 {
-    size_t n_max = 1000000;  /* BENCH.md: the 100k set is the prefix of the 1M set */
+    size_t n_max = 1000000;  /* bench/README.md: the 100k set is the prefix of the 1M set */
     struct vec3 *points = wall_points(PHOTON_SEED, n_max);
     struct vec3 *queries = wall_points(QUERY_SEED, N_QUERIES);
     struct nearest *nn = nearest_create(500);

@@ -1,5 +1,5 @@
 /*
- * tests/bench/bench_rays.c -- ray casting, BENCH.md Sec. 1: build seconds, BVH bytes,
+ * tests/bench/bench_rays.c -- ray casting, bench/README.md, rays: build seconds, BVH bytes,
  * primary and secondary Mrays/s, and the checksums that show the work was the same.
  *
  * bench_ray_workload() runs the workload on any scene; bench_rays() runs it on the SPD
@@ -19,8 +19,8 @@
 #include "../../src/scene/scene.h"
 #include "bench.h"
 
-#define IMAGE_SIZE 1024          /* BENCH.md: 1024 x 1024 whatever the file says          */
-#define SECONDARY_NUDGE 1e-5     /* BENCH.md: origins move 1e-5 max(1, max|P|) off surface */
+#define IMAGE_SIZE 1024          /* bench/README.md: 1024 x 1024 whatever the file says          */
+#define SECONDARY_NUDGE 1e-5     /* bench/README.md: origins move 1e-5 max(1, max|P|) off surface */
 #define BENCH_SEED 1             /* keys the secondary directions' stream                  */
 #define TERRAIN_QUADS 725        /* per side: 2 * 725^2 = 1,051,250 triangles             */
 
@@ -32,7 +32,7 @@ struct ray_set {
     double t_sum;       /* sum of the hit distances */
 };
 
-/* BENCH.md Sec. 1 camera: w = normalize(at - from), u = normalize(w x up), v = u x w, and
+/* bench/README.md, rays camera: w = normalize(at - from), u = normalize(w x up), v = u x w, and
  * pixel (i, j), j = 0 at the top, looks along w + (2(i+1/2)/W - 1) t (W/H) u +
  * (1 - 2(j+1/2)/H) t v with t = tan(angle / 2) (here W = H). */
 static struct ray_set primary_rays(const struct bench_camera *camera)
@@ -65,7 +65,7 @@ static struct vec3 cosine_direction(struct vec3 n, struct rng *rng)
     return vec3_madd(vec3_madd(d, t, r * cos(phi)), b, r * sin(phi));
 }
 
-/* One secondary ray per primary hit (BENCH.md): about ng turned towards the incoming ray,
+/* One secondary ray per primary hit (bench/README.md): about ng turned towards the incoming ray,
  * from the hit point nudged along it; stream (BENCH_SEED, STREAM_TEST, pixel, 0). */
 static struct ray_set secondary_rays(const struct geometry *g, const struct ray_set *primary)
 {
@@ -205,7 +205,7 @@ static struct geometry *build_scene_file(void *ctx)
 }
 
 /* The workload through the file's own camera, named by the file name without directory
- * and extension (BENCH.md: balls-s4, mount-s6). */
+ * and extension (bench/README.md: balls-s4, mount-s6). */
 static void bench_scene_file(const char *path)
 {
     struct scene *scene = load_scene_file(path);

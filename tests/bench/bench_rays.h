@@ -1,5 +1,5 @@
 /*
- * tests/bench/bench_rays.h -- the ray-casting workload of BENCH.md Sec. 1, reusable for any
+ * tests/bench/bench_rays.h -- the ray-casting workload of bench/README.md, rays, reusable for any
  * scene that can be turned into a struct geometry.
  */
 #ifndef PHOTON_BENCH_RAYS_H
@@ -15,7 +15,7 @@ struct bench_camera {
 
 /* Times build(ctx) BENCH_REPEATS times (freeing all but the last geometry; the callback
  * makes a geometry from the scene's primitives and calls geometry_build()), then the
- * primary and the secondary rays of BENCH.md Sec. 1 through `camera`, and prints
+ * primary and the secondary rays of bench/README.md, rays through `camera`, and prints
  * rays.SCENE.build_s, bvh_bytes (geometry_bytes: primitives and BVH), primary_mrays,
  * secondary_mrays and the checksums primary_hits, primary_tsum, secondary_hits, with SCENE
  * = scene_name. Both ray sets are made before any timing. */

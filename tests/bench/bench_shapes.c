@@ -3,7 +3,7 @@
  * sphere flake (597,871 spheres) and fractal heightfields of 1024^2 and 2048^2 samples
  * (2.1M and 8.4M triangles), each cast procedurally and as plain primitives in the BVH.
  *
- * Each case runs bench_rays.c's workload (BENCH.md Sec. 1 camera, primary and secondary
+ * Each case runs bench_rays.c's workload (bench/README.md, rays camera, primary and secondary
  * rays, build seconds as the median of BENCH_REPEATS builds from the parameters), so its
  * figures print as rays.shapes_CASE_procedural.* and rays.shapes_CASE_expanded.*, CASE =
  * flake6, hf1024, hf2048. bvh_bytes is geometry_bytes(): the shape's own memory (plus a

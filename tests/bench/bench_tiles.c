@@ -1,6 +1,6 @@
 /*
  * tests/bench/bench_tiles.c -- the wall-time speed-up of 2 tile processes on 2 cores
- * against 1 process, for --mode pt and --mode 2008 (issue 10): runs tests/bench/tiles.sh.
+ * against 1 process, for --mode pt and --mode 2008: runs tests/bench/tiles.sh.
  *
  * Why a shell script: the figure is wall time across processes, and C99 has no wall clock
  * finer than time()'s whole seconds (clock() is this process's CPU time, blind to the

@@ -6,7 +6,7 @@
 # For each mode, BENCH_REPEATS (3) times: the whole image by one process, then the two
 # halves (bands 0..63 and 64..127) by two processes at once, merged with `photon merge`;
 # the merge must equal the whole render byte for byte (cmp of the PFMs, the images of
-# record), else the workload fails. Printed, as BENCH.md's name=value lines: the medians of
+# record), else the workload fails. Printed, as bench/README.md's name=value lines: the medians of
 # the wall seconds (seconds_1, seconds_2, their ratio speedup), of the CPU seconds the
 # processes used (cpu_seconds_1, cpu_seconds_2: a tile repeats the mode's global work, the
 # photon passes of 2008, so cpu_seconds_2 > cpu_seconds_1 bounds the speed-up below 2 even
