@@ -90,14 +90,12 @@ static int build_global_map(const struct scene *scene, const struct render_setti
     stats->photons_emitted += ts.n_emit;
     maps->global = balance_trace(&gs.global);
     stats->photons_global = maps->global->n_photons;
-    stats->bytes_global_map = kdtree_bytes(maps->global);
     if (gs.visibility != NULL) {
         maps->visibility = xcalloc(scene->n_lights, sizeof *maps->visibility, "visibility");
         maps->n_lights = scene->n_lights;
         for (size_t l = 0; l < scene->n_lights; l++) {
             stats->photons_shadow += gs.visibility[l].n_shadow;
             maps->visibility[l] = balance_trace(&gs.visibility[l]);
-            stats->bytes_visibility_maps += kdtree_bytes(maps->visibility[l]);
         }
         free(gs.visibility);
     }
@@ -125,7 +123,6 @@ static int build_caustic_map(const struct scene *scene, const struct render_sett
             stats->photons_emitted += traced.n_emitted;
             maps->caustic = balance_trace(&traced);
             stats->photons_caustic = maps->caustic->n_photons;
-            stats->bytes_caustic_map = kdtree_bytes(maps->caustic);
         }
     }
     free(spheres);
