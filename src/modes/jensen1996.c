@@ -56,6 +56,7 @@
 #include "../base/alloc.h"
 #include "../photon/estimate.h"
 #include "../photon/irradiance_cache.h"
+#include "../photon/precomputed_irradiance.h"
 #include "../scene/brdf.h"
 #include "cache_pass.h"
 #include "jensen1996_maps.h"
@@ -78,6 +79,7 @@ struct jensen1996_settings jensen1996_settings_default(void)
     js.accurate_weight = J96_DEFAULT_ACCURATE_WEIGHT;
     js.shadow_photons = 1;
     js.one_map = 0;
+    js.precomputed_irradiance = J96_DEFAULT_PRECOMPUTED;
     js.report = NULL;
     js.work = NULL;
     return js;
@@ -130,6 +132,7 @@ struct j96 {
     const struct scene *scene;
     const struct jensen1996_settings *js;
     struct photon_maps maps;
+    struct precomputed_irradiance *precomputed; /* owned; NULL with precomputed_irradiance 0 */
     struct irradiance_cache *cache; /* NULL with --cache-accuracy 0                     */
     int filling_cache;              /* the pre-pass: add records where none is usable  */
     struct estimate_settings global_es, caustic_es;
@@ -525,6 +528,25 @@ static struct vec3 surface_radiance(const struct j96 *m, const struct surface *s
     return l;
 }
 
+/* The global map's radiance through the diffuse part at the end of a gather ray, and *r2
+ * the radius^2 it was estimated over: Eq. 3 there, or, on a Lambertian surface with a
+ * record near enough, f_r,d times the record's precomputed irradiance (the departure from
+ * Sec. 4.4 at the top of the file; f_r,d is evaluated towards the normal, where it is
+ * rho / pi whenever it reflects towards wo at all). */
+static struct vec3 gather_end_estimate(const struct j96 *m, const struct surface *s,
+                                       const struct brdf_split *split,
+                                       const struct shading_frame *frame, double *r2)
+{
+    struct vec3 e;
+    if (m->precomputed != NULL && split->lambertian &&
+        precomputed_irradiance_at(m->precomputed, s->p, s->ng, m->scratch->nn, &e, r2)) {
+        m->scratch->stats->gather_ends_precomputed++;
+        return vec3_mul(brdf_eval(&split->diffuse, frame, s->wo, frame->n), e);
+    }
+    m->scratch->stats->gather_ends_estimated++;
+    return photon_estimate(m, m->maps.global, &m->global_es, s, &split->diffuse, frame, r2);
+}
+
 static struct vec3 gathered_radiance(const struct j96 *m, const struct surface *s, double d,
                                      struct path path, struct rng *rng,
                                      struct render_counters *counters)
@@ -534,8 +556,7 @@ static struct vec3 gathered_radiance(const struct j96 *m, const struct surface *
     double r2 = 0.0;
     struct vec3 estimate = vec3_zero();
     if (split.has_diffuse)
-        estimate = photon_estimate(m, m->maps.global, &m->global_es, s, &split.diffuse,
-                                   &frame, &r2);
+        estimate = gather_end_estimate(m, s, &split, &frame, &r2);
     double reach = m->js->accurate_distance;
     if (split.has_diffuse && d * d < reach * reach * r2) {
         path.eval = CORNER;
@@ -636,7 +657,7 @@ static void scratch_free(struct scratch *sc)
 
 /* The mode's settings from the scene and the user's. */
 static void set_up(struct j96 *m, const struct scene *scene, const struct render_settings *rs,
-                   const struct jensen1996_settings *js)
+                   const struct jensen1996_settings *js, struct jensen1996_stats *stats)
 {
     struct aabb box = geometry_bounds(scene->geometry);
     m->scene = scene;
@@ -660,6 +681,14 @@ static void set_up(struct j96 *m, const struct scene *scene, const struct render
     m->cache = NULL;
     if (js->cache_accuracy > 0 && isfinite(box.lo.x))
         m->cache = irradiance_cache_create(box, js->cache_accuracy);
+    m->precomputed = NULL;
+    if (m->maps.records != NULL) {
+        clock_t start = clock();
+        struct irradiance_settings is = {m->global_es.k, m->global_es.max_r2, 0, 0};
+        m->precomputed = precompute_irradiance(m->maps.global, m->maps.records, &is);
+        stats->seconds_precompute = cpu_seconds(start);
+        stats->bytes_precomputed += precomputed_irradiance_bytes(m->precomputed);
+    }
 }
 
 struct render_result render_jensen1996(const struct scene *scene,
@@ -684,8 +713,8 @@ struct render_result render_jensen1996(const struct scene *scene,
         global_work_free(&own_work);
         return result;
     }
+    set_up(&m, scene, rs, js, stats);
     stats->seconds_photons = cpu_seconds(start);
-    set_up(&m, scene, rs, js);
     stats->strata_theta = m.cached.theta;
     stats->strata_phi = m.cached.phi;
     m.scratch = scratch_create(&m, stats);
@@ -712,6 +741,7 @@ struct render_result render_jensen1996(const struct scene *scene,
     result.seconds += before;
     scratch_free(m.scratch);
     irradiance_cache_free(m.cache);
+    precomputed_irradiance_free(m.precomputed);
     global_work_free(&own_work); /* m.maps borrowed from it */
     return result;
 }

@@ -19,16 +19,31 @@
 
 /* Where the global trace's photons go: every photon but the shadow ones to the global
  * map, and the direct and shadow photons also to their light's visibility map, since a
- * direct photon of one light says nothing about another's shadow. */
+ * direct photon of one light says nothing about another's shadow. Every step-th photon
+ * of the global map is also a record of precomputed irradiance (Christensen 1999), kept
+ * with the surface normal where it landed in place of its direction. */
 struct global_sink {
     struct photon_trace global;
     struct photon_trace *visibility; /* n_lights of them, or NULL */
+    struct photon_trace records;     /* empty when step is 0 */
+    size_t step;                     /* js->precomputed_irradiance */
 };
+
+static int store_record(struct global_sink *gs, const struct photon_event *e)
+{
+    if (gs->step == 0 || (gs->global.n_photons - 1) % gs->step != 0)
+        return 0;
+    struct photon_event record = *e;
+    record.wi = e->normal;
+    record.power = vec3_zero(); /* unused: the record's value is its irradiance */
+    return photon_trace_store(&gs->records, MAX_PHOTONS, &record);
+}
 
 static int store_global(void *context, const struct photon_event *e)
 {
     struct global_sink *gs = context;
-    if (e->kind != PHOTON_SHADOW && photon_trace_store(&gs->global, MAX_PHOTONS, e) < 0)
+    if (e->kind != PHOTON_SHADOW &&
+        (photon_trace_store(&gs->global, MAX_PHOTONS, e) < 0 || store_record(gs, e) < 0))
         return -1;
     if (gs->visibility != NULL && (e->kind & (PHOTON_DIRECT | PHOTON_SHADOW)) &&
         photon_trace_store(&gs->visibility[e->light], MAX_PHOTONS, e) < 0)
@@ -83,6 +98,8 @@ static int build_global_map(const struct scene *scene, const struct render_setti
     memset(&gs, 0, sizeof gs);
     gs.global.photons = NULL;
     gs.visibility = NULL;
+    gs.records.photons = NULL;
+    gs.step = (size_t)js->precomputed_irradiance;
     if (js->shadow_photons && scene->n_lights > 0)
         gs.visibility = xcalloc(scene->n_lights, sizeof *gs.visibility, "visibility maps");
     struct photon_sink sink = {store_global, &gs};
@@ -90,6 +107,7 @@ static int build_global_map(const struct scene *scene, const struct render_setti
     stats->photons_emitted += ts.n_emit;
     maps->global = balance_trace(&gs.global);
     stats->photons_global = maps->global->n_photons;
+    maps->records = gs.step > 0 ? balance_trace(&gs.records) : NULL;
     if (gs.visibility != NULL) {
         maps->visibility = xcalloc(scene->n_lights, sizeof *maps->visibility, "visibility");
         maps->n_lights = scene->n_lights;
@@ -132,6 +150,7 @@ static int build_caustic_map(const struct scene *scene, const struct render_sett
 static void photon_maps_free(struct photon_maps *maps)
 {
     kdtree_free(maps->global);
+    kdtree_free(maps->records);
     kdtree_free(maps->caustic);
     for (size_t l = 0; maps->visibility != NULL && l < maps->n_lights; l++)
         kdtree_free(maps->visibility[l]);
@@ -142,17 +161,19 @@ int build_photon_maps(const struct scene *scene, const struct render_settings *r
                       const struct jensen1996_settings *js, struct jensen1996_stats *stats,
                       struct error *err)
 {
-    struct photon_maps maps = {NULL, NULL, NULL, 0};
+    struct photon_maps maps = {NULL, NULL, NULL, 0, NULL};
     if (build_global_map(scene, rs, js, &maps, stats, err) < 0 ||
         build_caustic_map(scene, rs, js, &maps, stats, err) < 0) {
         photon_maps_free(&maps);
         return -1;
     }
-    global_work_add_maps(js->work, 2 + maps.n_lights);
+    global_work_add_maps(js->work, 2 + maps.n_lights + (maps.records != NULL));
     js->work->maps[0] = maps.global;
     js->work->maps[1] = maps.caustic;
     for (size_t l = 0; l < maps.n_lights; l++)
         js->work->maps[2 + l] = maps.visibility[l];
+    if (maps.records != NULL)
+        js->work->maps[2 + maps.n_lights] = maps.records;
     free(maps.visibility);
     return 0;
 }
@@ -163,9 +184,10 @@ int borrow_photon_maps(const struct scene *scene, const struct jensen1996_settin
 {
     const struct global_work *work = js->work;
     size_t n_lights = js->shadow_photons ? scene->n_lights : 0;
-    int fits = work->n_maps == 2 + n_lights && work->maps[0] != NULL &&
+    size_t n_records = js->precomputed_irradiance > 0;
+    int fits = work->n_maps == 2 + n_lights + n_records && work->maps[0] != NULL &&
                !(js->one_map && work->maps[1] != NULL) && work->illumination == NULL;
-    for (size_t l = 0; fits && l < n_lights; l++)
+    for (size_t l = 0; fits && l < n_lights + n_records; l++)
         fits = work->maps[2 + l] != NULL;
     if (!fits)
         return error_set(err, "", 0, "--load-photons: the file's photon maps are not the "
@@ -174,11 +196,14 @@ int borrow_photon_maps(const struct scene *scene, const struct jensen1996_settin
     maps->caustic = work->maps[1];
     maps->visibility = n_lights > 0 ? work->maps + 2 : NULL;
     maps->n_lights = n_lights;
+    maps->records = n_records > 0 ? work->maps[2 + n_lights] : NULL;
     stats->photons_global = maps->global->n_photons;
     stats->bytes_global_map = kdtree_bytes(maps->global);
     stats->photons_caustic = maps->caustic != NULL ? maps->caustic->n_photons : 0;
     stats->bytes_caustic_map = maps->caustic != NULL ? kdtree_bytes(maps->caustic) : 0;
     for (size_t l = 0; l < n_lights; l++)
         stats->bytes_visibility_maps += kdtree_bytes(maps->visibility[l]);
+    stats->precomputed_records = maps->records != NULL ? maps->records->n_photons : 0;
+    stats->bytes_precomputed = maps->records != NULL ? kdtree_bytes(maps->records) : 0;
     return 0;
 }

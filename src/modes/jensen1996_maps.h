@@ -22,10 +22,15 @@ struct photon_maps {
     struct kdtree **visibility; /* per light, its direct and shadow photons; NULL without
                                    shadow photons                                         */
     size_t n_lights;
+    struct kdtree *records;     /* the records of precomputed irradiance: every N-th photon
+                                   of the global map, with its surface normal in place of
+                                   its direction (photon/precomputed_irradiance.h); NULL
+                                   with precomputed_irradiance 0                          */
 };
 
 /* Pass 1 into js->work, which is empty: maps[0] the global map, maps[1] the caustic map
- * (NULL when not built), maps[2 ..] the lights' visibility maps. On failure (more than
+ * (NULL when not built), maps[2 ..] the lights' visibility maps, then the records when
+ * js->precomputed_irradiance >= 1. On failure (more than
  * MAX_PHOTONS photons would be stored) -1 with *err filled, and js->work left empty. */
 int build_photon_maps(const struct scene *scene, const struct render_settings *rs,
                       const struct jensen1996_settings *js, struct jensen1996_stats *stats,
