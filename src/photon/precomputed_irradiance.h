@@ -67,8 +67,9 @@ size_t precomputed_irradiance_bytes(const struct precomputed_irradiance *pi);
 /* Irradiance at x, on a surface with unit normal n (on the side the light is wanted
  * from), from the nearest record that can serve it: among the PRECOMPUTED_CANDIDATES
  * records nearest to x, the nearest whose normal n_i has n . n_i >= PRECOMPUTED_MIN_COS
- * and whose own estimate's disc reaches x (|x - p_i|^2 <= r_i^2); at equal distances the
- * node first in the tree. Returns 1 with *e = its E and *r2 = its r^2, or 0 (e and r2
+ * and whose own estimate's disc reaches x (|x - p_i|^2 <= r_i^2); among records at the
+ * same distance, the one the search keeps (deterministic: it depends on the tree alone).
+ * Returns 1 with *e = its E and *r2 = its r^2, or 0 (e and r2
  * untouched) when none of them can: the caller then estimates from the map itself.
  * nn: the caller's scratch, k_max >= PRECOMPUTED_CANDIDATES. Allocates nothing. */
 int precomputed_irradiance_at(const struct precomputed_irradiance *pi, struct vec3 x,
