@@ -215,8 +215,8 @@ static void print_jensen1996_stats(const struct jensen1996_stats *js)
             js->strata_phi);
     fprintf(stderr, "precomputed_records=%zu\nbytes_precomputed=%zu\nseconds_precompute=%.3f\n",
             js->precomputed_records, js->bytes_precomputed, js->seconds_precompute);
-    fprintf(stderr, "gather_ends_precomputed=%llu\ngather_ends_estimated=%llu\n",
-            js->gather_ends_precomputed, js->gather_ends_estimated);
+    fprintf(stderr, "precomputed_reads=%llu\nglobal_estimates=%llu\n", js->precomputed_reads,
+            js->global_estimates);
 }
 
 /* The paper's Fig. 9 (photons stored, light rays, irradiance-gradient rays, shadow rays,

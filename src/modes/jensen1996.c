@@ -495,6 +495,26 @@ static struct vec3 soft_indirect(const struct j96 *m, const struct surface *s,
 
 /* -- a surface, term by term -- */
 
+/* The global map's radiance through the diffuse part at an approximate point (a gather
+ * ray's end among them), and *r2 the radius^2 it was estimated over: Eq. 3 there, or, on
+ * a Lambertian surface with a record near enough, f_r,d times the record's precomputed
+ * irradiance (the departure from Sec. 4.4 at the top of the file; f_r,d is evaluated
+ * towards the normal, where it is rho / pi whenever it reflects towards wo at all). */
+static struct vec3 global_estimate(const struct j96 *m, const struct surface *s,
+                                       const struct brdf_split *split,
+                                       const struct shading_frame *frame, double *r2)
+{
+    struct vec3 e;
+    if (m->precomputed != NULL && split->lambertian &&
+        precomputed_irradiance_at(m->precomputed, s->p, s->ng, m->scratch->nn, &e, r2)) {
+        m->scratch->stats->precomputed_reads++;
+        return vec3_mul(brdf_eval(&split->diffuse, frame, s->wo, frame->n), e);
+    }
+    m->scratch->stats->global_estimates++;
+    return photon_estimate(m, m->maps.global, &m->global_es, s, &split->diffuse, frame, r2);
+}
+
+
 /* Radiance leaving s towards s->wo, Eq. 2 evaluated as path.eval says. */
 static struct vec3 surface_radiance(const struct j96 *m, const struct surface *s,
                                     struct path path, struct rng *rng,
@@ -506,8 +526,7 @@ static struct vec3 surface_radiance(const struct j96 *m, const struct surface *s
     double r2;
     if (path.eval == APPROXIMATE) {
         if (split.has_diffuse)
-            l = vec3_add(l, photon_estimate(m, m->maps.global, &m->global_es, s,
-                                            &split.diffuse, &frame, &r2));
+            l = vec3_add(l, global_estimate(m, s, &split, &frame, &r2));
     } else {
         if (brdf_has_diffuse(s->material))
             l = vec3_add(l, direct_illumination(m, s, &frame, rng, counters));
@@ -528,25 +547,6 @@ static struct vec3 surface_radiance(const struct j96 *m, const struct surface *s
     return l;
 }
 
-/* The global map's radiance through the diffuse part at the end of a gather ray, and *r2
- * the radius^2 it was estimated over: Eq. 3 there, or, on a Lambertian surface with a
- * record near enough, f_r,d times the record's precomputed irradiance (the departure from
- * Sec. 4.4 at the top of the file; f_r,d is evaluated towards the normal, where it is
- * rho / pi whenever it reflects towards wo at all). */
-static struct vec3 gather_end_estimate(const struct j96 *m, const struct surface *s,
-                                       const struct brdf_split *split,
-                                       const struct shading_frame *frame, double *r2)
-{
-    struct vec3 e;
-    if (m->precomputed != NULL && split->lambertian &&
-        precomputed_irradiance_at(m->precomputed, s->p, s->ng, m->scratch->nn, &e, r2)) {
-        m->scratch->stats->gather_ends_precomputed++;
-        return vec3_mul(brdf_eval(&split->diffuse, frame, s->wo, frame->n), e);
-    }
-    m->scratch->stats->gather_ends_estimated++;
-    return photon_estimate(m, m->maps.global, &m->global_es, s, &split->diffuse, frame, r2);
-}
-
 static struct vec3 gathered_radiance(const struct j96 *m, const struct surface *s, double d,
                                      struct path path, struct rng *rng,
                                      struct render_counters *counters)
@@ -556,7 +556,7 @@ static struct vec3 gathered_radiance(const struct j96 *m, const struct surface *
     double r2 = 0.0;
     struct vec3 estimate = vec3_zero();
     if (split.has_diffuse)
-        estimate = gather_end_estimate(m, s, &split, &frame, &r2);
+        estimate = global_estimate(m, s, &split, &frame, &r2);
     double reach = m->js->accurate_distance;
     if (split.has_diffuse && d * d < reach * reach * r2) {
         path.eval = CORNER;

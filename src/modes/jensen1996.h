@@ -87,9 +87,10 @@ struct jensen1996_stats {
     size_t precomputed_records;       /* records of precomputed irradiance (0 without)     */
     size_t bytes_precomputed;         /* their kd-tree and values                          */
     double seconds_precompute;        /* CPU seconds estimating their irradiance           */
-    unsigned long long gather_ends_precomputed; /* gather rays' ends read from a record    */
-    unsigned long long gather_ends_estimated;   /* gather rays' ends given a radiance
-                                                   estimate from the global map itself   */
+    unsigned long long precomputed_reads; /* approximate points (gather rays' ends among
+                                             them) read from a record                    */
+    unsigned long long global_estimates;  /* approximate points given the global map's own
+                                             radiance estimate                           */
     double seconds_cache;             /* CPU seconds of the irradiance cache's pre-pass    */
     double seconds_render;            /* CPU seconds of the final pass                     */
     unsigned long long shadow_rays;   /* shadow rays cast at accurate points               */
