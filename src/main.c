@@ -215,6 +215,10 @@ static void print_jensen1996_stats(const struct jensen1996_stats *js)
             js->cache_records, js->bytes_cache, js->gathers, js->gather_fallbacks);
     fprintf(stderr, "gather_rays=%llu\nstrata=%dx%d\n", js->gather_rays, js->strata_theta,
             js->strata_phi);
+    fprintf(stderr, "precomputed_records=%zu\nbytes_precomputed=%zu\nseconds_precompute=%.3f\n",
+            js->precomputed_records, js->bytes_precomputed, js->seconds_precompute);
+    fprintf(stderr, "precomputed_reads=%llu\nglobal_estimates=%llu\n", js->precomputed_reads,
+            js->global_estimates);
 }
 
 /* The paper's Fig. 9 (photons stored, light rays, irradiance-gradient rays, shadow rays,
@@ -325,6 +329,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         js.accurate_weight = run->o.accurate_weight;
         js.shadow_photons = run->o.shadow_photons;
         js.one_map = run->o.one_map;
+        js.precomputed_irradiance = run->o.precomputed_irradiance;
         js.report = checkpoint;
         js.work = &run->work;
         return render_jensen1996(run->scene, &run->rs, &js, want_variance, &run->counters,

@@ -18,6 +18,7 @@ void test_shapes(struct check *t); /* test_shapes.c: sphere flake, heightfield  
 void test_import(struct check *t); /* test_import.c: cone, ear clipping, NFF, OBJ */
 void test_photon(struct check *t); /* test_photon.c: photon record, kd-tree       */
 void test_trace(struct check *t);  /* test_trace.c: emission, tracing, estimates  */
+void test_precomputed(struct check *t); /* test_precomputed.c: irradiance at photons */
 void test_projection(struct check *t); /* test_projection.c: projection maps (1994) */
 void test_ppm(struct check *t);    /* test_ppm.c: progressive photon mapping      */
 void test_cache(struct check *t);  /* test_cache.c: irradiance cache, gradients   */

@@ -128,6 +128,10 @@ static const struct option_spec specs[] = {
      "cast every shadow ray instead of deciding from shadow photons", FOR_1996},
     {"--one-map", OPT_FLAG, FIELD(one_map), 0, 0, "",
      "one global map of as many photons instead of a caustic and a global map", FOR_1996},
+    {"--precomputed-irradiance", OPT_INT, FIELD(precomputed_irradiance), 0,
+     J96_MAX_PRECOMPUTED, "N",
+     "gather rays read irradiance precomputed at every N-th global photon (Christensen "
+     "1999); 0 = a radiance estimate at each ray's end, the paper's (default 0)", FOR_1996},
     {"--differential", OPT_INT, FIELD(differential_run), 0, 100000, "R",
      "stop an irradiance estimate after R additions that all raise or all lower it "
      "(differential checking); 0 = off (default 10)", FOR_1994},
@@ -265,6 +269,7 @@ static void set_defaults(struct options *o)
     o->accurate_distance = js.accurate_distance;
     o->accurate_weight = js.accurate_weight;
     o->shadow_photons = 1;
+    o->precomputed_irradiance = js.precomputed_irradiance;
     struct jensen1994_settings j94 = jensen1994_settings_default();
     o->differential_run = j94.differential_run;
     o->light_samples = j94.light_samples;

@@ -5,7 +5,8 @@
  * Pass 1 (Sec. 3) traces two photon maps: a caustic map of photons emitted towards the
  * specular objects and stored on diffuse surfaces after specular bounces only (L S+ D),
  * and a global map of photons emitted towards everything and stored at every diffuse hit,
- * with shadow photons behind each first hit (Jensen and Christensen 1995).
+ * with shadow photons behind each first hit (Jensen and Christensen 1995); it lives in
+ * jensen1996_maps.c.
  *
  * Pass 2 (Sec. 4) is distribution ray tracing of Eq. 2,
  *   Lr = int f_r L_l cos + int f_r,s (L_c + L_d) cos + int f_r,d L_c cos + int f_r,d L_d cos,
@@ -55,10 +56,10 @@
 #include "../base/alloc.h"
 #include "../photon/estimate.h"
 #include "../photon/irradiance_cache.h"
-#include "../photon/trace.h"
+#include "../photon/precomputed_irradiance.h"
 #include "../scene/brdf.h"
-#include "../scene/emit.h"
 #include "cache_pass.h"
+#include "jensen1996_maps.h"
 #include "photons.h"
 #include "surface.h"
 
@@ -78,6 +79,7 @@ struct jensen1996_settings jensen1996_settings_default(void)
     js.accurate_weight = J96_DEFAULT_ACCURATE_WEIGHT;
     js.shadow_photons = 1;
     js.one_map = 0;
+    js.precomputed_irradiance = J96_DEFAULT_PRECOMPUTED;
     js.report = NULL;
     js.work = NULL;
     return js;
@@ -86,192 +88,6 @@ struct jensen1996_settings jensen1996_settings_default(void)
 static double cpu_seconds(clock_t start)
 {
     return (double)(clock() - start) / CLOCKS_PER_SEC;
-}
-
-/* ---- Sec. 3, pass 1: constructing the photon maps ---- */
-
-/* While pass 1 builds them, owned; while pass 2 reads them, borrowed from the render's
- * global work (jensen1996.h). */
-struct photon_maps {
-    struct kdtree *global;      /* L (S|D)* D, without shadow photons                     */
-    struct kdtree *caustic;     /* L S+ D; NULL without specular objects or with one_map  */
-    struct kdtree **visibility; /* per light, its direct and shadow photons; NULL without
-                                   shadow photons                                         */
-    size_t n_lights;
-};
-
-/* Where the global trace's photons go: every photon but the shadow ones to the global
- * map, and the direct and shadow photons also to their light's visibility map, since a
- * direct photon of one light says nothing about another's shadow. */
-struct global_sink {
-    struct photon_trace global;
-    struct photon_trace *visibility; /* n_lights of them, or NULL */
-};
-
-static int store_global(void *context, const struct photon_event *e)
-{
-    struct global_sink *gs = context;
-    if (e->kind != PHOTON_SHADOW && photon_trace_store(&gs->global, MAX_PHOTONS, e) < 0)
-        return -1;
-    if (gs->visibility != NULL && (e->kind & (PHOTON_DIRECT | PHOTON_SHADOW)) &&
-        photon_trace_store(&gs->visibility[e->light], MAX_PHOTONS, e) < 0)
-        return -1;
-    return 0;
-}
-
-static struct kdtree *balance_trace(struct photon_trace *traced)
-{
-    struct kdtree *map = balance_kdtree(traced->photons, traced->n_photons); /* takes them */
-    traced->photons = NULL;
-    photon_trace_free(traced);
-    return map;
-}
-
-static struct trace_settings photon_pass(const struct render_settings *rs, uint64_t pass,
-                                         size_t n_emit, unsigned store)
-{
-    struct trace_settings ts;
-    memset(&ts, 0, sizeof ts);
-    ts.seed = rs->seed;
-    ts.pass = pass;
-    ts.n_emit = n_emit;
-    ts.max_stored = MAX_PHOTONS;
-    ts.store = store;
-    ts.max_depth = rs->max_depth;
-    ts.targets = NULL;
-    ts.projection = NULL;
-    return ts;
-}
-
-static int too_many_photons(struct error *err)
-{
-    return error_set(err, "", 0,
-                     "photon map: more than %d photons would be stored; emit fewer photons or "
-                     "follow fewer bounces (--max-depth)",
-                     MAX_PHOTONS);
-}
-
-/* The global map "emitting photons towards all objects", and the visibility maps. With
- * one_map the caustic photons' share is emitted here too, so both variants spend the
- * same photons. */
-static int build_global_map(const struct scene *scene, const struct render_settings *rs,
-                            const struct jensen1996_settings *js, struct photon_maps *maps,
-                            struct jensen1996_stats *stats, struct error *err)
-{
-    size_t n_emit = js->global_photons + (js->one_map ? js->caustic_photons : 0);
-    unsigned store = PHOTON_MAP_GLOBAL | (js->shadow_photons ? PHOTON_SHADOW : 0);
-    struct trace_settings ts = photon_pass(rs, 0, n_emit < MAX_PHOTONS ? n_emit : MAX_PHOTONS,
-                                           store);
-    struct global_sink gs;
-    memset(&gs, 0, sizeof gs);
-    gs.global.photons = NULL;
-    gs.visibility = NULL;
-    if (js->shadow_photons && scene->n_lights > 0)
-        gs.visibility = xcalloc(scene->n_lights, sizeof *gs.visibility, "visibility maps");
-    struct photon_sink sink = {store_global, &gs};
-    int failed = trace_photons_into(scene, &ts, &sink, &stats->photon_rays) < 0;
-    stats->photons_emitted += ts.n_emit;
-    maps->global = balance_trace(&gs.global);
-    stats->photons_global = maps->global->n_photons;
-    stats->bytes_global_map = kdtree_bytes(maps->global);
-    if (gs.visibility != NULL) {
-        maps->visibility = xcalloc(scene->n_lights, sizeof *maps->visibility, "visibility");
-        maps->n_lights = scene->n_lights;
-        for (size_t l = 0; l < scene->n_lights; l++) {
-            stats->photons_shadow += gs.visibility[l].n_shadow;
-            maps->visibility[l] = balance_trace(&gs.visibility[l]);
-            stats->bytes_visibility_maps += kdtree_bytes(maps->visibility[l]);
-        }
-        free(gs.visibility);
-    }
-    return failed ? too_many_photons(err) : 0;
-}
-
-/* The caustic map, "emitting photons towards the specular objects in the scene and
- * storing these as they hit diffuse surfaces"; not built when nothing is specular. */
-static int build_caustic_map(const struct scene *scene, const struct render_settings *rs,
-                             const struct jensen1996_settings *js, struct photon_maps *maps,
-                             struct jensen1996_stats *stats, struct error *err)
-{
-    if (js->one_map || js->caustic_photons == 0 || scene->n_materials == 0)
-        return 0;
-    struct bounding_sphere *spheres = xmalloc(scene->n_materials, sizeof *spheres, "targets");
-    struct emission_targets targets = {spheres, specular_targets(scene, spheres)};
-    int status = 0;
-    if (targets.n_spheres > 0) {
-        struct trace_settings ts = photon_pass(rs, 1, js->caustic_photons, PHOTON_MAP_CAUSTIC);
-        ts.targets = &targets;
-        struct photon_trace traced;
-        status = trace_photons(scene, &ts, &traced, err);
-        if (status == 0) {
-            stats->photon_rays += traced.rays;
-            stats->photons_emitted += traced.n_emitted;
-            maps->caustic = balance_trace(&traced);
-            stats->photons_caustic = maps->caustic->n_photons;
-            stats->bytes_caustic_map = kdtree_bytes(maps->caustic);
-        }
-    }
-    free(spheres);
-    return status;
-}
-
-static void photon_maps_free(struct photon_maps *maps)
-{
-    kdtree_free(maps->global);
-    kdtree_free(maps->caustic);
-    for (size_t l = 0; maps->visibility != NULL && l < maps->n_lights; l++)
-        kdtree_free(maps->visibility[l]);
-    free(maps->visibility);
-}
-
-/* Pass 1 into js->work, which is empty: maps[0] the global map, maps[1] the caustic map
- * (NULL when not built), maps[2 ..] the lights' visibility maps. */
-static int build_maps_into_work(const struct scene *scene, const struct render_settings *rs,
-                                const struct jensen1996_settings *js,
-                                struct jensen1996_stats *stats, struct error *err)
-{
-    struct photon_maps maps = {NULL, NULL, NULL, 0};
-    if (build_global_map(scene, rs, js, &maps, stats, err) < 0 ||
-        build_caustic_map(scene, rs, js, &maps, stats, err) < 0) {
-        photon_maps_free(&maps);
-        return -1;
-    }
-    global_work_add_maps(js->work, 2 + maps.n_lights);
-    js->work->maps[0] = maps.global;
-    js->work->maps[1] = maps.caustic;
-    for (size_t l = 0; l < maps.n_lights; l++)
-        js->work->maps[2 + l] = maps.visibility[l];
-    free(maps.visibility);
-    return 0;
-}
-
-/* The maps of js->work, borrowed into *maps, after checking that they are the ones this
- * scene and these settings make (a visibility map per light with shadow photons, no
- * caustic map with one_map); the stats' map figures. */
-static int borrow_maps(const struct scene *scene, const struct jensen1996_settings *js,
-                       struct photon_maps *maps, struct jensen1996_stats *stats,
-                       struct error *err)
-{
-    const struct global_work *work = js->work;
-    size_t n_lights = js->shadow_photons ? scene->n_lights : 0;
-    int fits = work->n_maps == 2 + n_lights && work->maps[0] != NULL &&
-               !(js->one_map && work->maps[1] != NULL) && work->illumination == NULL;
-    for (size_t l = 0; fits && l < n_lights; l++)
-        fits = work->maps[2 + l] != NULL;
-    if (!fits)
-        return error_set(err, "", 0, "--load-photons: the file's photon maps are not the "
-                                     "ones mode 1996 makes for this scene and these options");
-    maps->global = work->maps[0];
-    maps->caustic = work->maps[1];
-    maps->visibility = n_lights > 0 ? work->maps + 2 : NULL;
-    maps->n_lights = n_lights;
-    stats->photons_global = maps->global->n_photons;
-    stats->bytes_global_map = kdtree_bytes(maps->global);
-    stats->photons_caustic = maps->caustic != NULL ? maps->caustic->n_photons : 0;
-    stats->bytes_caustic_map = maps->caustic != NULL ? kdtree_bytes(maps->caustic) : 0;
-    for (size_t l = 0; l < n_lights; l++)
-        stats->bytes_visibility_maps += kdtree_bytes(maps->visibility[l]);
-    return 0;
 }
 
 /* ---- Sec. 4, pass 2: rendering ---- */
@@ -316,6 +132,7 @@ struct j96 {
     const struct scene *scene;
     const struct jensen1996_settings *js;
     struct photon_maps maps;
+    struct precomputed_irradiance *precomputed; /* owned; NULL with precomputed_irradiance 0 */
     struct irradiance_cache *cache; /* NULL with --cache-accuracy 0                     */
     int filling_cache;              /* the pre-pass: add records where none is usable  */
     struct estimate_settings global_es, caustic_es;
@@ -678,6 +495,26 @@ static struct vec3 soft_indirect(const struct j96 *m, const struct surface *s,
 
 /* -- a surface, term by term -- */
 
+/* The global map's radiance through the diffuse part at an approximate point (a gather
+ * ray's end among them), and *r2 the radius^2 it was estimated over: Eq. 3 there, or, on
+ * a Lambertian surface with a record near enough, f_r,d times the record's precomputed
+ * irradiance (the departure from Sec. 4.4 at the top of the file; f_r,d is evaluated
+ * towards the normal, where it is rho / pi whenever it reflects towards wo at all). */
+static struct vec3 global_estimate(const struct j96 *m, const struct surface *s,
+                                       const struct brdf_split *split,
+                                       const struct shading_frame *frame, double *r2)
+{
+    struct vec3 e;
+    if (m->precomputed != NULL && split->lambertian &&
+        precomputed_irradiance_at(m->precomputed, s->p, s->ng, m->scratch->nn, &e, r2)) {
+        m->scratch->stats->precomputed_reads++;
+        return vec3_mul(brdf_eval(&split->diffuse, frame, s->wo, frame->n), e);
+    }
+    m->scratch->stats->global_estimates++;
+    return photon_estimate(m, m->maps.global, &m->global_es, s, &split->diffuse, frame, r2);
+}
+
+
 /* Radiance leaving s towards s->wo, Eq. 2 evaluated as path.eval says. */
 static struct vec3 surface_radiance(const struct j96 *m, const struct surface *s,
                                     struct path path, struct rng *rng,
@@ -689,8 +526,7 @@ static struct vec3 surface_radiance(const struct j96 *m, const struct surface *s
     double r2;
     if (path.eval == APPROXIMATE) {
         if (split.has_diffuse)
-            l = vec3_add(l, photon_estimate(m, m->maps.global, &m->global_es, s,
-                                            &split.diffuse, &frame, &r2));
+            l = vec3_add(l, global_estimate(m, s, &split, &frame, &r2));
     } else {
         if (brdf_has_diffuse(s->material))
             l = vec3_add(l, direct_illumination(m, s, &frame, rng, counters));
@@ -720,8 +556,7 @@ static struct vec3 gathered_radiance(const struct j96 *m, const struct surface *
     double r2 = 0.0;
     struct vec3 estimate = vec3_zero();
     if (split.has_diffuse)
-        estimate = photon_estimate(m, m->maps.global, &m->global_es, s, &split.diffuse,
-                                   &frame, &r2);
+        estimate = global_estimate(m, s, &split, &frame, &r2);
     double reach = m->js->accurate_distance;
     if (split.has_diffuse && d * d < reach * reach * r2) {
         path.eval = CORNER;
@@ -822,7 +657,7 @@ static void scratch_free(struct scratch *sc)
 
 /* The mode's settings from the scene and the user's. */
 static void set_up(struct j96 *m, const struct scene *scene, const struct render_settings *rs,
-                   const struct jensen1996_settings *js)
+                   const struct jensen1996_settings *js, struct jensen1996_stats *stats)
 {
     struct aabb box = geometry_bounds(scene->geometry);
     m->scene = scene;
@@ -846,6 +681,14 @@ static void set_up(struct j96 *m, const struct scene *scene, const struct render
     m->cache = NULL;
     if (js->cache_accuracy > 0 && isfinite(box.lo.x))
         m->cache = irradiance_cache_create(box, js->cache_accuracy);
+    m->precomputed = NULL;
+    if (m->maps.records != NULL) {
+        clock_t start = clock();
+        struct irradiance_settings is = {m->global_es.k, m->global_es.max_r2, 0, 0};
+        m->precomputed = precompute_irradiance(m->maps.global, m->maps.records, &is);
+        stats->seconds_precompute = cpu_seconds(start);
+        stats->bytes_precomputed += precomputed_irradiance_bytes(m->precomputed);
+    }
 }
 
 struct render_result render_jensen1996(const struct scene *scene,
@@ -865,13 +708,13 @@ struct render_result render_jensen1996(const struct scene *scene,
     js = &with_work;
     int loaded = js->work->n_maps > 0;
     clock_t start = clock();
-    if ((!loaded && build_maps_into_work(scene, rs, js, stats, err) < 0) ||
-        borrow_maps(scene, js, &m.maps, stats, err) < 0) {
+    if ((!loaded && build_photon_maps(scene, rs, js, stats, err) < 0) ||
+        borrow_photon_maps(scene, js, &m.maps, stats, err) < 0) {
         global_work_free(&own_work);
         return result;
     }
+    set_up(&m, scene, rs, js, stats);
     stats->seconds_photons = cpu_seconds(start);
-    set_up(&m, scene, rs, js);
     stats->strata_theta = m.cached.theta;
     stats->strata_phi = m.cached.phi;
     m.scratch = scratch_create(&m, stats);
@@ -898,6 +741,7 @@ struct render_result render_jensen1996(const struct scene *scene,
     result.seconds += before;
     scratch_free(m.scratch);
     irradiance_cache_free(m.cache);
+    precomputed_irradiance_free(m.precomputed);
     global_work_free(&own_work); /* m.maps borrowed from it */
     return result;
 }

@@ -28,6 +28,12 @@
 #define J96_DEFAULT_CACHE_ACCURACY 0.15    /* --cache-accuracy: Ward's a                  */
 #define J96_DEFAULT_ACCURATE_DISTANCE 1.0  /* --accurate-distance (see jensen1996.c)      */
 #define J96_DEFAULT_ACCURATE_WEIGHT 0.1    /* --accurate-weight (see jensen1996.c)        */
+#define J96_DEFAULT_PRECOMPUTED 0          /* --precomputed-irradiance: off, the paper's
+                                              estimate at each gather ray's end, until
+                                              the defaults are re-measured with it (4,
+                                              Christensen 1999's choice, is the setting
+                                              to try)                                  */
+#define J96_MAX_PRECOMPUTED 1000000        /* documented limit on --precomputed-irradiance */
 #define J96_VISIBILITY_PHOTONS 16          /* photons that decide a light's visibility    */
 #define J96_MAX_GATHER_RAYS 65536          /* documented limit on --gather-rays           */
 
@@ -54,13 +60,19 @@ struct jensen1996_settings {
                                  agree (Jensen & Christensen 1995); 0: a ray every time  */
     int one_map;              /* 1: one global map of global + caustic photons, caustics
                                  from its caustic photons (the comparison of Sec. 3)     */
+    int precomputed_irradiance; /* N >= 1: irradiance precomputed at every N-th photon of
+                                 the global map, read where gather rays end on Lambertian
+                                 surfaces (Christensen 1999; a departure, jensen1996.c);
+                                 0: the paper's radiance estimate at every ray's end,
+                                 0..J96_MAX_PRECOMPUTED                                  */
     const struct checkpoint *report; /* borrowed or NULL: rows after 1, 2, 4, ... samples
                                  per pixel, work = photons emitted + gather rays so far   */
     struct global_work *work; /* NULL: pass 1 and the cache's pre-pass run and are released
                                  here; else, empty, it receives their work (maps[0] the
                                  global map, maps[1] the caustic map or NULL, maps[2 ..]
-                                 each light's visibility map with shadow photons, and the
-                                 cache's records), or, full, holds it to use instead
+                                 each light's visibility map with shadow photons, then
+                                 the records of precomputed irradiance when N >= 1, and
+                                 the cache's records), or, full, holds it to use instead
                                  (photon/global_work.h)                                  */
 };
 
@@ -72,7 +84,15 @@ struct jensen1996_stats {
     size_t bytes_global_map, bytes_caustic_map, bytes_visibility_maps;
     size_t photons_emitted;           /* for both maps                                     */
     unsigned long long photon_rays;   /* rays cast tracing photons                         */
-    double seconds_photons;           /* CPU seconds tracing and balancing the maps        */
+    double seconds_photons;           /* CPU seconds tracing and balancing the maps, and
+                                         precomputing irradiance                          */
+    size_t precomputed_records;       /* records of precomputed irradiance (0 without)     */
+    size_t bytes_precomputed;         /* their kd-tree and values                          */
+    double seconds_precompute;        /* CPU seconds estimating their irradiance           */
+    unsigned long long precomputed_reads; /* approximate points (gather rays' ends among
+                                             them) read from a record                    */
+    unsigned long long global_estimates;  /* approximate points given the global map's own
+                                             radiance estimate                           */
     double seconds_cache;             /* CPU seconds of the irradiance cache's pre-pass    */
     double seconds_final_pass;        /* CPU seconds of the final pass                     */
     unsigned long long shadow_rays;   /* shadow rays cast at accurate points               */

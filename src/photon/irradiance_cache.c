@@ -371,6 +371,9 @@ struct weighted_sum {
 static void add_record(struct weighted_sum *ws, const struct irradiance_record *ri)
 {
     struct vec3 d = vec3_sub(ws->p, ri->p);
+    double reach = ws->a * ri->r;
+    if (!(vec3_length2(d) < reach * reach))
+        return; /* epsilon_i >= |p - p_i| / R_i >= a: the test below fails; cheaper here */
     /* Ward 1988: d_i = (p - p_i) . (n + n_i) / 2 < 0 is "in front"; see CACHE_FRONT_TOLERANCE */
     if (vec3_dot(d, vec3_add(ws->n, ri->n)) / 2 < -CACHE_FRONT_TOLERANCE * ri->r)
         return;

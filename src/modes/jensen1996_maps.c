@@ -1,0 +1,209 @@
+/*
+ * modes/jensen1996_maps.c -- pass 1 of `--mode 1996` (Jensen 1996, Sec. 3): constructing
+ * the photon maps (jensen1996_maps.h).
+ *
+ * The global trace emits photons "towards all objects" and hands each stored photon to
+ * one sink that sends it to the global map and, when it is a direct or shadow photon,
+ * to its light's visibility map; the caustic trace emits towards bounding spheres of the
+ * specular objects. Each trace is balanced into a kd-tree (photon/kdtree.h) as soon as it
+ * is complete, and the maps go to the render's global work, which owns them from then on.
+ */
+#include "jensen1996_maps.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "../base/alloc.h"
+#include "../photon/trace.h"
+#include "../scene/emit.h"
+
+/* Where the global trace's photons go: every photon but the shadow ones to the global
+ * map, and the direct and shadow photons also to their light's visibility map, since a
+ * direct photon of one light says nothing about another's shadow. Every step-th photon
+ * of the global map is also a record of precomputed irradiance (Christensen 1999), kept
+ * with the surface normal where it landed in place of its direction. */
+struct global_sink {
+    struct photon_trace global;
+    struct photon_trace *visibility; /* n_lights of them, or NULL */
+    struct photon_trace records;     /* empty when step is 0 */
+    size_t step;                     /* js->precomputed_irradiance */
+};
+
+static int store_record(struct global_sink *gs, const struct photon_event *e)
+{
+    if (gs->step == 0 || (gs->global.n_photons - 1) % gs->step != 0)
+        return 0;
+    struct photon_event record = *e;
+    record.wi = e->normal;
+    record.power = vec3_zero(); /* unused: the record's value is its irradiance */
+    return photon_trace_store(&gs->records, MAX_PHOTONS, &record);
+}
+
+static int store_global(void *context, const struct photon_event *e)
+{
+    struct global_sink *gs = context;
+    if (e->kind != PHOTON_SHADOW &&
+        (photon_trace_store(&gs->global, MAX_PHOTONS, e) < 0 || store_record(gs, e) < 0))
+        return -1;
+    if (gs->visibility != NULL && (e->kind & (PHOTON_DIRECT | PHOTON_SHADOW)) &&
+        photon_trace_store(&gs->visibility[e->light], MAX_PHOTONS, e) < 0)
+        return -1;
+    return 0;
+}
+
+static struct kdtree *balance_trace(struct photon_trace *traced)
+{
+    struct kdtree *map = balance_kdtree(traced->photons, traced->n_photons); /* takes them */
+    traced->photons = NULL;
+    photon_trace_free(traced);
+    return map;
+}
+
+static struct trace_settings photon_pass(const struct render_settings *rs, uint64_t pass,
+                                         size_t n_emit, unsigned store)
+{
+    struct trace_settings ts;
+    memset(&ts, 0, sizeof ts);
+    ts.seed = rs->seed;
+    ts.pass = pass;
+    ts.n_emit = n_emit;
+    ts.max_stored = MAX_PHOTONS;
+    ts.store = store;
+    ts.max_depth = rs->max_depth;
+    ts.targets = NULL;
+    ts.projection = NULL;
+    return ts;
+}
+
+static int too_many_photons(struct error *err)
+{
+    return error_set(err, "", 0,
+                     "photon map: more than %d photons would be stored; emit fewer photons or "
+                     "follow fewer bounces (--max-depth)",
+                     MAX_PHOTONS);
+}
+
+/* The global map "emitting photons towards all objects", and the visibility maps. With
+ * one_map the caustic photons' share is emitted here too, so both variants spend the
+ * same photons. */
+static int build_global_map(const struct scene *scene, const struct render_settings *rs,
+                            const struct jensen1996_settings *js, struct photon_maps *maps,
+                            struct jensen1996_stats *stats, struct error *err)
+{
+    size_t n_emit = js->global_photons + (js->one_map ? js->caustic_photons : 0);
+    unsigned store = PHOTON_MAP_GLOBAL | (js->shadow_photons ? PHOTON_SHADOW : 0);
+    struct trace_settings ts = photon_pass(rs, 0, n_emit < MAX_PHOTONS ? n_emit : MAX_PHOTONS,
+                                           store);
+    struct global_sink gs;
+    memset(&gs, 0, sizeof gs);
+    gs.global.photons = NULL;
+    gs.visibility = NULL;
+    gs.records.photons = NULL;
+    gs.step = (size_t)js->precomputed_irradiance;
+    if (js->shadow_photons && scene->n_lights > 0)
+        gs.visibility = xcalloc(scene->n_lights, sizeof *gs.visibility, "visibility maps");
+    struct photon_sink sink = {store_global, &gs};
+    int failed = trace_photons_into(scene, &ts, &sink, &stats->photon_rays) < 0;
+    stats->photons_emitted += ts.n_emit;
+    maps->global = balance_trace(&gs.global);
+    stats->photons_global = maps->global->n_photons;
+    maps->records = gs.step > 0 ? balance_trace(&gs.records) : NULL;
+    if (gs.visibility != NULL) {
+        maps->visibility = xcalloc(scene->n_lights, sizeof *maps->visibility, "visibility");
+        maps->n_lights = scene->n_lights;
+        for (size_t l = 0; l < scene->n_lights; l++) {
+            stats->photons_shadow += gs.visibility[l].n_shadow;
+            maps->visibility[l] = balance_trace(&gs.visibility[l]);
+        }
+        free(gs.visibility);
+    }
+    return failed ? too_many_photons(err) : 0;
+}
+
+/* The caustic map, "emitting photons towards the specular objects in the scene and
+ * storing these as they hit diffuse surfaces"; not built when nothing is specular. */
+static int build_caustic_map(const struct scene *scene, const struct render_settings *rs,
+                             const struct jensen1996_settings *js, struct photon_maps *maps,
+                             struct jensen1996_stats *stats, struct error *err)
+{
+    if (js->one_map || js->caustic_photons == 0 || scene->n_materials == 0)
+        return 0;
+    struct bounding_sphere *spheres = xmalloc(scene->n_materials, sizeof *spheres, "targets");
+    struct emission_targets targets = {spheres, specular_targets(scene, spheres)};
+    int status = 0;
+    if (targets.n_spheres > 0) {
+        struct trace_settings ts = photon_pass(rs, 1, js->caustic_photons, PHOTON_MAP_CAUSTIC);
+        ts.targets = &targets;
+        struct photon_trace traced;
+        status = trace_photons(scene, &ts, &traced, err);
+        if (status == 0) {
+            stats->photon_rays += traced.rays;
+            stats->photons_emitted += traced.n_emitted;
+            maps->caustic = balance_trace(&traced);
+            stats->photons_caustic = maps->caustic->n_photons;
+        }
+    }
+    free(spheres);
+    return status;
+}
+
+static void photon_maps_free(struct photon_maps *maps)
+{
+    kdtree_free(maps->global);
+    kdtree_free(maps->records);
+    kdtree_free(maps->caustic);
+    for (size_t l = 0; maps->visibility != NULL && l < maps->n_lights; l++)
+        kdtree_free(maps->visibility[l]);
+    free(maps->visibility);
+}
+
+int build_photon_maps(const struct scene *scene, const struct render_settings *rs,
+                      const struct jensen1996_settings *js, struct jensen1996_stats *stats,
+                      struct error *err)
+{
+    struct photon_maps maps = {NULL, NULL, NULL, 0, NULL};
+    if (build_global_map(scene, rs, js, &maps, stats, err) < 0 ||
+        build_caustic_map(scene, rs, js, &maps, stats, err) < 0) {
+        photon_maps_free(&maps);
+        return -1;
+    }
+    global_work_add_maps(js->work, 2 + maps.n_lights + (maps.records != NULL));
+    js->work->maps[0] = maps.global;
+    js->work->maps[1] = maps.caustic;
+    for (size_t l = 0; l < maps.n_lights; l++)
+        js->work->maps[2 + l] = maps.visibility[l];
+    if (maps.records != NULL)
+        js->work->maps[2 + maps.n_lights] = maps.records;
+    free(maps.visibility);
+    return 0;
+}
+
+int borrow_photon_maps(const struct scene *scene, const struct jensen1996_settings *js,
+                       struct photon_maps *maps, struct jensen1996_stats *stats,
+                       struct error *err)
+{
+    const struct global_work *work = js->work;
+    size_t n_lights = js->shadow_photons ? scene->n_lights : 0;
+    size_t n_records = js->precomputed_irradiance > 0;
+    int fits = work->n_maps == 2 + n_lights + n_records && work->maps[0] != NULL &&
+               !(js->one_map && work->maps[1] != NULL) && work->illumination == NULL;
+    for (size_t l = 0; fits && l < n_lights + n_records; l++)
+        fits = work->maps[2 + l] != NULL;
+    if (!fits)
+        return error_set(err, "", 0, "--load-photons: the file's photon maps are not the "
+                                     "ones mode 1996 makes for this scene and these options");
+    maps->global = work->maps[0];
+    maps->caustic = work->maps[1];
+    maps->visibility = n_lights > 0 ? work->maps + 2 : NULL;
+    maps->n_lights = n_lights;
+    maps->records = n_records > 0 ? work->maps[2 + n_lights] : NULL;
+    stats->photons_global = maps->global->n_photons;
+    stats->bytes_global_map = kdtree_bytes(maps->global);
+    stats->photons_caustic = maps->caustic != NULL ? maps->caustic->n_photons : 0;
+    stats->bytes_caustic_map = maps->caustic != NULL ? kdtree_bytes(maps->caustic) : 0;
+    for (size_t l = 0; l < n_lights; l++)
+        stats->bytes_visibility_maps += kdtree_bytes(maps->visibility[l]);
+    stats->precomputed_records = maps->records != NULL ? maps->records->n_photons : 0;
+    stats->bytes_precomputed = maps->records != NULL ? kdtree_bytes(maps->records) : 0;
+    return 0;
+}
