@@ -59,6 +59,7 @@
 #include "../photon/precomputed_irradiance.h"
 #include "../scene/brdf.h"
 #include "cache_pass.h"
+#include "gather_plan.h"
 #include "jensen1996_maps.h"
 #include "photons.h"
 #include "surface.h"
@@ -119,13 +120,6 @@ struct scratch {
     struct stratum_sample *strata;   /* per stratum: what its rays found                */
     struct vec3 *reflected;          /* per stratum: mean f_r,d L (non-Lambertian)      */
     struct jensen1996_stats *stats;
-};
-
-/* A final gather's size: m x n strata (Ward and Heckbert's), one ray each, and the rest
- * of its rays spread by importance. */
-struct gather_plan {
-    int theta, phi; /* m rings, n sectors */
-    int rays;       /* >= theta * phi     */
 };
 
 struct j96 {
@@ -354,35 +348,6 @@ static double stratum_importance(const struct j96 *m, const struct gather_plan *
     return total;
 }
 
-/* Every stratum gets one ray, so the estimate stays unbiased where photons are missing
- * and the gradients see every stratum; the other rays go in proportion to importance,
- * rounded by largest remainder (ties to the lower index, so the split is deterministic),
- * or evenly where no photon arrived. Each stratum's mean is then an unbiased estimate of
- * its own integral: this is importance sampling by stratified allocation. */
-static void allot_rays(const struct j96 *m, const struct gather_plan *plan, double total)
-{
-    int mn = plan->theta * plan->phi;
-    int extra = plan->rays - mn;
-    int *rays_in = m->scratch->rays_in;
-    double *share = m->scratch->importance;
-    int given = 0;
-    for (int i = 0; i < mn; i++) {
-        double exact = total > 0 ? extra * share[i] / total : (double)extra / mn;
-        rays_in[i] = (int)exact;
-        share[i] = exact - rays_in[i]; /* the remainder */
-        given += rays_in[i];
-    }
-    for (; given < extra; given++) {
-        int best = 0;
-        for (int i = 1; i < mn; i++)
-            best = share[i] > share[best] ? i : best;
-        rays_in[best]++;
-        share[best] = -1.0;
-    }
-    for (int i = 0; i < mn; i++)
-        rays_in[i]++;
-}
-
 /* The final gather at s: the strata's mean radiances and distances (and, for a diffuse
  * part that is not Lambertian, the strata's mean f_r,d L). */
 static void final_gather(const struct j96 *m, const struct gather_plan *plan,
@@ -391,7 +356,8 @@ static void final_gather(const struct j96 *m, const struct gather_plan *plan,
                          struct render_counters *counters)
 {
     struct scratch *sc = m->scratch;
-    allot_rays(m, plan, stratum_importance(m, plan, s, diffuse, frame));
+    allot_rays(plan, stratum_importance(m, plan, s, diffuse, frame), sc->importance,
+               sc->rays_in);
     struct path gather = path;
     gather.depth = path.depth + 1;
     gather.rule = EMISSION_SKIP_ALL;
@@ -597,20 +563,6 @@ static struct vec3 j96_radiance(const void *mode, struct ray ray, struct rng *rn
 }
 
 /* ---- putting it together ---- */
-
-/* Ward and Heckbert's strata for a gather of n rays: half the rays make the strata (one
- * each), m x n with n about pi m as in their paper; the other half follow importance. */
-static struct gather_plan gather_plan_of(int gather_rays)
-{
-    struct gather_plan plan;
-    int strata = gather_rays / 2 > 1 ? gather_rays / 2 : 1;
-    plan.theta = (int)floor(sqrt(strata / PI) + 0.5);
-    plan.theta = plan.theta < 1 ? 1 : plan.theta;
-    plan.phi = strata / plan.theta;
-    plan.phi = plan.phi < 1 ? 1 : plan.phi;
-    plan.rays = gather_rays > 2 ? gather_rays : 2;
-    return plan;
-}
 
 /* A checkpoint that adds the photon pass's and the pre-pass's seconds to the render's,
  * and counts work as photons emitted plus gather rays so far. */
