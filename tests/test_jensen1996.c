@@ -190,6 +190,7 @@ static void test_shadow_photons(struct check *t)
     struct j96_case c = small_case("scenes/cornell.scene", 64, 20000, 32);
     c.spp = 4;
     c.window = window;
+    c.js.shadow_photons = 1;
     struct j96_run with = render_case(&c);
     c.js.shadow_photons = 0;
     struct j96_run without = render_case(&c);

@@ -100,13 +100,15 @@ static const struct option_spec specs[] = {
      "accurately (default 1)"},
     {"--accurate-weight", OPT_REAL, FIELD(accurate_weight), 0, 1, "W",
      "1996: rays with throughput below W are evaluated approximately (default 0.1)"},
+    {"--shadow-photons", OPT_FLAG, FIELD(shadow_photons), 0, 0, "",
+     "1996: decide a light's visibility from shadow photons where they agree (the paper's)"},
     {"--no-shadow-photons", OPT_FLAG, FIELD(shadow_photons), 0, 0, "",
-     "1996: cast every shadow ray instead of deciding from shadow photons"},
+     "1996: cast every shadow ray instead (the default)"},
     {"--one-map", OPT_FLAG, FIELD(one_map), 0, 0, "",
      "1996: one global map of as many photons instead of a caustic and a global map"},
     {"--precomputed-irradiance", OPT_INT, FIELD(precomputed_irradiance), 0, J96_MAX_PRECOMPUTED,
      "N", "1996: gather rays read irradiance precomputed at every N-th global photon "
-     "(Christensen 1999); 0 = a radiance estimate at each ray's end, the paper's (default 4)"},
+     "(Christensen 1999); 0 = a radiance estimate at each ray's end, the paper's (default 16)"},
     {"--differential", OPT_INT, FIELD(differential_run), 0, 100000, "R",
      "1994: stop an irradiance estimate after R additions that all raise or all lower it "
      "(differential checking); 0 = off (default 10)"},
@@ -200,7 +202,7 @@ static void set_defaults(struct options *o)
     o->cache_accuracy = js.cache_accuracy;
     o->accurate_distance = js.accurate_distance;
     o->accurate_weight = js.accurate_weight;
-    o->shadow_photons = 1;
+    o->shadow_photons = js.shadow_photons;
     o->precomputed_irradiance = js.precomputed_irradiance;
     struct jensen1994_settings j94 = jensen1994_settings_default();
     o->differential_run = j94.differential_run;

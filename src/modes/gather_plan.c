@@ -6,8 +6,6 @@
 
 #include <math.h>
 
-#include "../base/vec3.h"
-
 struct gather_plan gather_plan_of(int gather_rays)
 {
     struct gather_plan plan;
@@ -40,4 +38,13 @@ void allot_rays(const struct gather_plan *plan, double total, double *share, int
     }
     for (int i = 0; i < mn; i++)
         rays_in[i]++;
+}
+
+struct vec3 strata_integral(const struct gather_plan *plan, const struct vec3 *mean)
+{
+    int mn = plan->theta * plan->phi;
+    struct vec3 sum = vec3_zero();
+    for (int i = 0; i < mn; i++)
+        sum = vec3_add(sum, mean[i]);
+    return vec3_scale(sum, PI / mn);
 }

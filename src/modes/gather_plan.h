@@ -7,6 +7,8 @@
 #ifndef PHOTON_GATHER_PLAN_H
 #define PHOTON_GATHER_PLAN_H
 
+#include "../base/vec3.h"
+
 /* A final gather's size: m x n strata (Ward and Heckbert's), one ray each, and the rest
  * of its rays spread by importance. */
 struct gather_plan {
@@ -27,5 +29,10 @@ struct gather_plan gather_plan_of(int gather_rays);
  * stratum's mean is then an unbiased estimate of its own integral: importance sampling
  * by stratified allocation. share[] is used as scratch and left undefined. */
 void allot_rays(const struct gather_plan *plan, double total, double *share, int *rays_in);
+
+/* pi / (m n) times the sum of mean[0 .. m n - 1], each stratum's mean of what its rays
+ * found: every stratum spans a projected solid angle of pi / (m n), so this is the
+ * integral over the hemisphere of the mean times cos (the irradiance, for mean L). */
+struct vec3 strata_integral(const struct gather_plan *plan, const struct vec3 *mean);
 
 #endif
