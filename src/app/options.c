@@ -42,7 +42,7 @@ static const struct option_spec specs[] = {
      "output image; FILE.ppm is written beside it (default: SCENE's name, .pfm)"},
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)"},
     {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N",
-     "camera samples per pixel (default 16; 1994 and 1996: 64; 2008: eye rays per pixel, "
+     "camera samples per pixel (default 16; 1994: 64; 1996: 128; 2008: eye rays per pixel, "
      "default 16)"},
     {"--specular-spp", OPT_INT, FIELD(specular_spp), 1, MAX_SPP, "N",
      "camera samples of a pixel in which the camera sees a light through mirrors or glass, "
