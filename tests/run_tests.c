@@ -20,7 +20,8 @@ static const struct room rooms[] = {
     {"plot", test_plot},         {"geom", test_geom},           {"scene", test_scene},
     {"brdf", test_brdf},         {"shapes", test_shapes},       {"import", test_import},
     {"photon", test_photon},     {"projection", test_projection}, {"trace", test_trace},
-    {"precomputed", test_precomputed}, {"ppm", test_ppm},           {"cache", test_cache},         {"render", test_render},
+    {"precomputed", test_precomputed}, {"ppm", test_ppm},         {"cache", test_cache},
+    {"render", test_render},
     {"pt", test_pt},             {"jensen1994", test_jensen1994}, {"jensen1996", test_jensen1996},
     {"report", test_report},     {"merge", test_merge},         {"cli", test_cli},
 };

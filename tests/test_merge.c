@@ -66,7 +66,8 @@ static const char *const other_pixels_options[] = {
     "--adaptive 0.1", "--max-depth 3", "--photons 7", "--gather 9", "--max-radius 2", "--cone 2",
     "--caustic-photons 5", "--caustic-gather 5", "--gather-rays 9", "--glossy-rays 2",
     "--cache-accuracy 0.2", "--accurate-distance 2", "--accurate-weight 0.2",
-    "--no-shadow-photons --shadow-photons", "--one-map", "--precomputed-irradiance 2", "--differential 3", "--light-samples 9",
+    "--no-shadow-photons --shadow-photons", "--one-map", "--precomputed-irradiance 2",
+    "--differential 3", "--light-samples 9",
     "--irradiance-store illumination", "--no-projection-maps", "--passes 3",
     "--photons-per-pass 7", "--alpha 0.5", "--radius 2",
 };
