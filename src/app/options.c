@@ -62,7 +62,7 @@ static const struct option_spec specs[] = {
      "writes FILE.ppm in place of the PNG (default: SCENE's name)", FOR_ALL},
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)", FOR_ALL},
     {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N",
-     "camera samples per pixel (default 16; 1994 and 1996: 64; 2008: eye rays per pixel, "
+     "camera samples per pixel (default 16; 1994: 64; 1996: 128; 2008: eye rays per pixel, "
      "default 16)", FOR_ALL},
     {"--specular-spp", OPT_INT, FIELD(specular_spp), 1, MAX_SPP, "N",
      "camera samples of a pixel in which the camera sees a light through mirrors or glass, "
@@ -124,14 +124,17 @@ static const struct option_spec specs[] = {
      "accurately (default 1)", FOR_1996},
     {"--accurate-weight", OPT_REAL, FIELD(accurate_weight), 0, 1, "W",
      "rays with throughput below W are evaluated approximately (default 0.1)", FOR_1996},
+    {"--shadow-photons", OPT_FLAG, FIELD(shadow_photons), 0, 0, "",
+     "decide a light's visibility from shadow photons where they agree (the paper's)",
+     FOR_1996},
     {"--no-shadow-photons", OPT_FLAG, FIELD(shadow_photons), 0, 0, "",
-     "cast every shadow ray instead of deciding from shadow photons", FOR_1996},
+     "cast every shadow ray instead (the default)", FOR_1996},
     {"--one-map", OPT_FLAG, FIELD(one_map), 0, 0, "",
      "one global map of as many photons instead of a caustic and a global map", FOR_1996},
     {"--precomputed-irradiance", OPT_INT, FIELD(precomputed_irradiance), 0,
      J96_MAX_PRECOMPUTED, "N",
      "gather rays read irradiance precomputed at every N-th global photon (Christensen "
-     "1999); 0 = a radiance estimate at each ray's end, the paper's (default 0)", FOR_1996},
+     "1999); 0 = a radiance estimate at each ray's end, the paper's (default 16)", FOR_1996},
     {"--differential", OPT_INT, FIELD(differential_run), 0, 100000, "R",
      "stop an irradiance estimate after R additions that all raise or all lower it "
      "(differential checking); 0 = off (default 10)", FOR_1994},
@@ -268,7 +271,7 @@ static void set_defaults(struct options *o)
     o->cache_accuracy = js.cache_accuracy;
     o->accurate_distance = js.accurate_distance;
     o->accurate_weight = js.accurate_weight;
-    o->shadow_photons = 1;
+    o->shadow_photons = js.shadow_photons;
     o->precomputed_irradiance = js.precomputed_irradiance;
     struct jensen1994_settings j94 = jensen1994_settings_default();
     o->differential_run = j94.differential_run;
