@@ -28,7 +28,7 @@ static const struct preset presets[] = {
     {MODE_PT, QUALITY_PREVIEW, "--spp 4"},
     {MODE_PT, QUALITY_REFERENCE, "--spp 4096"},
     {MODE_PHOTONS, QUALITY_PREVIEW, "--spp 4"},
-    {MODE_PHOTONS, QUALITY_REFERENCE, "--photons 4000000 --gather 400 --spp 64"},
+    {MODE_PHOTONS, QUALITY_REFERENCE, "--photons 8000000 --gather 400"},
     {MODE_JENSEN1994, QUALITY_PREVIEW,
      "--photons 200000 --gather-rays 64 --cache-accuracy 0.3 --spp 8 --specular-spp 8"},
     {MODE_JENSEN1994, QUALITY_REFERENCE, "--photons 8000000 --gather-rays 1024"},
@@ -36,7 +36,8 @@ static const struct preset presets[] = {
      "--photons 200000 --caustic-photons 50000 --gather-rays 32 --cache-accuracy 0.3 "
      "--spp 8 --specular-spp 8"},
     {MODE_JENSEN1996, QUALITY_REFERENCE,
-     "--photons 8000000 --caustic-photons 2000000 --gather-rays 1024"},
+     "--photons 8000000 --caustic-photons 2000000 --gather-rays 1024 --spp 256 "
+     "--specular-spp 4096"},
     {MODE_PPM2008, QUALITY_PREVIEW, "--passes 8 --spp 4"},
     {MODE_PPM2008, QUALITY_REFERENCE, "--passes 256"},
 };
