@@ -595,9 +595,9 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
  * speed, so tile.h records it apart. --quality is here because the options its words set
  * are hashed themselves: a preset and its words spelled out make the same tiles. */
 static const char *const outside_pixels[] = {
-    "--quality", "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure",
-    "--reference", "--report", "--variance", "--checkpoint", "--time-limit", "--save-photons",
-    "--load-photons",
+    "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure", "--reference",
+    "--report", "--variance", "--checkpoint", "--time-limit", "--save-photons",
+    "--load-photons", "--quality",
 };
 
 static int changes_pixels(const struct option_spec *spec)
