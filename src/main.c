@@ -299,6 +299,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         ps.gather = (size_t)run->o.gather;
         ps.max_radius = run->o.max_radius;
         ps.cone_k = run->o.cone;
+        ps.count_rim = run->o.count_rim;
         ps.work = &run->work;
         return render_photons(run->scene, &run->rs, &ps, want_variance, checkpoint,
                               &run->counters, &run->photon_stats, err);
@@ -307,6 +308,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         j94.gather = (size_t)run->o.gather;
         j94.max_radius = run->o.max_radius;
         j94.differential_run = run->o.differential_run;
+        j94.count_rim = run->o.count_rim;
         j94.gather_rays = run->o.gather_rays;
         j94.cache_accuracy = run->o.cache_accuracy;
         j94.light_samples = run->o.light_samples;
@@ -322,6 +324,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         js.caustic_gather = (size_t)run->o.caustic_gather;
         js.max_radius = run->o.max_radius;
         js.cone_k = run->o.cone;
+        js.count_rim = run->o.count_rim;
         js.gather_rays = run->o.gather_rays;
         js.glossy_rays = run->o.glossy_rays;
         js.cache_accuracy = run->o.cache_accuracy;

@@ -62,10 +62,12 @@ static const char *const same_pixels_options[] = {
     "-o build/x.pfm", "--crop 0 0 4 4", "--time-limit 5", "--reference r.pfm --report r.csv",
     "--variance v.pfm", "--mode 2008 --checkpoint 3", "--exposure 2", "--stats", "--progress",
     "--no-progress", "--save-photons w.work", "--load-photons w.work", "--quality default",
+    "--mode pt --paper", "--mode 1996 --no-shadow-photons" /* the default */,
 };
 static const char *const other_pixels_options[] = {
     "--mode pt", "--seed 2", "--spp 3", "--specular-spp 40", "--width 100", "--height 100",
     "--adaptive 0.1", "--max-depth 3", "--photons 7", "--gather 9", "--max-radius 2", "--cone 2",
+    "--rim-photon",
     "--mode 1996 --caustic-photons 5", "--mode 1996 --caustic-gather 5",
     "--mode 1996 --gather-rays 9", "--mode 1996 --glossy-rays 2",
     "--mode 1996 --cache-accuracy 0.2", "--mode 1996 --accurate-distance 2",

@@ -111,7 +111,7 @@ static void test_values_match_linear_scan(struct check *t)
     struct photon *photons = corner_photons(0);
     struct kdtree *map = balance_kdtree(corner_photons(0), N_PHOTONS);
     struct kdtree *records = balance_kdtree(corner_photons(1), N_PHOTONS / RECORD_STEP);
-    struct irradiance_settings is = {K, MAX_R2, 0, 0};
+    struct irradiance_settings is = {K, MAX_R2, 0, 0, 0};
     struct precomputed_irradiance *pi = precompute_irradiance(map, records, &is);
     struct scan *order = xmalloc(N_PHOTONS, sizeof *order, "test scan");
     size_t full = 0, sparse = 0, bad = 0;
@@ -187,7 +187,7 @@ static void test_lookup_matches_linear_scan(struct check *t)
     struct kdtree *map = balance_kdtree(corner_photons(0), N_PHOTONS);
     struct kdtree *records = balance_kdtree(corner_photons(1), N_PHOTONS / RECORD_STEP);
     struct kdtree *none = balance_kdtree(NULL, 0);
-    struct irradiance_settings is = {K, MAX_R2, 0, 0};
+    struct irradiance_settings is = {K, MAX_R2, 0, 0, 0};
     struct precomputed_irradiance *pi = precompute_irradiance(map, records, &is);
     struct precomputed_irradiance *empty = precompute_irradiance(map, none, &is);
     struct nearest *nn = nearest_create(K);

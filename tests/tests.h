@@ -32,5 +32,6 @@ void test_cli(struct check *t);    /* test_cli.c: the command line, exit statuse
 void test_docs(struct check *t);   /* test_docs.c: the documentation against the product */
 void test_spd(struct check *t);    /* test_spd.c: all 22 SPD files (PHOTON_SPD), by name only */
 void test_presets(struct check *t); /* test_presets.c: --quality's presets         */
+void test_paper(struct check *t);  /* test_paper.c: --paper and its switches       */
 
 #endif

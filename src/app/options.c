@@ -57,6 +57,9 @@ static const struct option_spec specs[] = {
     {"--quality", OPT_QUALITY, FIELD(quality), 0, 0, "NAME",
      "preview, default or reference: the mode's preset of options (listed below), applied "
      "before the other options given (default default)", FOR_ALL},
+    {"--paper", OPT_FLAG, FIELD(paper), 0, 0, "",
+     "the paper as written: every departure of the mode off (listed below), before the "
+     "other options given", FOR_ALL},
     {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm|.png|.ppm",
      "output: FILE.pfm (linear radiance) and FILE.png beside it for display; -o FILE.ppm "
      "writes FILE.ppm in place of the PNG (default: SCENE's name)", FOR_ALL},
@@ -106,6 +109,9 @@ static const struct option_spec specs[] = {
     {"--cone", OPT_REAL, FIELD(cone), 0, 1e6, "K",
      "cone filter constant k >= 1 (Jensen 1996 Eq. 4); 0 = none (default: "
      "photons 0, 1996 1 on caustics)", FOR_PHOTONS | FOR_1996},
+    {"--rim-photon", OPT_FLAG, FIELD(count_rim), 0, 0, "",
+     "estimates count the photon on the rim too, as Eq. 3 is printed (the paper's; "
+     "k / (k - 1) too bright)", FOR_PHOTON_MAPS},
     {"--caustic-photons", OPT_INT, FIELD(caustic_photons), 0, MAX_PHOTONS, "N",
      "photons emitted towards specular objects for the caustic map (default 1000000)",
      FOR_1996},
@@ -502,11 +508,24 @@ static int apply_words(const struct words *w, struct options *o, int given[N_SPE
     return 0;
 }
 
-/* The defaults, the preset's words, then the user's (argv[1 ...]). The mode and the
- * quality are known only once the user's words are read, so a first pass reads them
- * alone (refusing a bad one before anything else); the second starts again from the
- * defaults. given[] ends as the user's words left it (a preset names only options of its
- * own mode). Returns what apply_words() returns. */
+/* Applies the words of a layer that stands before the user's (a preset, --paper); name
+ * heads the message of a bad word, which would be a defect of the table. */
+static int apply_layer(const struct preset_words *layer, const char *name, struct options *o,
+                       struct error *err)
+{
+    struct words list = {(char **)layer->word, 0, layer->n_words};
+    int layer_given[N_SPECS] = {0};
+    struct error inner;
+    if (apply_words(&list, o, layer_given, &inner) != 0)
+        return error_set(err, "", 0, "%s: %s", name, inner.message);
+    return 0;
+}
+
+/* The defaults, the preset's words, --paper's, then the user's (argv[1 ...]). The mode,
+ * the quality and --paper are known only once the user's words are read, so a first pass
+ * reads them alone (refusing a bad one before anything else); the second starts again
+ * from the defaults. given[] ends as the user's words left it (a layer names only options
+ * of its own mode). Returns what apply_words() returns. */
 static int apply_preset_and_words(int argc, char **argv, struct options *o,
                                   int given[N_SPECS], struct error *err)
 {
@@ -516,15 +535,15 @@ static int apply_preset_and_words(int argc, char **argv, struct options *o,
     if (status != 0)
         return status;
     enum quality quality = o->quality;
-    int user_specular_spp = o->specular_spp;
-    struct preset_words preset;
+    int paper = o->paper, user_specular_spp = o->specular_spp;
+    struct preset_words preset, as_written;
     preset_words(o->mode, quality, &preset);
-    struct words preset_list = {preset.word, 0, preset.n_words};
-    int preset_given[N_SPECS] = {0};
+    paper_words(o->mode, paper, &as_written);
     set_defaults(o);
-    struct error inner;
-    if (apply_words(&preset_list, o, preset_given, &inner) != 0)
-        return error_set(err, "", 0, "--quality %s: %s", quality_name(quality), inner.message);
+    char name[32];
+    snprintf(name, sizeof name, "--quality %s", quality_name(quality));
+    if (apply_layer(&preset, name, o, err) < 0 || apply_layer(&as_written, "--paper", o, err) < 0)
+        return -1;
     status = apply_words(&user, o, given, err); /* 0: the first pass read the same words */
     /* A preset's --specular-spp gives way to a larger --spp of the user's: fewer samples
      * in the specular pixels than in the others is what the user did not ask for. */
@@ -572,7 +591,8 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         return error_set(err, "", 0, "--specular-spp: not available with --mode 2008, whose "
                                      "eye rays all store hit points once");
     if (o->specular_spp == 0) /* spp <= MAX_SPP, so the product cannot overflow */
-        o->specular_spp = o->mode == MODE_JENSEN1996 || o->mode == MODE_JENSEN1994
+        o->specular_spp = (o->mode == MODE_JENSEN1996 || o->mode == MODE_JENSEN1994) &&
+                                  !o->paper
                               ? (int)fmin(SPECULAR_SPP_FACTOR * o->spp, MAX_SPP)
                               : o->spp;
     if (o->specular_spp < o->spp)
@@ -597,7 +617,7 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
 static const char *const outside_pixels[] = {
     "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure", "--reference",
     "--report", "--variance", "--checkpoint", "--time-limit", "--save-photons",
-    "--load-photons", "--quality",
+    "--load-photons", "--quality", "--paper",
 };
 
 static int changes_pixels(const struct option_spec *spec)

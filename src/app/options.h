@@ -26,6 +26,8 @@ struct options {
     enum display_format display;  /* the display image beside it: -o's ending       */
     enum mode mode;
     enum quality quality;         /* the preset applied before the command line's words */
+    int paper;                    /* --paper: the mode's departures off (app/presets.h),
+                                     and specular pixels take --spp samples          */
     uint64_t seed;
     int spp;                      /* samples per pixel; 0 = the mode's default      */
     int specular_spp;             /* samples of a pixel that sees a light through
@@ -48,6 +50,7 @@ struct options {
     double max_radius;            /* photon modes: gathering radius; 0 = default   */
     double cone;                  /* photon modes: cone filter k; 0 = none, -1 = the
                                      mode's default (photons 0, 1996 1)            */
+    int count_rim;                /* photon modes: estimates count the rim photon  */
     int caustic_photons;          /* 1996: photons emitted for the caustic map     */
     int caustic_gather;           /* 1996: photons in each caustic estimate        */
     int gather_rays;              /* 1996: rays of one final gather                */

@@ -75,19 +75,47 @@ int read_quality(const char *text, enum quality *quality, struct error *err)
                      text != NULL ? text : "nothing");
 }
 
-void preset_words(enum mode mode, enum quality quality, struct preset_words *out)
+/* --paper: the options that turn a mode's departures from its paper off (src/modes/
+ * README.md lists each, why, and what it measured). A mode not named has none with a
+ * switch. Beyond these words, --paper gives the specular pixels --spp samples
+ * (options.c), since --specular-spp's default is a multiple of --spp. */
+static const struct {
+    enum mode mode;
+    const char *words;
+} as_written[] = {
+    {MODE_PHOTONS, "--rim-photon"},
+    {MODE_JENSEN1994, "--rim-photon"},
+    {MODE_JENSEN1996, "--rim-photon --shadow-photons --precomputed-irradiance 0"},
+};
+
+/* Splits words, one space apart, into *out. */
+static void split_words(const char *words, struct preset_words *out)
 {
-    const char *words = "";
-    for (size_t i = 0; i < sizeof presets / sizeof presets[0]; i++)
-        if (presets[i].mode == mode && presets[i].quality == quality)
-            words = presets[i].words;
-    assert(strlen(words) < sizeof out->text); /* the table's lists are short */
+    assert(strlen(words) < sizeof out->text); /* the tables' lists are short */
     strcpy(out->text, words);
     out->n_words = 0;
     for (char *w = strtok(out->text, " "); w != NULL; w = strtok(NULL, " ")) {
         assert(out->n_words < PRESET_MAX_WORDS);
         out->word[out->n_words++] = w;
     }
+}
+
+void preset_words(enum mode mode, enum quality quality, struct preset_words *out)
+{
+    const char *words = "";
+    for (size_t i = 0; i < sizeof presets / sizeof presets[0]; i++)
+        if (presets[i].mode == mode && presets[i].quality == quality)
+            words = presets[i].words;
+    split_words(words, out);
+}
+
+void paper_words(enum mode mode, int paper, struct preset_words *out)
+{
+    const char *words = "";
+    for (size_t i = 0; paper && i < sizeof as_written / sizeof as_written[0]; i++)
+        if (as_written[i].mode == mode)
+            words = as_written[i].words;
+    split_words(words, out);
 }
 
 void print_presets(void)
@@ -97,4 +125,8 @@ void print_presets(void)
     for (size_t i = 0; i < sizeof presets / sizeof presets[0]; i++)
         printf("  --mode %-7s %-9s  %s\n", mode_name(presets[i].mode),
                quality_name(presets[i].quality), presets[i].words);
+    printf("\n--paper (the options it stands for, before the command line's; and the specular\n"
+           "pixels take --spp samples):\n");
+    for (size_t i = 0; i < sizeof as_written / sizeof as_written[0]; i++)
+        printf("  --mode %-7s %s\n", mode_name(as_written[i].mode), as_written[i].words);
 }

@@ -32,6 +32,9 @@ int read_quality(const char *text, enum quality *quality, struct error *err);
 /* The words of mode's preset at quality into *out; none for QUALITY_DEFAULT. */
 void preset_words(enum mode mode, enum quality quality, struct preset_words *out);
 
+/* The words --paper stands for in mode (none when paper is 0): its departures off. */
+void paper_words(enum mode mode, int paper, struct preset_words *out);
+
 /* Prints the table for --help: one line for each mode's preview and reference presets. */
 void print_presets(void);
 

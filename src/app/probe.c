@@ -225,7 +225,7 @@ static void write_profile(FILE *f, const struct scene *scene, const struct probe
     struct vec3 n = vec3_normalize(vec3(args->normal[0], args->normal[1], args->normal[2]));
     double max_r = PHOTONS_RADIUS_FRACTION * scene_diagonal(scene);
     struct irradiance_settings checked = {args->js.gather, max_r * max_r, PHOTON_CAUSTIC,
-                                          args->js.differential_run};
+                                          args->js.differential_run, args->js.count_rim};
     struct irradiance_settings unchecked = checked, all = checked;
     unchecked.run = 0;
     all.kinds = 0;

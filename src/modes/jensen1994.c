@@ -67,6 +67,7 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.gather = J94_DEFAULT_GATHER;
     js.max_radius = 0;
     js.differential_run = DIFFERENTIAL_RUN;
+    js.count_rim = 0;
     js.gather_rays = J94_DEFAULT_GATHER_RAYS;
     js.cache_accuracy = J94_DEFAULT_CACHE_ACCURACY;
     js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;
@@ -531,7 +532,7 @@ static void set_up(struct j94 *m, const struct scene *scene, const struct render
     double max_radius = js->max_radius > 0 ? js->max_radius
                                            : PHOTONS_RADIUS_FRACTION * m->diagonal;
     struct irradiance_settings all = {js->gather, max_radius * max_radius, 0,
-                                      js->differential_run};
+                                      js->differential_run, js->count_rim};
     m->all_photons = all;
     m->caustic_photons = all;
     m->caustic_photons.max_r2 *= CAUSTIC_RADIUS_FRACTION * CAUSTIC_RADIUS_FRACTION;

@@ -81,6 +81,7 @@ struct jensen1996_settings jensen1996_settings_default(void)
     js.caustic_gather = J96_DEFAULT_CAUSTIC_GATHER;
     js.max_radius = 0;
     js.cone_k = 1.0;
+    js.count_rim = 0;
     js.gather_rays = J96_DEFAULT_GATHER_RAYS;
     js.glossy_rays = J96_DEFAULT_GLOSSY_RAYS;
     js.cache_accuracy = J96_DEFAULT_CACHE_ACCURACY;
@@ -617,11 +618,13 @@ static void set_up(struct j96 *m, const struct scene *scene, const struct render
     m->global_es.max_r2 = max_radius * max_radius;
     m->global_es.cone_k = 0;
     m->global_es.kinds = 0;
+    m->global_es.count_rim = js->count_rim;
     m->caustic_es.k = js->caustic_gather;
     m->caustic_es.max_r2 = m->global_es.max_r2 * CAUSTIC_RADIUS_FRACTION *
                            CAUSTIC_RADIUS_FRACTION;
     m->caustic_es.cone_k = js->cone_k;
     m->caustic_es.kinds = js->one_map ? PHOTON_CAUSTIC : 0;
+    m->caustic_es.count_rim = js->count_rim;
     m->cached = gather_plan_of(js->gather_rays);
     m->per_sample = gather_plan_of(js->gather_rays / rs->spp);
     m->max_depth = rs->max_depth;
@@ -632,7 +635,8 @@ static void set_up(struct j96 *m, const struct scene *scene, const struct render
     m->precomputed = NULL;
     if (m->maps.records != NULL) {
         clock_t start = clock();
-        struct irradiance_settings is = {m->global_es.k, m->global_es.max_r2, 0, 0};
+        struct irradiance_settings is = {m->global_es.k, m->global_es.max_r2, 0, 0,
+                                         js->count_rim};
         m->precomputed = precompute_irradiance(m->maps.global, m->maps.records, &is);
         stats->seconds_precompute = cpu_seconds(start);
         stats->bytes_precomputed += precomputed_irradiance_bytes(m->precomputed);

@@ -51,6 +51,7 @@ struct jensen1996_settings {
                                  photons mode's default (1/10 of the scene's diagonal);
                                  caustic estimates reach a quarter of it                 */
     double cone_k;            /* cone filter of the caustic estimate (Eq. 4-5); 0: none */
+    int count_rim;            /* 1: estimates count the rim photon, as Eq. 3 is printed */
     int gather_rays;          /* rays of one final gather, 2..J96_MAX_GATHER_RAYS        */
     int glossy_rays;          /* rays sampling a glossy specular part at an accurate
                                  point, 1..1000                                          */

@@ -28,6 +28,7 @@ struct photon_settings {
     double max_radius; /* > 0: photons farther than this are not gathered; <= 0: the
                           default, PHOTONS_RADIUS_FRACTION of the scene's diagonal      */
     double cone_k;     /* 0: the plain estimate; >= 1: the cone filter (estimate.h)     */
+    int count_rim;     /* 1: the rim photon counts, as Eq. 3 is printed (estimate.h)    */
     struct global_work *work; /* NULL: the map is traced and released here; else, empty,
                                  it receives the map (maps[0]), or, full, holds the map
                                  to use instead of tracing one (photon/global_work.h)  */

@@ -10,7 +10,7 @@
  * pi r^2); it is consistent (right as N and k grow with k / N -> 0) and biased for finite
  * k: blurred where light changes over r. With r the k-th photon's distance, Eq. 3 as
  * printed overestimates a uniform density by k / (k - 1); the photon on the rim is left
- * out here, which removes that bias, as the cone filter with constant 1 does by giving
+ * out here (count_rim keeps the paper's sum), which removes that bias, as the cone filter with constant 1 does by giving
  * it weight 0 (see estimate.c). The map must not hold shadow photons (trace.h).
  */
 #ifndef PHOTON_ESTIMATE_H
@@ -41,6 +41,8 @@ struct estimate_settings {
                       (Eq. 4-5; Jensen 1996 uses 1). Values in (0, 1) are refused by
                       whoever reads them: the normalisation would not be the cone's.   */
     unsigned kinds; /* only photons with one of these PHOTON_* flags; 0: all         */
+    int count_rim;  /* 1: the photon on the rim counts too, as Eq. 3 is printed (the
+                       paper's, k / (k - 1) too bright); 0: it only marks r            */
 };
 
 /* Radiance (W / (m^2 sr) per channel, in the map's power units over length^2) leaving
@@ -67,6 +69,8 @@ struct irradiance_settings {
                        no limit; >= 0                                                   */
     unsigned kinds; /* PHOTON_CAUSTIC: the caustic estimate (CP photons only); 0: all   */
     int run;        /* differential checking's run length R >= 1; 0 turns it off        */
+    int count_rim;  /* 1: each E_j counts its j-th photon too, as the paper sums to n;
+                       0: that photon only marks r_j                                    */
 };
 
 /* Irradiance (W / m^2 per channel in the map's units) at x on a surface with unit normal
@@ -76,7 +80,7 @@ struct irradiance_settings {
  * r the distance of the n-th nearest photon, and only photons whose normal faces n
  * (positive dot product) adding their energy e_i. The paper sums to n; the n-th photon,
  * on the rim, only marks r here, which takes away the sum's bias of n / (n - 1) (see
- * estimate.c). With fewer than n photons within max_r2, all count over that disc.
+ * estimate.c), unless count_rim asks for the paper's sum. With fewer than n photons within max_r2, all count over that disc.
  * Differential checking (run R > 0): the photons are added nearest first; E_j is the
  * estimate from the j - 1 nearest over r = the j-th distance. From the 2R-th photon on, the
  * estimate stops at the first j where each of the last R additions raised it
