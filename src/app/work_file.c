@@ -130,7 +130,7 @@ static int get_map(struct binary_reader *r, size_t m, struct kdtree **map, struc
     for (size_t i = 1; i <= n; i++) {
         unsigned char bytes[PHOTON_BYTES];
         if (binary_get_bytes(r, bytes, sizeof bytes, "a map's photons", err) < 0) {
-            free(heap);
+            xfree(heap);
             return -1;
         }
         heap[i] = photon_of_bytes(bytes);

@@ -253,9 +253,9 @@ void heightfield_free(struct heightfield *hf)
 {
     if (hf == NULL)
         return;
-    free(hf->range);
-    free(hf->y);
-    free(hf);
+    xfree(hf->range);
+    xfree(hf->y);
+    xfree(hf);
 }
 
 /* ---- ray queries -------------------------------------------------------------------- */

@@ -172,7 +172,7 @@ struct sphereflake *sphereflake_create(const struct sphereflake_params *params,
 
 void sphereflake_free(struct sphereflake *flake)
 {
-    free(flake);
+    xfree(flake);
 }
 
 /* ---- ray queries ---------------------------------------------------------------------- */

@@ -30,6 +30,6 @@ void image_free(struct image *img)
 {
     if (img == NULL)
         return;
-    free(img->pixels);
-    free(img);
+    xfree(img->pixels);
+    xfree(img);
 }

@@ -23,6 +23,6 @@ int ppm_write(const char *name, const struct image *img, double exposure, struct
         display_encode_row(img, y, exposure, rgb);
         fwrite(rgb, 3, (size_t)img->width, f);
     }
-    free(rgb);
+    xfree(rgb);
     return output_commit(f, err); /* a failed write shows in ferror(), checked there */
 }

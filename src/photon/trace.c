@@ -297,6 +297,6 @@ int trace_photons(const struct scene *scene, const struct trace_settings *ts,
 
 void photon_trace_free(struct photon_trace *out)
 {
-    free(out->photons);
+    xfree(out->photons);
     memset(out, 0, sizeof *out);
 }
