@@ -10,8 +10,8 @@
  * printed them.
  */
 #include <stdio.h>
-#include <stdlib.h>
 
+#include "../src/base/alloc.h"
 #include "spd.h"
 #include "tests.h"
 

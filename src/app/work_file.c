@@ -11,7 +11,6 @@
 #include "work_file.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"

@@ -22,7 +22,6 @@
  */
 #include "cone.h"
 
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 

@@ -30,7 +30,6 @@
 #include "heightfield.h"
 
 #include <float.h>
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 #include "triangle.h"

@@ -6,7 +6,6 @@
  */
 #include "polygon.h"
 
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 

@@ -28,7 +28,6 @@
  */
 #include "sphereflake.h"
 
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 #include "sphere.h"

@@ -12,7 +12,6 @@
 #include "image.h"
 
 #include <assert.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"

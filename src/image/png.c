@@ -23,7 +23,6 @@
 #include "png.h"
 
 #include <stdint.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"

@@ -8,7 +8,6 @@
  */
 #include "image.h"
 
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 

@@ -46,7 +46,6 @@
  */
 #include "jensen1994.h"
 
-#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 

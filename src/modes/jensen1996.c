@@ -57,7 +57,6 @@
 #include "jensen1996.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 

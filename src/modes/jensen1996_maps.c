@@ -10,7 +10,6 @@
  */
 #include "jensen1996_maps.h"
 
-#include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"

@@ -4,7 +4,6 @@
 #include "global_work.h"
 
 #include <assert.h>
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 

@@ -13,7 +13,6 @@
 #include <assert.h>
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 #include "../base/binary.h"

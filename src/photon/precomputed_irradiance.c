@@ -12,7 +12,6 @@
 #include "precomputed_irradiance.h"
 
 #include <assert.h>
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 

@@ -43,7 +43,6 @@
 #include "trace.h"
 
 #include <assert.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"

@@ -7,7 +7,6 @@
 #include "scene.h"
 
 #include <assert.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"
