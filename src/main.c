@@ -17,6 +17,7 @@
 #include "app/report.h"
 #include "app/tile.h"
 #include "app/work_file.h"
+#include "base/alloc.h"
 #include "image/compare.h"
 #include "image/plot.h"
 #include "modes/direct.h"
@@ -259,6 +260,8 @@ static void print_stats(const struct run *run)
     fprintf(stderr, "objects=%zu\nlights=%zu\nbvh_nodes=%zu\nbytes_geometry=%zu\n",
             geometry_primitive_count(scene->geometry), scene->n_lights,
             geometry_bvh_nodes(scene->geometry), geometry_bytes(scene->geometry));
+    /* the most payload the x-allocators held at once, up to this line (base/alloc.h) */
+    fprintf(stderr, "bytes_peak=%zu\n", alloc_bytes_peak());
     /* spp: the samples of a pixel (the passes that ran, at most --spp); pixels that see a
      * light through mirrors or glass take specular_spp (render.h), shown apart */
     int spp = c->passes < run->rs.spp ? c->passes : run->rs.spp;

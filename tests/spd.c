@@ -195,8 +195,8 @@ void check_same_spheres(struct check *t, const double *ours, size_t n_ours,
         CHECK(t, k < n_ours && !matched[k]);
         matched[k] = 1;
     }
-    free(matched);
-    free(by_x);
+    xfree(matched);
+    xfree(by_x);
 }
 
 uint64_t spheres_digest(const double *spheres, size_t n)

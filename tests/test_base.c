@@ -1,11 +1,12 @@
 /*
- * tests/test_base.c -- the base room: keyed random streams, errors, atomic outputs, FNV-1a;
- * and the harness's REQUIRE (check.h).
+ * tests/test_base.c -- the base room: keyed random streams, errors, atomic outputs, FNV-1a,
+ * the allocation wrapper's bookkeeping; and the harness's REQUIRE (check.h).
  */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "../src/base/alloc.h"
 #include "../src/base/error.h"
 #include "../src/base/hash.h"
 #include "../src/base/rng.h"
@@ -187,6 +188,67 @@ static void test_fnv1a_vectors(struct check *t)
                  UINT64_C(0x85944171f73967e8));
 }
 
+/* Fills n bytes with a pattern keyed by the byte's index; whether they still hold it. */
+static void fill_pattern(unsigned char *p, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        p[i] = (unsigned char)(i * 7 + 1);
+}
+
+static int holds_pattern(const unsigned char *p, size_t n)
+{
+    int same = 1;
+    for (size_t i = 0; i < n; i++)
+        same = same && p[i] == (unsigned char)(i * 7 + 1);
+    return same;
+}
+
+/* truth: alloc.h's contract, summed by hand: bytes_now is the payload asked for by the
+ *   blocks not yet freed (a zero-byte request counts 1), xrealloc's new size replaces the
+ *   old, and bytes_peak is the largest running sum. Blocks are freed in another order than
+ *   made. A long double and a function pointer are stored in blocks, so that a payload
+ *   misaligned by the header fails under UBSan (make check).
+ * tolerance: none, byte counts.
+ * catches: xrealloc counting old + new or only the growth, xfree not subtracting, xcalloc
+ *   or xstrdup uncounted, the peak not raised by a realloc, contents lost by xrealloc. */
+static void test_alloc_counts_bytes(struct check *t)
+{
+    alloc_restart_peak();
+    size_t base = alloc_bytes_now();
+    CHECK(t, alloc_bytes_peak() == base);
+    unsigned char *a = xmalloc(100, 3, "test a");
+    fill_pattern(a, 300);
+    unsigned char *b = xcalloc(7, 11, "test b");
+    int zero = 1;
+    for (size_t i = 0; i < 77; i++)
+        zero = zero && b[i] == 0;
+    CHECK(t, zero);
+    char *c = xstrdup("photon");
+    CHECK(t, strcmp(c, "photon") == 0);
+    CHECK(t, alloc_bytes_now() == base + 300 + 77 + 7 && alloc_bytes_peak() == base + 384);
+    a = xrealloc(a, 1000, 3, "test a");
+    CHECK(t, holds_pattern(a, 300));
+    CHECK(t, alloc_bytes_now() == base + 3000 + 84 && alloc_bytes_peak() == base + 3084);
+    a = xrealloc(a, 10, 3, "test a");
+    CHECK(t, holds_pattern(a, 30));
+    CHECK(t, alloc_bytes_now() == base + 30 + 84 && alloc_bytes_peak() == base + 3084);
+    xfree(b);
+    long double *ld = xmalloc(0, 8, "test ld");
+    CHECK(t, alloc_bytes_now() == base + 30 + 7 + 1);
+    ld = xrealloc(ld, 1, sizeof *ld, "test ld");
+    *ld = 1.5L;
+    void (**f)(struct check *) = xrealloc(NULL, 2, sizeof *f, "test f");
+    f[1] = test_alloc_counts_bytes;
+    CHECK(t, *ld == 1.5L && f[1] == test_alloc_counts_bytes);
+    CHECK(t, alloc_bytes_now() == base + 37 + sizeof *ld + 2 * sizeof *f);
+    xfree(c);
+    xfree(a);
+    xfree(NULL);
+    xfree(f);
+    xfree(ld);
+    CHECK(t, alloc_bytes_now() == base && alloc_bytes_peak() == base + 3084);
+}
+
 /* ---- the harness itself (check.h) ---------------------------------------------------- */
 
 static int reached_after_require; /* set by the line after the failing REQUIRE */
@@ -225,4 +287,5 @@ void test_base(struct check *t)
     RUN_TEST(t, test_error_set);
     RUN_TEST(t, test_outputs_are_atomic);
     RUN_TEST(t, test_fnv1a_vectors);
+    RUN_TEST(t, test_alloc_counts_bytes);
 }

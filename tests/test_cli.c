@@ -350,10 +350,13 @@ static int stats_keys_unique(size_t *n)
 }
 
 /* truth: --stats prints each key once (README, "Options": each key once), in every mode, and
- *   seconds_render is the whole render's time in every mode.
+ *   seconds_render is the whole render's time in every mode. bytes_peak, the allocation
+ *   wrapper's high-water mark, is at least bytes_geometry, which geometry.c sums from its
+ *   own arrays and which is held throughout the render.
  * tolerance: none.
  * catches: a mode's own figures printed under a key the common ones use (1994 and 1996
- *   once printed seconds_render twice, their final pass's under the whole render's key). */
+ *   once printed seconds_render twice, their final pass's under the whole render's key);
+ *   bytes_peak missing in a mode, or counting nothing. */
 static void test_stats_keys_once_in_every_mode(struct check *t)
 {
     static const char *modes[] = {"direct", "pt", "photons", "1994", "1996", "2008"};
@@ -365,6 +368,8 @@ static void test_stats_keys_once_in_every_mode(struct check *t)
         size_t n = 0;
         CHECK(t, photon(command) == 0 && log_contains("seconds_render="));
         CHECK(t, stats_keys_unique(&n) && n > 10);
+        double geometry = file_stat(OUT ".log", "bytes_geometry");
+        CHECK(t, geometry > 0 && file_stat(OUT ".log", "bytes_peak") >= geometry);
     }
     remove(OUT "_stats.pfm");
     remove(OUT "_stats.ppm");
@@ -448,6 +453,29 @@ static void test_ppm_command(struct check *t)
         CHECK(t, log_contains(keys[i]));
     remove(OUT "_ppm.pfm");
     remove(OUT "_ppm.png");
+}
+
+/* truth: Sec. 4 (Hachisuka 2008): progressive photon mapping keeps only the hit points
+ *   and one pass's photons, so its memory does not grow with the passes: 10 and 100
+ *   passes of the same photons per pass hold the same peak, to the byte.
+ * tolerance: none, byte counts.
+ * catches: per-pass memory that is never freed or that accumulates (a list of passes,
+ *   photons kept across passes, a leak in the pass loop). */
+static void test_ppm_memory_does_not_grow_with_passes(struct check *t)
+{
+    double peak[2] = {-1, -2};
+    static const int passes[2] = {10, 100};
+    for (int i = 0; i < 2; i++) {
+        char command[COMMAND_MAX];
+        snprintf(command, sizeof command, "--no-progress --stats --mode 2008 --width 32 "
+                 "--height 32 --photons-per-pass 1000 --passes %d scenes/cornell.scene "
+                 "-o " OUT "_passes.pfm", passes[i]);
+        CHECK(t, photon(command) == 0 && logged_stat("passes") == passes[i]);
+        peak[i] = logged_stat("bytes_peak");
+    }
+    CHECK(t, peak[0] > 0 && peak[0] == peak[1]);
+    remove(OUT "_passes.pfm");
+    remove(OUT "_passes.png");
 }
 
 /* Whether the file's first bytes are those of prefix (its '\0' excluded). */
@@ -571,6 +599,7 @@ void test_cli(struct check *t)
     RUN_TEST(t, test_specular_pixels_in_stats);
     RUN_TEST(t, test_nff_file_is_a_scene);
     RUN_TEST(t, test_ppm_command);
+    RUN_TEST(t, test_ppm_memory_does_not_grow_with_passes);
     RUN_TEST(t, test_output_names);
     RUN_TEST(t, test_default_output_names);
     RUN_TEST(t, test_failed_png_leaves_nothing);

@@ -10,7 +10,6 @@
  */
 #include <math.h>
 #include <stdint.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../src/base/alloc.h"
@@ -96,7 +95,7 @@ static void ball_free(void *shape)
     if (b == NULL)
         return;
     (*b->n_freed)++;
-    free(b);
+    xfree(b);
 }
 
 static const struct shape_ops ball_ops = {"ball", ball_bounds, ball_intersect, ball_occluded,
@@ -136,7 +135,7 @@ static void brute_init(struct brute *b)
 static void brute_free(struct brute *b)
 {
     geometry_free(b->g);
-    free(b->prims);
+    xfree(b->prims);
 }
 
 static struct brute_prim *brute_next(struct brute *b, enum brute_kind kind)
@@ -326,7 +325,7 @@ static int brute_bvh_check(const struct brute *b)
     struct bvh *bvh = bvh_build(bounds, n);
     int ok = bvh_check(bvh, bounds, n);
     bvh_free(bvh);
-    free(bounds);
+    xfree(bounds);
     return ok;
 }
 
@@ -889,8 +888,8 @@ static void test_watertight_meshes(struct check *t)
         CHECK(t, count_leaks(g, m, 100 + (uint64_t)k, 333334) == 0);
         geometry_free(g);
     }
-    free(meshes[0].tri);
-    free(meshes[1].tri);
+    xfree(meshes[0].tri);
+    xfree(meshes[1].tri);
 }
 
 /* truth: the quad's own parametrisation: a ray aimed at p0 + s e1 + t e2 reports uv = (s, t)
@@ -1021,7 +1020,7 @@ static void test_bvh_check_detects_damage(struct check *t)
     CHECK(t, bvh_check(bvh, bounds, 1000));
     bvh_free(bvh);
     bvh_free(NULL);
-    free(bounds);
+    xfree(bounds);
 }
 
 /* truth: pbrt's geometric test: a ray leaving a surface point, offset by offset_origin() to

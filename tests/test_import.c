@@ -292,8 +292,8 @@ static int check_triangulation(struct check *t, const double *x, const double *y
                                       (y[c[0]] + y[c[1]] + y[c[2]]) / 3));
     }
     CHECK_CLOSE(t, sum, fabs(polygon), 1e-12 * fabs(polygon));
-    free(tri);
-    free(v);
+    xfree(tri);
+    xfree(v);
     return t->failures_in_test - before;
 }
 

@@ -298,12 +298,12 @@ static struct test_map test_map_create(enum point_set set, size_t n)
 
 static void test_map_free(struct test_map *m)
 {
-    free(m->seen);
-    free(m->sorted);
-    free(m->scan_d2);
+    xfree(m->seen);
+    xfree(m->sorted);
+    xfree(m->scan_d2);
     nearest_free(m->nn);
     kdtree_free(m->map);
-    free(m->scan);
+    xfree(m->scan);
 }
 
 /* Whether nn's photons are in order of distance, nearest first. */
@@ -355,7 +355,7 @@ static int same_photons(const struct kdtree *map, struct photon *scan, size_t n)
     int same = 1;
     for (size_t i = 0; i < n; i++)
         same = same && compare_positions(&mine[i], &scan[i]) == 0;
-    free(mine);
+    xfree(mine);
     return same;
 }
 
@@ -376,7 +376,7 @@ static void test_balance_kdtree_keeps_photons_in_order(struct check *t)
             CHECK(t, same_photons(map, scan, n));
             CHECK(t, kdtree_bytes(map) >= (n + 1) * 20);
             kdtree_free(map);
-            free(scan);
+            xfree(scan);
         }
     }
     kdtree_free(NULL);
@@ -537,7 +537,7 @@ static void test_for_each_photon_within_matches_linear_scan(struct check *t)
             double *d2 = xmalloc(m.n, sizeof *d2, "test scan");
             for (uint64_t j = 0; j < N_QUERIES; j++)
                 CHECK(t, radius_searches_match(&m, j, d2));
-            free(d2);
+            xfree(d2);
             test_map_free(&m);
         }
     }

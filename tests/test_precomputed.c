@@ -129,11 +129,11 @@ static void test_values_match_linear_scan(struct check *t)
     CHECK(t, bad == 0);
     CHECK(t, full > 100 && sparse > 20);
     CHECK(t, precomputed_irradiance_bytes(pi) >= records->n_photons * sizeof *pi->value);
-    free(order);
+    xfree(order);
     precomputed_irradiance_free(pi);
     kdtree_free(records);
     kdtree_free(map);
-    free(photons);
+    xfree(photons);
 }
 
 /* The node of records that should serve x with normal n, by a linear scan: of the
@@ -208,7 +208,7 @@ static void test_lookup_matches_linear_scan(struct check *t)
     }
     CHECK(t, bad == 0);
     CHECK(t, served > 300 && declined >= 120); /* 100 tilted, 20 far, and a few at the line */
-    free(order);
+    xfree(order);
     nearest_free(nn);
     precomputed_irradiance_free(empty);
     precomputed_irradiance_free(pi);

@@ -53,8 +53,8 @@ static struct sphere_list flake_spheres(const struct sphereflake *flake)
 
 static void sphere_list_free(struct sphere_list *list)
 {
-    free(list->spheres);
-    free(list->depth);
+    xfree(list->spheres);
+    xfree(list->depth);
 }
 
 /* Materials 100 + depth, so a hit's material names the depth of the sphere hit. */
@@ -90,8 +90,8 @@ static void test_sphereflake_is_balls_s3(struct check *t)
     double *ours = balls_spheres(3, &n_ours);
     CHECK(t, n_printed == 820);
     check_same_spheres(t, ours, n_ours, printed, n_printed);
-    free(ours);
-    free(printed);
+    xfree(ours);
+    xfree(printed);
 }
 
 /* truth: balls-s4.nff (balls.c at size factor 4, the SPD benchmark size; not in the
@@ -110,7 +110,7 @@ static void test_sphereflake_prints_as_balls_s4(struct check *t)
     double *ours = balls_spheres(4, &n);
     CHECK(t, n == BALLS_S4_SPHERES);
     CHECK(t, spheres_digest(ours, n) == BALLS_S4_SPHERE_DIGEST);
-    free(ours);
+    xfree(ours);
 }
 
 /* ---- the sphere flake's structure ---------------------------------------------------- */
@@ -472,8 +472,8 @@ static struct triangle_list heightfield_list(const struct heightfield *hf)
 
 static void triangle_list_free(struct triangle_list *list)
 {
-    free(list->v);
-    free(list->normals);
+    xfree(list->v);
+    xfree(list->normals);
 }
 
 static struct heightfield_params landscape(int n, double height, uint64_t seed)

@@ -10,8 +10,8 @@
  * printed them.
  */
 #include <stdio.h>
-#include <stdlib.h>
 
+#include "../src/base/alloc.h"
 #include "spd.h"
 #include "tests.h"
 
@@ -76,8 +76,8 @@ static void test_sphereflake_is_balls_s4(struct check *t)
     REQUIRE(t, printed != NULL);
     double *ours = balls_spheres(4, &n_ours);
     check_same_spheres(t, ours, n_ours, printed, n_printed);
-    free(ours);
-    free(printed);
+    xfree(ours);
+    xfree(printed);
 }
 
 /* truth: balls-s4.nff itself: the figures spd.h keeps of it (written down once from the
@@ -91,7 +91,7 @@ static void test_balls_s4_figures(struct check *t)
     REQUIRE(t, printed != NULL);
     CHECK(t, n == BALLS_S4_SPHERES);
     CHECK(t, spheres_digest(printed, n) == BALLS_S4_SPHERE_DIGEST);
-    free(printed);
+    xfree(printed);
 }
 
 void test_spd(struct check *t)

@@ -181,7 +181,7 @@ static int check_coverage(const struct merge_args *args, const struct tile_recor
         sprintf(list + strlen(list), "%s--crop %d %d %d %d", k > 0 ? ", " : "", w[0], w[1],
                 w[2], w[3]);
     }
-    free(covered);
+    xfree(covered);
     return error_set(err, "", 0, "merge: the tiles leave %lld of the %dx%d image's pixels "
                      "uncovered: %s%s", missing, width, height, list,
                      left > 0 ? ", and more" : "");
@@ -237,10 +237,10 @@ int merge_command(int argc, char **argv)
         struct tile_record *records = xmalloc((size_t)args.n_tiles, sizeof *records,
                                               "tile records");
         status = merge_tiles(&args, records, &err);
-        free(records);
+        xfree(records);
     }
     if (status < 0)
         error_print(&err);
-    free(args.tiles);
+    xfree(args.tiles);
     return status < 0 ? error_exit_status(&err) : 0; /* 1: --help was printed */
 }

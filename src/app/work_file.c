@@ -11,7 +11,6 @@
 #include "work_file.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"
@@ -130,7 +129,7 @@ static int get_map(struct binary_reader *r, size_t m, struct kdtree **map, struc
     for (size_t i = 1; i <= n; i++) {
         unsigned char bytes[PHOTON_BYTES];
         if (binary_get_bytes(r, bytes, sizeof bytes, "a map's photons", err) < 0) {
-            free(heap);
+            xfree(heap);
             return -1;
         }
         heap[i] = photon_of_bytes(bytes);

@@ -321,7 +321,7 @@ struct bvh *bvh_build(const struct aabb *bounds, size_t n)
         struct range all = make_range(&b, 0, n);
         build_node(&b, 0, &all, 0);
     }
-    free(b.centroids);
+    xfree(b.centroids);
     bvh->nodes = xrealloc(b.nodes, b.n_nodes, sizeof *b.nodes, "BVH nodes");
     bvh->n_nodes = b.n_nodes;
     bvh->items = b.items;
@@ -333,9 +333,9 @@ void bvh_free(struct bvh *bvh)
 {
     if (bvh == NULL)
         return;
-    free(bvh->nodes);
-    free(bvh->items);
-    free(bvh);
+    xfree(bvh->nodes);
+    xfree(bvh->items);
+    xfree(bvh);
 }
 
 size_t bvh_bytes(const struct bvh *bvh)
@@ -414,7 +414,7 @@ int bvh_check(const struct bvh *bvh, const struct aabb *bounds, size_t n)
     c.next_item = 0;
     c.n_nodes_seen = 0;
     int ok = check_node(&c, 0, 0) && c.next_item == n && c.n_nodes_seen == bvh->n_nodes;
-    free(c.seen);
+    xfree(c.seen);
     return ok;
 }
 

@@ -22,7 +22,6 @@
  */
 #include "cone.h"
 
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 
@@ -80,7 +79,7 @@ struct cone *cone_create(struct vec3 base, double r_base, struct vec3 apex, doub
 
 void cone_free(struct cone *cone)
 {
-    free(cone);
+    xfree(cone);
 }
 
 /* The ray in the cone's coordinates (see the header comment). */

@@ -92,15 +92,15 @@ void geometry_free(struct geometry *g)
         return;
     for (size_t i = 0; i < g->n_shapes; i++)
         g->shapes[i].ops->free(g->shapes[i].data);
-    free(g->spheres);
-    free(g->triangles);
-    free(g->quads);
-    free(g->shapes);
-    free(g->normals);
-    free(g->id_refs);
-    free(g->refs);
+    xfree(g->spheres);
+    xfree(g->triangles);
+    xfree(g->quads);
+    xfree(g->shapes);
+    xfree(g->normals);
+    xfree(g->id_refs);
+    xfree(g->refs);
     bvh_free(g->bvh);
-    free(g);
+    xfree(g);
 }
 
 /* Room for `need` elements of `size` bytes in p (capacity *cap), growing geometrically. */
@@ -269,8 +269,8 @@ static void *permute_kind(struct geometry *g, enum kind kind, uint32_t *leaf_ref
     for (size_t i = 0; i < a.count; i++)
         if (!placed[i])
             memcpy(sorted + next++ * a.size, a.base + i * a.size, a.size);
-    free(placed);
-    free(a.base);
+    xfree(placed);
+    xfree(a.base);
     return sorted;
 }
 
@@ -290,7 +290,7 @@ static void index_ids(struct geometry *g)
 void geometry_build(struct geometry *g)
 {
     bvh_free(g->bvh);
-    free(g->refs);
+    xfree(g->refs);
     size_t n_max = g->n_prims;
     struct aabb *bounds = xmalloc(n_max, sizeof *bounds, "primitive bounds");
     uint32_t *item_refs = xmalloc(n_max, sizeof *item_refs, "primitive refs");
@@ -298,11 +298,11 @@ void geometry_build(struct geometry *g)
     for (int kind = 0; kind < N_KINDS; kind++)
         n = collect_kind(g, (enum kind)kind, bounds, item_refs, n);
     g->bvh = bvh_build(bounds, n);
-    free(bounds);
+    xfree(bounds);
     g->refs = xmalloc(n, sizeof *g->refs, "BVH refs");
     for (size_t k = 0; k < n; k++)
         g->refs[k] = item_refs[g->bvh->items[k]];
-    free(item_refs);
+    xfree(item_refs);
     /* The permuted arrays are exactly full: later adds grow them again. */
     g->spheres = permute_kind(g, KIND_SPHERE, g->refs, n);
     g->cap_spheres = g->n_spheres;

@@ -30,7 +30,6 @@
 #include "heightfield.h"
 
 #include <float.h>
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 #include "triangle.h"
@@ -253,9 +252,9 @@ void heightfield_free(struct heightfield *hf)
 {
     if (hf == NULL)
         return;
-    free(hf->range);
-    free(hf->y);
-    free(hf);
+    xfree(hf->range);
+    xfree(hf->y);
+    xfree(hf);
 }
 
 /* ---- ray queries -------------------------------------------------------------------- */

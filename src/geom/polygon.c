@@ -6,7 +6,6 @@
  */
 #include "polygon.h"
 
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 
@@ -166,11 +165,11 @@ void polygon_triangulate(const struct vec3 *v, int n, int *triangles)
     r.candidates = xmalloc((size_t)n, sizeof *r.candidates, "polygon");
     ring_project(v, n, normal, &r);
     clip_ears(&r, n, triangles);
-    free(r.candidates);
-    free(r.ear);
-    free(r.reflex);
-    free(r.next);
-    free(r.prev);
-    free(r.y);
-    free(r.x);
+    xfree(r.candidates);
+    xfree(r.ear);
+    xfree(r.reflex);
+    xfree(r.next);
+    xfree(r.prev);
+    xfree(r.y);
+    xfree(r.x);
 }

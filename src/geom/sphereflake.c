@@ -28,7 +28,6 @@
  */
 #include "sphereflake.h"
 
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 #include "sphere.h"
@@ -172,7 +171,7 @@ struct sphereflake *sphereflake_create(const struct sphereflake_params *params,
 
 void sphereflake_free(struct sphereflake *flake)
 {
-    free(flake);
+    xfree(flake);
 }
 
 /* ---- ray queries ---------------------------------------------------------------------- */

@@ -12,7 +12,6 @@
 #include "image.h"
 
 #include <assert.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"
@@ -54,6 +53,6 @@ int image_write_pair(const char *pfm_name, enum display_format display,
     if (status == 0)
         status = display == DISPLAY_PPM ? ppm_write(display_name, img, exposure, err)
                                         : png_write(display_name, img, exposure, err);
-    free(display_name);
+    xfree(display_name);
     return status;
 }

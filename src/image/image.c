@@ -8,7 +8,6 @@
 #include "image.h"
 
 #include <assert.h>
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 
@@ -30,6 +29,6 @@ void image_free(struct image *img)
 {
     if (img == NULL)
         return;
-    free(img->pixels);
-    free(img);
+    xfree(img->pixels);
+    xfree(img);
 }

@@ -65,8 +65,8 @@ struct plot_spec plot_spec_errors(void)
 
 static void series_free_arrays(struct series *s)
 {
-    free(s->x);
-    free(s->y);
+    xfree(s->x);
+    xfree(s->y);
     s->x = s->y = NULL;
 }
 
@@ -726,6 +726,6 @@ int plot_command(int argc, char **argv)
         status = plot_files(args.csv, args.n_csv, &args.spec, args.svg, &err);
     if (status < 0)
         error_print(&err);
-    free(args.csv);
+    xfree(args.csv);
     return status < 0 ? error_exit_status(&err) : 0; /* 1: --help was printed */
 }

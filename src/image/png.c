@@ -23,7 +23,6 @@
 #include "png.h"
 
 #include <stdint.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"
@@ -191,7 +190,7 @@ int png_write(const char *name, const struct image *img, double exposure, struct
     send_block(s, 1);
     chunk_begin(s, "IEND", 0);
     chunk_end(s);
-    free(scanline);
-    free(s);
+    xfree(scanline);
+    xfree(s);
     return output_commit(f, err); /* a failed write shows in ferror(), checked there */
 }

@@ -8,7 +8,6 @@
  */
 #include "image.h"
 
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 
@@ -23,6 +22,6 @@ int ppm_write(const char *name, const struct image *img, double exposure, struct
         display_encode_row(img, y, exposure, rgb);
         fwrite(rgb, 3, (size_t)img->width, f);
     }
-    free(rgb);
+    xfree(rgb);
     return output_commit(f, err); /* a failed write shows in ferror(), checked there */
 }

@@ -46,7 +46,6 @@
  */
 #include "jensen1994.h"
 
-#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -160,8 +159,8 @@ static double *pretrace_footprints(const struct scene *scene)
             }
         }
     }
-    free(p);
-    free(prim);
+    xfree(p);
+    xfree(prim);
     return footprint;
 }
 
@@ -229,8 +228,8 @@ int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
         unsigned char *receives = receiving_primitives(scene);
         d.illumination = illumination_maps_create(scene->geometry, scene_diagonal(scene),
                                                   footprint, receives);
-        free(receives);
-        free(footprint);
+        xfree(receives);
+        xfree(footprint);
     }
     if (trace_light_paths(scene, &ts, js, &d, stats) < 0) {
         photon_trace_free(&d.photons);
@@ -553,7 +552,7 @@ static void set_up(struct j94 *m, const struct scene *scene, const struct render
 
 static void tear_down(struct j94 *m)
 {
-    free(m->strata);
+    xfree(m->strata);
     nearest_free(m->nn);
     irradiance_cache_free(m->cache); /* m->stores are the work's */
 }

@@ -57,7 +57,6 @@
 #include "jensen1996.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -597,11 +596,11 @@ static struct scratch *scratch_create(const struct j96 *m, struct jensen1996_sta
 static void scratch_free(struct scratch *sc)
 {
     nearest_free(sc->nn);
-    free(sc->importance);
-    free(sc->rays_in);
-    free(sc->strata);
-    free(sc->summand);
-    free(sc);
+    xfree(sc->importance);
+    xfree(sc->rays_in);
+    xfree(sc->strata);
+    xfree(sc->summand);
+    xfree(sc);
 }
 
 /* The mode's settings from the scene and the user's. */

@@ -10,7 +10,6 @@
  */
 #include "jensen1996_maps.h"
 
-#include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"
@@ -115,7 +114,7 @@ static int build_global_map(const struct scene *scene, const struct render_setti
             stats->photons_shadow += gs.visibility[l].n_shadow;
             maps->visibility[l] = balance_trace(&gs.visibility[l]);
         }
-        free(gs.visibility);
+        xfree(gs.visibility);
     }
     return failed ? too_many_photons(err) : 0;
 }
@@ -143,7 +142,7 @@ static int build_caustic_map(const struct scene *scene, const struct render_sett
             stats->photons_caustic = maps->caustic->n_photons;
         }
     }
-    free(spheres);
+    xfree(spheres);
     return status;
 }
 
@@ -154,7 +153,7 @@ static void photon_maps_free(struct photon_maps *maps)
     kdtree_free(maps->caustic);
     for (size_t l = 0; maps->visibility != NULL && l < maps->n_lights; l++)
         kdtree_free(maps->visibility[l]);
-    free(maps->visibility);
+    xfree(maps->visibility);
 }
 
 int build_photon_maps(const struct scene *scene, const struct render_settings *rs,
@@ -174,7 +173,7 @@ int build_photon_maps(const struct scene *scene, const struct render_settings *r
         js->work->maps[2 + l] = maps.visibility[l];
     if (maps.records != NULL)
         js->work->maps[2 + maps.n_lights] = maps.records;
-    free(maps.visibility);
+    xfree(maps.visibility);
     return 0;
 }
 

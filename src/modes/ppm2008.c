@@ -487,7 +487,7 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     stats->mean_radius = mean_radius(&ppm);
     counters->passes = rs->spp;
     hit_point_tree_free(&ppm.tree);
-    free(ppm.points);
-    free(ppm.seen);
+    xfree(ppm.points);
+    xfree(ppm.seen);
     return result;
 }

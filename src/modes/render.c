@@ -15,7 +15,6 @@
 #include <assert.h>
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -352,11 +351,11 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
     result.image = image_create(acc.width, acc.height);
     mean_image(&acc, result.image);
     result.variance = want_variance ? variance_image(&acc) : NULL;
-    free(acc.target);
-    free(acc.n);
-    free(acc.lum);
-    free(acc.sum2);
-    free(acc.sum);
+    xfree(acc.target);
+    xfree(acc.n);
+    xfree(acc.lum);
+    xfree(acc.sum2);
+    xfree(acc.sum);
     return result;
 }
 

@@ -4,7 +4,6 @@
 #include "global_work.h"
 
 #include <assert.h>
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 
@@ -35,8 +34,8 @@ void global_work_free(struct global_work *work)
 {
     for (size_t i = 0; i < work->n_maps; i++)
         kdtree_free(work->maps[i]);
-    free(work->maps);
-    free(work->records);
+    xfree(work->maps);
+    xfree(work->records);
     illumination_maps_free(work->illumination);
     work->maps = NULL;
     work->n_maps = 0;

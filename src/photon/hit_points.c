@@ -146,8 +146,8 @@ void hit_point_tree_visit(const struct hit_point_tree *tree, struct vec3 p,
 
 void hit_point_tree_free(struct hit_point_tree *tree)
 {
-    free(tree->bounds);
-    free(tree->index);
+    xfree(tree->bounds);
+    xfree(tree->index);
     tree->index = NULL;
     tree->bounds = NULL;
     tree->n = 0;

@@ -13,7 +13,6 @@
 #include <assert.h>
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 #include "../base/binary.h"
@@ -112,13 +111,13 @@ void illumination_maps_free(struct illumination_maps *maps)
         if (d == NULL)
             continue;
         for (size_t e = 0; e < di_elements(d); e++)
-            free(d->ci[e]);
-        free(d->ci);
-        free(d->di);
-        free(d);
+            xfree(d->ci[e]);
+        xfree(d->ci);
+        xfree(d->di);
+        xfree(d);
     }
-    free(maps->maps);
-    free(maps);
+    xfree(maps->maps);
+    xfree(maps);
 }
 
 int illumination_covers(const struct illumination_maps *maps, int prim)

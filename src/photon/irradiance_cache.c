@@ -285,9 +285,9 @@ void irradiance_cache_free(struct irradiance_cache *cache)
     if (cache == NULL)
         return;
     for (size_t i = 0; i < cache->n_nodes; i++)
-        free(cache->nodes[i].records);
-    free(cache->nodes);
-    free(cache);
+        xfree(cache->nodes[i].records);
+    xfree(cache->nodes);
+    xfree(cache);
 }
 
 static int box_contains(struct vec3 lo, double side, struct vec3 p)

@@ -138,7 +138,7 @@ struct kdtree *balance_kdtree(struct photon *photons, size_t n)
     map->n_photons = n;
     if (n > 0)
         balance_subtree(photons, n, map->photons, 1);
-    free(photons);
+    xfree(photons);
     return map;
 }
 
@@ -159,8 +159,8 @@ void kdtree_free(struct kdtree *map)
 {
     if (map == NULL)
         return;
-    free(map->photons);
-    free(map);
+    xfree(map->photons);
+    xfree(map);
 }
 
 size_t kdtree_bytes(const struct kdtree *map)
@@ -212,9 +212,9 @@ void nearest_free(struct nearest *nn)
 {
     if (nn == NULL)
         return;
-    free(nn->photon);
-    free(nn->d2);
-    free(nn);
+    xfree(nn->photon);
+    xfree(nn->d2);
+    xfree(nn);
 }
 
 /* Restores the max-heap on d2[] (with photon[] alongside) below slot i, 0-based:

@@ -12,7 +12,6 @@
 #include "precomputed_irradiance.h"
 
 #include <assert.h>
-#include <stdlib.h>
 
 #include "../base/alloc.h"
 
@@ -43,8 +42,8 @@ void precomputed_irradiance_free(struct precomputed_irradiance *pi)
 {
     if (pi == NULL)
         return;
-    free(pi->value);
-    free(pi);
+    xfree(pi->value);
+    xfree(pi);
 }
 
 size_t precomputed_irradiance_bytes(const struct precomputed_irradiance *pi)

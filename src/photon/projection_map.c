@@ -557,9 +557,9 @@ struct projection_maps *projection_maps_build(const struct scene *scene,
                 mark_object(&g, &cells, p, &objects[i], specularity);
         collect_marked(pm, k, vec3_luminance(light_power(l)), specularity);
     }
-    free(specularity);
-    free(cells.sin_theta);
-    free(objects);
+    xfree(specularity);
+    xfree(cells.sin_theta);
+    xfree(objects);
     return pm;
 }
 
@@ -567,9 +567,9 @@ void projection_maps_free(struct projection_maps *pm)
 {
     if (pm == NULL)
         return;
-    free(pm->cells);
-    free(pm->patches);
-    free(pm);
+    xfree(pm->cells);
+    xfree(pm->patches);
+    xfree(pm);
 }
 
 struct projection_stats projection_maps_stats(const struct projection_maps *pm)

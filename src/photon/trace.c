@@ -43,7 +43,6 @@
 #include "trace.h"
 
 #include <assert.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"
@@ -297,6 +296,6 @@ int trace_photons(const struct scene *scene, const struct trace_settings *ts,
 
 void photon_trace_free(struct photon_trace *out)
 {
-    free(out->photons);
+    xfree(out->photons);
     memset(out, 0, sizeof *out);
 }

@@ -425,7 +425,7 @@ static void grow_table(struct nff_reader *rd)
     for (size_t i = 0; i < rd->cap_table; i++)
         if (rd->table[i].material >= 0)
             *find_slot(table, cap, rd->table[i].f) = rd->table[i];
-    free(rd->table);
+    xfree(rd->table);
     rd->table = table;
     rd->cap_table = cap;
 }
@@ -623,12 +623,12 @@ static struct nff_reader *reader_create(struct scene *scene, const char *path, F
 
 static void reader_free(struct nff_reader *rd)
 {
-    free(rd->triangles);
-    free(rd->normals);
-    free(rd->vertices);
-    free(rd->table);
-    free(rd->lights);
-    free(rd);
+    xfree(rd->triangles);
+    xfree(rd->normals);
+    xfree(rd->vertices);
+    xfree(rd->table);
+    xfree(rd->lights);
+    xfree(rd);
 }
 
 int nff_import(struct scene *scene, const char *path, struct error *err)

@@ -337,13 +337,13 @@ int obj_import(struct scene *scene, const char *path, const struct obj_placement
     rd->face_n = xmalloc(MAX_POLYGON_VERTICES, sizeof *rd->face_n, "OBJ face");
     rd->triangles = xmalloc(3 * (MAX_POLYGON_VERTICES - 2), sizeof *rd->triangles, "OBJ face");
     int status = read_statements(rd, err);
-    free(rd->triangles);
-    free(rd->face_n);
-    free(rd->face_v);
-    free(rd->text);
-    free(rd->normals);
-    free(rd->positions);
-    free(rd);
+    xfree(rd->triangles);
+    xfree(rd->face_n);
+    xfree(rd->face_v);
+    xfree(rd->text);
+    xfree(rd->normals);
+    xfree(rd->positions);
+    xfree(rd);
     fclose(stream);
     return status;
 }

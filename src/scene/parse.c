@@ -264,7 +264,7 @@ static int parse_file(struct scene *scene, const char *path, int depth, struct e
     ps->file = path;
     ps->depth = depth;
     int status = parse_lines(ps, f, err);
-    free(ps);
+    xfree(ps);
     fclose(f);
     return status;
 }

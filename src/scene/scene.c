@@ -7,7 +7,6 @@
 #include "scene.h"
 
 #include <assert.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"
@@ -41,11 +40,11 @@ void scene_free(struct scene *scene)
     if (scene == NULL)
         return;
     geometry_free(scene->geometry);
-    free(scene->light_of_prim);
-    free(scene->light_cdf);
-    free(scene->lights);
-    free(scene->materials);
-    free(scene);
+    xfree(scene->light_of_prim);
+    xfree(scene->light_cdf);
+    xfree(scene->lights);
+    xfree(scene->materials);
+    xfree(scene);
 }
 
 int scene_add_material(struct scene *scene, const struct material *m)

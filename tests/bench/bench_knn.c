@@ -12,7 +12,6 @@
 
 #include <stdint.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../../src/base/alloc.h"
@@ -134,7 +133,7 @@ static void bench_one_size(const char *name, const struct vec3 *points, size_t n
     printf("knn.%s.photons_checksum=%.17g\n", name, points_checksum(points, n));
     struct kdtree *map = NULL;
     printf("knn.%s.build_s=%.4f\n", name, time_build(photons, n, &map));
-    free(photons);
+    xfree(photons);
     struct knn_figures k50 = time_queries(map, queries, 50, nn);
     printf("knn.%s.k50_qps=%.0f\n", name, k50.qps);
     struct knn_figures k500 = time_queries(map, queries, 500, nn);
@@ -157,6 +156,6 @@ void bench_knn(void)
     bench_one_size("100k", points, 100000, queries, nn);
     bench_one_size("1m", points, n_max, queries, nn);
     nearest_free(nn);
-    free(queries);
-    free(points);
+    xfree(queries);
+    xfree(points);
 }

@@ -136,8 +136,8 @@ void bench_ray_workload(const char *scene_name, struct geometry *(*build)(void *
     printf("rays.%s.primary_tsum=%.9g\n", scene_name, primary.t_sum);
     printf("rays.%s.secondary_hits=%zu\n", scene_name, secondary.n_hits);
     fflush(stdout);
-    free(secondary.rays);
-    free(primary.rays);
+    xfree(secondary.rays);
+    xfree(primary.rays);
     geometry_free(g);
 }
 
@@ -259,6 +259,6 @@ void bench_rays(void)
     /* Looking down over the ridges: about 77% of the primary rays hit, the rest see sky. */
     struct bench_camera camera = {{0.1, 0.8, 1.3}, {0.0, -0.1, -0.1}, {0.0, 1.0, 0.0}, 50.0};
     bench_ray_workload("terrain1m", build_terrain, &terrain, &camera);
-    free(terrain.vertices);
+    xfree(terrain.vertices);
     bench_scene_file("scenes/cornell.scene");
 }
