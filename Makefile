@@ -12,7 +12,7 @@
 #   make bench      benchmark figures (ONLY=rays|knn|...|tiles runs one workload); SPD=DIR
 #                   adds the workloads on SPD files, which are skipped without it
 #   make figures    re-measure the figures README.md states and write them into it (long;
-#                   ONLY=presets|bench for one part, WORKLOADS="knn rays" for some of bench)
+#                   ONLY=presets|bench for one part; bench is the tte workload's table)
 #   make fuzz       libFuzzer targets for the four readers, built with clang (development)
 #   make clean
 #
@@ -118,7 +118,7 @@ bench: $(BIN) $(BUILD)/bench
 
 # The figures README.md states, re-measured and written into it (ONLY=presets or bench).
 figures: $(BIN) $(BUILD)/bench
-	SPD='$(SPD)' WORKLOADS='$(WORKLOADS)' sh scripts/figures.sh $(ONLY)
+	sh scripts/figures.sh $(ONLY)
 
 # Fuzz targets (a development tool, not part of the product build): one per reader. Run
 # e.g. build/fuzz/fuzz_nff -max_len=8192 -max_total_time=600 CORPUS_DIR < /dev/null

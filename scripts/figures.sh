@@ -6,9 +6,10 @@
 #
 #   presets  scripts/presets.sh: every mode's presets on both Cornell boxes against the
 #            references (about 15 minutes of CPU; two renders run at once)
-#   bench    make bench's name=value lines, one row a workload: those named in WORKLOADS
-#            (default all: rays knn shapes photons ppm tte tiles; tte, time to error,
-#            takes the longest), SPD=DIR for the SPD scenes
+#   bench    `make bench ONLY=tte`, time to error: one row a photon mode and scene, its CPU
+#            seconds, its relmse, pt's CPU seconds to that relmse and their ratio (about half
+#            an hour of CPU; PHOTON_TTE_TRIAL=1 tries the pipeline in a minute, on figures
+#            that mean nothing, and says so in the table)
 #
 # Each part prints how long it took. Nothing in README.md changes unless the part succeeded.
 set -eu
@@ -34,18 +35,28 @@ splice() {
     mv README.md.tmp README.md
 }
 
-# make bench's name=value lines as a table: one row a workload (the key's first word).
-bench_table() {
-    echo "| workload | figures (name=value, medians of 3 runs, CPU seconds, one thread) |"
-    echo "|---|---|"
-    awk -F= '/^[a-z0-9_]+\.[^=]*=/ {
+# The tte workload's tte.MODE.SCENE.KEY=VALUE lines (tests/bench/README.md) as a table: one
+# row a mode and scene, in the order printed; pt's seconds say when they were extrapolated.
+tte_table() {
+    echo "| scene | mode | CPU s | relmse | pt: CPU s to that relmse | ratio (pt s / mode s) |"
+    echo "|---|---|---|---|---|---|"
+    awk -F= '/^tte\.[^.]+\.[^.]+\.[a-z_]+=/ {
             split($1, part, ".")
-            w = part[1]
-            if (!(w in row)) order[++n] = w
-            key = substr($1, length(w) + 2)
-            row[w] = row[w] (row[w] == "" ? "" : ", ") "`" key "` " $2
+            if (part[2] == "pt") next
+            row = part[3] " | " part[2]
+            if (!(row in seen)) { seen[row] = 1; order[++n] = row }
+            value[row, part[4]] = $2
         }
-        END { for (i = 1; i <= n; i++) print "| " order[i] " | " row[order[i]] " |" }' "$1"
+        END {
+            for (i = 1; i <= n; i++) {
+                r = order[i]
+                pt = value[r, "pt_seconds"]
+                if (value[r, "extrapolated"] == 1) pt = pt " (extrapolated)"
+                print "| " r " | " value[r, "seconds"] " | " value[r, "relmse"] " | " pt \
+                    " | " value[r, "ratio"] " |"
+            }
+            exit n == 0
+        }' "$1"
 }
 
 for part in $parts; do
@@ -56,12 +67,12 @@ for part in $parts; do
         splice presets build/figures-presets.md
         ;;
     bench)
-        : > build/figures-bench.txt
-        for workload in ${WORKLOADS:-rays knn shapes photons ppm tte tiles}; do
-            make --no-print-directory bench ONLY="$workload" ${SPD:+SPD="$SPD"} \
-                >> build/figures-bench.txt
-        done
-        bench_table build/figures-bench.txt > build/figures-bench.md
+        make --no-print-directory bench ONLY=tte > build/figures-bench.txt
+        tte_table build/figures-bench.txt > build/figures-bench.md
+        if [ -n "${PHOTON_TTE_TRIAL:-}" ]; then
+            printf '\nA trial run (PHOTON_TTE_TRIAL): these figures mean nothing.\n' \
+                >> build/figures-bench.md
+        fi
         splice bench build/figures-bench.md
         ;;
     *)

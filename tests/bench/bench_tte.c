@@ -1,33 +1,46 @@
 /*
- * tests/bench/bench_tte.c -- time to error: how long each mode needs to reach a given
- * relmse against a scene's converged reference, beside the path tracer, on the Cornell
- * boxes whose references are in reference/.
+ * tests/bench/bench_tte.c -- time to error: how long each photon mode needs to reach the
+ * relmse it ends with against a scene's converged reference, and how long the path tracer
+ * needs to reach the same relmse, on the scenes whose references are in reference/.
  *
- * For each scene and each photon mode at its defaults (2008: 256 x 256, 16 eye rays, 64
- * passes of 100,000 photons; 1996: 64 samples per pixel, 256 where the camera sees a
- * mirror or glass, the maps, the irradiance cache),
- * the mode sets the target, the relmse it ends with, and its seconds to reach it; pt then
- * renders, with checkpoints after 1, 2, 4, ... samples per pixel, until it reaches the target
- * or has run four times as long. pt's time to the target is read off its checkpoints
- * (log-log interpolation between the two around it) or, when it did not get there, from
- * its last one by pt's own law, relmse ~ 1 / time (tte.pt.SCENE.extrapolated=1 says so).
- * Also printed: pt's relmse at 2008's time, and the ratio of the two relmse at equal time.
+ * Each photon mode renders at the command line's defaults (its settings_default() and
+ * DEFAULT_SPP; 1994 and 1996 take SPECULAR_SPP_FACTOR times the samples where the camera
+ * sees a light through a mirror or glass, as options.c gives them); its final relmse is
+ * its target and its CPU seconds the time to it. pt then renders once for the scene, with
+ * checkpoints after 1, 2, 4, ... samples per pixel, for PT_TIME_FACTOR times the longest
+ * mode's seconds, and every mode's figure is read off that one curve: log-log
+ * interpolation between the two checkpoints around the target or, past pt's last
+ * checkpoint, pt's own law, relmse ~ 1 / time (tte.MODE.SCENE.extrapolated=1 says so).
+ * ratio = pt's seconds / the mode's: above 1 the photon mode is faster to its error.
+ *
+ * PHOTON_TTE_TRIAL set and not empty makes a trial run, for trying what reads the figures
+ * (scripts/figures.sh): the same steps on the TRIAL_SIZE x TRIAL_SIZE window at the
+ * image's centre, with a TRIAL_SHRINK-th of the photons, TRIAL_GATHER_RAYS gather rays and
+ * TRIAL_PASSES photon passes. Its figures mean nothing.
  */
 #include "bench.h"
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "../../src/image/compare.h"
+#include "../../src/modes/jensen1994.h"
 #include "../../src/modes/jensen1996.h"
 #include "../../src/modes/ppm2008.h"
 #include "../../src/modes/pt.h"
 
 #define MAX_ROWS 64
+#define N_PHOTON_MODES 3
+#define PT_TIME_FACTOR 4 /* pt's cap: this many times the longest mode's seconds */
+#define TRIAL_SIZE 32
+#define TRIAL_SHRINK 100
+#define TRIAL_GATHER_RAYS 32
+#define TRIAL_PASSES 4
 
 /* The error curve a render's checkpoints trace. */
 struct curve {
-    const struct image *reference; /* borrowed, the whole image */
+    const struct image *reference; /* borrowed, the rendered window of the reference */
     double seconds[MAX_ROWS], relmse[MAX_ROWS];
     int n;
 };
@@ -72,81 +85,216 @@ static double error_at(const struct curve *c, double t)
     return c->relmse[c->n - 1] * c->seconds[c->n - 1] / t; /* pt's 1 / time beyond its end */
 }
 
-/* Renders scene (finished) at --mode 2008's defaults, its checkpoints into at. */
-static void render_2008(const struct scene *scene, const struct checkpoint *at)
+/* The command line's settings at spp samples a pixel (seed 1, no time limit): the whole
+ * image, or in a trial the window at its centre. */
+static struct render_settings settings_at(const struct scene *scene, int spp, int trial)
 {
-    struct render_settings rs = render_settings_whole(scene, 1, PPM_DEFAULT_SPP, MAX_DEPTH_LIMIT);
-    struct ppm_settings ps = ppm_settings_default();
-    struct render_counters counters = {0, 0, 0, 0, 0};
-    struct ppm_stats stats;
-    ps.report = at;
-    struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
-    render_result_free(&result);
+    struct render_settings rs = render_settings_whole(scene, 1, spp, MAX_DEPTH_LIMIT);
+    if (trial && scene->width >= TRIAL_SIZE && scene->height >= TRIAL_SIZE) {
+        rs.x0 = (scene->width - TRIAL_SIZE) / 2;
+        rs.y0 = (scene->height - TRIAL_SIZE) / 2;
+        rs.x1 = rs.x0 + TRIAL_SIZE;
+        rs.y1 = rs.y0 + TRIAL_SIZE;
+    }
+    return rs;
 }
 
-/* Renders scene (finished) at --mode 1996's defaults, its checkpoints into at. */
-static void render_1996(const struct scene *scene, const struct checkpoint *at)
+/* The settings' window of the whole image (the same size as the scene's), a new image. */
+static struct image *window_of(const struct image *whole, const struct render_settings *rs)
 {
-    struct render_settings rs = render_settings_whole(scene, 1, J96_DEFAULT_SPP, MAX_DEPTH_LIMIT);
+    struct image *window = image_create(rs->x1 - rs->x0, rs->y1 - rs->y0);
+    for (int y = rs->y0; y < rs->y1; y++)
+        for (int x = rs->x0; x < rs->x1; x++)
+            image_set(window, x - rs->x0, y - rs->y0, image_get(whole, x, y));
+    return window;
+}
+
+static struct render_result render_1994(const struct scene *scene, int trial, struct error *err)
+{
+    struct render_settings rs = settings_at(scene, J94_DEFAULT_SPP, trial);
+    rs.specular_spp = SPECULAR_SPP_FACTOR * J94_DEFAULT_SPP; /* as on the command line */
+    struct jensen1994_settings js = jensen1994_settings_default();
+    if (trial) {
+        js.n_photons /= TRIAL_SHRINK;
+        js.gather_rays = TRIAL_GATHER_RAYS;
+    }
+    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct jensen1994_stats stats;
+    return render_jensen1994(scene, &rs, &js, 0, &counters, &stats, err);
+}
+
+static struct render_result render_1996(const struct scene *scene, int trial, struct error *err)
+{
+    struct render_settings rs = settings_at(scene, J96_DEFAULT_SPP, trial);
     rs.specular_spp = SPECULAR_SPP_FACTOR * J96_DEFAULT_SPP; /* as on the command line */
     struct jensen1996_settings js = jensen1996_settings_default();
+    if (trial) {
+        js.global_photons /= TRIAL_SHRINK;
+        js.caustic_photons /= TRIAL_SHRINK;
+        js.gather_rays = TRIAL_GATHER_RAYS;
+    }
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct jensen1996_stats stats;
+    return render_jensen1996(scene, &rs, &js, 0, &counters, &stats, err);
+}
+
+static struct render_result render_2008(const struct scene *scene, int trial, struct error *err)
+{
+    (void)err; /* render_ppm does not fail on a finished scene */
+    struct render_settings rs = settings_at(scene, PPM_DEFAULT_SPP, trial);
+    struct ppm_settings ps = ppm_settings_default();
+    if (trial) {
+        ps.photons_per_pass /= TRIAL_SHRINK;
+        ps.passes = TRIAL_PASSES;
+    }
+    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct ppm_stats stats;
+    return render_ppm(scene, &rs, &ps, &counters, &stats);
+}
+
+struct photon_mode {
+    const char *name; /* the --mode and the key's MODE */
+    struct render_result (*render)(const struct scene *scene, int trial, struct error *err);
+};
+
+/* One mode's render: its final relmse (the target) and its CPU seconds to it. */
+struct mode_run {
+    const struct photon_mode *mode; /* borrowed */
+    double relmse, seconds;         /* seconds < 0: the render failed                 */
+};
+
+/* Renders with run->mode, timed, and measures the image against reference (its window). */
+static void run_mode(const struct scene *scene, const struct image *reference, int trial,
+                     const char *name, struct mode_run *run)
+{
+    fprintf(stderr, "bench: tte: %s: rendering --mode %s\n", name, run->mode->name);
     struct error err;
-    js.report = at;
-    struct render_result result = render_jensen1996(scene, &rs, &js, 0, &counters, &stats, &err);
+    double start = bench_seconds();
+    struct render_result result = run->mode->render(scene, trial, &err);
+    run->seconds = bench_seconds() - start;
+    if (result.image == NULL) {
+        fprintf(stderr, "bench: tte.%s.%s failed: ", run->mode->name, name);
+        error_print(&err);
+        run->seconds = -1;
+        return;
+    }
+    run->relmse = image_compare(result.image, reference).relmse;
+    fprintf(stderr, "bench: tte: %s: --mode %s: relmse %g in %.1f s\n", name, run->mode->name,
+            run->relmse, run->seconds);
     render_result_free(&result);
 }
 
-static void time_to_error_on(const char *mode,
-                             void (*render)(const struct scene *, const struct checkpoint *),
-                             const char *name, const char *scene_path,
-                             const char *reference_path)
+/* pt's curve on scene for PT_TIME_FACTOR times the longest of the modes' seconds. */
+static void run_pt(const struct scene *scene, const struct mode_run *runs, int n_runs,
+                   int trial, const char *name, struct curve *pt)
 {
-    struct error err;
-    struct image *reference = pfm_read(reference_path, &err);
-    struct scene *scene = reference != NULL ? scene_load(scene_path, &err) : NULL;
-    if (scene == NULL) {
-        fprintf(stderr, "bench: tte.%s.%s skipped: ", mode, name);
-        error_print(&err);
-        image_free(reference);
-        return;
-    }
-    scene_finish(scene, reference->width, reference->height);
-    struct curve photon = {reference, {0}, {0}, 0}, pt = {reference, {0}, {0}, 0};
-    struct checkpoint at_photon = {record, &photon}, at_pt = {record, &pt};
-    render(scene, &at_photon);
-    double target = photon.relmse[photon.n - 1], photon_seconds = time_to(&photon, target);
-    struct render_settings rs = render_settings_whole(scene, 1, MAX_SPP, MAX_DEPTH_LIMIT);
+    double longest = 0;
+    for (int i = 0; i < n_runs; i++)
+        longest = fmax(longest, runs[i].seconds);
+    struct render_settings rs = settings_at(scene, MAX_SPP, trial);
+    rs.time_limit = PT_TIME_FACTOR * longest;
+    fprintf(stderr, "bench: tte: %s: rendering --mode pt for %.1f s\n", name, rs.time_limit);
+    struct checkpoint at = {record, pt};
     struct render_counters counters = {0, 0, 0, 0, 0};
-    rs.time_limit = 4 * photon_seconds;
-    struct render_result result = render_pt(scene, &rs, 0, &at_pt, &counters);
+    struct render_result result = render_pt(scene, &rs, 0, &at, &counters);
     render_result_free(&result);
-    double pt_seconds = time_to(&pt, target);
+    fprintf(stderr, "bench: tte: %s: --mode pt: relmse %g after %d samples, %.1f s\n", name,
+            pt->relmse[pt->n - 1], counters.passes, pt->seconds[pt->n - 1]);
+    printf("tte.pt.%s.seconds=%.3f\n", name, pt->seconds[pt->n - 1]);
+    printf("tte.pt.%s.relmse=%.6g\n", name, pt->relmse[pt->n - 1]);
+}
+
+/* The mode's figures against pt's curve. */
+static void print_figures(const struct mode_run *run, const struct curve *pt, const char *name)
+{
+    const char *mode = run->mode->name;
+    double pt_seconds = time_to(pt, run->relmse);
     int extrapolated = pt_seconds < 0;
     if (extrapolated)
-        pt_seconds = pt.seconds[pt.n - 1] * pt.relmse[pt.n - 1] / target;
-    printf("tte.%s.%s.relmse=%.6g\n", mode, name, target);
-    printf("tte.%s.%s.seconds=%.3f\n", mode, name, photon_seconds);
-    printf("tte.pt.%s.seconds_to_%s_relmse=%.3f\n", name, mode, pt_seconds);
-    printf("tte.pt.%s.extrapolated=%d\n", name, extrapolated);
-    printf("tte.%s.%s.ratio_to_pt=%.4g\n", mode, name, photon_seconds / pt_seconds);
-    printf("tte.pt.%s.relmse_at_%s_seconds=%.6g\n", name, mode, error_at(&pt, photon_seconds));
-    printf("tte.%s.%s.relmse_ratio_equal_time=%.4g\n", mode, name,
-           target / error_at(&pt, photon_seconds));
+        pt_seconds = pt->seconds[pt->n - 1] * pt->relmse[pt->n - 1] / run->relmse;
+    printf("tte.%s.%s.relmse=%.6g\n", mode, name, run->relmse);
+    printf("tte.%s.%s.seconds=%.3f\n", mode, name, run->seconds);
+    printf("tte.%s.%s.pt_seconds=%.3f\n", mode, name, pt_seconds);
+    printf("tte.%s.%s.extrapolated=%d\n", mode, name, extrapolated);
+    printf("tte.%s.%s.ratio=%.4g\n", mode, name, pt_seconds / run->seconds);
+    printf("tte.%s.%s.pt_relmse_equal_time=%.6g\n", mode, name, error_at(pt, run->seconds));
+}
+
+/* A scene, its reference and the photon modes measured on it. */
+struct tte_case {
+    const char *name, *scene_path, *reference_path;
+    const struct photon_mode *modes; /* borrowed: n_modes of them */
+    int n_modes;                     /* 1..N_PHOTON_MODES */
+};
+
+/* Loads the case's reference and scene; NULL, with a note on stderr, when either cannot be
+ * read or they differ in size. */
+static struct scene *load_case(const struct tte_case *tc, struct image **reference)
+{
+    struct error err;
+    *reference = pfm_read(tc->reference_path, &err);
+    if (*reference == NULL) {
+        fprintf(stderr, "bench: tte: %s skipped: ", tc->name);
+        error_print(&err);
+        return NULL;
+    }
+    struct scene *scene = bench_scene(tc->scene_path); /* which prints why it failed */
+    if (scene == NULL)
+        fprintf(stderr, "bench: tte: %s skipped: its scene\n", tc->name);
+    else if (scene->width != (*reference)->width || scene->height != (*reference)->height) {
+        fprintf(stderr, "bench: tte: %s skipped: %s is %d x %d, the scene %d x %d\n",
+                tc->name, tc->reference_path, (*reference)->width, (*reference)->height,
+                scene->width, scene->height);
+        scene_free(scene);
+        scene = NULL;
+    }
+    if (scene == NULL) {
+        image_free(*reference);
+        *reference = NULL;
+    }
+    return scene;
+}
+
+static void time_to_error_on(const struct tte_case *tc, int trial)
+{
+    struct image *whole = NULL;
+    struct scene *scene = load_case(tc, &whole);
+    if (scene == NULL)
+        return;
+    struct render_settings window = settings_at(scene, 1, trial);
+    struct image *reference = window_of(whole, &window);
+    struct mode_run runs[N_PHOTON_MODES];
+    int n_runs = 0;
+    for (int m = 0; m < tc->n_modes; m++) {
+        runs[n_runs].mode = &tc->modes[m];
+        run_mode(scene, reference, trial, tc->name, &runs[n_runs]);
+        n_runs += runs[n_runs].seconds >= 0;
+    }
+    if (n_runs > 0) {
+        struct curve pt = {reference, {0}, {0}, 0};
+        run_pt(scene, runs, n_runs, trial, tc->name, &pt);
+        for (int i = 0; i < n_runs; i++)
+            print_figures(&runs[i], &pt, tc->name);
+    }
     fflush(stdout);
-    scene_free(scene);
     image_free(reference);
+    image_free(whole);
+    scene_free(scene);
 }
 
 void bench_tte(void)
 {
-    static const char *const names[2] = {"cornell", "cornell-specular"};
-    static const char *const scenes[2] = {"scenes/cornell.scene", "scenes/cornell-specular.scene"};
-    static const char *const references[2] = {"reference/cornell-pt.pfm",
-                                              "reference/cornell-specular-pt.pfm"};
-    for (int i = 0; i < 2; i++) {
-        time_to_error_on("1996", render_1996, names[i], scenes[i], references[i]);
-        time_to_error_on("2008", render_2008, names[i], scenes[i], references[i]);
-    }
+    static const struct photon_mode modes[N_PHOTON_MODES] = {
+        {"1994", render_1994}, {"1996", render_1996}, {"2008", render_2008}};
+    static const struct tte_case cases[3] = {
+        {"cornell", "scenes/cornell.scene", "reference/cornell-pt.pfm", modes, 3},
+        {"cornell-specular", "scenes/cornell-specular.scene",
+         "reference/cornell-specular-pt.pfm", modes, 3},
+        {"ppm-box", "scenes/ppm-box.scene", "reference/ppm-box.pfm", modes + 2, 1}};
+    const char *trial_text = getenv("PHOTON_TTE_TRIAL");
+    int trial = trial_text != NULL && trial_text[0] != '\0';
+    if (trial)
+        fprintf(stderr, "bench: tte: PHOTON_TTE_TRIAL: a trial run, its figures mean nothing\n");
+    for (int i = 0; i < 3; i++)
+        time_to_error_on(&cases[i], trial);
 }
