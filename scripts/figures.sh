@@ -38,8 +38,8 @@ splice() {
 # The tte workload's tte.MODE.SCENE.KEY=VALUE lines (tests/bench/README.md) as a table: one
 # row a mode and scene, in the order printed; pt's seconds say when they were extrapolated.
 tte_table() {
-    echo "| scene | mode | CPU s | relmse | pt: CPU s to that relmse | ratio (pt s / mode s) |"
-    echo "|---|---|---|---|---|---|"
+    echo "| scene | mode | CPU s | relmse | pt: CPU s to that relmse | ratio (pt s / mode s) | peak MB |"
+    echo "|---|---|---|---|---|---|---|"
     awk -F= '/^tte\.[^.]+\.[^.]+\.[a-z_]+=/ {
             split($1, part, ".")
             if (part[2] == "pt") next
@@ -53,7 +53,7 @@ tte_table() {
                 pt = value[r, "pt_seconds"]
                 if (value[r, "extrapolated"] == 1) pt = pt " (extrapolated)"
                 print "| " r " | " value[r, "seconds"] " | " value[r, "relmse"] " | " pt \
-                    " | " value[r, "ratio"] " |"
+                    " | " value[r, "ratio"] " | " sprintf("%.1f", value[r, "bytes_peak"] / 1e6) " |"
             }
             exit n == 0
         }' "$1"

@@ -24,6 +24,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "../../src/base/alloc.h"
 #include "../../src/image/compare.h"
 #include "../../src/modes/jensen1994.h"
 #include "../../src/modes/jensen1996.h"
@@ -161,6 +162,8 @@ struct photon_mode {
 struct mode_run {
     const struct photon_mode *mode; /* borrowed */
     double relmse, seconds;         /* seconds < 0: the render failed                 */
+    size_t bytes_peak;              /* the render's high-water mark of our allocations,
+                                       beyond the scene and reference held before it  */
 };
 
 /* Renders with run->mode, timed, and measures the image against reference (its window). */
@@ -169,9 +172,12 @@ static void run_mode(const struct scene *scene, const struct image *reference, i
 {
     fprintf(stderr, "bench: tte: %s: rendering --mode %s\n", name, run->mode->name);
     struct error err;
+    alloc_restart_peak();
+    size_t before = alloc_bytes_now();
     double start = bench_seconds();
     struct render_result result = run->mode->render(scene, trial, &err);
     run->seconds = bench_seconds() - start;
+    run->bytes_peak = alloc_bytes_peak() - before;
     if (result.image == NULL) {
         fprintf(stderr, "bench: tte.%s.%s failed: ", run->mode->name, name);
         error_print(&err);
@@ -218,6 +224,7 @@ static void print_figures(const struct mode_run *run, const struct curve *pt, co
     printf("tte.%s.%s.extrapolated=%d\n", mode, name, extrapolated);
     printf("tte.%s.%s.ratio=%.4g\n", mode, name, pt_seconds / run->seconds);
     printf("tte.%s.%s.pt_relmse_equal_time=%.6g\n", mode, name, error_at(pt, run->seconds));
+    printf("tte.%s.%s.bytes_peak=%zu\n", mode, name, run->bytes_peak);
 }
 
 /* A scene, its reference and the photon modes measured on it. */
