@@ -59,6 +59,20 @@ tte_table() {
         }' "$1"
 }
 
+# Where each mode's seconds went: its tte.MODE.SCENE.seconds_PHASE lines (the --stats keys of
+# its phases), one row a mode and scene.
+phase_table() {
+    echo "| scene | mode | where the CPU seconds went (\`--stats\` keys) |"
+    echo "|---|---|---|"
+    awk -F= '/^tte\.[^.]+\.[^.]+\.seconds_[a-z_]+=/ {
+            split($1, part, ".")
+            row = part[3] " | " part[2]
+            if (!(row in seen)) { seen[row] = 1; order[++n] = row }
+            text[row] = text[row] (text[row] == "" ? "" : ", ") "`" part[4] "` " $2
+        }
+        END { for (i = 1; i <= n; i++) print "| " order[i] " | " text[order[i]] " |" }' "$1"
+}
+
 for part in $parts; do
     start=$(date +%s)
     case $part in
@@ -69,6 +83,8 @@ for part in $parts; do
     bench)
         make --no-print-directory bench ONLY=tte > build/figures-bench.txt
         tte_table build/figures-bench.txt > build/figures-bench.md
+        echo >> build/figures-bench.md
+        phase_table build/figures-bench.txt >> build/figures-bench.md
         if [ -n "${PHOTON_TTE_TRIAL:-}" ]; then
             printf '\nA trial run (PHOTON_TTE_TRIAL): these figures mean nothing.\n' \
                 >> build/figures-bench.md

@@ -110,7 +110,22 @@ static struct image *window_of(const struct image *whole, const struct render_se
     return window;
 }
 
-static struct render_result render_1994(const struct scene *scene, int trial, struct error *err)
+/* Where a render's CPU seconds went, by the phases its --stats names. */
+#define MAX_PHASES 4
+struct phases {
+    const char *name[MAX_PHASES]; /* the stats key, e.g. "seconds_cache" */
+    double seconds[MAX_PHASES];
+    int n;
+};
+
+static void phase(struct phases *ph, const char *name, double seconds)
+{
+    ph->name[ph->n] = name;
+    ph->seconds[ph->n++] = seconds;
+}
+
+static struct render_result render_1994(const struct scene *scene, int trial, struct phases *ph,
+                                        struct error *err)
 {
     struct render_settings rs = settings_at(scene, J94_DEFAULT_SPP, trial);
     rs.specular_spp = SPECULAR_SPP_FACTOR * J94_DEFAULT_SPP; /* as on the command line */
@@ -121,10 +136,15 @@ static struct render_result render_1994(const struct scene *scene, int trial, st
     }
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct jensen1994_stats stats;
-    return render_jensen1994(scene, &rs, &js, 0, &counters, &stats, err);
+    struct render_result result = render_jensen1994(scene, &rs, &js, 0, &counters, &stats, err);
+    phase(ph, "seconds_photons", stats.seconds_photons);
+    phase(ph, "seconds_cache", stats.seconds_cache);
+    phase(ph, "seconds_final_pass", stats.seconds_final_pass);
+    return result;
 }
 
-static struct render_result render_1996(const struct scene *scene, int trial, struct error *err)
+static struct render_result render_1996(const struct scene *scene, int trial, struct phases *ph,
+                                        struct error *err)
 {
     struct render_settings rs = settings_at(scene, J96_DEFAULT_SPP, trial);
     rs.specular_spp = SPECULAR_SPP_FACTOR * J96_DEFAULT_SPP; /* as on the command line */
@@ -136,10 +156,15 @@ static struct render_result render_1996(const struct scene *scene, int trial, st
     }
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct jensen1996_stats stats;
-    return render_jensen1996(scene, &rs, &js, 0, &counters, &stats, err);
+    struct render_result result = render_jensen1996(scene, &rs, &js, 0, &counters, &stats, err);
+    phase(ph, "seconds_photons", stats.seconds_photons);
+    phase(ph, "seconds_cache", stats.seconds_cache);
+    phase(ph, "seconds_final_pass", stats.seconds_final_pass);
+    return result;
 }
 
-static struct render_result render_2008(const struct scene *scene, int trial, struct error *err)
+static struct render_result render_2008(const struct scene *scene, int trial, struct phases *ph,
+                                        struct error *err)
 {
     (void)err; /* render_ppm does not fail on a finished scene */
     struct render_settings rs = settings_at(scene, PPM_DEFAULT_SPP, trial);
@@ -150,12 +175,16 @@ static struct render_result render_2008(const struct scene *scene, int trial, st
     }
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
-    return render_ppm(scene, &rs, &ps, &counters, &stats);
+    struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
+    phase(ph, "seconds_ray_pass", stats.seconds_ray_pass);
+    phase(ph, "seconds_photons", stats.seconds_photons);
+    return result;
 }
 
 struct photon_mode {
     const char *name; /* the --mode and the key's MODE */
-    struct render_result (*render)(const struct scene *scene, int trial, struct error *err);
+    struct render_result (*render)(const struct scene *scene, int trial, struct phases *ph,
+                                   struct error *err);
 };
 
 /* One mode's render: its final relmse (the target) and its CPU seconds to it. */
@@ -164,6 +193,7 @@ struct mode_run {
     double relmse, seconds;         /* seconds < 0: the render failed                 */
     size_t bytes_peak;              /* the render's high-water mark of our allocations,
                                        beyond the scene and reference held before it  */
+    struct phases phases;           /* where its seconds went                          */
 };
 
 /* Renders with run->mode, timed, and measures the image against reference (its window). */
@@ -175,7 +205,8 @@ static void run_mode(const struct scene *scene, const struct image *reference, i
     alloc_restart_peak();
     size_t before = alloc_bytes_now();
     double start = bench_seconds();
-    struct render_result result = run->mode->render(scene, trial, &err);
+    run->phases.n = 0;
+    struct render_result result = run->mode->render(scene, trial, &run->phases, &err);
     run->seconds = bench_seconds() - start;
     run->bytes_peak = alloc_bytes_peak() - before;
     if (result.image == NULL) {
@@ -225,6 +256,8 @@ static void print_figures(const struct mode_run *run, const struct curve *pt, co
     printf("tte.%s.%s.ratio=%.4g\n", mode, name, pt_seconds / run->seconds);
     printf("tte.%s.%s.pt_relmse_equal_time=%.6g\n", mode, name, error_at(pt, run->seconds));
     printf("tte.%s.%s.bytes_peak=%zu\n", mode, name, run->bytes_peak);
+    for (int i = 0; i < run->phases.n; i++)
+        printf("tte.%s.%s.%s=%.3f\n", mode, name, run->phases.name[i], run->phases.seconds[i]);
 }
 
 /* A scene, its reference and the photon modes measured on it. */
