@@ -73,6 +73,7 @@ static const char *const other_pixels_options[] = {
     "--mode 1996 --cache-accuracy 0.2", "--mode 1996 --accurate-distance 2",
     "--mode 1996 --accurate-weight 0.2", "--mode 1996 --shadow-photons",
     "--mode 1996 --one-map", "--mode 1996 --precomputed-irradiance 4",
+    "--mode 1996 --no-disc-coverage",
     "--mode 1994 --differential 3", "--mode 1994 --light-samples 9",
     "--mode 1994 --irradiance-store illumination", "--mode 1994 --no-projection-maps",
     "--mode 2008 --passes 3", "--mode 2008 --photons-per-pass 7", "--mode 2008 --alpha 0.5",

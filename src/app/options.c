@@ -141,6 +141,12 @@ static const struct option_spec specs[] = {
      J96_MAX_PRECOMPUTED, "N",
      "gather rays read irradiance precomputed at every N-th global photon (Christensen "
      "1999); 0 = a radiance estimate at each ray's end, the paper's (default 16)", FOR_1996},
+    {"--disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
+     "records of precomputed irradiance count the photons of their disc's plane over "
+     "the part of the disc a surface covers, found by probe rays, in place of pi r^2 "
+     "(the default)", FOR_1996},
+    {"--no-disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
+     "over the whole disc, pi r^2, as Eq. 3 (the paper's)", FOR_1996},
     {"--differential", OPT_INT, FIELD(differential_run), 0, 100000, "R",
      "stop an irradiance estimate after R additions that all raise or all lower it "
      "(differential checking); 0 = off (default 10)", FOR_1994},
@@ -279,6 +285,7 @@ static void set_defaults(struct options *o)
     o->accurate_weight = js.accurate_weight;
     o->shadow_photons = js.shadow_photons;
     o->precomputed_irradiance = js.precomputed_irradiance;
+    o->disc_coverage = js.disc_coverage;
     struct jensen1994_settings j94 = jensen1994_settings_default();
     o->differential_run = j94.differential_run;
     o->light_samples = j94.light_samples;

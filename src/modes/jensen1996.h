@@ -71,6 +71,10 @@ struct jensen1996_settings {
                                  surfaces (Christensen 1999; a departure, jensen1996.c);
                                  0: the paper's radiance estimate at every ray's end,
                                  0..J96_MAX_PRECOMPUTED                                  */
+    int disc_coverage;        /* 1: a record's estimate takes the photons of its disc's
+                                 plane over the part of the disc a surface covers
+                                 (photon/disc_coverage.h; a departure, jensen1996.c);
+                                 0: Eq. 3's k nearest over pi r^2                        */
     const struct checkpoint *report; /* borrowed or NULL: rows after 1, 2, 4, ... samples
                                  per pixel, work = photons emitted + gather rays so far   */
     struct global_work *work; /* NULL: pass 1 and the cache's pre-pass run and are released

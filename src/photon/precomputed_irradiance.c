@@ -14,10 +14,12 @@
 #include <assert.h>
 
 #include "../base/alloc.h"
+#include "disc_coverage.h"
 
 struct precomputed_irradiance *precompute_irradiance(const struct kdtree *map,
                                                      const struct kdtree *records,
-                                                     const struct irradiance_settings *is)
+                                                     const struct irradiance_settings *is,
+                                                     const struct scene *coverage)
 {
     assert(is->run == 0 && is->n >= 1);
     struct precomputed_irradiance *pi = xmalloc(1, sizeof *pi, "precomputed irradiance");
@@ -27,8 +29,10 @@ struct precomputed_irradiance *precompute_irradiance(const struct kdtree *map,
     struct nearest *nn = nearest_create(is->n);
     for (size_t i = 1; i <= records->n_photons; i++) {
         const struct photon *p = &records->photons[i];
-        struct vec3 e = irradiance_estimate(map, photon_position(p), photon_direction(p), is,
-                                            nn);
+        struct vec3 x = photon_position(p), n = photon_direction(p);
+        struct vec3 e = coverage != NULL
+                            ? covered_irradiance_estimate(map, coverage, x, n, is, nn)
+                            : irradiance_estimate(map, x, n, is, nn);
         pi->value[i].e[0] = (float)e.x;
         pi->value[i].e[1] = (float)e.y;
         pi->value[i].e[2] = (float)e.z;

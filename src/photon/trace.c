@@ -97,6 +97,12 @@ static int holds_photons(const struct photon_hit *h)
            vec3_max_component(brdf_albedo(h->material, &h->frame, h->wi)) > 0;
 }
 
+int photons_land_at(const struct scene *scene, const struct hit *hit, struct vec3 dir)
+{
+    struct photon_hit h = photon_hit_at(scene, hit, dir);
+    return holds_photons(&h);
+}
+
 /* The photon stored at h: what the tracer hands to its sink. */
 static struct photon_event photon_event_at(const struct photon_hit *h, struct vec3 power,
                                            unsigned kind, int light)
