@@ -63,6 +63,7 @@ static const char *const same_pixels_options[] = {
     "--variance v.pfm", "--mode 2008 --checkpoint 3", "--exposure 2", "--stats", "--progress",
     "--no-progress", "--save-photons w.work", "--load-photons w.work", "--quality default",
     "--mode pt --paper", "--mode 1996 --no-shadow-photons" /* the default */,
+    "--mode 1996 --disc-coverage" /* the default */,
 };
 static const char *const other_pixels_options[] = {
     "--mode pt", "--seed 2", "--spp 3", "--specular-spp 40", "--width 100", "--height 100",

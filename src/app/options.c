@@ -98,10 +98,10 @@ static const struct option_spec specs[] = {
      "read the global work from FILE (saved by the same command but "
      "for -o, --crop and the like) instead of doing it", FOR_PHOTON_MAPS},
     {"--photons", OPT_INT, FIELD(photons), 1, MAX_PHOTONS, "N",
-     "photons emitted (default: photons 200000, 1994 4000000, 1996 4000000 for "
+     "photons emitted (default: photons 200000, 1994 4000000, 1996 1000000 for "
      "the global map)", FOR_PHOTON_MAPS},
     {"--gather", OPT_INT, FIELD(gather), 1, MAX_GATHER, "K",
-     "photons in each radiance or irradiance estimate (default 100; 1994: 50)",
+     "photons in each radiance or irradiance estimate (default 100; 1994, 1996: 50)",
      FOR_PHOTON_MAPS},
     {"--max-radius", OPT_REAL, FIELD(max_radius), 0, 1e30, "R",
      "largest gathering radius (default: 1/10 of the scene's diagonal)",
@@ -127,7 +127,7 @@ static const struct option_spec specs[] = {
      "point (default 0.15)", FOR_1994 | FOR_1996},
     {"--accurate-distance", OPT_REAL, FIELD(accurate_distance), 0, 1e6, "F",
      "gather rays shorter than F radii of the estimate they reach are evaluated "
-     "accurately (default 1)", FOR_1996},
+     "accurately (default 3)", FOR_1996},
     {"--accurate-weight", OPT_REAL, FIELD(accurate_weight), 0, 1, "W",
      "rays with throughput below W are evaluated approximately (default 0.1)", FOR_1996},
     {"--shadow-photons", OPT_FLAG, FIELD(shadow_photons), 0, 0, "",
@@ -580,7 +580,9 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
                      : o->mode == MODE_JENSEN1994 ? J94_DEFAULT_PHOTONS
                                                   : PHOTONS_DEFAULT_N;
     if (o->gather == 0)
-        o->gather = o->mode == MODE_JENSEN1994 ? J94_DEFAULT_GATHER : PHOTONS_DEFAULT_GATHER;
+        o->gather = o->mode == MODE_JENSEN1994   ? J94_DEFAULT_GATHER
+                    : o->mode == MODE_JENSEN1996 ? J96_DEFAULT_GATHER
+                                                 : PHOTONS_DEFAULT_GATHER;
     if (o->mode == MODE_PPM2008 && o->adaptive > 0)
         return error_set(err, "", 0, "--adaptive: not available with --mode 2008, whose "
                                      "pixels are not means of independent samples");

@@ -82,7 +82,7 @@ struct jensen1996_settings jensen1996_settings_default(void)
     struct jensen1996_settings js;
     js.global_photons = J96_DEFAULT_PHOTONS;
     js.caustic_photons = J96_DEFAULT_CAUSTIC_PHOTONS;
-    js.global_gather = PHOTONS_DEFAULT_GATHER;
+    js.global_gather = J96_DEFAULT_GATHER;
     js.caustic_gather = J96_DEFAULT_CAUSTIC_GATHER;
     js.max_radius = 0;
     js.cone_k = 1.0;

@@ -12,10 +12,15 @@
 #include "../photon/global_work.h"
 #include "render.h"
 
-#define J96_DEFAULT_PHOTONS 4000000        /* --photons: searches cost log N, so a large
-                                              global map is cheap and blurs less; at
-                                              1,000,000 the blur under the Cornell box's
-                                              balls still reached 5% (README)            */
+#define J96_DEFAULT_PHOTONS 1000000        /* --photons: with --disc-coverage and k = 50
+                                              the Cornell box's blocks are all within
+                                              2.6% at 1,000,000 (49 MB at the peak);
+                                              4,000,000 took 141 MB for the global map
+                                              and 10 CPU s more (README)                 */
+#define J96_DEFAULT_GATHER 50              /* --gather: k of the global map's estimates;
+                                              half the photons' disc blurs the crease
+                                              under the balls half as far: block
+                                              (160, 224) +3.8% at 100, +3.0% at 50      */
 #define J96_DEFAULT_SPP 128                /* --spp: the final pass costs little beside
                                               the maps and the cache all samples share;
                                               Cornell box: relmse 0.000125 at 64, 0.000080
@@ -29,7 +34,10 @@
                                               was 16% bright over an 8 x 8 patch      */
 #define J96_DEFAULT_GLOSSY_RAYS 6          /* --glossy-rays: the paper's "maximum of 6"   */
 #define J96_DEFAULT_CACHE_ACCURACY 0.15    /* --cache-accuracy: Ward's a                  */
-#define J96_DEFAULT_ACCURATE_DISTANCE 1.0  /* --accurate-distance (see jensen1996.c)      */
+#define J96_DEFAULT_ACCURATE_DISTANCE 3.0  /* --accurate-distance (see jensen1996.c): at
+                                              1 the crease under the Cornell box's front
+                                              ball was +3.0% (k = 50), at 3 +2.6%, for
+                                              the same CPU seconds                       */
 #define J96_DEFAULT_ACCURATE_WEIGHT 0.1    /* --accurate-weight (see jensen1996.c)        */
 #define J96_DEFAULT_PRECOMPUTED 16         /* --precomputed-irradiance: records at every
                                               16th photon of the global map (Christensen
@@ -116,7 +124,7 @@ struct jensen1996_stats {
     int strata_theta, strata_phi;     /* the gather's strata                              */
 };
 
-/* The defaults above, with the photons mode's --gather. */
+/* The defaults above. */
 struct jensen1996_settings jensen1996_settings_default(void);
 
 /* Renders the window of rs: pass 1 (the maps), the irradiance cache's pre-pass over the
