@@ -229,13 +229,16 @@ static double disc_short_of_edge(double h, double r)
 
 /* truth: the Cornell box's geometry in closed form: a disc on the floor's middle or on a
  *   ball is covered; one h from the floor's open front edge (z = 0), or on the green
- *   wall (x = 0) h above the floor, loses the circular segment beyond; under the light (a black emitter,
- *   which holds no photons) nothing is covered, which the floor clamps.
+ *   wall (x = 0) h above the floor, loses the circular segment beyond; under the light
+ *   (a black emitter, which holds no photons) nothing is covered, which the floor clamps;
+ *   in the specular box the floor under the glass ball, where photons land through the
+ *   glass, is covered.
  * tolerance: 0.07 of the disc: the probes stand for 1/32 of it each, and an edge cuts
  *   a ring of 8 between probes.
  * catches: probes on the wrong side of the plane or too shallow to find a surface, the
  *   turned-surface test reversed (the wall counted as floor), the black emitter counted,
- *   rings not of equal area (a half-disc far from 1/2), the floor left out. */
+ *   rings not of equal area (a half-disc far from 1/2), the floor left out, a probe that
+ *   stops at glass. */
 static void test_disc_coverage_of_the_cornell_box(struct check *t)
 {
     struct scene *scene = load_test_scene("scenes/cornell.scene", 0, 0);
@@ -257,6 +260,10 @@ static void test_disc_coverage_of_the_cornell_box(struct check *t)
     CHECK(t, disc_coverage(scene, vec3(278, 548.8, 280), vec3(0, -1, 0), r) ==
                  DISC_COVERAGE_FLOOR);
     scene_free(scene);
+    scene = load_test_scene("scenes/cornell-specular.scene", 0, 0);
+    CHECK(t, scene != NULL && disc_coverage(scene, vec3(185, 0, 169), up, r) == 1.0);
+    if (scene != NULL)
+        scene_free(scene);
 }
 
 /* truth: photons spread evenly over the Cornell box's floor, 0 to 549.6 in x and 0 to

@@ -16,20 +16,33 @@
 
 #include <assert.h>
 
+#include "../scene/brdf.h"
 #include "trace.h"
 
 #define DISC_SAME_SURFACE_COS 0.5 /* cos 60 degrees */
+#define DISC_PROBE_HITS 4         /* surfaces a probe may meet: mirrors and glass it passes,
+                                     one more where it stops                             */
 
 /* Whether the probe ray from above point q finds a surface that holds photons within
- * depth of the plane. */
+ * depth of the plane. It passes through mirrors and glass (all-delta surfaces, which
+ * photons leave at once: the floor under the glass ball, a hair's breadth below it,
+ * holds the caustic), and stops at anything else. */
 static int probe_finds_surface(const struct scene *scene, struct vec3 q, struct vec3 n,
                                double depth)
 {
-    struct hit hit;
     struct ray ray = make_ray(vec3_madd(q, n, depth), vec3_neg(n));
-    return scene_intersect(scene, ray, 2 * depth, &hit) &&
-           fabs(vec3_dot(hit.ng, n)) >= DISC_SAME_SURFACE_COS &&
-           photons_land_at(scene, &hit, ray.dir);
+    double left = 2 * depth;
+    for (int k = 0; k < DISC_PROBE_HITS; k++) {
+        struct hit hit;
+        if (!scene_intersect(scene, ray, left, &hit))
+            return 0;
+        if (!brdf_is_delta(&scene->materials[hit.material]))
+            return fabs(vec3_dot(hit.ng, n)) >= DISC_SAME_SURFACE_COS &&
+                   photons_land_at(scene, &hit, ray.dir);
+        left -= hit.t;
+        ray = make_ray(offset_origin(hit.p, ray.dir), ray.dir);
+    }
+    return 0;
 }
 
 double disc_coverage(const struct scene *scene, struct vec3 x, struct vec3 n, double r)

@@ -7,7 +7,9 @@
  * For a Lambertian surface f_r,d times it is the radiance estimate Eq. 3 would make at
  * the record, since that estimate's photons are the same and f_r,d = rho / pi does not
  * depend on their directions. A lookup then moves the estimate from x to a record at most
- * one disc away, where the photons are nearly the same ones.
+ * one disc away, where the photons are nearly the same ones. Given the scene, the estimate
+ * is disc_coverage.h's instead: the photons of the disc's plane over the part of the disc a
+ * surface covers, so that a record by an open edge or a wall is not dark.
  */
 #include "precomputed_irradiance.h"
 
