@@ -98,10 +98,10 @@ static const struct option_spec specs[] = {
      "read the global work from FILE (saved by the same command but "
      "for -o, --crop and the like) instead of doing it", FOR_PHOTON_MAPS},
     {"--photons", OPT_INT, FIELD(photons), 1, MAX_PHOTONS, "N",
-     "photons emitted (default: photons 200000, 1994 4000000, 1996 1000000 for "
+     "photons emitted (default: photons 200000, 1994 4000000, 1996 1250000 for "
      "the global map)", FOR_PHOTON_MAPS},
     {"--gather", OPT_INT, FIELD(gather), 1, MAX_GATHER, "K",
-     "photons in each radiance or irradiance estimate (default 100; 1994, 1996: 50)",
+     "photons in each radiance or irradiance estimate (default 100; 1994: 50; 1996: 40)",
      FOR_PHOTON_MAPS},
     {"--max-radius", OPT_REAL, FIELD(max_radius), 0, 1e30, "R",
      "largest gathering radius (default: 1/10 of the scene's diagonal)",

@@ -12,15 +12,16 @@
 #include "../photon/global_work.h"
 #include "render.h"
 
-#define J96_DEFAULT_PHOTONS 1000000        /* --photons: with --disc-coverage and k = 50
-                                              the Cornell box's blocks are all within
-                                              2.6% at 1,000,000 (49 MB at the peak);
-                                              4,000,000 took 141 MB for the global map
-                                              and 10 CPU s more (README)                 */
-#define J96_DEFAULT_GATHER 50              /* --gather: k of the global map's estimates;
-                                              half the photons' disc blurs the crease
-                                              under the balls half as far: block
-                                              (160, 224) +3.8% at 100, +3.0% at 50      */
+#define J96_DEFAULT_PHOTONS 1250000        /* --photons: with --disc-coverage and k = 40
+                                              both boxes' blocks are all within 2.6% at
+                                              1,250,000 (58 and 61 MB at the peak; at
+                                              1,000,000 the specular box's ceiling had
+                                              one at 3.2%); 4,000,000 took 141 MB for the
+                                              global map (README)                        */
+#define J96_DEFAULT_GATHER 40              /* --gather: k of the global map's estimates;
+                                              a smaller disc blurs the crease under the
+                                              front ball less: block (160, 224) +3.5% at
+                                              100, +2.6% at 50 (1,000,000 photons)     */
 #define J96_DEFAULT_SPP 128                /* --spp: the final pass costs little beside
                                               the maps and the cache all samples share;
                                               Cornell box: relmse 0.000125 at 64, 0.000080
@@ -36,8 +37,8 @@
 #define J96_DEFAULT_CACHE_ACCURACY 0.15    /* --cache-accuracy: Ward's a                  */
 #define J96_DEFAULT_ACCURATE_DISTANCE 3.0  /* --accurate-distance (see jensen1996.c): at
                                               1 the crease under the Cornell box's front
-                                              ball was +3.0% (k = 50), at 3 +2.6%, for
-                                              the same CPU seconds                       */
+                                              ball was +3.0% (k = 50, 1,000,000 photons),
+                                              at 3 +2.6%, for the same CPU seconds       */
 #define J96_DEFAULT_ACCURATE_WEIGHT 0.1    /* --accurate-weight (see jensen1996.c)        */
 #define J96_DEFAULT_PRECOMPUTED 16         /* --precomputed-irradiance: records at every
                                               16th photon of the global map (Christensen
