@@ -336,6 +336,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         js.shadow_photons = run->o.shadow_photons;
         js.one_map = run->o.one_map;
         js.precomputed_irradiance = run->o.precomputed_irradiance;
+        js.disc_coverage = run->o.disc_coverage;
         js.report = checkpoint;
         js.work = &run->work;
         return render_jensen1996(run->scene, &run->rs, &js, want_variance, &run->counters,

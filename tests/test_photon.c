@@ -383,6 +383,88 @@ static void test_balance_kdtree_keeps_photons_in_order(struct check *t)
     nearest_free(NULL);
 }
 
+/* The first axis along which photons[0..m-1] spread most, as kdtree.c's spec says. */
+static int spec_axis(const struct photon *photons, size_t m)
+{
+    double extent[3];
+    for (int a = 0; a < 3; a++) {
+        float lo = photons[0].pos[a], hi = lo;
+        for (size_t i = 1; i < m; i++) {
+            lo = photons[i].pos[a] < lo ? photons[i].pos[a] : lo;
+            hi = photons[i].pos[a] > hi ? photons[i].pos[a] : hi;
+        }
+        extent[a] = (double)hi - lo;
+    }
+    int axis = 0;
+    for (int a = 1; a < 3; a++)
+        axis = extent[a] > extent[axis] ? a : axis;
+    return axis;
+}
+
+static int sort_axis; /* qsort's comparator reads the axis here */
+
+static int compare_on_axis(const void *a, const void *b)
+{
+    float x = ((const struct photon *)a)->pos[sort_axis];
+    float y = ((const struct photon *)b)->pos[sort_axis];
+    return (x > y) - (x < y);
+}
+
+/* Nodes of a complete tree of m nodes in the subtree of node 2, counted level by level
+ * over the heap slots 1..m. */
+static size_t spec_left_size(size_t m)
+{
+    size_t count = 0;
+    for (size_t first = 2, width = 1; first <= m; first *= 2, width *= 2)
+        count += m - first + 1 < width ? m - first + 1 : width;
+    return count;
+}
+
+/* The tree kdtree.c specifies, by brute force: sort the subtree's photons on their
+ * widest axis, the root is the one with as many before it as the left subtree holds. */
+static void spec_tree(struct photon *photons, size_t m, struct photon *heap, size_t node)
+{
+    sort_axis = spec_axis(photons, m);
+    qsort(photons, m, sizeof *photons, compare_on_axis);
+    size_t n_left = spec_left_size(m);
+    heap[node] = photons[n_left];
+    heap[node].plane = (unsigned char)sort_axis;
+    if (n_left > 0)
+        spec_tree(photons, n_left, heap, 2 * node);
+    if (m - n_left > 1)
+        spec_tree(photons + n_left + 1, m - n_left - 1, heap, 2 * node + 1);
+}
+
+/* truth: the tree kdtree.c's header specifies, built by sorting (spec_tree), which is
+ *   unique when no two photons share a coordinate (UNIFORM); and the bytes the records
+ *   take, counted by base/alloc.c: the in-place build may hold n + 1 records and the
+ *   map's header, no second array.
+ * tolerance: none.
+ * catches: a record sent to the wrong heap slot (an off-by-one in the in-order rank, a
+ *   partly full last level counted wrong), a placed mark left in a plane byte, a cycle
+ *   followed twice, a copy of the array made while balancing. */
+static void test_balance_kdtree_in_place_is_the_specified_tree(struct check *t)
+{
+    static const size_t sizes[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 31, 32, 33, 100, 1000};
+    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
+        size_t n = sizes[s];
+        struct photon *scan = set_photons(UNIFORM, n);
+        struct photon *expected = xmalloc(n + 1, sizeof *expected, "test photons");
+        spec_tree(scan, n, expected, 1);
+        alloc_restart_peak();
+        size_t before = alloc_bytes_now();
+        struct kdtree *map = balance_kdtree(set_photons(UNIFORM, n), n);
+        CHECK(t, alloc_bytes_peak() - before <= (n + 1) * sizeof *expected + sizeof *map);
+        int same = 1;
+        for (size_t i = 1; i <= n; i++)
+            same = same && memcmp(&map->photons[i], &expected[i], sizeof *expected) == 0;
+        CHECK(t, same);
+        kdtree_free(map);
+        xfree(expected);
+        xfree(scan);
+    }
+}
+
 /* truth: trees broken by hand must fail kdtree_check().
  * tolerance: none.
  * catches: a checker that cannot fail, which would make every build test above vacuous. */
@@ -550,6 +632,7 @@ void test_photon(struct check *t)
     RUN_TEST(t, test_photon_direction_round_trip);
     RUN_TEST(t, test_photon_position_and_flags);
     RUN_TEST(t, test_balance_kdtree_keeps_photons_in_order);
+    RUN_TEST(t, test_balance_kdtree_in_place_is_the_specified_tree);
     RUN_TEST(t, test_kdtree_check_detects_broken_trees);
     RUN_TEST(t, test_locate_photons_matches_linear_scan);
     RUN_TEST(t, test_locate_photons_in_disc_matches_linear_scan);

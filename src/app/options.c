@@ -98,10 +98,10 @@ static const struct option_spec specs[] = {
      "read the global work from FILE (saved by the same command but "
      "for -o, --crop and the like) instead of doing it", FOR_PHOTON_MAPS},
     {"--photons", OPT_INT, FIELD(photons), 1, MAX_PHOTONS, "N",
-     "photons emitted (default: photons 200000, 1994 4000000, 1996 4000000 for "
+     "photons emitted (default: photons 200000, 1994 4000000, 1996 1250000 for "
      "the global map)", FOR_PHOTON_MAPS},
     {"--gather", OPT_INT, FIELD(gather), 1, MAX_GATHER, "K",
-     "photons in each radiance or irradiance estimate (default 100; 1994: 50)",
+     "photons in each radiance or irradiance estimate (default 100; 1994: 50; 1996: 40)",
      FOR_PHOTON_MAPS},
     {"--max-radius", OPT_REAL, FIELD(max_radius), 0, 1e30, "R",
      "largest gathering radius (default: 1/10 of the scene's diagonal)",
@@ -127,7 +127,7 @@ static const struct option_spec specs[] = {
      "point (default 0.15)", FOR_1994 | FOR_1996},
     {"--accurate-distance", OPT_REAL, FIELD(accurate_distance), 0, 1e6, "F",
      "gather rays shorter than F radii of the estimate they reach are evaluated "
-     "accurately (default 1)", FOR_1996},
+     "accurately (default 3)", FOR_1996},
     {"--accurate-weight", OPT_REAL, FIELD(accurate_weight), 0, 1, "W",
      "rays with throughput below W are evaluated approximately (default 0.1)", FOR_1996},
     {"--shadow-photons", OPT_FLAG, FIELD(shadow_photons), 0, 0, "",
@@ -141,6 +141,12 @@ static const struct option_spec specs[] = {
      J96_MAX_PRECOMPUTED, "N",
      "gather rays read irradiance precomputed at every N-th global photon (Christensen "
      "1999); 0 = a radiance estimate at each ray's end, the paper's (default 16)", FOR_1996},
+    {"--disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
+     "records of precomputed irradiance count the photons of their disc's plane over "
+     "the part of the disc a surface covers, found by probe rays, in place of pi r^2 "
+     "(the default)", FOR_1996},
+    {"--no-disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
+     "over the whole disc, pi r^2, as Eq. 3 (the paper's)", FOR_1996},
     {"--differential", OPT_INT, FIELD(differential_run), 0, 100000, "R",
      "stop an irradiance estimate after R additions that all raise or all lower it "
      "(differential checking); 0 = off (default 10)", FOR_1994},
@@ -279,6 +285,7 @@ static void set_defaults(struct options *o)
     o->accurate_weight = js.accurate_weight;
     o->shadow_photons = js.shadow_photons;
     o->precomputed_irradiance = js.precomputed_irradiance;
+    o->disc_coverage = js.disc_coverage;
     struct jensen1994_settings j94 = jensen1994_settings_default();
     o->differential_run = j94.differential_run;
     o->light_samples = j94.light_samples;
@@ -573,7 +580,9 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
                      : o->mode == MODE_JENSEN1994 ? J94_DEFAULT_PHOTONS
                                                   : PHOTONS_DEFAULT_N;
     if (o->gather == 0)
-        o->gather = o->mode == MODE_JENSEN1994 ? J94_DEFAULT_GATHER : PHOTONS_DEFAULT_GATHER;
+        o->gather = o->mode == MODE_JENSEN1994   ? J94_DEFAULT_GATHER
+                    : o->mode == MODE_JENSEN1996 ? J96_DEFAULT_GATHER
+                                                 : PHOTONS_DEFAULT_GATHER;
     if (o->mode == MODE_PPM2008 && o->adaptive > 0)
         return error_set(err, "", 0, "--adaptive: not available with --mode 2008, whose "
                                      "pixels are not means of independent samples");

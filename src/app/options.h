@@ -61,6 +61,7 @@ struct options {
     int shadow_photons;           /* 1996: decide visibility from shadow photons   */
     int one_map;                  /* 1996: one map for global and caustic photons  */
     int precomputed_irradiance;   /* 1996: records at every N-th photon; 0 = none  */
+    int disc_coverage;            /* 1996: records over their disc's covered part  */
     double adaptive;              /* camera modes: adaptive sampling's relative error;
                                      0 = off                                       */
     int differential_run;         /* 1994: differential checking's run; 0 = off    */

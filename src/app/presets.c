@@ -85,7 +85,8 @@ static const struct {
 } as_written[] = {
     {MODE_PHOTONS, "--rim-photon"},
     {MODE_JENSEN1994, "--rim-photon"},
-    {MODE_JENSEN1996, "--rim-photon --shadow-photons --precomputed-irradiance 0"},
+    {MODE_JENSEN1996, "--rim-photon --shadow-photons --precomputed-irradiance 0 "
+                       "--no-disc-coverage"},
 };
 
 /* Splits words, one space apart, into *out. */

@@ -12,10 +12,16 @@
 #include "../photon/global_work.h"
 #include "render.h"
 
-#define J96_DEFAULT_PHOTONS 4000000        /* --photons: searches cost log N, so a large
-                                              global map is cheap and blurs less; at
-                                              1,000,000 the blur under the Cornell box's
-                                              balls still reached 5% (README)            */
+#define J96_DEFAULT_PHOTONS 1250000        /* --photons: with --disc-coverage and k = 40
+                                              both boxes' blocks are all within 2.6% at
+                                              1,250,000 (58 and 61 MB at the peak; at
+                                              1,000,000 the specular box's ceiling had
+                                              one at 3.2%); 4,000,000 took 141 MB for the
+                                              global map (README)                        */
+#define J96_DEFAULT_GATHER 40              /* --gather: k of the global map's estimates;
+                                              a smaller disc blurs the crease under the
+                                              front ball less: block (160, 224) +3.5% at
+                                              100, +2.6% at 50 (1,000,000 photons)     */
 #define J96_DEFAULT_SPP 128                /* --spp: the final pass costs little beside
                                               the maps and the cache all samples share;
                                               Cornell box: relmse 0.000125 at 64, 0.000080
@@ -29,7 +35,10 @@
                                               was 16% bright over an 8 x 8 patch      */
 #define J96_DEFAULT_GLOSSY_RAYS 6          /* --glossy-rays: the paper's "maximum of 6"   */
 #define J96_DEFAULT_CACHE_ACCURACY 0.15    /* --cache-accuracy: Ward's a                  */
-#define J96_DEFAULT_ACCURATE_DISTANCE 1.0  /* --accurate-distance (see jensen1996.c)      */
+#define J96_DEFAULT_ACCURATE_DISTANCE 3.0  /* --accurate-distance (see jensen1996.c): at
+                                              1 the crease under the Cornell box's front
+                                              ball was +3.0% (k = 50, 1,000,000 photons),
+                                              at 3 +2.6%, for the same CPU seconds       */
 #define J96_DEFAULT_ACCURATE_WEIGHT 0.1    /* --accurate-weight (see jensen1996.c)        */
 #define J96_DEFAULT_PRECOMPUTED 16         /* --precomputed-irradiance: records at every
                                               16th photon of the global map (Christensen
@@ -71,6 +80,10 @@ struct jensen1996_settings {
                                  surfaces (Christensen 1999; a departure, jensen1996.c);
                                  0: the paper's radiance estimate at every ray's end,
                                  0..J96_MAX_PRECOMPUTED                                  */
+    int disc_coverage;        /* 1: a record's estimate takes the photons of its disc's
+                                 plane over the part of the disc a surface covers
+                                 (photon/disc_coverage.h; a departure, jensen1996.c);
+                                 0: Eq. 3's k nearest over pi r^2                        */
     const struct checkpoint *report; /* borrowed or NULL: rows after 1, 2, 4, ... samples
                                  per pixel, work = photons emitted + gather rays so far   */
     struct global_work *work; /* NULL: pass 1 and the cache's pre-pass run and are released
@@ -112,7 +125,7 @@ struct jensen1996_stats {
     int strata_theta, strata_phi;     /* the gather's strata                              */
 };
 
-/* The defaults above, with the photons mode's --gather. */
+/* The defaults above. */
 struct jensen1996_settings jensen1996_settings_default(void);
 
 /* Renders the window of rs: pass 1 (the maps), the irradiance cache's pre-pass over the

@@ -19,7 +19,11 @@
  * of their bounding box, at the median that leaves exactly as many photons on the left
  * as a complete tree of that size holds in its left subtree; quickselect puts that
  * photon in place with the smaller ones before it. Each level costs O(n) expected, so
- * the build is O(n log n).
+ * the build is O(n log n). The build needs no second array, which would double the
+ * memory of a map of millions of photons: the selections leave the traced array holding
+ * the tree laid out in order (left subtree, root, right subtree at every node), and
+ * heap_from_inorder() then moves each record to its heap slot by following the
+ * permutation's cycles, marking what it placed in the plane byte's spare bit.
  *
  * Owns photons[]: taken from the caller by balance_kdtree(), released by kdtree_free().
  * Elsewhere: photon.c packs the records; the radiance estimates read the search results.
@@ -114,31 +118,83 @@ static void select_nth(struct photon *photons, size_t m, size_t nth, int axis)
     }
 }
 
-/* Places photons[0..m-1] (m >= 1), reordered as scratch, as the subtree rooted at
- * heap[node]. Recursion depth is the tree's depth, at most KDTREE_MAX_DEPTH. */
-static void balance_subtree(struct photon *photons, size_t m, struct photon *heap,
-                            size_t node)
+/* Orders photons[0..m-1] (m >= 1) as the subtree they make laid out in order: the
+ * left subtree first, then the root (its plane set), then the right subtree. Recursion
+ * depth is the tree's depth, at most KDTREE_MAX_DEPTH. */
+static void order_subtree(struct photon *photons, size_t m)
 {
     int axis = widest_axis(photons, m);
     size_t n_left = left_subtree_size(m);
     select_nth(photons, m, n_left, axis);
-    heap[node] = photons[n_left];
-    heap[node].plane = (unsigned char)axis;
+    photons[n_left].plane = (unsigned char)axis;
     if (n_left > 0)
-        balance_subtree(photons, n_left, heap, 2 * node);
+        order_subtree(photons, n_left);
     if (m - n_left > 1)
-        balance_subtree(photons + n_left + 1, m - n_left - 1, heap, 2 * node + 1);
+        order_subtree(photons + n_left + 1, m - n_left - 1);
+}
+
+static int floor_log2(size_t v) /* v >= 1 */
+{
+    int l = 0;
+    while (v >>= 1)
+        l++;
+    return l;
+}
+
+/* The 1-based position, in order, of heap node h among the n nodes of a complete tree.
+ * In the perfect tree of the same depth D = floor(log2 n), node h = 2^l + j of level l
+ * is (2j + 1) 2^(D - l)-th; the last level holds only its first c = n + 1 - 2^D nodes,
+ * and of the missing ones (perfect positions 2q + 1 for q >= c) those before h are the
+ * q < R / 2: above the last level (R even) that is R / 2 - c of them when positive;
+ * on it (R odd, j < c) none. */
+static size_t inorder_rank(size_t h, size_t n, int depth)
+{
+    int l = floor_log2(h);
+    size_t j = h - ((size_t)1 << l);
+    size_t c = n + 1 - ((size_t)1 << depth);
+    size_t r = (2 * j + 1) << (depth - l);
+    return r / 2 > c ? r - (r / 2 - c) : r;
+}
+
+#define PLACED 0x80u /* a plane byte's mark while heap_from_inorder() runs: 0..2 need 2 bits */
+
+/* Moves nodes a[1..n], laid out in order, to heap order in place: node h takes the
+ * record at inorder_rank(h), following each cycle of that permutation once. */
+static void heap_from_inorder(struct photon *a, size_t n)
+{
+    int depth = floor_log2(n);
+    for (size_t h = 1; h <= n; h++) {
+        if (a[h].plane & PLACED)
+            continue;
+        struct photon first = a[h];
+        size_t to = h;
+        for (size_t from = inorder_rank(to, n, depth); from != h;
+             from = inorder_rank(to, n, depth)) {
+            a[to] = a[from];
+            a[to].plane |= PLACED;
+            to = from;
+        }
+        a[to] = first;
+        a[to].plane |= PLACED;
+    }
+    for (size_t h = 1; h <= n; h++)
+        a[h].plane &= (unsigned char)~PLACED;
 }
 
 struct kdtree *balance_kdtree(struct photon *photons, size_t n)
 {
     assert(n < SIZE_MAX / 2 && (n == 0 || photons != NULL));
     struct kdtree *map = xmalloc(1, sizeof *map, "photon map");
-    map->photons = xmalloc(n + 1, sizeof *map->photons, "photon map");
+    /* in place: one record more for the unused heap[0], none beside the array */
+    photons = xrealloc(photons, n + 1, sizeof *photons, "photon map");
+    memmove(photons + 1, photons, n * sizeof *photons);
+    memset(&photons[0], 0, sizeof photons[0]);
+    if (n > 0) {
+        order_subtree(photons + 1, n);
+        heap_from_inorder(photons, n);
+    }
+    map->photons = photons;
     map->n_photons = n;
-    if (n > 0)
-        balance_subtree(photons, n, map->photons, 1);
-    xfree(photons);
     return map;
 }
 

@@ -21,9 +21,10 @@ struct kdtree {
     size_t n_photons;       /* N, the number of photons in the map (may be 0) */
 };
 
-/* Builds the map from photons[0..n-1], taking ownership of the array (it is freed; the
- * map keeps its own copy in heap order; NULL is allowed when n = 0). O(n log n) time.
- * Sets every photon's plane. Never fails (out of memory is fatal()). */
+/* Builds the map from photons[0..n-1], taking ownership of the array (from xmalloc or
+ * xrealloc, of any capacity >= n; NULL is allowed when n = 0): the map reorders it into
+ * heap order in place, resized to n + 1 records, and holds no other copy. O(n log n)
+ * time. Sets every photon's plane. Never fails (out of memory is fatal()). */
 struct kdtree *balance_kdtree(struct photon *photons, size_t n);
 void kdtree_free(struct kdtree *map); /* NULL is a no-op */
 

@@ -7,17 +7,21 @@
  * For a Lambertian surface f_r,d times it is the radiance estimate Eq. 3 would make at
  * the record, since that estimate's photons are the same and f_r,d = rho / pi does not
  * depend on their directions. A lookup then moves the estimate from x to a record at most
- * one disc away, where the photons are nearly the same ones.
+ * one disc away, where the photons are nearly the same ones. Given the scene, the estimate
+ * is disc_coverage.h's instead: the photons of the disc's plane over the part of the disc a
+ * surface covers, so that a record by an open edge or a wall is not dark.
  */
 #include "precomputed_irradiance.h"
 
 #include <assert.h>
 
 #include "../base/alloc.h"
+#include "disc_coverage.h"
 
 struct precomputed_irradiance *precompute_irradiance(const struct kdtree *map,
                                                      const struct kdtree *records,
-                                                     const struct irradiance_settings *is)
+                                                     const struct irradiance_settings *is,
+                                                     const struct scene *coverage)
 {
     assert(is->run == 0 && is->n >= 1);
     struct precomputed_irradiance *pi = xmalloc(1, sizeof *pi, "precomputed irradiance");
@@ -27,8 +31,10 @@ struct precomputed_irradiance *precompute_irradiance(const struct kdtree *map,
     struct nearest *nn = nearest_create(is->n);
     for (size_t i = 1; i <= records->n_photons; i++) {
         const struct photon *p = &records->photons[i];
-        struct vec3 e = irradiance_estimate(map, photon_position(p), photon_direction(p), is,
-                                            nn);
+        struct vec3 x = photon_position(p), n = photon_direction(p);
+        struct vec3 e = coverage != NULL
+                            ? covered_irradiance_estimate(map, coverage, x, n, is, nn)
+                            : irradiance_estimate(map, x, n, is, nn);
         pi->value[i].e[0] = (float)e.x;
         pi->value[i].e[1] = (float)e.y;
         pi->value[i].e[2] = (float)e.z;

@@ -22,6 +22,7 @@
 
 #include <stddef.h>
 
+#include "../scene/scene.h"
 #include "estimate.h"
 #include "kdtree.h"
 
@@ -55,10 +56,14 @@ struct precomputed_irradiance {
 /* Estimates E at every record of records (borrowed, and kept until the result is freed)
  * from map with irradiance_estimate() and settings is (estimate.h; run 0: no differential
  * checking on the global map), and keeps them with each estimate's r^2. O(n k log N).
+ * coverage: NULL, or the scene the photons were traced in: then each E is divided by the
+ * share of its disc that can hold photons (disc_coverage.h), so that a record by an open
+ * edge or a wall is not dark by the part of pi r^2 that lies beyond.
  * Allocates its own scratch; never fails (out of memory is fatal()). */
 struct precomputed_irradiance *precompute_irradiance(const struct kdtree *map,
                                                      const struct kdtree *records,
-                                                     const struct irradiance_settings *is);
+                                                     const struct irradiance_settings *is,
+                                                     const struct scene *coverage);
 void precomputed_irradiance_free(struct precomputed_irradiance *pi); /* NULL: no-op */
 
 /* Bytes the values take (the records' tree is counted with the maps: kdtree_bytes). */

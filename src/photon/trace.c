@@ -50,7 +50,10 @@
 #include "../scene/brdf.h"
 #include "projection_map.h"
 
-#define INITIAL_CAPACITY 4096 /* records; the array doubles from here up to max_stored */
+#define INITIAL_CAPACITY 4096 /* records; the array grows from here up to max_stored */
+#define GROWTH_DIVISOR 8      /* by an eighth each time: the array holds at most 1/8 more
+                                 records than it stores (doubling could waste half), and
+                                 realloc moves each record about 9 times, amortised      */
 
 /* A surface as the photon that reaches it sees it. */
 struct photon_hit {
@@ -94,6 +97,12 @@ static int holds_photons(const struct photon_hit *h)
            vec3_max_component(brdf_albedo(h->material, &h->frame, h->wi)) > 0;
 }
 
+int photons_land_at(const struct scene *scene, const struct hit *hit, struct vec3 dir)
+{
+    struct photon_hit h = photon_hit_at(scene, hit, dir);
+    return holds_photons(&h);
+}
+
 /* The photon stored at h: what the tracer hands to its sink. */
 static struct photon_event photon_event_at(const struct photon_hit *h, struct vec3 power,
                                            unsigned kind, int light)
@@ -116,8 +125,9 @@ int photon_trace_store(struct photon_trace *out, size_t max_stored, const struct
     if (out->n_photons == out->capacity) {
         if (out->capacity >= max_stored)
             return -1;
-        size_t grown = out->capacity < INITIAL_CAPACITY / 2 ? INITIAL_CAPACITY
-                                                            : 2 * out->capacity;
+        size_t grown = out->capacity < INITIAL_CAPACITY
+                           ? INITIAL_CAPACITY
+                           : out->capacity + out->capacity / GROWTH_DIVISOR;
         grown = grown < max_stored ? grown : max_stored;
         out->photons = xrealloc(out->photons, grown, sizeof *out->photons, "photon map");
         out->capacity = grown;

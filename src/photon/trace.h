@@ -122,6 +122,10 @@ int photon_trace_store(struct photon_trace *out, size_t max_stored, const struct
 int trace_photons(const struct scene *scene, const struct trace_settings *ts,
                   struct photon_trace *out, struct error *err);
 
+/* Whether a photon travelling along dir that makes hit would be stored there: the
+ * surface has a non-delta part that reflects something (a black emitter holds none). */
+int photons_land_at(const struct scene *scene, const struct hit *hit, struct vec3 dir);
+
 /* Releases out->photons (NULL allowed: after balance_kdtree() took them) and empties
  * *out. */
 void photon_trace_free(struct photon_trace *out);

@@ -1,0 +1,54 @@
+/*
+ * photon/disc_coverage.h -- how much of an estimate's disc lies on a surface that can hold
+ * photons.
+ *
+ * A photon map's estimate divides the flux of the photons found within r of x by the
+ * disc's area, pi r^2, which assumes that surface fills the disc. Where the disc reaches
+ * past an open edge (the Cornell box's floor ends at the open front), past a corner into
+ * a wall, or over a part of the surface where no photon is stored (the black emitter
+ * under the light), photons can land on only part of it, and the estimate is dark there
+ * by that part: half at an open edge. Dividing by the area the surface covers instead
+ * needs that part; it is found here from the geometry, by probing, not from the photons,
+ * whose own spread within the disc is also the light's (a shadow's edge).
+ */
+#ifndef PHOTON_DISC_COVERAGE_H
+#define PHOTON_DISC_COVERAGE_H
+
+#include "../scene/scene.h"
+#include "estimate.h"
+
+/* Probe rays of one coverage: DISC_RINGS rings of equal area, DISC_SPOKES points each. */
+#define DISC_RINGS 4
+#define DISC_SPOKES 8
+/* The least coverage returned: an estimate is never divided by less than this share of
+ * pi r^2, which bounds how far a wrong probe (a thin sliver of surface) can brighten it. */
+#define DISC_COVERAGE_FLOOR 0.25
+/* The disc's depth: surfaces, and photons, within DISC_DEPTH r of its plane are on it. A
+ * sphere of radius R stays within it over a disc of radius sqrt(2 R DISC_DEPTH r), all of
+ * the disc while r <= 2 R DISC_DEPTH (22 mm on the Cornell box's balls); a wall across
+ * the disc puts photons in it only along a strip this deep. */
+#define DISC_DEPTH 0.125
+
+/* The share of the disc of radius r > 0 around x, in the plane with unit normal n, over
+ * which a surface that holds photons (trace.h: a non-delta part that reflects) lies
+ * within DISC_DEPTH r of the plane, in [DISC_COVERAGE_FLOOR, 1]. At each of the
+ * DISC_RINGS x DISC_SPOKES points q of the disc (the centres of equal-area cells, in a
+ * frame fixed by n) a ray from DISC_DEPTH r above q along -n looks for such a surface
+ * down to as far below, passing through mirrors and glass; a surface turned less than 60 degrees from the plane, either
+ * way, counts, so a gently curved one (a sphere seen from a disc smaller than itself)
+ * is the same surface. Deterministic: no random numbers. */
+double disc_coverage(const struct scene *scene, struct vec3 x, struct vec3 n, double r);
+
+/* The irradiance estimate (estimate.h, irradiance_estimate(), without differential
+ * checking: is->run 0) from the photons of the disc alone, over the part of it that can
+ * hold them: of the is->n nearest photons, those within DISC_DEPTH r of the plane through
+ * x with unit normal n that arrived from n's side (the rim photon left out unless
+ * is->count_rim), divided by pi r^2 disc_coverage(). Photons of another surface that
+ * crosses the sphere of radius r, which Eq. 3 would count where they face n, are left
+ * out as the coverage leaves out their part of the disc. nn: scratch, k_max >= is->n. */
+struct vec3 covered_irradiance_estimate(const struct kdtree *map, const struct scene *scene,
+                                        struct vec3 x, struct vec3 n,
+                                        const struct irradiance_settings *is,
+                                        struct nearest *nn);
+
+#endif
