@@ -62,6 +62,7 @@ static const char *const same_pixels_options[] = {
     "-o build/x.pfm", "--crop 0 0 4 4", "--time-limit 5", "--reference r.pfm --report r.csv",
     "--variance v.pfm", "--mode 2008 --checkpoint 3", "--exposure 2", "--stats", "--progress",
     "--no-progress", "--save-photons w.work", "--load-photons w.work", "--quality default",
+    "--mode 1996 --no-shadow-photons",
 };
 static const char *const other_pixels_options[] = {
     "--mode pt", "--seed 2", "--spp 3", "--specular-spp 40", "--width 100", "--height 100",
@@ -74,7 +75,7 @@ static const char *const other_pixels_options[] = {
     "--mode 1994 --differential 3", "--mode 1994 --light-samples 9",
     "--mode 1994 --irradiance-store illumination", "--mode 1994 --no-projection-maps",
     "--mode 2008 --passes 3", "--mode 2008 --photons-per-pass 7", "--mode 2008 --alpha 0.5",
-    "--mode 2008 --radius 2",
+    "--mode 2008 --radius 2", "--mode 2008 --direct-photons",
 };
 
 /* The hash words are compared with: that of their leading "--mode M" alone when more

@@ -154,6 +154,9 @@ static const struct option_spec specs[] = {
     {"--radius", OPT_REAL, FIELD(radius), 0, 1e30, "R",
      "initial radius in scene units (default: one pixel footprint at each hit point, "
      "shortened by a wall across its disc)", FOR_2008},
+    {"--direct-photons", OPT_FLAG, FIELD(direct_photons), 0, 0, "",
+     "direct light from photons too, the paper's way (default: a light sample at each "
+     "hit point each pass, photons only after their first bounce)", FOR_2008},
     {"--checkpoint", OPT_INT, FIELD(checkpoint), 1, MAX_PASSES, "K",
      "write the image (-o) every K passes, each write complete (default: at the end)",
      FOR_2008},

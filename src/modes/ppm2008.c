@@ -50,12 +50,16 @@
 #include "../base/alloc.h"
 #include "../photon/hit_points.h"
 #include "../photon/trace.h"
+#include "ppm_direct.h"
 #include "surface.h"
 
 #define PPM_WALL_PROBES 8   /* tangent directions searched for a wall across the disc */
 #define PPM_WALL_COS 0.5    /* a wall's normal is more than 60 degrees from the surface's */
 #define PPM_WALL_FLOOR 0.25 /* the shortest initial radius, as a part of the footprint's */
 #define PPM_ROULETTE_DEPTH 8 /* eye-path bounces before Russian roulette (take_lobe())  */
+/* The photons that reach hit points when a light sample takes the direct light: those
+ * after a diffuse bounce, and caustics (L S+ D), which no shadow ray sees the light by. */
+#define PHOTON_AFTER_FIRST_BOUNCE (PHOTON_CAUSTIC | PHOTON_INDIRECT)
 
 struct ppm {
     const struct scene *scene;          /* borrowed                                       */
@@ -75,6 +79,7 @@ struct ppm {
     double unnormalise;                 /* photons per pass: turns the tracer's Phi / N
                                            back into the paper's unnormalised Phi'        */
     size_t photons_emitted;             /* N_emitted of Eq. 13, so far                    */
+    struct ppm_direct direct;           /* the direct term, unless ps->direct_photons     */
 };
 
 static double cpu_seconds(clock_t start)
@@ -93,6 +98,7 @@ struct ppm_settings ppm_settings_default(void)
     ps.snapshot_every = 0;
     ps.snapshot = NULL;
     ps.observer = NULL;
+    ps.direct_photons = 0;
     return ps;
 }
 
@@ -305,7 +311,7 @@ static void photon_tracing_pass(struct ppm *ppm, long pass, struct ppm_stats *st
     ts.seed = ppm->rs->seed;
     ts.pass = (uint64_t)pass;
     ts.n_emit = ppm->ps->photons_per_pass; /* max_stored: unused, nothing is stored */
-    ts.store = PHOTON_MAP_GLOBAL;
+    ts.store = ppm->ps->direct_photons ? PHOTON_MAP_GLOBAL : PHOTON_AFTER_FIRST_BOUNCE;
     ts.max_depth = ppm->rs->max_depth;
     ts.targets = NULL;
     ts.projection = NULL;
@@ -375,8 +381,11 @@ struct vec3 ppm_radiance(struct vec3 tau, double r, double n_emitted)
 static void evaluate_image(const struct ppm *ppm, struct image *image)
 {
     size_t n_pixels = (size_t)ppm->width * (size_t)ppm->height;
-    for (size_t i = 0; i < n_pixels; i++)
+    for (size_t i = 0; i < n_pixels; i++) {
         image->pixels[i] = vec3_scale(ppm->seen[i], 1.0 / (double)ppm->eye_rays);
+        if (!ppm->ps->direct_photons)
+            image->pixels[i] = vec3_add(image->pixels[i], ppm_direct_radiance(&ppm->direct, i));
+    }
     for (size_t i = 0; i < ppm->n_points; i++) {
         const struct hit_point *hp = &ppm->points[i];
         struct vec3 l = ppm_radiance(hp->tau, hp->radius, (double)ppm->photons_emitted);
@@ -436,6 +445,8 @@ static void photon_passes(struct ppm *ppm, double offset, struct image *image,
     long pass = 0;
     while (pass < ps->passes && !(pass > 0 && limit > 0 && offset + seconds >= limit)) {
         photon_tracing_pass(ppm, pass, stats);
+        if (!ps->direct_photons)
+            ppm_direct_pass(&ppm->direct, ppm->points, ppm->n_points, pass, ppm->counters);
         emission_pass(ppm, pass);
         progressive_update(ppm);
         pass++;
@@ -473,6 +484,8 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     ppm.seen = xcalloc((size_t)ppm.width * (size_t)ppm.height, sizeof *ppm.seen, "ppm pixels");
     ppm.footprint_per_distance = camera_footprint(&scene->camera);
     ppm.unnormalise = (double)ps->photons_per_pass;
+    if (!ps->direct_photons)
+        ppm_direct_create(&ppm.direct, scene, rs);
     clock_t start = clock();
     ray_tracing_pass(&ppm);
     stats->seconds_ray_pass = cpu_seconds(start);
@@ -487,6 +500,8 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     stats->mean_radius = mean_radius(&ppm);
     counters->passes = rs->spp;
     hit_point_tree_free(&ppm.tree);
+    if (!ps->direct_photons)
+        ppm_direct_free(&ppm.direct);
     free(ppm.points);
     free(ppm.seen);
     return result;
