@@ -112,6 +112,7 @@ struct eye_path {
     int depth;        /* mirror and glass bounces so far               */
     int stores;       /* 1: stores hit points (the ray tracing pass);
                          0: only sees emission (a photon pass's ray)   */
+    int sample;       /* the pixel's camera sample it started as       */
 };
 
 /* The initial radius r0, shortened to the nearest wall across the hit point's disc:
@@ -161,6 +162,7 @@ static void store_hit_point(struct ppm *ppm, const struct surface *s,
     hp->n_photons = 0.0;
     hp->tau = vec3_zero();
     hp->m_photons = 0;
+    hp->sample = path->sample;
 }
 
 /* The specular directions an eye path follows from s into lobes[]; returns how many. Sec.
@@ -257,7 +259,7 @@ static void trace_eye_rays(struct ppm *ppm, int first, int last, int stores)
             for (int s = first; s <= last; s++) {
                 struct rng rng;
                 struct ray ray = camera_sample(ppm->scene, rs->seed, x, y, s, &rng);
-                struct eye_path path = {pixel, vec3(1.0, 1.0, 1.0), 0.0, 0, stores};
+                struct eye_path path = {pixel, vec3(1.0, 1.0, 1.0), 0.0, 0, stores, s};
                 ppm->seen[pixel] = vec3_add(ppm->seen[pixel],
                                             trace_eye_path(ppm, ray, path, &rng));
             }

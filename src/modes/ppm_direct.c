@@ -42,10 +42,10 @@ static struct surface hit_point_surface(const struct hit_point *hp)
     return s;
 }
 
-/* Reflected radiance at hp from sample `pass` of each light, the lights' shifts drawn
+/* Reflected radiance at hp from sample `turn` of each light, the lights' shifts drawn
  * from shifts in light order. */
 static struct vec3 sample_lights(const struct scene *scene, const struct hit_point *hp,
-                                 long pass, struct rng *shifts,
+                                 uint32_t turn, struct rng *shifts,
                                  struct render_counters *counters)
 {
     struct surface s = hit_point_surface(hp);
@@ -53,7 +53,7 @@ static struct vec3 sample_lights(const struct scene *scene, const struct hit_poi
     for (size_t i = 0; i < scene->n_lights; i++) {
         uint64_t shift = rng_next(shifts); /* drawn for every light: keeps the others' */
         double u1, u2;
-        sequence02_point((uint32_t)pass, (uint32_t)shift, (uint32_t)(shift >> 32), &u1, &u2);
+        sequence02_point(turn, (uint32_t)shift, (uint32_t)(shift >> 32), &u1, &u2);
         struct light_sample ls;
         struct vec3 contribution;
         if (!light_contribution(&scene->lights[i], &s, hp->material, &hp->frame, u1, u2, &ls,
@@ -78,14 +78,19 @@ static uint64_t whole_image_pixel(const struct ppm_direct *d, size_t i)
 void ppm_direct_pass(struct ppm_direct *d, const struct hit_point *points, size_t n,
                      long pass, struct render_counters *counters)
 {
-    uint64_t k = 0; /* the hit point's place among its pixel's */
+    long turns = d->rs->spp;                  /* >= 1: the eye rays that take turns */
+    uint32_t turn = (uint32_t)(pass / turns); /* turns each had before this one     */
+    uint64_t k = 0;                           /* the hit point's place in its pixel */
     for (size_t i = 0; i < n; i++) {
         const struct hit_point *hp = &points[i];
         k = i > 0 && points[i - 1].pixel == hp->pixel ? k + 1 : 0;
+        if (hp->sample % turns != pass % turns)
+            continue;
         struct rng shifts = rng_stream(d->rs->seed, STREAM_LIGHT,
                                        whole_image_pixel(d, hp->pixel), k);
-        struct vec3 l = sample_lights(d->scene, hp, pass, &shifts, counters);
-        d->sum[hp->pixel] = vec3_add(d->sum[hp->pixel], vec3_mul(hp->weight, l));
+        struct vec3 l = sample_lights(d->scene, hp, turn, &shifts, counters);
+        struct vec3 w = vec3_scale(hp->weight, (double)turns); /* the eye path's beta */
+        d->sum[hp->pixel] = vec3_add(d->sum[hp->pixel], vec3_mul(w, l));
     }
     d->passes++;
 }

@@ -24,18 +24,21 @@ struct ppm_direct {
 void ppm_direct_create(struct ppm_direct *d, const struct scene *scene,
                        const struct render_settings *rs);
 
-/* Pass `pass` (from 0): one shadow-tested sample of each light at each of points[0 ..
- * n-1], f_r Li cos / pdf through the hit point's non-delta BRDF, times its pixel weight,
- * added to its pixel. The hit points of one pixel must be consecutive, in the order the
- * pixel made them (ppm2008.c's ray tracing pass makes them so): the k-th of pixel (x, y)
- * takes sample `pass` of a (0,2)-sequence for each light, shifted by words of
- * rng_stream(seed, STREAM_LIGHT, y * width + x, k), so its samples are stratified over
- * the passes and depend on nothing but the pixel and the pass. Adds the shadow rays to
+/* Pass `pass` (from 0): the eye rays of each pixel take turns, camera sample s in the passes
+ * with pass = s (mod spp): each hit point its eye path made takes one shadow-tested sample
+ * of each light, f_r Li cos / pdf through its non-delta BRDF, times spp times its pixel
+ * weight (so the pass's sum is the whole pixel's estimate from one eye ray), added to its
+ * pixel. The hit points of one pixel must be consecutive, in the order the pixel made them
+ * (ppm2008.c's ray tracing pass makes them so): the k-th of pixel (x, y) takes, at its
+ * j-th turn, point j of a (0,2)-sequence for each light, shifted by words of
+ * rng_stream(seed, STREAM_LIGHT, y * width + x, k), so its samples are stratified over its
+ * turns and depend on nothing but the pixel and the pass. Adds the shadow rays to
  * counters->rays. */
 void ppm_direct_pass(struct ppm_direct *d, const struct hit_point *points, size_t n,
                      long pass, struct render_counters *counters);
 
-/* Window pixel i's direct term so far: its sum / passes (zero before the first pass). */
+/* Window pixel i's direct term so far: the mean of its passes' sums (zero before the
+ * first pass). */
 struct vec3 ppm_direct_radiance(const struct ppm_direct *d, size_t i);
 
 void ppm_direct_free(struct ppm_direct *d);

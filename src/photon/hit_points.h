@@ -24,6 +24,7 @@
 #define PHOTON_HIT_POINTS_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "../geom/ray.h"
 #include "../scene/brdf.h"
@@ -40,7 +41,9 @@ struct hit_point {
     double n_photons;                /* N(x), photons accumulated                        */
     struct vec3 tau;                 /* tau(x, w): flux times BRDF, unnormalised; during
                                         a pass it also gathers the pass's tau_M          */
-    unsigned long m_photons;         /* M(x): photons found in the current pass          */
+    uint32_t m_photons;              /* M(x): photons found in the current pass, at most
+                                        the photons a pass traces (MAX_PHOTONS < 2^32)   */
+    int32_t sample;                  /* the camera sample whose eye path made it         */
 };
 
 /* The node whose middle is m: what a search reads. */
