@@ -454,7 +454,7 @@ static void test_paper_way_unchanged(struct check *t)
  *   millimetres and the same box scaled by 1e-3 (metres) are one image: their difference
  *   must be below a tenth of the noise, measured as the difference between two seeds, on
  *   the rows below the light (whose edge pixels, lit or not by one jittered ray, would
- *   swamp the measure). Measured: noise relmse 0.031, the two scales 5e-30
+ *   swamp the measure). Measured: noise relmse 0.031, the two scales 8e-22
  *   (roundings); a radius of 1 unit in the metre box gives 0.12.
  * catches: a world-space constant anywhere in the radius (a 1-unit default would cover
  *   the whole metre box, and nothing of the millimetre one). */

@@ -146,7 +146,7 @@ static const struct option_spec specs[] = {
     {"--no-projection-maps", OPT_FLAG, FIELD(projection_maps), 0, 0, "",
      "emit photons into all directions instead of through projection maps", FOR_1994},
     {"--passes", OPT_INT, FIELD(passes), 1, MAX_PASSES, "N",
-     "photon passes (default 64; --time-limit may stop sooner)", FOR_2008},
+     "photon passes (default 160; --time-limit may stop sooner)", FOR_2008},
     {"--photons-per-pass", OPT_INT, FIELD(photons_per_pass), 1, MAX_PHOTONS, "N",
      "photons traced in each pass (default 100000)", FOR_2008},
     {"--alpha", OPT_REAL, FIELD(alpha), 0, 1, "A",
