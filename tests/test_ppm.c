@@ -271,7 +271,8 @@ static void tally_photons(void *context, long pass, const struct hit_point *poin
  *   its square's bounds (within_point_over_plane(), rounding only). The paper's way counts
  *   them (the same test then finds tau > 0 and the pixels off the closed form).
  * catches: direct photons counted besides the light sample (light counted twice), a
- *   light sample not shadow-tested or not the closed form's. */
+ *   light sample off the closed form (a cos or a 1/pi too many, a point light's
+ *   intensity taken for its power). */
 static void test_first_hits_not_counted(struct check *t)
 {
     struct scene *scene = load_test_scene("scenes/analytic/point-over-plane.scene", 12, 12);
