@@ -88,6 +88,7 @@ int main(int argc, char **argv)
         rs.y1 = p->y + 1;
         struct ppm_settings ps = ppm_settings_default();
         ps.passes = FIG4_PASSES;
+        ps.direct_photons = 1; /* the paper's way: every photon counts, as in its Fig. 4 */
         ps.observer = &observer;
         struct render_counters counters = {0, 0, 0, 0};
         struct ppm_stats stats;

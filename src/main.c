@@ -346,6 +346,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         pp.passes = run->o.passes;
         pp.alpha = run->o.alpha;
         pp.radius = run->o.radius;
+        pp.direct_photons = run->o.direct_photons;
         pp.snapshot_every = run->o.checkpoint;
         pp.report = checkpoint;
         pp.snapshot = run->o.checkpoint > 0 ? &snapshot : NULL;

@@ -78,7 +78,7 @@ static const char *const other_pixels_options[] = {
     "--mode 1994 --differential 3", "--mode 1994 --light-samples 9",
     "--mode 1994 --irradiance-store illumination", "--mode 1994 --no-projection-maps",
     "--mode 2008 --passes 3", "--mode 2008 --photons-per-pass 7", "--mode 2008 --alpha 0.5",
-    "--mode 2008 --radius 2",
+    "--mode 2008 --radius 2", "--mode 2008 --direct-photons",
 };
 
 /* The hash words are compared with: that of their leading "--mode M" alone when more

@@ -49,22 +49,6 @@ static void test_furnace(struct check *t)
     scene_free(scene);
 }
 
-/* The closed-form radiance the camera sees through image point (px, py) of
- * scenes/analytic/area-over-floor.scene: the light's Le where the ray meets the light
- * square first, else rho E / pi of the floor. */
-static double area_over_floor(const struct scene *scene, double px, double py)
-{
-    static const struct vec3 light[4] = {{-0.5, 1, -0.5}, {0.5, 1, -0.5}, {0.5, 1, 0.5},
-                                         {-0.5, 1, 0.5}};
-    struct ray r = camera_ray(&scene->camera, px, py);
-    if (r.dir.y > 0) {
-        struct vec3 q = ray_at(r, (1 - r.origin.y) / r.dir.y);
-        return fabs(q.x) <= 0.5 && fabs(q.z) <= 0.5 ? 10.0 : 0.0;
-    }
-    struct vec3 x = ray_at(r, -r.origin.y / r.dir.y);
-    return 0.5 * polygon_irradiance(light, 4, x, vec3(0, 1, 0), 10.0) / PI;
-}
-
 /* truth: Lambert's polygon formula for the floor under a square light, integrated over
  *   each pixel with an 8 x 8 midpoint rule (its error is far below the noise), for both
  *   --mode direct and --mode pt (the light is black, so pt adds nothing).
@@ -88,7 +72,8 @@ static void test_area_light_over_floor(struct check *t)
                 double exact = 0;
                 for (int j = 0; j < 8; j++)
                     for (int i = 0; i < 8; i++)
-                        exact += area_over_floor(scene, x + (i + 0.5) / 8, y + (j + 0.5) / 8);
+                        exact += area_over_floor(camera_ray(&scene->camera, x + (i + 0.5) / 8,
+                                                            y + (j + 0.5) / 8));
                 exact /= 64;
                 double v = image_get(r.image, x, y).y;
                 double se = sqrt(image_get(r.variance, x, y).y);

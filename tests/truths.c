@@ -22,6 +22,18 @@ double polygon_irradiance(const struct vec3 *v, int count, struct vec3 p, struct
     return le / 2 * fabs(sum);
 }
 
+double area_over_floor(struct ray r)
+{
+    static const struct vec3 light[4] = {{-0.5, 1, -0.5}, {0.5, 1, -0.5}, {0.5, 1, 0.5},
+                                         {-0.5, 1, 0.5}};
+    if (r.dir.y > 0) {
+        struct vec3 q = ray_at(r, (1 - r.origin.y) / r.dir.y);
+        return fabs(q.x) <= 0.5 && fabs(q.z) <= 0.5 ? 10.0 : 0.0;
+    }
+    struct vec3 x = ray_at(r, -r.origin.y / r.dir.y);
+    return 0.5 * polygon_irradiance(light, 4, x, vec3(0, 1, 0), 10.0) / PI;
+}
+
 struct scene *load_test_scene(const char *path, int width, int height)
 {
     struct error err;

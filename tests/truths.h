@@ -17,6 +17,11 @@
 double polygon_irradiance(const struct vec3 *v, int count, struct vec3 p, struct vec3 n,
                           double le);
 
+/* The closed-form radiance camera ray r sees in scenes/analytic/area-over-floor.scene:
+ * the light's Le where r meets the light square first, else rho E / pi of the floor
+ * (E by polygon_irradiance()) (test_pt.c, test_ppm.c). */
+double area_over_floor(struct ray r);
+
 /* Whether every pixel of image, a render of scenes/analytic/point-over-plane.scene
  * (finished, same size), lies within the closed form L = rho Phi h / (4 pi^2 d^3) over its
  * square: a pixel is the mean of L there, so it must lie between the least and the

@@ -158,7 +158,7 @@ static const struct option_spec specs[] = {
     {"--no-projection-maps", OPT_FLAG, FIELD(projection_maps), 0, 0, "",
      "emit photons into all directions instead of through projection maps", FOR_1994},
     {"--passes", OPT_INT, FIELD(passes), 1, MAX_PASSES, "N",
-     "photon passes (default 64; --time-limit may stop sooner)", FOR_2008},
+     "photon passes (default 160; --time-limit may stop sooner)", FOR_2008},
     {"--photons-per-pass", OPT_INT, FIELD(photons_per_pass), 1, MAX_PHOTONS, "N",
      "photons traced in each pass (default 100000)", FOR_2008},
     {"--alpha", OPT_REAL, FIELD(alpha), 0, 1, "A",
@@ -166,6 +166,9 @@ static const struct option_spec specs[] = {
     {"--radius", OPT_REAL, FIELD(radius), 0, 1e30, "R",
      "initial radius in scene units (default: one pixel footprint at each hit point, "
      "shortened by a wall across its disc)", FOR_2008},
+    {"--direct-photons", OPT_FLAG, FIELD(direct_photons), 0, 0, "",
+     "direct light from photons too, the paper's way (default: a light sample at each "
+     "hit point each pass, photons only after their first bounce)", FOR_2008},
     {"--checkpoint", OPT_INT, FIELD(checkpoint), 1, MAX_PASSES, "K",
      "write the image (-o) every K passes, each write complete (default: at the end)",
      FOR_2008},

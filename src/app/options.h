@@ -73,6 +73,7 @@ struct options {
     double alpha;                 /* 2008: Eq. 7's alpha, in (0, 1)                */
     double radius;                /* 2008: initial radius; 0 = pixel footprints    */
     int checkpoint;               /* 2008: write the image every this many passes  */
+    int direct_photons;           /* 2008: direct light from photons, the paper's  */
 };
 
 /* Parses argv into *o: the defaults, then the words of the preset that --quality names for

@@ -45,7 +45,7 @@ static const struct preset presets[] = {
      "--photons 8000000 --caustic-photons 2000000 --gather-rays 1024 --spp 256 "
      "--specular-spp 8192"},
     {MODE_PPM2008, QUALITY_PREVIEW, "--passes 8 --spp 4"},
-    {MODE_PPM2008, QUALITY_REFERENCE, "--passes 256"},
+    {MODE_PPM2008, QUALITY_REFERENCE, "--passes 640"},
 };
 
 const char *quality_name(enum quality quality)

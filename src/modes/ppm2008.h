@@ -11,7 +11,8 @@
 #include "render.h"
 
 #define PPM_DEFAULT_PHOTONS_PER_PASS 100000 /* the paper's (Sec. 5)                      */
-#define PPM_DEFAULT_PASSES 64               /* about 50 s on the Cornell box              */
+#define PPM_DEFAULT_PASSES 160              /* the fewest (by 16) that keep every 16 x 16
+                                               block of both Cornell boxes within 3%     */
 #define PPM_DEFAULT_ALPHA 0.7               /* the paper's (Sec. 5)                      */
 #define PPM_DEFAULT_SPP 16                  /* eye rays per pixel that store hit points,
                                                fixed for the whole render (each pass adds
@@ -46,6 +47,10 @@ struct ppm_settings {
     long snapshot_every;              /* > 0: call snapshot after every this many passes */
     const struct checkpoint *snapshot; /* borrowed or NULL: gets the image so far         */
     const struct ppm_observer *observer; /* borrowed or NULL                               */
+    int direct_photons;               /* 1: the direct light from photons too, the paper's
+                                         way; 0: by a light sample at each hit point
+                                         each pass, photons only after their first
+                                         bounce (see ppm2008.c)                          */
 };
 
 /* What the render did, for --stats. */
@@ -62,7 +67,8 @@ struct ppm_stats {
 };
 
 /* The defaults above: the paper's photons per pass and alpha, PPM_DEFAULT_PASSES passes,
- * pixel-footprint radii, no report, no snapshot, no observer. */
+ * pixel-footprint radii, direct light by light sampling, no report, no snapshot, no
+ * observer. */
 struct ppm_settings ppm_settings_default(void);
 
 /* Eq. 7-8: N <- N + alpha M, the photons a hit point keeps after a pass. */

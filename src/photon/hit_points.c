@@ -4,13 +4,19 @@
  * Node [lo, hi) of the index array has its hit point at m = lo + (hi - lo) / 2; the points
  * of [lo, m) lie on one side of its split plane, those of [m + 1, hi) on the other, the
  * plane being across the axis along which the range's positions spread most. The build
- * picks each median by quickselect, O(n log n) in all.
+ * picks each median by quickselect, O(n log n) in all. A range of at most HIT_POINT_LEAF
+ * points is a leaf: one box for all of them, whose nodes a search reads one after the
+ * other (they lie side by side), where descending would read as many boxes that mostly
+ * overlap, the discs being about as wide as the spacing of the points.
  */
 #include "hit_points.h"
 
 #include <stdlib.h>
 
 #include "../base/alloc.h"
+
+#define HIT_POINT_LEAF 8 /* points in a leaf; measured on the Cornell box: 4, 8 and 16 are
+                            within 5% of each other, 1 (no leaves) is 1.5x slower */
 
 /* The box of the sphere of radius R around the hit point: its disc and then some. */
 static struct aabb disc_box(const struct hit_point *hp)
@@ -82,24 +88,39 @@ static void select_median(struct hit_point_tree *tree, size_t lo, size_t hi, siz
 
 static void build_range(struct hit_point_tree *tree, size_t lo, size_t hi)
 {
-    if (hi - lo <= 1)
-        return;
+    if (hi - lo <= HIT_POINT_LEAF)
+        return; /* a leaf: its order does not matter */
     size_t m = lo + (hi - lo) / 2;
     select_median(tree, lo, hi, m, widest_axis(tree, lo, hi));
     build_range(tree, lo, m);
     build_range(tree, m + 1, hi);
 }
 
-/* Sets the boxes of node [lo, hi) and below; returns the node's box. hi > lo. */
+/* Copies hit point index[m]'s position and R^2 into node m; returns its disc's box. */
+static struct aabb refit_node(struct hit_point_tree *tree, size_t m)
+{
+    const struct hit_point *hp = &tree->points[tree->index[m]];
+    tree->nodes[m].x = hp->x;
+    tree->nodes[m].r2 = hp->radius * hp->radius;
+    return disc_box(hp);
+}
+
+/* Sets the nodes of [lo, hi) and below; returns the node's box, which node m keeps (a
+ * leaf's other nodes keep none). hi > lo. */
 static struct aabb refit_range(struct hit_point_tree *tree, size_t lo, size_t hi)
 {
     size_t m = lo + (hi - lo) / 2;
-    struct aabb box = disc_box(&tree->points[tree->index[m]]);
-    if (m > lo)
+    struct aabb box = refit_node(tree, m);
+    if (hi - lo <= HIT_POINT_LEAF) {
+        for (size_t k = lo; k < hi; k++)
+            if (k != m)
+                box = aabb_union(box, refit_node(tree, k));
+    } else {
         box = aabb_union(box, refit_range(tree, lo, m));
-    if (m + 1 < hi)
-        box = aabb_union(box, refit_range(tree, m + 1, hi));
-    tree->bounds[m] = box;
+        if (m + 1 < hi)
+            box = aabb_union(box, refit_range(tree, m + 1, hi));
+    }
+    tree->nodes[m].box = box;
     return box;
 }
 
@@ -109,7 +130,7 @@ void hit_point_tree_build(struct hit_point_tree *tree, const struct hit_point *p
     tree->points = points;
     tree->n = n;
     tree->index = xmalloc(n > 0 ? n : 1, sizeof *tree->index, "hit point tree");
-    tree->bounds = xmalloc(n > 0 ? n : 1, sizeof *tree->bounds, "hit point tree");
+    tree->nodes = xmalloc(n > 0 ? n : 1, sizeof *tree->nodes, "hit point tree");
     for (size_t i = 0; i < n; i++)
         tree->index[i] = i;
     build_range(tree, 0, n);
@@ -127,12 +148,16 @@ static void visit_range(const struct hit_point_tree *tree, size_t lo, size_t hi,
 {
     while (hi > lo) {
         size_t m = lo + (hi - lo) / 2;
-        if (!box_contains(tree->bounds[m], p))
+        if (!box_contains(tree->nodes[m].box, p))
             return;
-        size_t i = tree->index[m];
-        const struct hit_point *hp = &tree->points[i];
-        if (vec3_length2(vec3_sub(p, hp->x)) <= hp->radius * hp->radius)
-            visit(context, i);
+        if (hi - lo <= HIT_POINT_LEAF) {
+            for (size_t k = lo; k < hi; k++)
+                if (vec3_length2(vec3_sub(p, tree->nodes[k].x)) <= tree->nodes[k].r2)
+                    visit(context, tree->index[k]);
+            return;
+        }
+        if (vec3_length2(vec3_sub(p, tree->nodes[m].x)) <= tree->nodes[m].r2)
+            visit(context, tree->index[m]);
         visit_range(tree, lo, m, p, visit, context);
         lo = m + 1; /* the right half by iteration: recursion only as deep as the tree */
     }
@@ -146,9 +171,9 @@ void hit_point_tree_visit(const struct hit_point_tree *tree, struct vec3 p,
 
 void hit_point_tree_free(struct hit_point_tree *tree)
 {
-    xfree(tree->bounds);
+    xfree(tree->nodes);
     xfree(tree->index);
     tree->index = NULL;
-    tree->bounds = NULL;
+    tree->nodes = NULL;
     tree->n = 0;
 }

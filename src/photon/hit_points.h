@@ -11,8 +11,12 @@
  * The tree is a kd-tree over the hit points' positions, balanced by median splits and
  * stored without pointers as an array of indices (node = the middle of an index range),
  * each node with the box that bounds the discs (as spheres of radius R) of every hit point
- * below it. Radii only shrink (Eq. 9), so boxes made for larger radii stay valid; refitting
- * after a pass makes them tight again. The hit points themselves are never moved: their
+ * below it, and a copy of its own hit point's position and R^2: a search reads the nodes
+ * alone, which lie in tree order, near their neighbours in space, and touches a hit point
+ * only when its disc holds the photon (the hit points, in pixel order, are scattered over
+ * far more memory). The copies and boxes are made by the build and by each refit, which
+ * must follow every change of a radius (after each pass). The hit points themselves are
+ * never moved: their
  * order, pixel by pixel and sample by sample, is the order in which the image sums them,
  * so a pixel's value does not depend on the rest of the window.
  */
@@ -20,6 +24,7 @@
 #define PHOTON_HIT_POINTS_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "../geom/ray.h"
 #include "../scene/brdf.h"
@@ -36,30 +41,40 @@ struct hit_point {
     double n_photons;                /* N(x), photons accumulated                        */
     struct vec3 tau;                 /* tau(x, w): flux times BRDF, unnormalised; during
                                         a pass it also gathers the pass's tau_M          */
-    unsigned long m_photons;         /* M(x): photons found in the current pass          */
+    uint32_t m_photons;              /* M(x): photons found in the current pass, at most
+                                        the photons a pass traces (MAX_PHOTONS < 2^32)   */
+    int32_t sample;                  /* the camera sample whose eye path made it         */
+};
+
+/* The node whose middle is m: what a search reads. */
+struct hit_point_node {
+    struct aabb box; /* bounds the discs of every hit point in the node's index range
+                        (in a leaf, only the middle node has one)                       */
+    struct vec3 x;   /* position of hit point index[m]                                   */
+    double r2;       /* its R^2 at the last build or refit                               */
 };
 
 struct hit_point_tree {
     const struct hit_point *points; /* borrowed; n of them, never reordered              */
     size_t n;
     size_t *index;                  /* owned: n point indices in tree order              */
-    struct aabb *bounds;            /* owned: bounds[m] for the node whose middle is m   */
+    struct hit_point_node *nodes;   /* owned: nodes[m] for the node whose middle is m    */
 };
 
 /* Builds the tree over points[0 .. n-1] (n >= 0) with their current radii. */
 void hit_point_tree_build(struct hit_point_tree *tree, const struct hit_point *points,
                           size_t n);
 
-/* Tightens every node's box to the hit points' current radii. */
+/* Takes the hit points' current radii into the nodes and tightens every box to them. */
 void hit_point_tree_refit(struct hit_point_tree *tree);
 
-/* Calls visit(context, i) for every hit point i whose disc holds p: |x_i - p| <= R_i,
- * in tree order. */
+/* Calls visit(context, i) for every hit point i whose disc holds p: |x_i - p| <= R_i
+ * with R_i as at the last build or refit, in tree order. */
 void hit_point_tree_visit(const struct hit_point_tree *tree, struct vec3 p,
                           void (*visit)(void *context, size_t i), void *context);
 
-/* Bytes the tree owns per hit point: an index and a box. */
-#define HIT_POINT_TREE_BYTES_PER_POINT (sizeof(size_t) + sizeof(struct aabb))
+/* Bytes the tree owns per hit point: an index and a node. */
+#define HIT_POINT_TREE_BYTES_PER_POINT (sizeof(size_t) + sizeof(struct hit_point_node))
 
 void hit_point_tree_free(struct hit_point_tree *tree);
 
