@@ -111,7 +111,9 @@ static void test_paper_renders_as_its_words(struct check *t)
         {"--mode photons --photons 20000", "--rim-photon"},
         {"--mode 1994 --photons 20000 --gather-rays 16 --spp 2", "--rim-photon --specular-spp 2"},
         {"--mode 1996 --photons 20000 --caustic-photons 5000 --gather-rays 16 --spp 2",
-         "--rim-photon --shadow-photons --precomputed-irradiance 0 --specular-spp 2"},
+         "--rim-photon --shadow-photons --precomputed-irradiance 0 --no-disc-coverage "
+         "--specular-spp 2"},
+        {"--mode 2008 --passes 3 --photons-per-pass 5000 --spp 2", "--direct-photons"},
     };
     for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {
         char args[512];

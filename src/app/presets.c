@@ -87,6 +87,7 @@ static const struct {
     {MODE_JENSEN1994, "--rim-photon"},
     {MODE_JENSEN1996, "--rim-photon --shadow-photons --precomputed-irradiance 0 "
                        "--no-disc-coverage"},
+    {MODE_PPM2008, "--direct-photons"},
 };
 
 /* Splits words, one space apart, into *out. */
