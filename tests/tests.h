@@ -17,6 +17,7 @@ void test_brdf(struct check *t);   /* test_brdf.c: the material models          
 void test_shapes(struct check *t); /* test_shapes.c: sphere flake, heightfield    */
 void test_import(struct check *t); /* test_import.c: cone, ear clipping, NFF, OBJ */
 void test_photon(struct check *t); /* test_photon.c: photon record, kd-tree       */
+void test_hit_points(struct check *t); /* test_hit_points.c: 2008's hit-point tree  */
 void test_trace(struct check *t);  /* test_trace.c: emission, tracing, estimates  */
 void test_precomputed(struct check *t); /* test_precomputed.c: irradiance at photons */
 void test_projection(struct check *t); /* test_projection.c: projection maps (1994) */

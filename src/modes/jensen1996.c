@@ -42,23 +42,17 @@
  * is filled by a pre-pass over the whole image in scanline order before the final pass,
  * which only reads it; where no record is usable the final pass gathers on the spot and
  * keeps nothing. So a pixel depends on nothing but the scene and the settings, and a crop
- * equals the same window of the whole image. The maps and the filled cache are the global
- * work every crop repeats; --load-photons reads them from a file instead (photon/
- * global_work.h); the precomputed irradiance is remade from the loaded maps.
+ * equals the same window of the whole image. Every crop repeats the maps and the cache;
+ * --load-photons reads them from a file (photon/global_work.h) and remakes the records.
  *
- * Departs from Sec. 4.4: approximate points on Lambertian surfaces (gather rays' ends
- * among them) read irradiance precomputed at every N-th global photon (Christensen 1999,
- * --precomputed-irradiance N; 0: the paper's estimate at each). Cornell box, 1,000,000
- * photons: pre-pass 56 -> 6 CPU s, relmse 0.000126 either way, 253 -> 254 blocks in 3%.
- * Departs from Sec. 4.1: every shadow ray is cast (--shadow-photons: the paper's way);
- * among 13 objects a ray costs less than a 16-photon search: final pass 16.5 -> 7.2 s,
- * relmse 0.000128 -> 0.000127, the same blocks, no visibility maps (76 MB at 4M photons).
- * Departs from Eq. 3 at the records of precomputed irradiance (--disc-coverage; off:
- * --no-disc-coverage): a record takes only the photons of its disc's plane and divides
- * by the part of the disc a surface covers (photon/disc_coverage.h), not pi r^2. Where
- * a disc reaches past the floor's open front edge it was dark by the part beyond, and
- * the balls' fronts, which see that strip of floor, came out 3-5% dark (Cornell box,
- * 1,000,000 photons: block (160, 192) -3.4% -> within 1.3%, relmse 0.0000817 -> 0.0000822).
+ * Departures (each with its figures in src/modes/README.md; --paper undoes them all):
+ * approximate points on Lambertian surfaces, gather rays' ends among them, read irradiance
+ * precomputed at every N-th global photon (Christensen 1999; --precomputed-irradiance 0:
+ * the paper's estimate at each), pre-pass 56 -> 6 CPU s at the same error; every shadow
+ * ray is cast, cheaper among 13 objects than a 16-photon search (--shadow-photons: Sec.
+ * 4.1's); a record of precomputed irradiance divides its photons by the part of its disc
+ * a surface covers (photon/disc_coverage.h), not Eq. 3's pi r^2 (--no-disc-coverage): a
+ * disc past the floor's open front edge made the balls' fronts, which see it, 3-5% dark.
  */
 #include "jensen1996.h"
 
