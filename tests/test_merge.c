@@ -13,6 +13,7 @@
 #include "../src/app/work_file.h"
 #include "../src/base/hash.h"
 #include "files.h"
+#include "option_words.h"
 #include "tests.h"
 #include "truths.h"
 
@@ -35,23 +36,13 @@ static int log_contains(const char *text)
     return file_contains(OUT ".log", text);
 }
 
-/* options_hash() of "photon --mode photons WORDS scenes/cornell.scene", WORDS split at
- * spaces; 0 (which
- * no test expects) when the options do not parse. */
-static uint64_t hash_of(const char *words)
+/* hash_of() (option_words.h) of "--mode photons WORDS": a mode with global work, so
+ * --save-photons parses. */
+static uint64_t photons_hash_of(const char *words)
 {
-    char text[256], *argv[32];
-    int argc = 0;
-    argv[argc++] = "photon";
-    argv[argc++] = "--mode"; /* a mode with global work, so --save-photons parses */
-    argv[argc++] = "photons";
-    snprintf(text, sizeof text, "%s", words);
-    for (char *w = strtok(text, " "); w != NULL && argc < 30; w = strtok(NULL, " "))
-        argv[argc++] = w;
-    argv[argc++] = "scenes/cornell.scene";
-    struct options o;
-    struct error err;
-    return parse_options(argc, argv, &o, &err) == 0 ? options_hash(&o, FNV1A_OFFSET_BASIS) : 0;
+    char text[256];
+    snprintf(text, sizeof text, "--mode photons %s", words);
+    return hash_of(text);
 }
 
 /* Options that change no pixel (checked for the pixels themselves by
@@ -90,9 +81,9 @@ static uint64_t base_of(const char *words)
     if (sscanf(words, "--mode %31s %n", mode, &n) == 1 && n > 0 && words[n] != '\0') {
         char alone[64];
         snprintf(alone, sizeof alone, "--mode %s", mode);
-        return hash_of(alone);
+        return photons_hash_of(alone);
     }
-    return hash_of("");
+    return photons_hash_of("");
 }
 
 #define N_SAME (sizeof same_pixels_options / sizeof same_pixels_options[0])
@@ -147,13 +138,14 @@ static int every_option_classified(void)
  *   values, a new option nobody classified. */
 static void test_options_hash_covers_pixel_options(struct check *t)
 {
-    uint64_t base = hash_of("");
+    uint64_t base = photons_hash_of("");
     CHECK(t, base != 0);
-    CHECK(t, hash_of("--seed 1 --spp 16") == base && hash_of("--spp 016 --seed 01") == base);
+    CHECK(t, photons_hash_of("--seed 1 --spp 16") == base
+                 && photons_hash_of("--spp 016 --seed 01") == base);
     for (size_t i = 0; i < N_SAME; i++)
-        CHECK(t, hash_of(same_pixels_options[i]) == base_of(same_pixels_options[i]));
+        CHECK(t, photons_hash_of(same_pixels_options[i]) == base_of(same_pixels_options[i]));
     for (size_t i = 0; i < N_OTHER; i++) {
-        uint64_t h = hash_of(other_pixels_options[i]);
+        uint64_t h = photons_hash_of(other_pixels_options[i]);
         base = base_of(other_pixels_options[i]);
         CHECK(t, h != 0 && base != 0 && h != base);
         if (h == 0 || h == base)

@@ -10,40 +10,17 @@
 
 #include "../src/app/options.h"
 #include "../src/app/presets.h"
-#include "../src/base/hash.h"
 #include "files.h"
+#include "option_words.h"
 #include "tests.h"
 
 #define OUT "build/test_presets"
-#define WORDS_MAX 64
 
 static const char *const modes[] = {"direct", "pt", "photons", "1994", "1996", "2008"};
 static const char *const qualities[] = {"preview", "default", "reference"};
 
 #define N_MODES (sizeof modes / sizeof modes[0])
 #define N_QUALITIES (sizeof qualities / sizeof qualities[0])
-
-/* parse_options() of "photon WORDS scenes/cornell.scene", WORDS split at spaces; its
- * status (0 to render). */
-static int options_of(const char *words, struct options *o)
-{
-    char text[512], *argv[WORDS_MAX];
-    int argc = 0;
-    argv[argc++] = "photon";
-    snprintf(text, sizeof text, "%s", words);
-    for (char *w = strtok(text, " "); w != NULL && argc < WORDS_MAX - 1; w = strtok(NULL, " "))
-        argv[argc++] = w;
-    argv[argc++] = "scenes/cornell.scene";
-    struct error err;
-    return parse_options(argc, argv, o, &err);
-}
-
-/* options_hash() of the parsed words; 0 (which no test expects) when they do not parse. */
-static uint64_t hash_of(const char *words)
-{
-    struct options o;
-    return options_of(words, &o) == 0 ? options_hash(&o, FNV1A_OFFSET_BASIS) : 0;
-}
 
 /* Runs "PHOTON args" with its output in OUT.log; the exit status. */
 static int photon(const char *args)
