@@ -38,7 +38,8 @@ SRC := $(sort $(wildcard src/*/*.c))
 HEADERS := $(wildcard src/*/*.h tests/*.h tests/bench/*.h)
 LIB_OBJ := $(SRC:%.c=$(BUILD)/%.o)
 MAIN_OBJ := $(BUILD)/src/main.o
-TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)))
+# The tests also check the tte workload's fit of pt's error (tests/bench/tte_fit.c).
+TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)) tests/bench/tte_fit.c)
 BENCH_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/bench/*.c)))
 
 .PHONY: all run test test-spd check bench figures fuzz clean
