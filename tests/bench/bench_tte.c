@@ -10,7 +10,10 @@
  * checkpoints after 1, 2, 4, ... samples per pixel, for PT_TIME_FACTOR times the longest
  * mode's seconds, and every mode's figure is read off that one curve: log-log
  * interpolation between the two checkpoints around the target or, past pt's last
- * checkpoint, pt's own law, relmse ~ 1 / time (tte.MODE.SCENE.extrapolated=1 says so).
+ * checkpoint, the fit relmse = a / t + c of its checkpoints (tte_fit.h; c is the
+ * reference's own noise) and tte.MODE.SCENE.extrapolated=1. A target at or below c is one
+ * pt never reaches by the fit (extrapolated=unreachable): its pt_seconds and ratio are then
+ * lower bounds, from pt's last checkpoint, which had not reached it.
  * ratio = pt's seconds / the mode's: above 1 the photon mode is faster to its error.
  *
  * PHOTON_TTE_TRIAL set and not empty makes a trial run, for trying what reads the figures
@@ -30,6 +33,7 @@
 #include "../../src/modes/jensen1996.h"
 #include "../../src/modes/ppm2008.h"
 #include "../../src/modes/pt.h"
+#include "tte_fit.h"
 
 #define MAX_ROWS 64
 #define N_PHOTON_MODES 3
@@ -39,11 +43,12 @@
 #define TRIAL_GATHER_RAYS 32
 #define TRIAL_PASSES 4
 
-/* The error curve a render's checkpoints trace. */
+/* The error curve a render's checkpoints trace, and its fit for past the last one. */
 struct curve {
     const struct image *reference; /* borrowed, the rendered window of the reference */
     double seconds[MAX_ROWS], relmse[MAX_ROWS];
     int n;
+    struct tte_fit fit; /* of the n rows, once the render is done */
 };
 
 static double record(void *context, const struct image *mean, long long work, double seconds)
@@ -73,7 +78,8 @@ static double time_to(const struct curve *c, double target)
     return -1;
 }
 
-/* The curve's relmse at time t (log-log interpolation; the nearest end outside it). */
+/* The curve's relmse at time t (log-log interpolation; before it, its first row; after
+ * it, its fit). */
 static double error_at(const struct curve *c, double t)
 {
     if (t <= c->seconds[0])
@@ -83,7 +89,7 @@ static double error_at(const struct curve *c, double t)
             double f = log(t / c->seconds[i - 1]) / log(c->seconds[i] / c->seconds[i - 1]);
             return exp(log(c->relmse[i - 1]) + f * log(c->relmse[i] / c->relmse[i - 1]));
         }
-    return c->relmse[c->n - 1] * c->seconds[c->n - 1] / t; /* pt's 1 / time beyond its end */
+    return tte_fit_error_at(&c->fit, t);
 }
 
 /* The command line's settings at spp samples a pixel (seed 1, no time limit): the whole
@@ -237,22 +243,43 @@ static void run_pt(const struct scene *scene, const struct mode_run *runs, int n
     render_result_free(&result);
     fprintf(stderr, "bench: tte: %s: --mode pt: relmse %g after %d samples, %.1f s\n", name,
             pt->relmse[pt->n - 1], counters.passes, pt->seconds[pt->n - 1]);
+    pt->fit = tte_fit_rows(pt->seconds, pt->relmse, pt->n);
+    if (!pt->fit.fitted)
+        fprintf(stderr, "bench: tte: %s: pt's checkpoints fit no a / t + c with a > 0; "
+                        "past them, relmse ~ 1 / time from the last\n", name);
     printf("tte.pt.%s.seconds=%.3f\n", name, pt->seconds[pt->n - 1]);
     printf("tte.pt.%s.relmse=%.6g\n", name, pt->relmse[pt->n - 1]);
+    printf("tte.pt.%s.fit_a=%.6g\n", name, pt->fit.a);
+    printf("tte.pt.%s.fit_c=%.6g\n", name, pt->fit.c);
+    printf("tte.pt.%s.fitted=%d\n", name, pt->fit.fitted);
+}
+
+/* pt's seconds to relmse target, and how they were found: "0" read off its checkpoints,
+ * "1" past the last by the fit, "unreachable" when the fit never gets there. Past the last
+ * checkpoint they are at least its seconds, since pt had not reached target by then; that
+ * lower bound is what an unreachable target gets. */
+static double pt_time_to(const struct curve *pt, double target, const char **extrapolated)
+{
+    double seconds = time_to(pt, target);
+    *extrapolated = "0";
+    if (seconds < 0) {
+        double beyond = tte_fit_time_to(&pt->fit, target), last = pt->seconds[pt->n - 1];
+        *extrapolated = isinf(beyond) ? "unreachable" : "1";
+        seconds = isinf(beyond) ? last : fmax(last, beyond);
+    }
+    return seconds;
 }
 
 /* The mode's figures against pt's curve. */
 static void print_figures(const struct mode_run *run, const struct curve *pt, const char *name)
 {
     const char *mode = run->mode->name;
-    double pt_seconds = time_to(pt, run->relmse);
-    int extrapolated = pt_seconds < 0;
-    if (extrapolated)
-        pt_seconds = pt->seconds[pt->n - 1] * pt->relmse[pt->n - 1] / run->relmse;
+    const char *extrapolated;
+    double pt_seconds = pt_time_to(pt, run->relmse, &extrapolated);
     printf("tte.%s.%s.relmse=%.6g\n", mode, name, run->relmse);
     printf("tte.%s.%s.seconds=%.3f\n", mode, name, run->seconds);
     printf("tte.%s.%s.pt_seconds=%.3f\n", mode, name, pt_seconds);
-    printf("tte.%s.%s.extrapolated=%d\n", mode, name, extrapolated);
+    printf("tte.%s.%s.extrapolated=%s\n", mode, name, extrapolated);
     printf("tte.%s.%s.ratio=%.4g\n", mode, name, pt_seconds / run->seconds);
     printf("tte.%s.%s.pt_relmse_equal_time=%.6g\n", mode, name, error_at(pt, run->seconds));
     printf("tte.%s.%s.bytes_peak=%zu\n", mode, name, run->bytes_peak);
@@ -311,7 +338,7 @@ static void time_to_error_on(const struct tte_case *tc, int trial)
         n_runs += runs[n_runs].seconds >= 0;
     }
     if (n_runs > 0) {
-        struct curve pt = {reference, {0}, {0}, 0};
+        struct curve pt = {reference, {0}, {0}, 0, {0, 0, 0}};
         run_pt(scene, runs, n_runs, trial, tc->name, &pt);
         for (int i = 0; i < n_runs; i++)
             print_figures(&runs[i], &pt, tc->name);
