@@ -10,7 +10,7 @@
  * checkpoints after 1, 2, 4, ... samples per pixel, for PT_TIME_FACTOR times the longest
  * mode's seconds, and every mode's figure is read off that one curve: log-log
  * interpolation between the two checkpoints around the target or, past pt's last
- * checkpoint, the fit relmse = a / t + c of its checkpoints (tte_fit.h; c is the
+ * checkpoint, the fit relmse = a / t + c of its checkpoints (tte_fit.h, pt_fit; c is the
  * reference's own noise) and tte.MODE.SCENE.extrapolated=1. A target at or below c is one
  * pt never reaches by the fit (extrapolated=unreachable): its pt_seconds and ratio are then
  * lower bounds, from pt's last checkpoint, which had not reached it.
@@ -46,18 +46,18 @@
 /* The error curve a render's checkpoints trace, and its fit for past the last one. */
 struct curve {
     const struct image *reference; /* borrowed, the rendered window of the reference */
-    double seconds[MAX_ROWS], relmse[MAX_ROWS];
+    double seconds[MAX_ROWS], work[MAX_ROWS], relmse[MAX_ROWS]; /* work: samples a pixel */
     int n;
-    struct tte_fit fit; /* of the n rows, once the render is done */
+    struct tte_fit fit; /* of the n rows, in seconds, once the render is done (pt_fit) */
 };
 
 static double record(void *context, const struct image *mean, long long work, double seconds)
 {
-    (void)work;
     double start = bench_seconds();
     struct curve *c = context;
     if (c->n < MAX_ROWS) {
         c->seconds[c->n] = seconds;
+        c->work[c->n] = (double)work;
         c->relmse[c->n] = image_compare(mean, c->reference).relmse;
         c->n++;
     }
@@ -227,6 +227,19 @@ static void run_mode(const struct scene *scene, const struct image *reference, i
     render_result_free(&result);
 }
 
+/* pt's relmse = a / t + c, t in seconds, for past its last checkpoint. The law holds in
+ * samples a pixel, but CPU seconds per sample are not steady (on a shared machine the first
+ * checkpoints' samples can cost a fifth more than the later ones'), and a fit in seconds
+ * takes that wander for the curve's bend and misplaces c, the floor. So the fit is in
+ * samples, and a is turned into seconds at the pace of the last checkpoint, the pace pt
+ * would go on at. */
+static struct tte_fit pt_fit(const struct curve *pt)
+{
+    struct tte_fit fit = tte_fit_rows(pt->work, pt->relmse, pt->n);
+    fit.a *= pt->seconds[pt->n - 1] / pt->work[pt->n - 1];
+    return fit;
+}
+
 /* pt's curve on scene for PT_TIME_FACTOR times the longest of the modes' seconds. */
 static void run_pt(const struct scene *scene, const struct mode_run *runs, int n_runs,
                    int trial, const char *name, struct curve *pt)
@@ -243,7 +256,7 @@ static void run_pt(const struct scene *scene, const struct mode_run *runs, int n
     render_result_free(&result);
     fprintf(stderr, "bench: tte: %s: --mode pt: relmse %g after %d samples, %.1f s\n", name,
             pt->relmse[pt->n - 1], counters.passes, pt->seconds[pt->n - 1]);
-    pt->fit = tte_fit_rows(pt->seconds, pt->relmse, pt->n);
+    pt->fit = pt_fit(pt);
     if (!pt->fit.fitted)
         fprintf(stderr, "bench: tte: %s: pt's checkpoints fit no a / t + c with a > 0; "
                         "past them, relmse ~ 1 / time from the last\n", name);
@@ -338,7 +351,7 @@ static void time_to_error_on(const struct tte_case *tc, int trial)
         n_runs += runs[n_runs].seconds >= 0;
     }
     if (n_runs > 0) {
-        struct curve pt = {reference, {0}, {0}, 0, {0, 0, 0}};
+        struct curve pt = {reference, {0}, {0}, {0}, 0, {0, 0, 0}};
         run_pt(scene, runs, n_runs, trial, tc->name, &pt);
         for (int i = 0; i < n_runs; i++)
             print_figures(&runs[i], &pt, tc->name);

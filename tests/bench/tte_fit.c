@@ -13,34 +13,34 @@
 
 #include <math.h>
 
-/* The rule relmse ~ 1 / time through the row (seconds, relmse): what is left when no line
- * can be fitted. */
-static struct tte_fit one_over_time(double seconds, double relmse)
+/* The rule relmse ~ 1 / t through the row (t, relmse): what is left when no line can be
+ * fitted. */
+static struct tte_fit one_over_t(double t, double relmse)
 {
-    struct tte_fit fit = {relmse * seconds, 0, 0};
+    struct tte_fit fit = {relmse * t, 0, 0};
     return fit;
 }
 
-struct tte_fit tte_fit_rows(const double *seconds, const double *relmse, int n)
+struct tte_fit tte_fit_rows(const double *t, const double *relmse, int n)
 {
     double sw = 0, swx = 0, swe = 0;
     for (int i = 0; i < n; i++) {
         double w = 1 / (relmse[i] * relmse[i]);
         sw += w;
-        swx += w / seconds[i];
+        swx += w / t[i];
         swe += w * relmse[i];
     }
     double x_m = swx / sw, e_m = swe / sw;
     double sxx = 0, sxe = 0, sxx0 = 0, sxe0 = 0;
     for (int i = 0; i < n; i++) {
-        double w = 1 / (relmse[i] * relmse[i]), x = 1 / seconds[i];
+        double w = 1 / (relmse[i] * relmse[i]), x = 1 / t[i];
         sxx += w * (x - x_m) * (x - x_m);
         sxe += w * (x - x_m) * (relmse[i] - e_m);
         sxx0 += w * x * x; /* the sums of the fit held to c = 0 */
         sxe0 += w * x * relmse[i];
     }
-    if (!(sxx > 0)) /* fewer than two distinct times: no slope to fit */
-        return one_over_time(seconds[n - 1], relmse[n - 1]);
+    if (!(sxx > 0)) /* fewer than two distinct t: no slope to fit */
+        return one_over_t(t[n - 1], relmse[n - 1]);
     struct tte_fit fit = {sxe / sxx, e_m - sxe / sxx * x_m, 1};
     if (fit.c < 0) {
         /* The squared misses are a convex bowl in (a, c); with its floor at c < 0 the best
@@ -48,8 +48,8 @@ struct tte_fit tte_fit_rows(const double *seconds, const double *relmse, int n)
         fit.a = sxe0 / sxx0;
         fit.c = 0;
     }
-    if (!(fit.a > 0)) /* error that does not fall with time: not pt's law */
-        return one_over_time(seconds[n - 1], relmse[n - 1]);
+    if (!(fit.a > 0)) /* error that does not fall with t: not pt's law */
+        return one_over_t(t[n - 1], relmse[n - 1]);
     return fit;
 }
 
