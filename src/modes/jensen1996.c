@@ -71,30 +71,6 @@
 #include "photons.h"
 #include "surface.h"
 
-struct jensen1996_settings jensen1996_settings_default(void)
-{
-    struct jensen1996_settings js;
-    js.global_photons = J96_DEFAULT_PHOTONS;
-    js.caustic_photons = J96_DEFAULT_CAUSTIC_PHOTONS;
-    js.global_gather = J96_DEFAULT_GATHER;
-    js.caustic_gather = J96_DEFAULT_CAUSTIC_GATHER;
-    js.max_radius = 0;
-    js.cone_k = 1.0;
-    js.count_rim = 0;
-    js.gather_rays = J96_DEFAULT_GATHER_RAYS;
-    js.glossy_rays = J96_DEFAULT_GLOSSY_RAYS;
-    js.cache_accuracy = J96_DEFAULT_CACHE_ACCURACY;
-    js.accurate_distance = J96_DEFAULT_ACCURATE_DISTANCE;
-    js.accurate_weight = J96_DEFAULT_ACCURATE_WEIGHT;
-    js.shadow_photons = 0;
-    js.one_map = 0;
-    js.precomputed_irradiance = J96_DEFAULT_PRECOMPUTED;
-    js.disc_coverage = 1;
-    js.report = NULL;
-    js.work = NULL;
-    return js;
-}
-
 static double cpu_seconds(clock_t start)
 {
     return (double)(clock() - start) / CLOCKS_PER_SEC;
