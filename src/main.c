@@ -312,6 +312,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         j94.max_radius = run->o.max_radius;
         j94.differential_run = run->o.differential_run;
         j94.count_rim = run->o.count_rim;
+        j94.caustic_radius_fraction = run->o.caustic_radius_fraction;
         j94.gather_rays = run->o.gather_rays;
         j94.cache_accuracy = run->o.cache_accuracy;
         j94.light_samples = run->o.light_samples;
@@ -328,6 +329,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         js.max_radius = run->o.max_radius;
         js.cone_k = run->o.cone;
         js.count_rim = run->o.count_rim;
+        js.caustic_radius_fraction = run->o.caustic_radius_fraction;
         js.gather_rays = run->o.gather_rays;
         js.glossy_rays = run->o.glossy_rays;
         js.cache_accuracy = run->o.cache_accuracy;

@@ -68,7 +68,7 @@ static const char *const same_pixels_options[] = {
 static const char *const other_pixels_options[] = {
     "--mode pt", "--seed 2", "--spp 3", "--specular-spp 40", "--width 100", "--height 100",
     "--adaptive 0.1", "--max-depth 3", "--photons 7", "--gather 9", "--max-radius 2", "--cone 2",
-    "--rim-photon",
+    "--rim-photon", "--mode 1994 --caustic-radius-fraction 1",
     "--mode 1996 --caustic-photons 5", "--mode 1996 --caustic-gather 5",
     "--mode 1996 --gather-rays 9", "--mode 1996 --glossy-rays 2",
     "--mode 1996 --cache-accuracy 0.2", "--mode 1996 --accurate-distance 2",

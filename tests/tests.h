@@ -34,5 +34,6 @@ void test_docs(struct check *t);   /* test_docs.c: the documentation against the
 void test_spd(struct check *t);    /* test_spd.c: all 22 SPD files (PHOTON_SPD), by name only */
 void test_presets(struct check *t); /* test_presets.c: --quality's presets         */
 void test_paper(struct check *t);  /* test_paper.c: --paper and its switches       */
+void test_switches(struct check *t); /* test_switches.c: each paper switch of 1994, 1996 */
 
 #endif

@@ -113,6 +113,9 @@ static const struct option_spec specs[] = {
     {"--rim-photon", OPT_FLAG, FIELD(count_rim), 0, 0, "",
      "estimates count the photon on the rim too, as Eq. 3 is printed (the paper's; "
      "k / (k - 1) too bright)", FOR_PHOTON_MAPS},
+    {"--caustic-radius-fraction", OPT_REAL, FIELD(caustic_radius_fraction), 0.001, 1, "F",
+     "caustic estimates reach F times --max-radius (default 0.25: a wide disc hangs over a "
+     "surface's edges where caustic photons are sparse; the paper's 1)", FOR_1994 | FOR_1996},
     {"--caustic-photons", OPT_INT, FIELD(caustic_photons), 0, MAX_PHOTONS, "N",
      "photons emitted towards specular objects for the caustic map (default 1000000)",
      FOR_1996},
@@ -279,6 +282,7 @@ static void set_defaults(struct options *o)
     o->photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
     o->alpha = PPM_DEFAULT_ALPHA;
     o->cone = -1;
+    o->caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     struct jensen1996_settings js = jensen1996_settings_default();
     o->caustic_photons = (int)js.caustic_photons;
     o->caustic_gather = (int)js.caustic_gather;

@@ -51,6 +51,8 @@ struct options {
     double cone;                  /* photon modes: cone filter k; 0 = none, -1 = the
                                      mode's default (photons 0, 1996 1)            */
     int count_rim;                /* photon modes: estimates count the rim photon  */
+    double caustic_radius_fraction; /* 1994, 1996: caustic estimates' reach, a fraction
+                                     of max_radius                                  */
     int caustic_photons;          /* 1996: photons emitted for the caustic map     */
     int caustic_gather;           /* 1996: photons in each caustic estimate        */
     int gather_rays;              /* 1996: rays of one final gather                */

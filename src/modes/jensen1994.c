@@ -70,6 +70,7 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.gather_rays = J94_DEFAULT_GATHER_RAYS;
     js.cache_accuracy = J94_DEFAULT_CACHE_ACCURACY;
     js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;
+    js.caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     js.projection_maps = 1;
     js.illumination_maps = 0;
     js.work = NULL;
@@ -534,7 +535,7 @@ static void set_up(struct j94 *m, const struct scene *scene, const struct render
                                       js->differential_run, js->count_rim};
     m->all_photons = all;
     m->caustic_photons = all;
-    m->caustic_photons.max_r2 *= CAUSTIC_RADIUS_FRACTION * CAUSTIC_RADIUS_FRACTION;
+    m->caustic_photons.max_r2 *= js->caustic_radius_fraction * js->caustic_radius_fraction;
     m->caustic_photons.kinds = PHOTON_CAUSTIC;
     /* Ward and Heckbert's strata, m x n with n about pi m, one ray each */
     m->strata_theta = (int)floor(sqrt(js->gather_rays / PI) + 0.5);

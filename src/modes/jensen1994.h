@@ -43,6 +43,9 @@ struct jensen1994_settings {
     int gather_rays;       /* rays of one irradiance record, 2..J96_MAX_GATHER_RAYS         */
     double cache_accuracy; /* Ward's a, > 0                                                 */
     int light_samples;     /* stratified samples of each light, 1..J94_MAX_LIGHT_SAMPLES    */
+    double caustic_radius_fraction; /* caustic estimates reach this fraction of the
+                              largest radius, in (0, 1] (CAUSTIC_RADIUS_FRACTION; the
+                              paper's 1: a departure, src/modes/README.md)                 */
     int projection_maps;   /* 1: emit through projection maps (Sec. 3.1, photon/
                               projection_map.h, default cells and boost); 0: light_emit() */
     int illumination_maps; /* --irradiance-store: 1 illumination maps on quads and spheres

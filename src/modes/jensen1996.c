@@ -596,8 +596,8 @@ static void set_up(struct j96 *m, const struct scene *scene, const struct render
     m->global_es.kinds = 0;
     m->global_es.count_rim = js->count_rim;
     m->caustic_es.k = js->caustic_gather;
-    m->caustic_es.max_r2 = m->global_es.max_r2 * CAUSTIC_RADIUS_FRACTION *
-                           CAUSTIC_RADIUS_FRACTION;
+    m->caustic_es.max_r2 = m->global_es.max_r2 * js->caustic_radius_fraction *
+                           js->caustic_radius_fraction;
     m->caustic_es.cone_k = js->cone_k;
     m->caustic_es.kinds = js->one_map ? PHOTON_CAUSTIC : 0;
     m->caustic_es.count_rim = js->count_rim;

@@ -57,8 +57,9 @@ struct jensen1996_settings {
     size_t global_gather;     /* k of the global map's estimates, 1..MAX_GATHER          */
     size_t caustic_gather;    /* k of the caustic map's estimates, 1..MAX_GATHER         */
     double max_radius;        /* > 0: the global estimates' largest radius; <= 0: the
-                                 photons mode's default (1/10 of the scene's diagonal);
-                                 caustic estimates reach a quarter of it                 */
+                                 photons mode's default (1/10 of the scene's diagonal)   */
+    double caustic_radius_fraction; /* caustic estimates reach this fraction of it, in
+                                 (0, 1] (CAUSTIC_RADIUS_FRACTION; the paper's 1)         */
     double cone_k;            /* cone filter of the caustic estimate (Eq. 4-5); 0: none */
     int count_rim;            /* 1: estimates count the rim photon, as Eq. 3 is printed */
     int gather_rays;          /* rays of one final gather, 2..J96_MAX_GATHER_RAYS        */

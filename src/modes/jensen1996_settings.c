@@ -3,6 +3,8 @@
  */
 #include "jensen1996.h"
 
+#include "photons.h"
+
 struct jensen1996_settings jensen1996_settings_default(void)
 {
     struct jensen1996_settings js;
@@ -11,6 +13,7 @@ struct jensen1996_settings jensen1996_settings_default(void)
     js.global_gather = J96_DEFAULT_GATHER;
     js.caustic_gather = J96_DEFAULT_CAUSTIC_GATHER;
     js.max_radius = 0;
+    js.caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     js.cone_k = 1.0;
     js.count_rim = 0;
     js.gather_rays = J96_DEFAULT_GATHER_RAYS;
