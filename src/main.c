@@ -316,6 +316,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         j94.gather_rays = run->o.gather_rays;
         j94.cache_accuracy = run->o.cache_accuracy;
         j94.light_samples = run->o.light_samples;
+        j94.both_lobes = run->o.both_lobes;
         j94.projection_maps = run->o.projection_maps;
         j94.illumination_maps = run->o.illumination_maps;
         j94.work = &run->work;
@@ -339,6 +340,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         js.one_map = run->o.one_map;
         js.precomputed_irradiance = run->o.precomputed_irradiance;
         js.disc_coverage = run->o.disc_coverage;
+        js.both_lobes = run->o.both_lobes;
         js.report = checkpoint;
         js.work = &run->work;
         return render_jensen1996(run->scene, &run->rs, &js, want_variance, &run->counters,

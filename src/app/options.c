@@ -151,6 +151,12 @@ static const struct option_spec specs[] = {
      "(the default)", FOR_1996},
     {"--no-disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
      "over the whole disc, pi r^2, as Eq. 3 (the paper's)", FOR_1996},
+    {"--both-lobes", OPT_FLAG, FIELD(both_lobes), 0, 0, "",
+     "glass traces its reflected and refracted rays both, as Whitted's ray tracer (1996: "
+     "at accurate points) (the default)", FOR_1994 | FOR_1996},
+    {"--no-both-lobes", OPT_FLAG, FIELD(both_lobes), 0, 0, "",
+     "one of them, chosen by the BRDF's importance sampling (the paper's Monte Carlo)",
+     FOR_1994 | FOR_1996},
     {"--differential", OPT_INT, FIELD(differential_run), 0, 100000, "R",
      "stop an irradiance estimate after R additions that all raise or all lower it "
      "(differential checking); 0 = off (default 10)", FOR_1994},
@@ -294,6 +300,7 @@ static void set_defaults(struct options *o)
     o->shadow_photons = js.shadow_photons;
     o->precomputed_irradiance = js.precomputed_irradiance;
     o->disc_coverage = js.disc_coverage;
+    o->both_lobes = js.both_lobes;
     struct jensen1994_settings j94 = jensen1994_settings_default();
     o->differential_run = j94.differential_run;
     o->light_samples = j94.light_samples;

@@ -71,6 +71,7 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.cache_accuracy = J94_DEFAULT_CACHE_ACCURACY;
     js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;
     js.caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
+    js.both_lobes = 1;
     js.projection_maps = 1;
     js.illumination_maps = 0;
     js.work = NULL;
@@ -371,7 +372,8 @@ static struct vec3 follow_lobe(const struct j94 *m, const struct surface *s,
 
 /* Recursive ray tracing of f_r,s: an ideal mirror's or glass's every lobe (reflection and
  * refraction both, as Whitted's ray tracer, so glass shows no noise from choosing
- * between them), else one direction sampled from the glossy lobe. */
+ * between them; with both_lobes off, the paper's Monte Carlo: one lobe, chosen by the
+ * BRDF's sampling), else one direction sampled from the glossy lobe. */
 static struct vec3 specular_light(const struct j94 *m, const struct surface *s,
                                   const struct material *specular,
                                   const struct shading_frame *frame, struct path path,
@@ -380,7 +382,7 @@ static struct vec3 specular_light(const struct j94 *m, const struct surface *s,
     if (path.depth >= m->max_depth)
         return vec3_zero();
     struct vec3 sum = vec3_zero();
-    if (brdf_is_delta(specular)) {
+    if (m->js->both_lobes && brdf_is_delta(specular)) {
         struct brdf_sample lobes[2];
         int n_lobes = brdf_delta_lobes(specular, frame, s->wo, lobes);
         for (int k = 0; k < n_lobes; k++)

@@ -46,6 +46,9 @@ struct jensen1994_settings {
     double caustic_radius_fraction; /* caustic estimates reach this fraction of the
                               largest radius, in (0, 1] (CAUSTIC_RADIUS_FRACTION; the
                               paper's 1: a departure, src/modes/README.md)                 */
+    int both_lobes;        /* 1: L_r,s follows both lobes of glass (Whitted's way, a
+                              departure); 0: one lobe sampled by the BRDF, the paper's
+                              "recursive Monte Carlo ray tracing"                       */
     int projection_maps;   /* 1: emit through projection maps (Sec. 3.1, photon/
                               projection_map.h, default cells and boost); 0: light_emit() */
     int illumination_maps; /* --irradiance-store: 1 illumination maps on quads and spheres

@@ -249,7 +249,8 @@ static struct vec3 follow_specular(const struct j96 *m, const struct surface *s,
  * else one (a path that branched at every glossy hit of a sphere flake would grow
  * exponentially). An ideal specular surface evaluated accurately has nothing to sample:
  * its reflected and refracted rays are both followed, as in Whitted's ray tracer (1980),
- * so a glass ball seen directly shows no noise from choosing between them. A lobe whose
+ * so a glass ball seen directly shows no noise from choosing between them (both_lobes;
+ * off, the paper's one sampled ray, as at approximate points). A lobe whose
  * path weight falls below --accurate-weight turns approximate and stops branching, which
  * bounds the number of rays. */
 static struct vec3 specular_reflection(const struct j96 *m, const struct surface *s,
@@ -260,7 +261,7 @@ static struct vec3 specular_reflection(const struct j96 *m, const struct surface
     if (path.depth >= m->max_depth)
         return vec3_zero();
     struct vec3 sum = vec3_zero();
-    if (path.eval == ACCURATE && brdf_is_delta(&split->specular)) {
+    if (path.eval == ACCURATE && m->js->both_lobes && brdf_is_delta(&split->specular)) {
         struct brdf_sample lobes[2];
         int n_lobes = brdf_delta_lobes(&split->specular, frame, s->wo, lobes);
         for (int k = 0; k < n_lobes; k++)

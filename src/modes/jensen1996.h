@@ -81,6 +81,10 @@ struct jensen1996_settings {
                                  surfaces (Christensen 1999; a departure, jensen1996.c);
                                  0: the paper's radiance estimate at every ray's end,
                                  0..J96_MAX_PRECOMPUTED                                  */
+    int both_lobes;           /* 1: a mirror or glass at an accurate point traces both its
+                                 reflected and refracted rays (Whitted's way, a
+                                 departure); 0: one, sampled by the BRDF (4.2's Monte
+                                 Carlo, the paper's)                                     */
     int disc_coverage;        /* 1: a record's estimate takes the photons of its disc's
                                  plane over the part of the disc a surface covers
                                  (photon/disc_coverage.h; a departure, jensen1996.c);
