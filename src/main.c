@@ -341,6 +341,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         js.precomputed_irradiance = run->o.precomputed_irradiance;
         js.disc_coverage = run->o.disc_coverage;
         js.both_lobes = run->o.both_lobes;
+        js.glossy_corner = run->o.glossy_corner;
         js.report = checkpoint;
         js.work = &run->work;
         return render_jensen1996(run->scene, &run->rs, &js, want_variance, &run->counters,

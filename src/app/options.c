@@ -157,6 +157,11 @@ static const struct option_spec specs[] = {
     {"--no-both-lobes", OPT_FLAG, FIELD(both_lobes), 0, 0, "",
      "one of them, chosen by the BRDF's importance sampling (the paper's Monte Carlo)",
      FOR_1994 | FOR_1996},
+    {"--glossy-corner", OPT_FLAG, FIELD(glossy_corner), 0, 0, "",
+     "surfaces seen through a glossy lobe take the global map's indirect light, no gather "
+     "(the default)", FOR_1996},
+    {"--no-glossy-corner", OPT_FLAG, FIELD(glossy_corner), 0, 0, "",
+     "evaluate them accurately, with a final gather (the paper's)", FOR_1996},
     {"--differential", OPT_INT, FIELD(differential_run), 0, 100000, "R",
      "stop an irradiance estimate after R additions that all raise or all lower it "
      "(differential checking); 0 = off (default 10)", FOR_1994},
@@ -301,6 +306,7 @@ static void set_defaults(struct options *o)
     o->precomputed_irradiance = js.precomputed_irradiance;
     o->disc_coverage = js.disc_coverage;
     o->both_lobes = js.both_lobes;
+    o->glossy_corner = js.glossy_corner;
     struct jensen1994_settings j94 = jensen1994_settings_default();
     o->differential_run = j94.differential_run;
     o->light_samples = j94.light_samples;

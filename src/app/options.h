@@ -65,6 +65,7 @@ struct options {
     int precomputed_irradiance;   /* 1996: records at every N-th photon; 0 = none  */
     int disc_coverage;            /* 1996: records over their disc's covered part  */
     int both_lobes;               /* 1994, 1996: mirrors and glass trace every lobe */
+    int glossy_corner;            /* 1996: the corner way behind glossy lobes      */
     double adaptive;              /* camera modes: adaptive sampling's relative error;
                                      0 = off                                       */
     int differential_run;         /* 1994: differential checking's run; 0 = off    */

@@ -24,7 +24,8 @@
  *   corner       at the end of a gather ray shorter than --accurate-distance radii of the
  *                global estimate there ("otherwise we might risk inaccurate colour
  *                bleeding effects in corners"), and at surfaces seen through a glossy
- *                reflection (whose blur hides the map's): as accurate, except that the soft
+ *                reflection (whose blur hides the map's; --no-glossy-corner evaluates
+ *                them accurately, the paper's way): as accurate, except that the soft
  *                indirect light is the global map's estimate from its indirect photons;
  *   approximate  after a diffuse bounce or at low weight: the global map's radiance
  *                estimate of the diffuse part, and still the specular part by Monte Carlo.
@@ -230,11 +231,12 @@ static struct vec3 follow_specular(const struct j96 *m, const struct surface *s,
     if (q < 1 && !(rng_uniform(rng) < q))
         return vec3_zero();
     /* Seen through a glossy lobe, whose blur hides the global map's, a surface gets the
-     * corner evaluation: no gather for every ray of every glossy sample. */
+     * corner evaluation: no gather for every ray of every glossy sample (glossy_corner;
+     * off, the paper's accurate evaluation, which counts glossy lobes as specular). */
     if (path.eval != ACCURATE || vec3_luminance(next.beta) < m->js->accurate_weight)
         next.eval = APPROXIMATE;
     else
-        next.eval = bs->delta ? ACCURATE : CORNER;
+        next.eval = bs->delta || !m->js->glossy_corner ? ACCURATE : CORNER;
     if (bs->delta)
         next.rule = path.rule == EMISSION_SKIP_DIRECT ? EMISSION_COUNTED : path.rule;
     else

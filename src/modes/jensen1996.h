@@ -85,6 +85,9 @@ struct jensen1996_settings {
                                  reflected and refracted rays (Whitted's way, a
                                  departure); 0: one, sampled by the BRDF (4.2's Monte
                                  Carlo, the paper's)                                     */
+    int glossy_corner;        /* 1: a surface seen through a glossy lobe is evaluated in
+                                 the corner way (a departure); 0: accurately, as one
+                                 seen "via a few specular reflections" (the paper's)     */
     int disc_coverage;        /* 1: a record's estimate takes the photons of its disc's
                                  plane over the part of the disc a surface covers
                                  (photon/disc_coverage.h; a departure, jensen1996.c);

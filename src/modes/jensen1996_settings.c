@@ -25,6 +25,7 @@ struct jensen1996_settings jensen1996_settings_default(void)
     js.one_map = 0;
     js.precomputed_irradiance = J96_DEFAULT_PRECOMPUTED;
     js.both_lobes = 1;
+    js.glossy_corner = 1;
     js.disc_coverage = 1;
     js.report = NULL;
     js.work = NULL;
