@@ -317,6 +317,8 @@ static struct render_result render_mode(struct run *run, struct error *err)
         j94.cache_accuracy = run->o.cache_accuracy;
         j94.light_samples = run->o.light_samples;
         j94.both_lobes = run->o.both_lobes;
+        j94.bounded_reach = run->o.bounded_reach;
+        j94.gradient_limit = run->o.gradient_limit;
         j94.projection_maps = run->o.projection_maps;
         j94.illumination_maps = run->o.illumination_maps;
         j94.work = &run->work;
@@ -342,6 +344,8 @@ static struct render_result render_mode(struct run *run, struct error *err)
         js.disc_coverage = run->o.disc_coverage;
         js.both_lobes = run->o.both_lobes;
         js.glossy_corner = run->o.glossy_corner;
+        js.bounded_reach = run->o.bounded_reach;
+        js.gradient_limit = run->o.gradient_limit;
         js.report = checkpoint;
         js.work = &run->work;
         return render_jensen1996(run->scene, &run->rs, &js, want_variance, &run->counters,

@@ -13,6 +13,7 @@
 
 #include "../src/base/error.h"
 #include "../src/image/image.h"
+#include "../src/modes/cache_pass.h"
 #include "files.h"
 #include "tests.h"
 
@@ -187,9 +188,85 @@ static void test_glossy_corner(struct check *t)
     remove_render("plain_accurate");
 }
 
+/* truth: Ward 1988's R is the harmonic mean distance of the gather's strata: 2 when every
+ *   stratum meets a surface 2 away, whatever the radiances; with the limit on, a gather
+ *   that sees light through one sector of twelve alone changes fast across the point and
+ *   gets a smaller R. Without bounds, R may lie anywhere from the ray offset at p, 1e-9 x
+ *   |p|'s largest coordinate (geom/ray.h), to the scene's diagonal; bounded, from 1.5
+ *   pixel footprints / a (test_cache.c has the numbers).
+ * tolerance: none (R = 2 is exact: 48 / (48 / 2)), 1e-12 relative for the bounds.
+ * catches: --no-gradient-limit that still limits, a limit that acts where the gradient is
+ *   small, --no-bounded-reach that keeps a bound of the camera's view. */
+static void test_record_reach(struct check *t)
+{
+    enum { M = 4, N_PHI = 12 };
+    struct stratum_sample samples[M * N_PHI];
+    for (int i = 0; i < M * N_PHI; i++) {
+        samples[i].radiance = i % N_PHI == 0 ? vec3(10, 10, 10) : vec3_zero();
+        samples[i].distance = 2;
+    }
+    struct vec3 n = vec3(0, 0, 1), tx = vec3(1, 0, 0), ty = vec3(0, 1, 0), p = vec3_zero();
+    struct record_reach ward = {0.01, 100, 0}, limited = {0.01, 100, 1};
+    CHECK(t, irradiance_record_of(p, tx, ty, n, M, N_PHI, samples, ward).r == 2);
+    double r = irradiance_record_of(p, tx, ty, n, M, N_PHI, samples, limited).r;
+    CHECK(t, r < 2 && r >= 0.01);
+    for (int i = 0; i < M * N_PHI; i++)
+        samples[i].radiance = vec3(1, 1, 1); /* no gradient: the limit does not act */
+    CHECK(t, irradiance_record_of(p, tx, ty, n, M, N_PHI, samples, limited).r == 2);
+    struct camera c;
+    c.from = vec3(0, 0, 0);
+    c.at = vec3(0, 0, 1);
+    c.up = vec3(0, 1, 0);
+    c.fov = 90;
+    camera_setup(&c, 100, 100);
+    struct vec3 at = vec3(0, 0, 10), facing = vec3(0, 0, -1);
+    struct record_reach free_reach = record_reach_at(&c, at, facing, 0.15, 1000, 0, 1);
+    CHECK_CLOSE(t, free_reach.r_min, 1e-8, 1e-12 * 1e-8);
+    CHECK(t, free_reach.r_max == 1000 && free_reach.gradient_limit == 1);
+    struct record_reach bounded = record_reach_at(&c, at, facing, 0.15, 1000, 1, 0);
+    CHECK_CLOSE(t, bounded.r_min, 1.5 * 0.2 / 0.15, 1e-12 * 2);
+    CHECK(t, bounded.r_max == 200 && bounded.gradient_limit == 0);
+}
+
+/* truth: without the floor of 1.5 pixel footprints / a, records near the Cornell box's
+ *   creases (where the harmonic mean distance falls towards 0) reach less than a pixel,
+ *   so the final pass's samples, away from the pixel centres the pre-pass made records
+ *   at, find none usable and gather on the spot: more gather_fallbacks (24 x 24: 356 and
+ *   406 against 43). With records free to be small, the gradient's limit is what shrinks
+ *   them where irradiance changes fast: without it fewer records fill the cache (48 x 48:
+ *   1,284 against 1,429). At these sizes the bounded reach's floor exceeds every
+ *   gradient-limited R, so the limit is measured without it.
+ * catches: either switch ignored by a mode, or turned the wrong way. */
+static void test_reach_switches(struct check *t)
+{
+    static const char *const modes[] = {"--mode 1994 " TINY, "--mode 1996 " TINY_1996};
+    for (size_t i = 0; i < sizeof modes / sizeof modes[0]; i++) {
+        char words[512];
+        snprintf(words, sizeof words, "%s" PLAIN_BOX, modes[i]);
+        CHECK(t, render(words, "bounded"));
+        snprintf(words, sizeof words, "%s --no-bounded-reach" PLAIN_BOX, modes[i]);
+        CHECK(t, render(words, "free"));
+        CHECK(t, stat_of("free", "gather_fallbacks") > 2 * stat_of("bounded", "gather_fallbacks"));
+        const char *larger = "--width 48 --height 48 --crop 0 0 8 8 --no-bounded-reach";
+        snprintf(words, sizeof words, "%s %s" PLAIN_BOX, modes[i], larger);
+        CHECK(t, render(words, "limited"));
+        snprintf(words, sizeof words, "%s %s --no-gradient-limit" PLAIN_BOX, modes[i], larger);
+        CHECK(t, render(words, "unlimited"));
+        CHECK(t, stat_of("unlimited", "cache_records") < stat_of("limited", "cache_records") &&
+                     stat_of("unlimited", "cache_records") > 0);
+        CHECK(t, !same_image("limited", "unlimited"));
+    }
+    remove_render("bounded");
+    remove_render("free");
+    remove_render("limited");
+    remove_render("unlimited");
+}
+
 void test_switches(struct check *t)
 {
     RUN_TEST(t, test_caustic_radius_fraction);
     RUN_TEST(t, test_both_lobes);
     RUN_TEST(t, test_glossy_corner);
+    RUN_TEST(t, test_record_reach);
+    RUN_TEST(t, test_reach_switches);
 }

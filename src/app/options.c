@@ -162,6 +162,18 @@ static const struct option_spec specs[] = {
      "(the default)", FOR_1996},
     {"--no-glossy-corner", OPT_FLAG, FIELD(glossy_corner), 0, 0, "",
      "evaluate them accurately, with a final gather (the paper's)", FOR_1996},
+    {"--bounded-reach", OPT_FLAG, FIELD(bounded_reach), 0, 0, "",
+     "a cache record's R lies between 1.5 pixel footprints / A, as the camera sees its "
+     "point, and a fifth of the scene's diagonal (the default)", FOR_1994 | FOR_1996},
+    {"--no-bounded-reach", OPT_FLAG, FIELD(bounded_reach), 0, 0, "",
+     "R is Ward's harmonic mean distance alone (the paper's; many more gathers in "
+     "corners)", FOR_1994 | FOR_1996},
+    {"--gradient-limit", OPT_FLAG, FIELD(gradient_limit), 0, 0, "",
+     "a cache record's R is at most E / |grad E|, so it stops short of a shadow's edge "
+     "(the default)", FOR_1994 | FOR_1996},
+    {"--no-gradient-limit", OPT_FLAG, FIELD(gradient_limit), 0, 0, "",
+     "R is not limited by the gradient (Ward and Heckbert's, the paper's)",
+     FOR_1994 | FOR_1996},
     {"--differential", OPT_INT, FIELD(differential_run), 0, 100000, "R",
      "stop an irradiance estimate after R additions that all raise or all lower it "
      "(differential checking); 0 = off (default 10)", FOR_1994},
@@ -307,6 +319,8 @@ static void set_defaults(struct options *o)
     o->disc_coverage = js.disc_coverage;
     o->both_lobes = js.both_lobes;
     o->glossy_corner = js.glossy_corner;
+    o->bounded_reach = js.bounded_reach;
+    o->gradient_limit = js.gradient_limit;
     struct jensen1994_settings j94 = jensen1994_settings_default();
     o->differential_run = j94.differential_run;
     o->light_samples = j94.light_samples;

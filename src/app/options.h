@@ -66,6 +66,8 @@ struct options {
     int disc_coverage;            /* 1996: records over their disc's covered part  */
     int both_lobes;               /* 1994, 1996: mirrors and glass trace every lobe */
     int glossy_corner;            /* 1996: the corner way behind glossy lobes      */
+    int bounded_reach;            /* 1994, 1996: cache records' R from the camera  */
+    int gradient_limit;           /* 1994, 1996: cache records' R <= E / |grad E|  */
     double adaptive;              /* camera modes: adaptive sampling's relative error;
                                      0 = off                                       */
     int differential_run;         /* 1994: differential checking's run; 0 = off    */

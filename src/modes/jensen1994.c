@@ -72,6 +72,8 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;
     js.caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     js.both_lobes = 1;
+    js.bounded_reach = 1;
+    js.gradient_limit = 1;
     js.projection_maps = 1;
     js.illumination_maps = 0;
     js.work = NULL;
@@ -432,11 +434,11 @@ static struct irradiance_record gather_record(const struct j94 *m, const struct 
             sample->distance = t;
         }
     }
-    double r_min, r_max;
-    record_radius_bounds(&m->scene->camera, s->p, frame->n, m->js->cache_accuracy,
-                         m->diagonal, &r_min, &r_max);
-    return irradiance_record_make(s->p, frame->t, frame->b, frame->n, m->strata_theta,
-                                  m->strata_phi, m->strata, r_min, r_max);
+    struct record_reach reach =
+        record_reach_at(&m->scene->camera, s->p, frame->n, m->js->cache_accuracy, m->diagonal,
+                        m->js->bounded_reach, m->js->gradient_limit);
+    return irradiance_record_of(s->p, frame->t, frame->b, frame->n, m->strata_theta,
+                                m->strata_phi, m->strata, reach);
 }
 
 /* The irradiance of multiple diffuse reflections at s: interpolated from the cache where

@@ -395,10 +395,11 @@ static struct irradiance_record gathered_record(const struct j96 *m, const struc
 {
     final_gather(m, &m->cached, s, diffuse, 1, frame, path, rng, counters);
     double a = m->cache != NULL ? m->js->cache_accuracy : 1.0; /* no cache: R is unused */
-    double r_min, r_max;
-    record_radius_bounds(&m->scene->camera, s->p, frame->n, a, m->diagonal, &r_min, &r_max);
-    return irradiance_record_make(s->p, frame->t, frame->b, frame->n, m->cached.theta,
-                                  m->cached.phi, m->scratch->strata, r_min, r_max);
+    struct record_reach reach = record_reach_at(&m->scene->camera, s->p, frame->n, a,
+                                                m->diagonal, m->js->bounded_reach,
+                                                m->js->gradient_limit);
+    return irradiance_record_of(s->p, frame->t, frame->b, frame->n, m->cached.theta,
+                                m->cached.phi, m->scratch->strata, reach);
 }
 
 /* The fourth term of Eq. 2 at an accurate point. Lambertian: rho / pi times the

@@ -88,6 +88,9 @@ struct jensen1996_settings {
     int glossy_corner;        /* 1: a surface seen through a glossy lobe is evaluated in
                                  the corner way (a departure); 0: accurately, as one
                                  seen "via a few specular reflections" (the paper's)     */
+    int bounded_reach;        /* 1: cache records' R bounded from the camera's view
+                                 (record_radius_bounds(), a departure); 0: Ward's R     */
+    int gradient_limit;       /* 1: a record's R at most E / |grad E| (a departure)      */
     int disc_coverage;        /* 1: a record's estimate takes the photons of its disc's
                                  plane over the part of the disc a surface covers
                                  (photon/disc_coverage.h; a departure, jensen1996.c);

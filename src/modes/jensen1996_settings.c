@@ -26,6 +26,8 @@ struct jensen1996_settings jensen1996_settings_default(void)
     js.precomputed_irradiance = J96_DEFAULT_PRECOMPUTED;
     js.both_lobes = 1;
     js.glossy_corner = 1;
+    js.bounded_reach = 1;
+    js.gradient_limit = 1;
     js.disc_coverage = 1;
     js.report = NULL;
     js.work = NULL;
