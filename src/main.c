@@ -312,9 +312,13 @@ static struct render_result render_mode(struct run *run, struct error *err)
         j94.max_radius = run->o.max_radius;
         j94.differential_run = run->o.differential_run;
         j94.count_rim = run->o.count_rim;
+        j94.caustic_radius_fraction = run->o.caustic_radius_fraction;
         j94.gather_rays = run->o.gather_rays;
         j94.cache_accuracy = run->o.cache_accuracy;
         j94.light_samples = run->o.light_samples;
+        j94.both_lobes = run->o.both_lobes;
+        j94.bounded_reach = run->o.bounded_reach;
+        j94.gradient_limit = run->o.gradient_limit;
         j94.projection_maps = run->o.projection_maps;
         j94.illumination_maps = run->o.illumination_maps;
         j94.work = &run->work;
@@ -328,6 +332,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         js.max_radius = run->o.max_radius;
         js.cone_k = run->o.cone;
         js.count_rim = run->o.count_rim;
+        js.caustic_radius_fraction = run->o.caustic_radius_fraction;
         js.gather_rays = run->o.gather_rays;
         js.glossy_rays = run->o.glossy_rays;
         js.cache_accuracy = run->o.cache_accuracy;
@@ -337,6 +342,10 @@ static struct render_result render_mode(struct run *run, struct error *err)
         js.one_map = run->o.one_map;
         js.precomputed_irradiance = run->o.precomputed_irradiance;
         js.disc_coverage = run->o.disc_coverage;
+        js.both_lobes = run->o.both_lobes;
+        js.glossy_corner = run->o.glossy_corner;
+        js.bounded_reach = run->o.bounded_reach;
+        js.gradient_limit = run->o.gradient_limit;
         js.report = checkpoint;
         js.work = &run->work;
         return render_jensen1996(run->scene, &run->rs, &js, want_variance, &run->counters,

@@ -2,7 +2,8 @@
  * tests/test_paper.c -- `--paper` (app/presets.h) and the switches it stands for: the
  * option parser gives each mode exactly the words of its row, the user's own options still
  * win, a render with --paper is the same bytes as one with the words spelled out, and the
- * one switch shared by three modes, --rim-photon, computes the paper's sums.
+ * one switch shared by three modes, --rim-photon, computes the paper's sums (the other
+ * switches' effects: test_switches.c).
  */
 #include <math.h>
 #include <stdio.h>
@@ -78,6 +79,10 @@ static void test_user_options_win_over_paper(struct check *t)
     CHECK(t, o.precomputed_irradiance == 0 && o.spp == 8 && o.gather_rays == 32);
     CHECK(t, options_of("--mode 1996", &o) == 0);
     CHECK(t, o.paper == 0 && o.count_rim == 0 && o.specular_spp == 64 * o.spp);
+    CHECK(t, options_of("--mode 1996 --paper --glossy-corner --caustic-radius-fraction 0.5", &o)
+                 == 0);
+    CHECK(t, o.glossy_corner == 1 && o.caustic_radius_fraction == 0.5 && o.both_lobes == 0 &&
+             o.bounded_reach == 0 && o.gradient_limit == 0);
 }
 
 /* truth: --paper and its words spelled out are the same render: compared as files, on the
@@ -87,10 +92,13 @@ static void test_paper_renders_as_its_words(struct check *t)
 {
     static const char *const runs[][2] = {
         {"--mode photons --photons 20000", "--rim-photon"},
-        {"--mode 1994 --photons 20000 --gather-rays 16 --spp 2", "--rim-photon --specular-spp 2"},
+        {"--mode 1994 --photons 20000 --gather-rays 16 --spp 2",
+         "--rim-photon --caustic-radius-fraction 1 --no-both-lobes --no-bounded-reach "
+         "--no-gradient-limit --specular-spp 2"},
         {"--mode 1996 --photons 20000 --caustic-photons 5000 --gather-rays 16 --spp 2",
          "--rim-photon --shadow-photons --precomputed-irradiance 0 --no-disc-coverage "
-         "--specular-spp 2"},
+         "--caustic-radius-fraction 1 --no-both-lobes --no-glossy-corner --no-bounded-reach "
+         "--no-gradient-limit --specular-spp 2"},
         {"--mode 2008 --passes 3 --photons-per-pass 5000 --spp 2", "--direct-photons"},
     };
     for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {

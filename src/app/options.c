@@ -19,6 +19,7 @@
 #include "../modes/ppm2008.h"
 #include "../modes/render.h"
 #include "../photon/trace.h"
+#include "option_values.h"
 #include "presets.h"
 
 enum option_kind {
@@ -112,6 +113,9 @@ static const struct option_spec specs[] = {
     {"--rim-photon", OPT_FLAG, FIELD(count_rim), 0, 0, "",
      "estimates count the photon on the rim too, as Eq. 3 is printed (the paper's; "
      "k / (k - 1) too bright)", FOR_PHOTON_MAPS},
+    {"--caustic-radius-fraction", OPT_REAL, FIELD(caustic_radius_fraction), 0.001, 1, "F",
+     "caustic estimates reach F times --max-radius (default 0.25: a wide disc hangs over a "
+     "surface's edges where caustic photons are sparse; the paper's 1)", FOR_1994 | FOR_1996},
     {"--caustic-photons", OPT_INT, FIELD(caustic_photons), 0, MAX_PHOTONS, "N",
      "photons emitted towards specular objects for the caustic map (default 1000000)",
      FOR_1996},
@@ -147,6 +151,29 @@ static const struct option_spec specs[] = {
      "(the default)", FOR_1996},
     {"--no-disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
      "over the whole disc, pi r^2, as Eq. 3 (the paper's)", FOR_1996},
+    {"--both-lobes", OPT_FLAG, FIELD(both_lobes), 0, 0, "",
+     "glass traces its reflected and refracted rays both, as Whitted's ray tracer (1996: "
+     "at accurate points) (the default)", FOR_1994 | FOR_1996},
+    {"--no-both-lobes", OPT_FLAG, FIELD(both_lobes), 0, 0, "",
+     "one of them, chosen by the BRDF's importance sampling (the paper's Monte Carlo)",
+     FOR_1994 | FOR_1996},
+    {"--glossy-corner", OPT_FLAG, FIELD(glossy_corner), 0, 0, "",
+     "surfaces seen through a glossy lobe take the global map's indirect light, no gather "
+     "(the default)", FOR_1996},
+    {"--no-glossy-corner", OPT_FLAG, FIELD(glossy_corner), 0, 0, "",
+     "evaluate them accurately, with a final gather (the paper's)", FOR_1996},
+    {"--bounded-reach", OPT_FLAG, FIELD(bounded_reach), 0, 0, "",
+     "a cache record's R lies between 1.5 pixel footprints / A, as the camera sees its "
+     "point, and a fifth of the scene's diagonal (the default)", FOR_1994 | FOR_1996},
+    {"--no-bounded-reach", OPT_FLAG, FIELD(bounded_reach), 0, 0, "",
+     "R is Ward's harmonic mean distance alone (the paper's; many more gathers in "
+     "corners)", FOR_1994 | FOR_1996},
+    {"--gradient-limit", OPT_FLAG, FIELD(gradient_limit), 0, 0, "",
+     "a cache record's R is at most E / |grad E|, so it stops short of a shadow's edge "
+     "(the default)", FOR_1994 | FOR_1996},
+    {"--no-gradient-limit", OPT_FLAG, FIELD(gradient_limit), 0, 0, "",
+     "R is not limited by the gradient (Ward and Heckbert's, the paper's)",
+     FOR_1994 | FOR_1996},
     {"--differential", OPT_INT, FIELD(differential_run), 0, 100000, "R",
      "stop an irradiance estimate after R additions that all raise or all lower it "
      "(differential checking); 0 = off (default 10)", FOR_1994},
@@ -278,6 +305,7 @@ static void set_defaults(struct options *o)
     o->photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
     o->alpha = PPM_DEFAULT_ALPHA;
     o->cone = -1;
+    o->caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     struct jensen1996_settings js = jensen1996_settings_default();
     o->caustic_photons = (int)js.caustic_photons;
     o->caustic_gather = (int)js.caustic_gather;
@@ -289,39 +317,14 @@ static void set_defaults(struct options *o)
     o->shadow_photons = js.shadow_photons;
     o->precomputed_irradiance = js.precomputed_irradiance;
     o->disc_coverage = js.disc_coverage;
+    o->both_lobes = js.both_lobes;
+    o->glossy_corner = js.glossy_corner;
+    o->bounded_reach = js.bounded_reach;
+    o->gradient_limit = js.gradient_limit;
     struct jensen1994_settings j94 = jensen1994_settings_default();
     o->differential_run = j94.differential_run;
     o->light_samples = j94.light_samples;
     o->projection_maps = j94.projection_maps;
-}
-
-int read_number(const char *name, const char *text, double min, double max,
-                       int integer, double *value, struct error *err)
-{
-    char *end = NULL;
-    *value = text != NULL ? strtod(text, &end) : 0;
-    int ok = text != NULL && end != text && *end == '\0' && *value >= min && *value <= max &&
-             (!integer || *value == floor(*value));
-    if (!ok)
-        return error_set(err, "", 0, "%s: expected %s from %g to %g, got '%s'", name,
-                         integer ? "a whole number" : "a number", min, max,
-                         text != NULL ? text : "nothing");
-    return 0;
-}
-
-int read_seed(const char *text, uint64_t *seed, struct error *err)
-{
-    char *end = NULL;
-    if (text != NULL && text[0] >= '0' && text[0] <= '9') {
-        errno = 0;
-        unsigned long long v = strtoull(text, &end, 10);
-        if (*end == '\0' && errno == 0 && v <= UINT64_MAX) {
-            *seed = (uint64_t)v;
-            return 0;
-        }
-    }
-    return error_set(err, "", 0, "--seed: expected a whole number from 0 to 2^64-1, got '%s'",
-                     text != NULL ? text : "nothing");
 }
 
 static int read_mode(const char *text, enum mode *mode, struct error *err)
@@ -334,33 +337,6 @@ static int read_mode(const char *text, enum mode *mode, struct error *err)
     return error_set(err, "", 0,
                      "--mode: unknown mode '%s' (available: direct, pt, photons, 1994, 1996, 2008)",
                      text != NULL ? text : "nothing");
-}
-
-/* --irradiance-store: 0 for photon, 1 for illumination. */
-static int read_store(const char *text, int *illumination, struct error *err)
-{
-    if (text != NULL && (strcmp(text, "photon") == 0 || strcmp(text, "illumination") == 0)) {
-        *illumination = strcmp(text, "illumination") == 0;
-        return 0;
-    }
-    return error_set(err, "", 0, "--irradiance-store: expected photon or illumination, got '%s'",
-                     text != NULL ? text : "nothing");
-}
-
-int read_output(const char *text, char *output, enum display_format *display,
-                struct error *err)
-{
-    size_t n = text != NULL ? strlen(text) : 0;
-    const char *ending = n >= 5 ? text + n - 4 : ""; /* NAME is not empty */
-    int ppm = strcmp(ending, display_suffix(DISPLAY_PPM)) == 0;
-    if (!ppm && strcmp(ending, ".pfm") != 0 && strcmp(ending, display_suffix(DISPLAY_PNG)) != 0)
-        return error_set(err, "", 0, "-o: expected a file name ending in .pfm, .png or .ppm, "
-                         "got '%s'", text != NULL ? text : "nothing");
-    if (n >= OUTPUT_PATH_MAX)
-        return error_set(err, "", 0, "-o: the file name is too long");
-    *display = ppm ? DISPLAY_PPM : DISPLAY_PNG;
-    sprintf(output, "%.*s.pfm", (int)(n - 4), text); /* the PFM is always written */
-    return 0;
 }
 
 /* Applies option spec to the value words at argv[*i + 1 ...], advancing *i past them. */
@@ -418,18 +394,6 @@ static int apply_option(const struct option_spec *spec, char **argv, int argc, i
         return 0;
     }
     return -1;
-}
-
-/* The default output: the scene file's name without directory and extension, + ".pfm". */
-static void default_output(const char *scene_path, char *output)
-{
-    const char *base = strrchr(scene_path, '/');
-    base = base != NULL ? base + 1 : scene_path;
-    const char *dot = strrchr(base, '.');
-    int n = dot != NULL && dot != base ? (int)(dot - base) : (int)strlen(base);
-    if (n > OUTPUT_PATH_MAX - 5)
-        n = OUTPUT_PATH_MAX - 5;
-    sprintf(output, "%.*s.pfm", n, base);
 }
 
 static const struct option_spec *find_spec(const char *name)

@@ -51,6 +51,8 @@ struct options {
     double cone;                  /* photon modes: cone filter k; 0 = none, -1 = the
                                      mode's default (photons 0, 1996 1)            */
     int count_rim;                /* photon modes: estimates count the rim photon  */
+    double caustic_radius_fraction; /* 1994, 1996: caustic estimates' reach, a fraction
+                                     of max_radius                                  */
     int caustic_photons;          /* 1996: photons emitted for the caustic map     */
     int caustic_gather;           /* 1996: photons in each caustic estimate        */
     int gather_rays;              /* 1996: rays of one final gather                */
@@ -62,6 +64,10 @@ struct options {
     int one_map;                  /* 1996: one map for global and caustic photons  */
     int precomputed_irradiance;   /* 1996: records at every N-th photon; 0 = none  */
     int disc_coverage;            /* 1996: records over their disc's covered part  */
+    int both_lobes;               /* 1994, 1996: mirrors and glass trace every lobe */
+    int glossy_corner;            /* 1996: the corner way behind glossy lobes      */
+    int bounded_reach;            /* 1994, 1996: cache records' R from the camera  */
+    int gradient_limit;           /* 1994, 1996: cache records' R <= E / |grad E|  */
     double adaptive;              /* camera modes: adaptive sampling's relative error;
                                      0 = off                                       */
     int differential_run;         /* 1994: differential checking's run; 0 = off    */

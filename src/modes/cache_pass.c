@@ -26,6 +26,12 @@ void fill_cache_pass(const struct scene *scene, uint64_t seed,
         fprintf(stderr, "\n");
 }
 
+/* The ray offset at p (geom/ray.h): the least distance the renderer tells apart there. */
+static double resolution_at(struct vec3 p)
+{
+    return RAY_OFFSET_REL * fmax(1.0, vec3_max_abs(p));
+}
+
 void record_radius_bounds(const struct camera *camera, struct vec3 p, struct vec3 n,
                           double accuracy, double diagonal, double *r_min, double *r_max)
 {
@@ -34,9 +40,22 @@ void record_radius_bounds(const struct camera *camera, struct vec3 p, struct vec
     double cos_view = distance > 0 ? fabs(vec3_dot(to_camera, n)) / distance : 1.0;
     double footprint = distance * camera_footprint(camera) / fmax(cos_view, 0.1);
     /* A path that comes back through the camera's own position sees no footprint there;
-     * the radius still needs a positive floor: the ray offset at p, below which the
-     * renderer tells no two points apart (geom/ray.h). */
-    double resolution = RAY_OFFSET_REL * fmax(1.0, vec3_max_abs(p));
-    *r_min = fmax(CACHE_MIN_REACH * footprint / accuracy, resolution);
+     * the radius still needs a positive floor: the ray offset at p. */
+    *r_min = fmax(CACHE_MIN_REACH * footprint / accuracy, resolution_at(p));
     *r_max = fmax(*r_min, CACHE_R_MAX * diagonal);
+}
+
+struct record_reach record_reach_at(const struct camera *camera, struct vec3 p, struct vec3 n,
+                                    double accuracy, double diagonal, int bounded,
+                                    int gradient_limit)
+{
+    struct record_reach reach;
+    reach.gradient_limit = gradient_limit;
+    if (bounded) {
+        record_radius_bounds(camera, p, n, accuracy, diagonal, &reach.r_min, &reach.r_max);
+    } else {
+        reach.r_min = resolution_at(p);
+        reach.r_max = fmax(reach.r_min, diagonal);
+    }
+    return reach;
 }

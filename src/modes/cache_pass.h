@@ -45,4 +45,14 @@ void fill_cache_pass(const struct scene *scene, uint64_t seed,
 void record_radius_bounds(const struct camera *camera, struct vec3 p, struct vec3 n,
                           double accuracy, double diagonal, double *r_min, double *r_max);
 
+/* A record's reach at p as a mode's switches ask. bounded 1: record_radius_bounds()'s
+ * (a departure: src/modes/README.md, --bounded-reach); 0: Ward's R alone, the papers',
+ * held only between the ray offset at p, below which the renderer tells no two points
+ * apart, and the scene's diagonal, which no harmonic mean of distances inside the scene
+ * exceeds: it binds only where every gather ray escapes, where Ward's R is infinite.
+ * gradient_limit: as struct record_reach (--gradient-limit). */
+struct record_reach record_reach_at(const struct camera *camera, struct vec3 p, struct vec3 n,
+                                    double accuracy, double diagonal, int bounded,
+                                    int gradient_limit);
+
 #endif

@@ -70,6 +70,10 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.gather_rays = J94_DEFAULT_GATHER_RAYS;
     js.cache_accuracy = J94_DEFAULT_CACHE_ACCURACY;
     js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;
+    js.caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
+    js.both_lobes = 1;
+    js.bounded_reach = 1;
+    js.gradient_limit = 1;
     js.projection_maps = 1;
     js.illumination_maps = 0;
     js.work = NULL;
@@ -370,7 +374,8 @@ static struct vec3 follow_lobe(const struct j94 *m, const struct surface *s,
 
 /* Recursive ray tracing of f_r,s: an ideal mirror's or glass's every lobe (reflection and
  * refraction both, as Whitted's ray tracer, so glass shows no noise from choosing
- * between them), else one direction sampled from the glossy lobe. */
+ * between them; with both_lobes off, the paper's Monte Carlo: one lobe, chosen by the
+ * BRDF's sampling), else one direction sampled from the glossy lobe. */
 static struct vec3 specular_light(const struct j94 *m, const struct surface *s,
                                   const struct material *specular,
                                   const struct shading_frame *frame, struct path path,
@@ -379,7 +384,7 @@ static struct vec3 specular_light(const struct j94 *m, const struct surface *s,
     if (path.depth >= m->max_depth)
         return vec3_zero();
     struct vec3 sum = vec3_zero();
-    if (brdf_is_delta(specular)) {
+    if (m->js->both_lobes && brdf_is_delta(specular)) {
         struct brdf_sample lobes[2];
         int n_lobes = brdf_delta_lobes(specular, frame, s->wo, lobes);
         for (int k = 0; k < n_lobes; k++)
@@ -429,11 +434,11 @@ static struct irradiance_record gather_record(const struct j94 *m, const struct 
             sample->distance = t;
         }
     }
-    double r_min, r_max;
-    record_radius_bounds(&m->scene->camera, s->p, frame->n, m->js->cache_accuracy,
-                         m->diagonal, &r_min, &r_max);
-    return irradiance_record_make(s->p, frame->t, frame->b, frame->n, m->strata_theta,
-                                  m->strata_phi, m->strata, r_min, r_max);
+    struct record_reach reach =
+        record_reach_at(&m->scene->camera, s->p, frame->n, m->js->cache_accuracy, m->diagonal,
+                        m->js->bounded_reach, m->js->gradient_limit);
+    return irradiance_record_of(s->p, frame->t, frame->b, frame->n, m->strata_theta,
+                                m->strata_phi, m->strata, reach);
 }
 
 /* The irradiance of multiple diffuse reflections at s: interpolated from the cache where
@@ -534,7 +539,7 @@ static void set_up(struct j94 *m, const struct scene *scene, const struct render
                                       js->differential_run, js->count_rim};
     m->all_photons = all;
     m->caustic_photons = all;
-    m->caustic_photons.max_r2 *= CAUSTIC_RADIUS_FRACTION * CAUSTIC_RADIUS_FRACTION;
+    m->caustic_photons.max_r2 *= js->caustic_radius_fraction * js->caustic_radius_fraction;
     m->caustic_photons.kinds = PHOTON_CAUSTIC;
     /* Ward and Heckbert's strata, m x n with n about pi m, one ray each */
     m->strata_theta = (int)floor(sqrt(js->gather_rays / PI) + 0.5);

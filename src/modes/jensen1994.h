@@ -43,6 +43,15 @@ struct jensen1994_settings {
     int gather_rays;       /* rays of one irradiance record, 2..J96_MAX_GATHER_RAYS         */
     double cache_accuracy; /* Ward's a, > 0                                                 */
     int light_samples;     /* stratified samples of each light, 1..J94_MAX_LIGHT_SAMPLES    */
+    double caustic_radius_fraction; /* caustic estimates reach this fraction of the
+                              largest radius, in (0, 1] (CAUSTIC_RADIUS_FRACTION; the
+                              paper's 1: a departure, src/modes/README.md)                 */
+    int both_lobes;        /* 1: L_r,s follows both lobes of glass (Whitted's way, a
+                              departure); 0: one lobe sampled by the BRDF, the paper's
+                              "recursive Monte Carlo ray tracing"                       */
+    int bounded_reach;     /* 1: cache records' R bounded from the camera's view
+                           (record_radius_bounds(), a departure); 0: Ward's R alone     */
+    int gradient_limit;    /* 1: a record's R at most E / |grad E| (a departure); 0: not */
     int projection_maps;   /* 1: emit through projection maps (Sec. 3.1, photon/
                               projection_map.h, default cells and boost); 0: light_emit() */
     int illumination_maps; /* --irradiance-store: 1 illumination maps on quads and spheres

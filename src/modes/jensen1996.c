@@ -24,7 +24,8 @@
  *   corner       at the end of a gather ray shorter than --accurate-distance radii of the
  *                global estimate there ("otherwise we might risk inaccurate colour
  *                bleeding effects in corners"), and at surfaces seen through a glossy
- *                reflection (whose blur hides the map's): as accurate, except that the soft
+ *                reflection (whose blur hides the map's; --no-glossy-corner evaluates
+ *                them accurately, the paper's way): as accurate, except that the soft
  *                indirect light is the global map's estimate from its indirect photons;
  *   approximate  after a diffuse bounce or at low weight: the global map's radiance
  *                estimate of the diffuse part, and still the specular part by Monte Carlo.
@@ -70,30 +71,6 @@
 #include "jensen1996_maps.h"
 #include "photons.h"
 #include "surface.h"
-
-struct jensen1996_settings jensen1996_settings_default(void)
-{
-    struct jensen1996_settings js;
-    js.global_photons = J96_DEFAULT_PHOTONS;
-    js.caustic_photons = J96_DEFAULT_CAUSTIC_PHOTONS;
-    js.global_gather = J96_DEFAULT_GATHER;
-    js.caustic_gather = J96_DEFAULT_CAUSTIC_GATHER;
-    js.max_radius = 0;
-    js.cone_k = 1.0;
-    js.count_rim = 0;
-    js.gather_rays = J96_DEFAULT_GATHER_RAYS;
-    js.glossy_rays = J96_DEFAULT_GLOSSY_RAYS;
-    js.cache_accuracy = J96_DEFAULT_CACHE_ACCURACY;
-    js.accurate_distance = J96_DEFAULT_ACCURATE_DISTANCE;
-    js.accurate_weight = J96_DEFAULT_ACCURATE_WEIGHT;
-    js.shadow_photons = 0;
-    js.one_map = 0;
-    js.precomputed_irradiance = J96_DEFAULT_PRECOMPUTED;
-    js.disc_coverage = 1;
-    js.report = NULL;
-    js.work = NULL;
-    return js;
-}
 
 static double cpu_seconds(clock_t start)
 {
@@ -254,11 +231,12 @@ static struct vec3 follow_specular(const struct j96 *m, const struct surface *s,
     if (q < 1 && !(rng_uniform(rng) < q))
         return vec3_zero();
     /* Seen through a glossy lobe, whose blur hides the global map's, a surface gets the
-     * corner evaluation: no gather for every ray of every glossy sample. */
+     * corner evaluation: no gather for every ray of every glossy sample (glossy_corner;
+     * off, the paper's accurate evaluation, which counts glossy lobes as specular). */
     if (path.eval != ACCURATE || vec3_luminance(next.beta) < m->js->accurate_weight)
         next.eval = APPROXIMATE;
     else
-        next.eval = bs->delta ? ACCURATE : CORNER;
+        next.eval = bs->delta || !m->js->glossy_corner ? ACCURATE : CORNER;
     if (bs->delta)
         next.rule = path.rule == EMISSION_SKIP_DIRECT ? EMISSION_COUNTED : path.rule;
     else
@@ -273,7 +251,8 @@ static struct vec3 follow_specular(const struct j96 *m, const struct surface *s,
  * else one (a path that branched at every glossy hit of a sphere flake would grow
  * exponentially). An ideal specular surface evaluated accurately has nothing to sample:
  * its reflected and refracted rays are both followed, as in Whitted's ray tracer (1980),
- * so a glass ball seen directly shows no noise from choosing between them. A lobe whose
+ * so a glass ball seen directly shows no noise from choosing between them (both_lobes;
+ * off, the paper's one sampled ray, as at approximate points). A lobe whose
  * path weight falls below --accurate-weight turns approximate and stops branching, which
  * bounds the number of rays. */
 static struct vec3 specular_reflection(const struct j96 *m, const struct surface *s,
@@ -284,7 +263,7 @@ static struct vec3 specular_reflection(const struct j96 *m, const struct surface
     if (path.depth >= m->max_depth)
         return vec3_zero();
     struct vec3 sum = vec3_zero();
-    if (path.eval == ACCURATE && brdf_is_delta(&split->specular)) {
+    if (path.eval == ACCURATE && m->js->both_lobes && brdf_is_delta(&split->specular)) {
         struct brdf_sample lobes[2];
         int n_lobes = brdf_delta_lobes(&split->specular, frame, s->wo, lobes);
         for (int k = 0; k < n_lobes; k++)
@@ -416,10 +395,11 @@ static struct irradiance_record gathered_record(const struct j96 *m, const struc
 {
     final_gather(m, &m->cached, s, diffuse, 1, frame, path, rng, counters);
     double a = m->cache != NULL ? m->js->cache_accuracy : 1.0; /* no cache: R is unused */
-    double r_min, r_max;
-    record_radius_bounds(&m->scene->camera, s->p, frame->n, a, m->diagonal, &r_min, &r_max);
-    return irradiance_record_make(s->p, frame->t, frame->b, frame->n, m->cached.theta,
-                                  m->cached.phi, m->scratch->strata, r_min, r_max);
+    struct record_reach reach = record_reach_at(&m->scene->camera, s->p, frame->n, a,
+                                                m->diagonal, m->js->bounded_reach,
+                                                m->js->gradient_limit);
+    return irradiance_record_of(s->p, frame->t, frame->b, frame->n, m->cached.theta,
+                                m->cached.phi, m->scratch->strata, reach);
 }
 
 /* The fourth term of Eq. 2 at an accurate point. Lambertian: rho / pi times the
@@ -620,8 +600,8 @@ static void set_up(struct j96 *m, const struct scene *scene, const struct render
     m->global_es.kinds = 0;
     m->global_es.count_rim = js->count_rim;
     m->caustic_es.k = js->caustic_gather;
-    m->caustic_es.max_r2 = m->global_es.max_r2 * CAUSTIC_RADIUS_FRACTION *
-                           CAUSTIC_RADIUS_FRACTION;
+    m->caustic_es.max_r2 = m->global_es.max_r2 * js->caustic_radius_fraction *
+                           js->caustic_radius_fraction;
     m->caustic_es.cone_k = js->cone_k;
     m->caustic_es.kinds = js->one_map ? PHOTON_CAUSTIC : 0;
     m->caustic_es.count_rim = js->count_rim;

@@ -57,8 +57,9 @@ struct jensen1996_settings {
     size_t global_gather;     /* k of the global map's estimates, 1..MAX_GATHER          */
     size_t caustic_gather;    /* k of the caustic map's estimates, 1..MAX_GATHER         */
     double max_radius;        /* > 0: the global estimates' largest radius; <= 0: the
-                                 photons mode's default (1/10 of the scene's diagonal);
-                                 caustic estimates reach a quarter of it                 */
+                                 photons mode's default (1/10 of the scene's diagonal)   */
+    double caustic_radius_fraction; /* caustic estimates reach this fraction of it, in
+                                 (0, 1] (CAUSTIC_RADIUS_FRACTION; the paper's 1)         */
     double cone_k;            /* cone filter of the caustic estimate (Eq. 4-5); 0: none */
     int count_rim;            /* 1: estimates count the rim photon, as Eq. 3 is printed */
     int gather_rays;          /* rays of one final gather, 2..J96_MAX_GATHER_RAYS        */
@@ -80,6 +81,16 @@ struct jensen1996_settings {
                                  surfaces (Christensen 1999; a departure, jensen1996.c);
                                  0: the paper's radiance estimate at every ray's end,
                                  0..J96_MAX_PRECOMPUTED                                  */
+    int both_lobes;           /* 1: a mirror or glass at an accurate point traces both its
+                                 reflected and refracted rays (Whitted's way, a
+                                 departure); 0: one, sampled by the BRDF (4.2's Monte
+                                 Carlo, the paper's)                                     */
+    int glossy_corner;        /* 1: a surface seen through a glossy lobe is evaluated in
+                                 the corner way (a departure); 0: accurately, as one
+                                 seen "via a few specular reflections" (the paper's)     */
+    int bounded_reach;        /* 1: cache records' R bounded from the camera's view
+                                 (record_radius_bounds(), a departure); 0: Ward's R     */
+    int gradient_limit;       /* 1: a record's R at most E / |grad E| (a departure)      */
     int disc_coverage;        /* 1: a record's estimate takes the photons of its disc's
                                  plane over the part of the disc a surface covers
                                  (photon/disc_coverage.h; a departure, jensen1996.c);

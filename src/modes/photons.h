@@ -18,9 +18,10 @@
 #define PHOTONS_RADIUS_FRACTION 0.1 /* default maximum radius: this fraction of the
                                        diagonal of the scene's bounding box             */
 #define CAUSTIC_RADIUS_FRACTION 0.25 /* caustic estimates (1994, 1996) reach this much of
-                                        the maximum radius: caustic photons are dense
-                                        where they are, and a wide disc hangs over the
-                                        edges of the surface where they are sparse      */
+                                        the maximum radius by default (--caustic-radius-
+                                        fraction; the papers' 1): caustic photons are
+                                        dense where they are, and a wide disc hangs over
+                                        the edges of the surface where they are sparse  */
 
 struct photon_settings {
     size_t n_photons;  /* N emitted, 1..MAX_PHOTONS (trace.h)                           */

@@ -211,7 +211,8 @@ static void translational_gradient(int m, int n_phi, const struct stratum_sample
 }
 
 /* R_i no larger than E_i / |grad_t E_i| (luminance), and no smaller than r_min. Departs
- * from Ward and Heckbert, whose R_i is the harmonic mean distance alone: where the
+ * from Ward and Heckbert (switchable: struct record_reach; --no-gradient-limit), whose
+ * R_i is the harmonic mean distance alone: where the
  * irradiance changes fast, a record now reaches only as far as its gradient stays a small
  * correction (at a R_i it moves E_i by at most a E_i), so a lookup does not extend a
  * straight line across a shadow's edge. */
@@ -232,6 +233,16 @@ struct irradiance_record irradiance_record_make(struct vec3 p, struct vec3 t, st
                                                 const struct stratum_sample *samples,
                                                 double r_min, double r_max)
 {
+    struct record_reach reach = {r_min, r_max, 1};
+    return irradiance_record_of(p, t, b, n, m, n_phi, samples, reach);
+}
+
+struct irradiance_record irradiance_record_of(struct vec3 p, struct vec3 t, struct vec3 b,
+                                              struct vec3 n, int m, int n_phi,
+                                              const struct stratum_sample *samples,
+                                              struct record_reach reach)
+{
+    double r_min = reach.r_min, r_max = reach.r_max;
     assert(m >= 1 && n_phi >= 1 && m <= STRATA_MAX / n_phi);
     assert(r_min > 0 && r_min <= r_max);
     struct irradiance_record record;
@@ -245,7 +256,8 @@ struct irradiance_record irradiance_record_make(struct vec3 p, struct vec3 t, st
     if (n_phi > 1) {
         rotational_gradient(m, n_phi, samples, t, b, record.grad_r);
         translational_gradient(m, n_phi, samples, r_min, t, b, record.grad_t);
-        record.r = gradient_limited_radius(record.r, record.e, record.grad_t, r_min);
+        if (reach.gradient_limit)
+            record.r = gradient_limited_radius(record.r, record.e, record.grad_t, r_min);
     } else { /* one sector cannot tell one tangent direction from another */
         for (int c = 0; c < 3; c++)
             record.grad_r[c] = record.grad_t[c] = vec3_zero();

@@ -83,6 +83,21 @@ struct irradiance_record irradiance_record_make(struct vec3 p, struct vec3 t, st
                                                 const struct stratum_sample *samples,
                                                 double r_min, double r_max);
 
+/* What bounds a record's R. */
+struct record_reach {
+    double r_min, r_max; /* R's bounds, 0 < r_min <= r_max                                */
+    int gradient_limit;  /* 1: R at most E / |grad_t E| (in luminance) unless that is
+                            below r_min, a departure from Ward and Heckbert (irradiance_
+                            cache.c); 0: the harmonic mean distance alone, theirs         */
+};
+
+/* irradiance_record_make() with the gradient's limit on R a switch: the same record when
+ * reach.gradient_limit is 1 (irradiance_record_make() is this with the limit on). */
+struct irradiance_record irradiance_record_of(struct vec3 p, struct vec3 t, struct vec3 b,
+                                              struct vec3 n, int m, int n_phi,
+                                              const struct stratum_sample *samples,
+                                              struct record_reach reach);
+
 struct irradiance_cache; /* owns its records and its octree */
 
 /* An empty cache over bounds (the scene's box; records outside it are accepted too, at a

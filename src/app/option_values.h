@@ -1,0 +1,18 @@
+/*
+ * app/option_values.h -- the value readers options.c uses beyond those options.h offers
+ * to the subcommands (read_number(), read_seed(), read_output(), in option_values.c).
+ */
+#ifndef PHOTON_OPTION_VALUES_H
+#define PHOTON_OPTION_VALUES_H
+
+#include "options.h"
+
+/* --irradiance-store's word: *illumination 0 for photon, 1 for illumination; -1 with *err
+ * filled for any other word. */
+int read_store(const char *text, int *illumination, struct error *err);
+
+/* The default output: the scene file's name without directory and extension, + ".pfm",
+ * into output[OUTPUT_PATH_MAX]. */
+void default_output(const char *scene_path, char *output);
+
+#endif
