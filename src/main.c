@@ -355,6 +355,11 @@ static struct render_result render_mode(struct run *run, struct error *err)
         pp.passes = run->o.passes;
         pp.alpha = run->o.alpha;
         pp.radius = run->o.radius;
+        pp.footprints = run->o.footprints;
+        pp.fit_radius = run->o.fit_radius;
+        pp.merge_hit_points = run->o.merge_hit_points;
+        pp.resample_emission = run->o.resample_emission;
+        pp.facing_test = run->o.facing_test;
         pp.direct_photons = run->o.direct_photons;
         pp.snapshot_every = run->o.checkpoint;
         pp.report = checkpoint;

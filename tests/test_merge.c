@@ -57,6 +57,8 @@ static const char *const same_pixels_options[] = {
     "--mode 1996 --disc-coverage" /* the default */, "--mode 1994 --both-lobes" /* the default */,
     "--mode 1996 --glossy-corner" /* the default */, "--mode 1994 --bounded-reach" /* the default */,
     "--mode 1996 --gradient-limit" /* the default */,
+    "--mode 2008 --fit-radius --merge-hit-points --resample-emission --facing-test" /* the
+                                                                                  defaults */,
 };
 static const char *const other_pixels_options[] = {
     "--mode pt", "--seed 2", "--spp 3", "--specular-spp 40", "--width 100", "--height 100",
@@ -73,7 +75,9 @@ static const char *const other_pixels_options[] = {
     "--mode 1994 --differential 3", "--mode 1994 --light-samples 9",
     "--mode 1994 --irradiance-store illumination", "--mode 1994 --no-projection-maps",
     "--mode 2008 --passes 3", "--mode 2008 --photons-per-pass 7", "--mode 2008 --alpha 0.5",
-    "--mode 2008 --radius 2", "--mode 2008 --direct-photons",
+    "--mode 2008 --radius 2", "--mode 2008 --direct-photons", "--mode 2008 --footprints 2",
+    "--mode 2008 --no-fit-radius", "--mode 2008 --no-merge-hit-points",
+    "--mode 2008 --no-resample-emission", "--mode 2008 --no-facing-test",
 };
 
 /* The hash words are compared with: that of their leading "--mode M" alone when more

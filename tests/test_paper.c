@@ -99,7 +99,9 @@ static void test_paper_renders_as_its_words(struct check *t)
          "--rim-photon --shadow-photons --precomputed-irradiance 0 --no-disc-coverage "
          "--caustic-radius-fraction 1 --no-both-lobes --no-glossy-corner --no-bounded-reach "
          "--no-gradient-limit --specular-spp 2"},
-        {"--mode 2008 --passes 3 --photons-per-pass 5000 --spp 2", "--direct-photons"},
+        {"--mode 2008 --passes 3 --photons-per-pass 5000 --spp 2",
+         "--direct-photons --footprints 1 --no-fit-radius --no-merge-hit-points "
+         "--no-resample-emission --no-facing-test"},
     };
     for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {
         char args[512];

@@ -191,8 +191,30 @@ static const struct option_spec specs[] = {
     {"--alpha", OPT_REAL, FIELD(alpha), 0, 1, "A",
      "fraction of new photons kept, 0 < A < 1 (Eq. 7; default 0.7)", FOR_2008},
     {"--radius", OPT_REAL, FIELD(radius), 0, 1e30, "R",
-     "initial radius in scene units (default: one pixel footprint at each hit point, "
-     "shortened by a wall across its disc)", FOR_2008},
+     "initial radius in scene units (default: --footprints pixel footprints at each hit "
+     "point)", FOR_2008},
+    {"--footprints", OPT_REAL, FIELD(footprints), 0, 1e6, "K",
+     "initial radius in pixel footprints at each hit point (default 4; the paper's: 1)",
+     FOR_2008},
+    {"--fit-radius", OPT_FLAG, FIELD(fit_radius), 0, 0, "",
+     "shorten each initial radius until its disc lies on its surface, clear of walls and "
+     "open edges (the default)", FOR_2008},
+    {"--no-fit-radius", OPT_FLAG, FIELD(fit_radius), 0, 0, "",
+     "keep the initial radius whole, the paper's", FOR_2008},
+    {"--merge-hit-points", OPT_FLAG, FIELD(merge_hit_points), 0, 0, "",
+     "a pixel's eye rays that meet a surface within a hit point's disc add to it (the "
+     "default)", FOR_2008},
+    {"--no-merge-hit-points", OPT_FLAG, FIELD(merge_hit_points), 0, 0, "",
+     "a hit point for every eye ray, the paper's", FOR_2008},
+    {"--resample-emission", OPT_FLAG, FIELD(resample_emission), 0, 0, "",
+     "each pass's new eye ray also adds the emission it sees (the default)", FOR_2008},
+    {"--no-resample-emission", OPT_FLAG, FIELD(resample_emission), 0, 0, "",
+     "emission only from the --spp eye rays of the ray tracing pass, the paper's", FOR_2008},
+    {"--facing-test", OPT_FLAG, FIELD(facing_test), 0, 0, "",
+     "a photon counts only at hit points whose surface faces its own (the default)",
+     FOR_2008},
+    {"--no-facing-test", OPT_FLAG, FIELD(facing_test), 0, 0, "",
+     "every photon within R counts, the paper's", FOR_2008},
     {"--direct-photons", OPT_FLAG, FIELD(direct_photons), 0, 0, "",
      "direct light from photons too, the paper's way (default: a light sample at each "
      "hit point each pass, photons only after their first bounce)", FOR_2008},
@@ -304,6 +326,12 @@ static void set_defaults(struct options *o)
     o->passes = PPM_DEFAULT_PASSES;
     o->photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
     o->alpha = PPM_DEFAULT_ALPHA;
+    struct ppm_settings pp = ppm_settings_default();
+    o->footprints = pp.footprints;
+    o->fit_radius = pp.fit_radius;
+    o->merge_hit_points = pp.merge_hit_points;
+    o->resample_emission = pp.resample_emission;
+    o->facing_test = pp.facing_test;
     o->cone = -1;
     o->caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     struct jensen1996_settings js = jensen1996_settings_default();

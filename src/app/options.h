@@ -78,6 +78,11 @@ struct options {
     int photons_per_pass;         /* 2008: photons traced in each pass             */
     double alpha;                 /* 2008: Eq. 7's alpha, in (0, 1)                */
     double radius;                /* 2008: initial radius; 0 = pixel footprints    */
+    double footprints;            /* 2008: initial radius in pixel footprints      */
+    int fit_radius;               /* 2008: initial radius fitted to the surface    */
+    int merge_hit_points;         /* 2008: a pixel's eye rays share hit points     */
+    int resample_emission;        /* 2008: each pass's eye ray adds emission       */
+    int facing_test;              /* 2008: photons count where surfaces face       */
     int checkpoint;               /* 2008: write the image every this many passes  */
     int direct_photons;           /* 2008: direct light from photons, the paper's  */
 };

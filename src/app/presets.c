@@ -89,7 +89,8 @@ static const struct {
     {MODE_JENSEN1996, "--rim-photon --shadow-photons --precomputed-irradiance 0 "
                        "--no-disc-coverage --caustic-radius-fraction 1 --no-both-lobes "
                        "--no-glossy-corner --no-bounded-reach --no-gradient-limit"},
-    {MODE_PPM2008, "--direct-photons"},
+    {MODE_PPM2008, "--direct-photons --footprints 1 --no-fit-radius --no-merge-hit-points "
+                    "--no-resample-emission --no-facing-test"},
 };
 
 /* Splits words, one space apart, into *out. */

@@ -30,3 +30,20 @@ void sequence02_point(uint32_t i, uint32_t shift_x, uint32_t shift_y, double *x,
     *x = (double)(van_der_corput(i) ^ shift_x) * two_to_minus_32;
     *y = (double)(sobol_second(i) ^ shift_y) * two_to_minus_32;
 }
+
+/* Laine and Karras's hash of x: each bit of the result depends only on the bits of x at
+ * or below it, so applied to mirrored bits it scrambles each digit by the digits above. */
+static uint32_t laine_karras(uint32_t x, uint32_t seed)
+{
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return x;
+}
+
+uint32_t sequence02_shuffled(uint32_t i, uint32_t seed)
+{
+    return van_der_corput(laine_karras(van_der_corput(i), seed));
+}

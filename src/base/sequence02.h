@@ -20,4 +20,14 @@
 /* Point i of the sequence shifted by (shift_x, shift_y), in [0, 1)^2. */
 void sequence02_point(uint32_t i, uint32_t shift_x, uint32_t shift_y, double *x, double *y);
 
+/* The place in the sequence of the i-th point of its order shuffled by seed: a nested
+ * uniform scramble of i's bits from the lowest up (Burley 2020, "Practical hash-based
+ * Owen scrambling", Sec. 6, with the Laine-Karras hash). The first 2^k shuffled points
+ * are an aligned block of 2^k points of the sequence, so still a (0,k,2)-net, but in an
+ * order of their own. Two samplers that both step through their own (0,2)-sequence with
+ * the same index (a pixel's camera samples and a light's samples, pass by pass) are
+ * otherwise paired point for point: a digital shift alone moves a point, not its partner,
+ * and the pairs then sit on a lattice in four dimensions instead of filling them. */
+uint32_t sequence02_shuffled(uint32_t i, uint32_t seed);
+
 #endif

@@ -65,6 +65,7 @@
 #include <time.h>
 
 #include "../base/alloc.h"
+#include "../photon/disc_coverage.h"
 #include "../photon/hit_points.h"
 #include "../photon/trace.h"
 #include "ppm_direct.h"
@@ -72,7 +73,8 @@
 
 #define PPM_WALL_PROBES 8   /* tangent directions searched for a wall across the disc */
 #define PPM_WALL_COS 0.5    /* a wall's normal is more than 60 degrees from the surface's */
-#define PPM_WALL_FLOOR 0.25 /* the shortest initial radius, as a part of the footprint's */
+#define PPM_WALL_FLOOR 0.25 /* the shortest fitted initial radius, in footprints     */
+#define PPM_MERGE_COS 0.9    /* hit points merge within 26 degrees (same_hit_point())   */
 #define PPM_ROULETTE_DEPTH 8 /* eye-path bounces before Russian roulette (take_lobe())  */
 /* The photons that reach hit points when a light sample takes the direct light: those
  * after a diffuse bounce, and caustics (L S+ D), which no shadow ray sees the light by. */
@@ -97,6 +99,10 @@ struct ppm {
                                            back into the paper's unnormalised Phi'        */
     size_t photons_emitted;             /* N_emitted of Eq. 13, so far                    */
     struct ppm_direct direct;           /* the direct term, unless ps->direct_photons     */
+    long pass;                          /* the photon pass under way, from 0              */
+    size_t pixel_first_point;           /* the first hit point of the pixel being traced    */
+    uint64_t surfaces_met;              /* surfaces with a non-delta part the current eye
+                                           ray (all its branches) has met so far          */
 };
 
 static double cpu_seconds(clock_t start)
@@ -111,6 +117,11 @@ struct ppm_settings ppm_settings_default(void)
     ps.passes = PPM_DEFAULT_PASSES;
     ps.alpha = PPM_DEFAULT_ALPHA;
     ps.radius = 0.0;
+    ps.footprints = PPM_DEFAULT_FOOTPRINTS;
+    ps.fit_radius = 1;
+    ps.merge_hit_points = 1;
+    ps.resample_emission = 1;
+    ps.facing_test = 1;
     ps.report = NULL;
     ps.snapshot_every = 0;
     ps.snapshot = NULL;
@@ -128,15 +139,15 @@ struct eye_path {
     double distance;  /* length travelled from the camera              */
     int depth;        /* mirror and glass bounces so far               */
     int stores;       /* 1: stores hit points (the ray tracing pass);
-                         0: only sees emission (a photon pass's ray)   */
-    int sample;       /* the pixel's camera sample it started as       */
+                         0: a photon pass's ray: sees emission, and
+                         takes the direct light's samples              */
 };
 
-/* The initial radius r0, shortened to the nearest wall across the hit point's disc:
+/* The radius r0, shortened to the nearest wall across the hit point's disc:
  * PPM_WALL_PROBES rays along the surface's tangent plane, each as long as the radius so
  * far. A wall is a surface turned more than 60 degrees from this one; a surface that
  * curves gently up to meet the ray (the inside of a sphere) is the same surface, whose
- * photons the disc rightly counts. Never below PPM_WALL_FLOOR of r0. */
+ * photons the disc rightly counts. */
 static double disc_clear_of_walls(const struct ppm *ppm, const struct surface *s, double r0)
 {
     struct vec3 t, b;
@@ -152,13 +163,51 @@ static double disc_clear_of_walls(const struct ppm *ppm, const struct surface *s
             fabs(vec3_dot(hit.ng, s->ng)) < PPM_WALL_COS)
             r = hit.t;
     }
-    return fmax(r, PPM_WALL_FLOOR * r0);
+    return r;
 }
 
-/* Stores a hit point at s, reached by the eye path. */
+/* R0 of a hit point at s, seen at the given distance along its eye path: --radius if
+ * given; else ps->footprints pixel footprints, and with ps->fit_radius shortened until
+ * the disc lies on the surface: clear of walls (disc_clear_of_walls()) and, halving,
+ * of open edges (disc_rim_covered()), never below PPM_WALL_FLOOR of a footprint. */
+static double initial_radius(const struct ppm *ppm, const struct surface *s, double distance)
+{
+    if (ppm->ps->radius > 0)
+        return ppm->ps->radius;
+    double footprint = distance * ppm->footprint_per_distance;
+    double r = ppm->ps->footprints * footprint;
+    if (!ppm->ps->fit_radius)
+        return r;
+    double least = PPM_WALL_FLOOR * footprint;
+    r = disc_clear_of_walls(ppm, s, r);
+    while (r > least && !disc_rim_covered(ppm->scene, s->p, s->ng, 2 * r))
+        r *= 0.5;
+    return fmax(r, least);
+}
+
+/* Whether a hit point at s with outgoing direction s->wo can stand in for hp, of the same
+ * pixel: the same material, within hp's disc, facing and seen the same way to within
+ * PPM_MERGE_COS. Photons then reach both alike, and Eq. 13 at hp, a footprint or less
+ * away inside a disc several footprints wide, is the estimate the new one would make. */
+static int same_hit_point(const struct hit_point *hp, const struct surface *s)
+{
+    return hp->material == s->material &&
+           vec3_length2(vec3_sub(hp->x, s->p)) <= hp->radius * hp->radius &&
+           vec3_dot(hp->n, s->ng) >= PPM_MERGE_COS && vec3_dot(hp->wo, s->wo) >= PPM_MERGE_COS;
+}
+
+/* Stores a hit point at s, reached by the eye path; with ps->merge_hit_points, adds the
+ * path's weight to a hit point of the pixel that can stand in for it instead. */
 static void store_hit_point(struct ppm *ppm, const struct surface *s,
                             const struct shading_frame *frame, const struct eye_path *path)
 {
+    struct vec3 weight = vec3_scale(path->beta, 1.0 / ppm->rs->spp); /* the box filter's share */
+    if (ppm->ps->merge_hit_points)
+        for (size_t i = ppm->pixel_first_point; i < ppm->n_points; i++)
+            if (same_hit_point(&ppm->points[i], s)) {
+                ppm->points[i].weight = vec3_add(ppm->points[i].weight, weight);
+                return;
+            }
     if (ppm->n_points == ppm->cap_points) {
         ppm->cap_points = ppm->cap_points > 0 ? 2 * ppm->cap_points : 4096;
         ppm->points = xrealloc(ppm->points, ppm->cap_points, sizeof *ppm->points,
@@ -171,15 +220,11 @@ static void store_hit_point(struct ppm *ppm, const struct surface *s,
     hp->frame = *frame;
     hp->material = s->material;
     hp->pixel = path->pixel;
-    hp->weight = vec3_scale(path->beta, 1.0 / ppm->rs->spp); /* the box filter's share; spp >= 1 */
-    hp->radius = ppm->ps->radius > 0
-                     ? ppm->ps->radius
-                     : disc_clear_of_walls(ppm, s, PPM_INITIAL_FOOTPRINTS * path->distance *
-                                                       ppm->footprint_per_distance);
+    hp->weight = weight;
+    hp->radius = initial_radius(ppm, s, path->distance);
     hp->n_photons = 0.0;
     hp->tau = vec3_zero();
     hp->m_photons = 0;
-    hp->sample = path->sample;
 }
 
 /* The specular directions an eye path follows from s into lobes[]; returns how many. Sec.
@@ -244,17 +289,23 @@ static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct eye_pa
                                   struct rng *rng)
 {
     struct vec3 seen = vec3_zero();
+    int sees_emission = path.stores || ppm->ps->resample_emission;
     for (;;) {
         struct surface s;
         double t;
         if (!ray_surface(ppm->scene, ray, ppm->counters, &s, &t))
-            return vec3_add(seen, vec3_mul(path.beta, ppm->scene->background));
+            return sees_emission ? vec3_add(seen, vec3_mul(path.beta, ppm->scene->background))
+                                 : seen;
         path.distance += t;
         struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
                                                                TRANSPORT_RADIANCE);
-        seen = vec3_add(seen, vec3_mul(path.beta, surface_emission(&s)));
+        if (sees_emission)
+            seen = vec3_add(seen, vec3_mul(path.beta, surface_emission(&s)));
         if (path.stores && brdf_has_diffuse(s.material))
             store_hit_point(ppm, &s, &frame, &path);
+        else if (!ppm->ps->direct_photons && brdf_has_diffuse(s.material))
+            ppm_direct_sample(&ppm->direct, path.pixel, ppm->surfaces_met++, ppm->pass, &s,
+                              &frame, path.beta, ppm->counters);
         struct brdf_sample lobes[2];
         int n = path.depth < ppm->rs->max_depth ? specular_lobes(&s, &frame, rng, lobes) : 0;
         for (int k = 0; k + 1 < n; k++)
@@ -273,15 +324,18 @@ static void trace_eye_rays(struct ppm *ppm, int first, int last, int stores)
     for (int y = rs->y0; y < rs->y1; y++)
         for (int x = rs->x0; x < rs->x1; x++) {
             size_t pixel = (size_t)(y - rs->y0) * (size_t)ppm->width + (size_t)(x - rs->x0);
+            ppm->pixel_first_point = ppm->n_points;
             for (int s = first; s <= last; s++) {
                 struct rng rng;
                 struct ray ray = camera_sample(ppm->scene, rs->seed, x, y, s, &rng);
-                struct eye_path path = {pixel, vec3(1.0, 1.0, 1.0), 0.0, 0, stores, s};
+                struct eye_path path = {pixel, vec3(1.0, 1.0, 1.0), 0.0, 0, stores};
+                ppm->surfaces_met = 0;
                 ppm->seen[pixel] = vec3_add(ppm->seen[pixel],
                                             trace_eye_path(ppm, ray, path, &rng));
             }
         }
-    ppm->eye_rays += last - first + 1;
+    if (stores || ppm->ps->resample_emission)
+        ppm->eye_rays += last - first + 1;
 }
 
 /* rs->spp eye rays through every pixel, storing hit points, then the hit points' tree. */
@@ -305,7 +359,7 @@ static void add_flux(void *context, size_t i)
     struct ppm *ppm = context;
     struct hit_point *hp = &ppm->points[i];
     const struct photon_event *photon = ppm->photon;
-    if (vec3_dot(hp->n, photon->normal) <= 0)
+    if (ppm->ps->facing_test && vec3_dot(hp->n, photon->normal) <= 0)
         return;
     struct vec3 f = brdf_eval(hp->material, &hp->frame, hp->wo, photon->wi);
     hp->tau = vec3_add(hp->tau, vec3_mul(f, vec3_scale(photon->power, ppm->unnormalise)));
@@ -341,12 +395,18 @@ static void photon_tracing_pass(struct ppm *ppm, long pass, struct ppm_stats *st
     ppm->photons_emitted += ts.n_emit;
 }
 
-/* After photon pass p (from 0), one more eye ray through every pixel that only sees
- * emission (the departure explained at the top). */
-static void emission_pass(struct ppm *ppm, long pass)
+/* After photon pass p (from 0), one more eye ray through every pixel that takes the direct
+ * light, unless the photons bring it, and adds the emission it sees, unless only the ray
+ * tracing pass's rays do (the departures explained at the top). */
+static void eye_ray_pass(struct ppm *ppm, long pass)
 {
+    if (ppm->ps->direct_photons && !ppm->ps->resample_emission)
+        return; /* the paper's way: the ray would bring nothing */
     int sample = ppm->rs->spp + (int)pass;
+    ppm->pass = pass;
     trace_eye_rays(ppm, sample, sample, 0);
+    if (!ppm->ps->direct_photons)
+        ppm_direct_end_pass(&ppm->direct);
 }
 
 /* ---- 4.3 The progressive radiance estimate ------------------------------------------ */
@@ -398,7 +458,8 @@ struct vec3 ppm_radiance(struct vec3 tau, double r, double n_emitted)
 }
 
 /* The image so far: the mean of what the eye rays saw directly plus every hit point's
- * Eq. 13 radiance times its pixel weight, summed in the order the hit points were made. */
+ * Eq. 13 radiance times its pixel weight, summed in the order the hit points were made
+ * (not the tree's, which depends on the window). */
 static void evaluate_image(const struct ppm *ppm, struct image *image)
 {
     size_t n_pixels = (size_t)ppm->width * (size_t)ppm->height;
@@ -408,7 +469,7 @@ static void evaluate_image(const struct ppm *ppm, struct image *image)
             image->pixels[i] = vec3_add(image->pixels[i], ppm_direct_radiance(&ppm->direct, i));
     }
     for (size_t i = 0; i < ppm->n_points; i++) {
-        const struct hit_point *hp = &ppm->points[i];
+        const struct hit_point *hp = &ppm->points[ppm->tree.place[i]]; /* the i-th made */
         struct vec3 l = ppm_radiance(hp->tau, hp->radius, (double)ppm->photons_emitted);
         image->pixels[hp->pixel] = vec3_add(image->pixels[hp->pixel], vec3_mul(hp->weight, l));
     }
@@ -466,9 +527,7 @@ static void photon_passes(struct ppm *ppm, double offset, struct image *image,
     long pass = 0;
     while (pass < ps->passes && !(pass > 0 && limit > 0 && offset + seconds >= limit)) {
         photon_tracing_pass(ppm, pass, stats);
-        if (!ps->direct_photons)
-            ppm_direct_pass(&ppm->direct, ppm->points, ppm->n_points, pass, ppm->counters);
-        emission_pass(ppm, pass);
+        eye_ray_pass(ppm, pass);
         progressive_update(ppm);
         pass++;
         if (ps->observer != NULL)

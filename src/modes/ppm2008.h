@@ -19,8 +19,8 @@
                                                one that only sees emission): edges in the
                                                photon estimate keep their aliasing; each
                                                costs a hit point of ~300 bytes (README)   */
-#define PPM_INITIAL_FOOTPRINTS 1.0          /* default R0 in pixel footprints: the paper's
-                                               "footprint of the pixel" (Sec. 4)          */
+#define PPM_DEFAULT_FOOTPRINTS 4.0          /* default R0 in pixel footprints; the paper's
+                                               "footprint of the pixel" (Sec. 4) is 1     */
 #define MAX_PASSES 100000000                /* documented limit on --passes              */
 #define PPM_MAX_EYE_RAYS (1 << 24)          /* documented limit on pixels x spp: each eye
                                                ray leaves a hit point of ~300 bytes      */
@@ -39,9 +39,17 @@ struct ppm_settings {
     long passes;                      /* the most photon passes, 1..MAX_PASSES           */
     double alpha;                     /* Eq. 7: fraction of new photons kept, (0, 1)     */
     double radius;                    /* > 0: R0 of every hit point, in scene units;
-                                         <= 0: PPM_INITIAL_FOOTPRINTS pixel footprints
-                                         at the hit point, shortened by a wall across
-                                         the disc (see ppm2008.c)                       */
+                                         <= 0: footprints pixel footprints at the hit
+                                         point (see ppm2008.c)                          */
+    double footprints;                /* R0 in pixel footprints, > 0                     */
+    int merge_hit_points;             /* 1: a pixel's eye rays share a hit point where
+                                         they meet a surface within its disc             */
+    int resample_emission;            /* 1: each pass's new eye ray adds the emission it
+                                         sees; 0: only the ray tracing pass's rays do    */
+    int facing_test;                  /* 1: a photon counts only at hit points whose
+                                         surface faces its own                           */
+    int fit_radius;                   /* 1: R0 shortened until the disc lies on the
+                                         surface, clear of walls and open edges          */
     const struct checkpoint *report;  /* borrowed or NULL: gets the image after passes 1,
                                          2, 4, ... and the last, work = photons emitted  */
     long snapshot_every;              /* > 0: call snapshot after every this many passes */

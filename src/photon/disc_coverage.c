@@ -61,6 +61,19 @@ double disc_coverage(const struct scene *scene, struct vec3 x, struct vec3 n, do
     return fmax(DISC_COVERAGE_FLOOR, (double)covered / (DISC_RINGS * DISC_SPOKES));
 }
 
+int disc_rim_covered(const struct scene *scene, struct vec3 x, struct vec3 n, double r)
+{
+    struct vec3 t, b;
+    vec3_frame(n, &t, &b);
+    for (int j = 0; j < DISC_SPOKES; j++) {
+        double phi = 2 * PI * j / DISC_SPOKES;
+        struct vec3 q = vec3_madd(vec3_madd(x, t, r * cos(phi)), b, r * sin(phi));
+        if (!probe_finds_surface(scene, q, n, DISC_DEPTH * r))
+            return 0;
+    }
+    return 1;
+}
+
 struct vec3 covered_irradiance_estimate(const struct kdtree *map, const struct scene *scene,
                                         struct vec3 x, struct vec3 n,
                                         const struct irradiance_settings *is,

@@ -39,6 +39,12 @@
  * is the same surface. Deterministic: no random numbers. */
 double disc_coverage(const struct scene *scene, struct vec3 x, struct vec3 n, double r);
 
+/* Whether a surface that holds photons lies under each of DISC_SPOKES points on the rim
+ * of the disc of radius r > 0 around x (unit normal n), found as disc_coverage() finds
+ * one. A disc that passes reaches past no open edge (a surface that just ends, as the
+ * Cornell box's floor at its open front) on any of those spokes. */
+int disc_rim_covered(const struct scene *scene, struct vec3 x, struct vec3 n, double r);
+
 /* The irradiance estimate (estimate.h, irradiance_estimate(), without differential
  * checking: is->run 0) from the photons of the disc alone, over the part of it that can
  * hold them: of the is->n nearest photons, those within DISC_DEPTH r of the plane through

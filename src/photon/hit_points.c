@@ -7,7 +7,9 @@
  * picks each median by quickselect, O(n log n) in all. A range of at most HIT_POINT_LEAF
  * points is a leaf: one box for all of them, whose nodes a search reads one after the
  * other (they lie side by side), where descending would read as many boxes that mostly
- * overlap, the discs being about as wide as the spacing of the points.
+ * overlap, the discs being about as wide as the spacing of the points. The build sorts an
+ * array of indices, then moves the hit points into that order, cycle by cycle, one hit
+ * point in hand at a time (no second copy of the array).
  */
 #include "hit_points.h"
 
@@ -35,20 +37,21 @@ static int box_contains(struct aabb box, struct vec3 p)
 }
 
 /* The axis along which the positions of index[lo .. hi-1] spread most. */
-static int widest_axis(const struct hit_point_tree *tree, size_t lo, size_t hi)
+static int widest_axis(const struct hit_point *points, const size_t *index, size_t lo,
+                       size_t hi)
 {
-    struct vec3 min = tree->points[tree->index[lo]].x, max = min;
+    struct vec3 min = points[index[lo]].x, max = min;
     for (size_t i = lo + 1; i < hi; i++) {
-        min = vec3_min(min, tree->points[tree->index[i]].x);
-        max = vec3_max(max, tree->points[tree->index[i]].x);
+        min = vec3_min(min, points[index[i]].x);
+        max = vec3_max(max, points[index[i]].x);
     }
     struct vec3 extent = vec3_sub(max, min);
     return extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
 }
 
-static double key(const struct hit_point_tree *tree, size_t i, int axis)
+static double key(const struct hit_point *points, const size_t *index, size_t i, int axis)
 {
-    return vec3_get(tree->points[tree->index[i]].x, axis);
+    return vec3_get(points[index[i]].x, axis);
 }
 
 static void swap_index(size_t *index, size_t a, size_t b)
@@ -62,18 +65,18 @@ static void swap_index(size_t *index, size_t a, size_t b)
  * axis coordinate would put there, smaller keys before it and larger after (Hoare's
  * quickselect with the middle element as pivot and a three-way partition, so equal keys
  * cost nothing extra). */
-static void select_median(struct hit_point_tree *tree, size_t lo, size_t hi, size_t m,
-                          int axis)
+static void select_median(const struct hit_point *points, size_t *index, size_t lo,
+                          size_t hi, size_t m, int axis)
 {
     while (hi - lo > 1) {
-        double pivot = key(tree, lo + (hi - lo) / 2, axis);
+        double pivot = key(points, index, lo + (hi - lo) / 2, axis);
         size_t less = lo, i = lo, greater = hi;
         while (i < greater) {
-            double k = key(tree, i, axis);
+            double k = key(points, index, i, axis);
             if (k < pivot)
-                swap_index(tree->index, less++, i++);
+                swap_index(index, less++, i++);
             else if (k > pivot)
-                swap_index(tree->index, i, --greater);
+                swap_index(index, i, --greater);
             else
                 i++;
         }
@@ -86,20 +89,41 @@ static void select_median(struct hit_point_tree *tree, size_t lo, size_t hi, siz
     }
 }
 
-static void build_range(struct hit_point_tree *tree, size_t lo, size_t hi)
+/* Orders index[lo .. hi-1] as the tree below node [lo, hi) has it. */
+static void build_range(const struct hit_point *points, size_t *index, size_t lo, size_t hi)
 {
     if (hi - lo <= HIT_POINT_LEAF)
         return; /* a leaf: its order does not matter */
     size_t m = lo + (hi - lo) / 2;
-    select_median(tree, lo, hi, m, widest_axis(tree, lo, hi));
-    build_range(tree, lo, m);
-    build_range(tree, m + 1, hi);
+    select_median(points, index, lo, hi, m, widest_axis(points, index, lo, hi));
+    build_range(points, index, lo, m);
+    build_range(points, index, m + 1, hi);
+}
+
+/* Moves points into the order of index (the point at index[k] goes to k), following each
+ * cycle of the permutation with one point in hand; index ends as the identity. */
+static void move_into_order(struct hit_point *points, size_t *index, size_t n)
+{
+    for (size_t start = 0; start < n; start++) {
+        if (index[start] == start)
+            continue;
+        struct hit_point in_hand = points[start];
+        size_t k = start;
+        while (index[k] != start) {
+            size_t from = index[k];
+            points[k] = points[from];
+            index[k] = k;
+            k = from;
+        }
+        points[k] = in_hand;
+        index[k] = k;
+    }
 }
 
 /* Copies hit point index[m]'s position and R^2 into node m; returns its disc's box. */
 static struct aabb refit_node(struct hit_point_tree *tree, size_t m)
 {
-    const struct hit_point *hp = &tree->points[tree->index[m]];
+    const struct hit_point *hp = &tree->points[m];
     tree->nodes[m].x = hp->x;
     tree->nodes[m].r2 = hp->radius * hp->radius;
     return disc_box(hp);
@@ -124,16 +148,20 @@ static struct aabb refit_range(struct hit_point_tree *tree, size_t lo, size_t hi
     return box;
 }
 
-void hit_point_tree_build(struct hit_point_tree *tree, const struct hit_point *points,
-                          size_t n)
+void hit_point_tree_build(struct hit_point_tree *tree, struct hit_point *points, size_t n)
 {
+    size_t *index = xmalloc(n > 0 ? n : 1, sizeof *index, "hit point tree");
+    for (size_t i = 0; i < n; i++)
+        index[i] = i;
+    build_range(points, index, 0, n);
     tree->points = points;
     tree->n = n;
-    tree->index = xmalloc(n > 0 ? n : 1, sizeof *tree->index, "hit point tree");
+    tree->place = xmalloc(n > 0 ? n : 1, sizeof *tree->place, "hit point tree");
+    for (size_t k = 0; k < n; k++)
+        tree->place[index[k]] = k;
+    move_into_order(points, index, n);
+    xfree(index);
     tree->nodes = xmalloc(n > 0 ? n : 1, sizeof *tree->nodes, "hit point tree");
-    for (size_t i = 0; i < n; i++)
-        tree->index[i] = i;
-    build_range(tree, 0, n);
     hit_point_tree_refit(tree);
 }
 
@@ -153,11 +181,11 @@ static void visit_range(const struct hit_point_tree *tree, size_t lo, size_t hi,
         if (hi - lo <= HIT_POINT_LEAF) {
             for (size_t k = lo; k < hi; k++)
                 if (vec3_length2(vec3_sub(p, tree->nodes[k].x)) <= tree->nodes[k].r2)
-                    visit(context, tree->index[k]);
+                    visit(context, k);
             return;
         }
         if (vec3_length2(vec3_sub(p, tree->nodes[m].x)) <= tree->nodes[m].r2)
-            visit(context, tree->index[m]);
+            visit(context, m);
         visit_range(tree, lo, m, p, visit, context);
         lo = m + 1; /* the right half by iteration: recursion only as deep as the tree */
     }
@@ -172,8 +200,8 @@ void hit_point_tree_visit(const struct hit_point_tree *tree, struct vec3 p,
 void hit_point_tree_free(struct hit_point_tree *tree)
 {
     xfree(tree->nodes);
-    xfree(tree->index);
-    tree->index = NULL;
+    xfree(tree->place);
+    tree->place = NULL;
     tree->nodes = NULL;
     tree->n = 0;
 }

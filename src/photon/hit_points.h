@@ -9,16 +9,15 @@
  * Eq. 7 adds alpha M, a fraction of a photon.
  *
  * The tree is a kd-tree over the hit points' positions, balanced by median splits and
- * stored without pointers as an array of indices (node = the middle of an index range),
- * each node with the box that bounds the discs (as spheres of radius R) of every hit point
- * below it, and a copy of its own hit point's position and R^2: a search reads the nodes
- * alone, which lie in tree order, near their neighbours in space, and touches a hit point
- * only when its disc holds the photon (the hit points, in pixel order, are scattered over
- * far more memory). The copies and boxes are made by the build and by each refit, which
- * must follow every change of a radius (after each pass). The hit points themselves are
- * never moved: their
- * order, pixel by pixel and sample by sample, is the order in which the image sums them,
- * so a pixel's value does not depend on the rest of the window.
+ * stored without pointers (node = the middle of an index range), each node with the box
+ * that bounds the discs (as spheres of radius R) of every hit point below it, and a copy
+ * of its own hit point's position and R^2. The build moves the hit points themselves into
+ * the tree's order, so that a search, which reads the nodes in tree order, finds the hit
+ * points it adds a photon to beside each other in memory too, not scattered over the
+ * whole array; place[] remembers where each went, so the image can still sum a pixel's
+ * hit points in the order they were made, and a pixel's value does not depend on the rest
+ * of the window. The copies and boxes are made by the build and by each refit, which
+ * must follow every change of a radius (after each pass).
  */
 #ifndef PHOTON_HIT_POINTS_H
 #define PHOTON_HIT_POINTS_H
@@ -43,7 +42,6 @@ struct hit_point {
                                         a pass it also gathers the pass's tau_M          */
     uint32_t m_photons;              /* M(x): photons found in the current pass, at most
                                         the photons a pass traces (MAX_PHOTONS < 2^32)   */
-    int32_t sample;                  /* the camera sample whose eye path made it         */
 };
 
 /* The node whose middle is m: what a search reads. */
@@ -55,25 +53,26 @@ struct hit_point_node {
 };
 
 struct hit_point_tree {
-    const struct hit_point *points; /* borrowed; n of them, never reordered              */
+    struct hit_point *points;       /* borrowed; n of them, in tree order since the build */
     size_t n;
-    size_t *index;                  /* owned: n point indices in tree order              */
+    size_t *place;                  /* owned: the hit point that was points[i] before the
+                                       build is points[place[i]]                         */
     struct hit_point_node *nodes;   /* owned: nodes[m] for the node whose middle is m    */
 };
 
-/* Builds the tree over points[0 .. n-1] (n >= 0) with their current radii. */
-void hit_point_tree_build(struct hit_point_tree *tree, const struct hit_point *points,
-                          size_t n);
+/* Builds the tree over points[0 .. n-1] (n >= 0) with their current radii, moving the
+ * hit points into the tree's order (tree->place says where each went). */
+void hit_point_tree_build(struct hit_point_tree *tree, struct hit_point *points, size_t n);
 
 /* Takes the hit points' current radii into the nodes and tightens every box to them. */
 void hit_point_tree_refit(struct hit_point_tree *tree);
 
-/* Calls visit(context, i) for every hit point i whose disc holds p: |x_i - p| <= R_i
- * with R_i as at the last build or refit, in tree order. */
+/* Calls visit(context, i) for every hit point points[i] whose disc holds p:
+ * |x_i - p| <= R_i with R_i as at the last build or refit, in tree order. */
 void hit_point_tree_visit(const struct hit_point_tree *tree, struct vec3 p,
                           void (*visit)(void *context, size_t i), void *context);
 
-/* Bytes the tree owns per hit point: an index and a node. */
+/* Bytes the tree owns per hit point: its place and a node. */
 #define HIT_POINT_TREE_BYTES_PER_POINT (sizeof(size_t) + sizeof(struct hit_point_node))
 
 void hit_point_tree_free(struct hit_point_tree *tree);
