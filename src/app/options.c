@@ -185,7 +185,7 @@ static const struct option_spec specs[] = {
     {"--no-projection-maps", OPT_FLAG, FIELD(projection_maps), 0, 0, "",
      "emit photons into all directions instead of through projection maps", FOR_1994},
     {"--passes", OPT_INT, FIELD(passes), 1, MAX_PASSES, "N",
-     "photon passes (default 160; --time-limit may stop sooner)", FOR_2008},
+     "photon passes (default 144; --time-limit may stop sooner)", FOR_2008},
     {"--photons-per-pass", OPT_INT, FIELD(photons_per_pass), 1, MAX_PHOTONS, "N",
      "photons traced in each pass (default 100000)", FOR_2008},
     {"--alpha", OPT_REAL, FIELD(alpha), 0, 1, "A",
@@ -196,6 +196,9 @@ static const struct option_spec specs[] = {
     {"--footprints", OPT_REAL, FIELD(footprints), 0, 1e6, "K",
      "initial radius in pixel footprints at each hit point (default 4; the paper's: 1)",
      FOR_2008},
+    {"--caustic-footprints", OPT_REAL, FIELD(caustic_footprints), 0, 1e6, "K",
+     "caustic photons gather in an estimate of their own, R0 of K footprints; 0 = in the "
+     "one estimate, the paper's (default 1)", FOR_2008},
     {"--fit-radius", OPT_FLAG, FIELD(fit_radius), 0, 0, "",
      "shorten each initial radius until its disc lies on its surface, clear of walls and "
      "open edges (the default)", FOR_2008},
@@ -329,6 +332,7 @@ static void set_defaults(struct options *o)
     struct ppm_settings pp = ppm_settings_default();
     o->footprints = pp.footprints;
     o->fit_radius = pp.fit_radius;
+    o->caustic_footprints = pp.caustic_footprints;
     o->merge_hit_points = pp.merge_hit_points;
     o->resample_emission = pp.resample_emission;
     o->facing_test = pp.facing_test;

@@ -80,6 +80,7 @@ struct options {
     double radius;                /* 2008: initial radius; 0 = pixel footprints    */
     double footprints;            /* 2008: initial radius in pixel footprints      */
     int fit_radius;               /* 2008: initial radius fitted to the surface    */
+    double caustic_footprints;    /* 2008: caustic estimate's R0; 0 = none         */
     int merge_hit_points;         /* 2008: a pixel's eye rays share hit points     */
     int resample_emission;        /* 2008: each pass's eye ray adds emission       */
     int facing_test;              /* 2008: photons count where surfaces face       */

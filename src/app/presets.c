@@ -45,7 +45,7 @@ static const struct preset presets[] = {
      "--photons 8000000 --caustic-photons 2000000 --gather-rays 1024 --spp 256 "
      "--specular-spp 8192"},
     {MODE_PPM2008, QUALITY_PREVIEW, "--passes 8 --spp 4"},
-    {MODE_PPM2008, QUALITY_REFERENCE, "--passes 640"},
+    {MODE_PPM2008, QUALITY_REFERENCE, "--passes 576"},
 };
 
 const char *quality_name(enum quality quality)
@@ -89,7 +89,8 @@ static const struct {
     {MODE_JENSEN1996, "--rim-photon --shadow-photons --precomputed-irradiance 0 "
                        "--no-disc-coverage --caustic-radius-fraction 1 --no-both-lobes "
                        "--no-glossy-corner --no-bounded-reach --no-gradient-limit"},
-    {MODE_PPM2008, "--direct-photons --footprints 1 --no-fit-radius --no-merge-hit-points "
+    {MODE_PPM2008, "--direct-photons --footprints 1 --caustic-footprints 0 --no-fit-radius "
+                    "--no-merge-hit-points "
                     "--no-resample-emission --no-facing-test"},
 };
 

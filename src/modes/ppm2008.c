@@ -13,48 +13,63 @@
  *   4.4 the image at any time: each hit point's radiance (Eq. 13) times its pixel weight,
  *       plus the emission the eye paths saw directly.
  *
- * The direct light departs from the paper, which estimates it from the photons like all
- * the rest. On a diffuse box it is most of the light, and so most of the estimate's noise
- * and of its blur (across a shadow's edge, at a corner). By default every pass takes it by
- * light sampling instead, as pbrt-v4's SPPM keeps a direct term beside its photons: the
- * eye rays of each pixel take turns, one a pass, and each hit point of that eye ray's path
- * takes one shadow-tested sample of every light (ppm_direct.c, the samples of --mode
- * direct), weighted by --spp so the turn stands for the whole pixel; the pixel's direct
- * term is the mean over the passes. Sampling every hit point every pass measured no better
- * for 29% more time (src/modes/README.md). A photon then adds to hit points only
- * once it has bounced: its first hit, straight from the light, is what the light samples
- * count; after mirrors and glass (L S+ D, caustics) it still adds, since a shadow ray is
- * blocked by them and never sees the light that way. --direct-photons restores the
- * paper's way exactly (the same images). Measured on the Cornell box at 64 passes: relmse
- * 0.00071 in 37 s where the paper's way has 0.00143 in 70 s.
+ * Each departure from the paper below has a switch; --paper turns them all off
+ * (src/modes/README.md has what each measured).
  *
- * The emission seen directly departs from the paper, whose eye rays are traced once: a
- * light's outline would keep the aliasing of --spp rays a pixel however long the render
- * ran, and a light hundreds of times brighter than the ceiling around it moves a block's
- * mean by percents with one eye ray more or less on it. Emission needs no hit point and
- * no memory, so every photon pass also traces one new eye ray through each pixel (the
- * pixel's next camera sample) that only collects what emitters and the background show;
- * the seen part of a pixel is the mean over all its eye rays so far, and converges with
- * passes like the rest of the image.
+ * The direct light (--direct-photons is the paper's way). The paper estimates it from the
+ * photons like all the rest; on a diffuse box it is most of the light, and so most of the
+ * estimate's noise and of its blur (across a shadow's edge, at a corner). By default each
+ * pass's new eye ray through each pixel (below) takes it by light sampling instead, as
+ * pbrt-v4's SPPM keeps a direct term beside its photons: one shadow-tested sample of every
+ * light wherever that ray meets a surface with a non-delta part (ppm_direct.c, the samples
+ * of --mode direct); the pixel's direct term is the mean over the passes, so shadows and
+ * the light's outline are anti-aliased like a path tracer's. A photon then adds to hit
+ * points only once it has bounced: its first hit, straight from the light, is what the
+ * light samples count; after mirrors and glass (L S+ D, caustics) it still adds, since a
+ * shadow ray is blocked by them and never sees the light that way.
  *
- * The initial radius R0 is the paper's "footprint of the pixel": PPM_INITIAL_FOOTPRINTS
- * times the width a pixel covers at the hit point's distance along its eye path, d 2
- * tan(fov / 2) / height. It scales with the scene (millimetres or kilometres alike) and is
- * the hit point's own, so a crop starts with the radii the whole image has. Mirrors and
- * lenses change a pixel's real footprint; this ignores that, which only moves the start.
- * The disc's bias where it reaches past a surface's edge and the noise of few photons
- * both depend on R0, in opposite ways. Where a wall meets the surface (a corner), no
- * photon lands in the part of the disc beyond it, though pi R^2 counts it: so a hit
- * point's R0 stops at the nearest wall that rays along its tangent plane find (departs
- * from the paper, which leaves R0 to the user; an open edge, where the surface just ends,
- * is not found this way). src/modes/README.md has the measurements.
+ * The new eye ray each pass (--resample-emission; the paper's eye rays are traced once):
+ * a light's outline would otherwise keep the aliasing of --spp rays a pixel however long
+ * the render ran, and a light hundreds of times brighter than the ceiling around it moves
+ * a block's mean by percents with one eye ray more or less on it. So every photon pass
+ * also traces one more eye ray through each pixel (its next camera sample), which stores
+ * no hit point; the emission part of a pixel is the mean over all its eye rays so far.
+ *
+ * Merged hit points (--merge-hit-points). With the direct light sampled, the hit points
+ * carry only the photons' light, which is smooth over a disc several pixels wide: a
+ * pixel's eye rays that meet the same surface within a hit point's disc add their weight
+ * to it instead of making hit points of their own, whose discs would hold nearly the same
+ * photons. A photon pass costs in proportion to the hit points each photon reaches, so
+ * this is most of the speed; the aliasing the merge leaves (one point stands for a
+ * pixel's part of a surface) is of the photons' smooth light only.
+ *
+ * The initial radius (--footprints, --fit-radius). R0 is PPM_DEFAULT_FOOTPRINTS times the
+ * width a pixel covers at the hit point's distance along its eye path, d 2 tan(fov / 2) /
+ * height (the paper's "footprint of the pixel" is one). It scales with the scene
+ * (millimetres or kilometres alike) and is the hit point's own, so a crop starts with the
+ * radii the whole image has. Mirrors and lenses change a pixel's real footprint; this
+ * ignores that, which only moves the start. Noise falls as the disc holds more photons,
+ * bias grows where the light changes within it: where a wall meets the surface (a corner)
+ * or the surface ends (an open edge), no photon lands in the part of the disc beyond it,
+ * though pi R^2 counts it. So R0 is shortened until the disc lies on its surface: to the
+ * nearest wall that rays along the tangent plane find, then halved until a surface lies
+ * under the rim of a disc twice as wide (the light falls off towards an open edge over a
+ * disc's width). The paper leaves R0 to the user.
+ *
+ * The caustic estimate (--caustic-footprints). Caustic photons are sparse and their light
+ * sharp; a disc wide enough for the smooth indirect light blurs them. As Jensen's caustic
+ * map has a smaller radius than his global one, each hit point keeps a second progressive
+ * estimate for caustic photons alone, R0 one footprint, reduced by Eq. 7-12 on its own.
+ *
+ * The facing test (--facing-test): a photon counts only at hit points whose surface faces
+ * its own (add_flux()); Sec. 4.2 takes every photon within R, and the sphere of radius R
+ * also reaches through thin walls and onto the back of the hit point's own surface.
  *
  * Determinism: photon i of pass p draws from rng_stream(seed, STREAM_PHOTON, p, i) and eye
- * sample s of pixel (x, y) from its camera stream (render.h); the k-th hit point of pixel
- * (x, y) shifts its light samples by rng_stream(seed, STREAM_LIGHT, y * width + x, k)
- * (ppm_direct.h); each hit point receives its photons in photon order, and the image sums
- * hit points in the order they were made, so a pixel depends on nothing but its own hit
- * points.
+ * sample s of pixel (x, y) from its camera stream (render.h); the light samples of the
+ * k-th surface a pixel's new eye ray meets are keyed by the pixel and k (ppm_direct.h);
+ * each hit point receives its photons in photon order, and the image sums a pixel's hit
+ * points in the order they were made, so a pixel depends on nothing but its own eye rays.
  */
 #include "ppm2008.h"
 
@@ -73,6 +88,7 @@
 
 #define PPM_WALL_PROBES 8   /* tangent directions searched for a wall across the disc */
 #define PPM_WALL_COS 0.5    /* a wall's normal is more than 60 degrees from the surface's */
+#define PPM_WALL_RISE 0.125 /* wall probes run this part of R0 above the tangent plane */
 #define PPM_WALL_FLOOR 0.25 /* the shortest fitted initial radius, in footprints     */
 #define PPM_MERGE_COS 0.9    /* hit points merge within 26 degrees (same_hit_point())   */
 #define PPM_ROULETTE_DEPTH 8 /* eye-path bounces before Russian roulette (take_lobe())  */
@@ -119,6 +135,7 @@ struct ppm_settings ppm_settings_default(void)
     ps.radius = 0.0;
     ps.footprints = PPM_DEFAULT_FOOTPRINTS;
     ps.fit_radius = 1;
+    ps.caustic_footprints = PPM_DEFAULT_CAUSTIC_FOOTPRINTS;
     ps.merge_hit_points = 1;
     ps.resample_emission = 1;
     ps.facing_test = 1;
@@ -152,7 +169,7 @@ static double disc_clear_of_walls(const struct ppm *ppm, const struct surface *s
 {
     struct vec3 t, b;
     vec3_frame(s->ng, &t, &b);
-    struct vec3 origin = offset_origin(s->p, s->ng);
+    struct vec3 origin = vec3_madd(offset_origin(s->p, s->ng), s->ng, PPM_WALL_RISE * r0);
     double r = r0;
     for (int k = 0; k < PPM_WALL_PROBES; k++) {
         double phi = 2 * PI * k / PPM_WALL_PROBES;
@@ -166,10 +183,11 @@ static double disc_clear_of_walls(const struct ppm *ppm, const struct surface *s
     return r;
 }
 
-/* R0 of a hit point at s, seen at the given distance along its eye path: --radius if
- * given; else ps->footprints pixel footprints, and with ps->fit_radius shortened until
- * the disc lies on the surface: clear of walls (disc_clear_of_walls()) and, halving,
- * of open edges (disc_rim_covered()), never below PPM_WALL_FLOOR of a footprint. */
+/* R0 of a hit point's global estimate at s, seen at the given distance along its eye
+ * path: --radius if given; else ps->footprints pixel footprints, and with ps->fit_radius
+ * shortened until the disc lies on the surface: clear of walls (disc_clear_of_walls())
+ * and, halving, of open edges (disc_rim_covered()), never below PPM_WALL_FLOOR of a
+ * footprint. */
 static double initial_radius(const struct ppm *ppm, const struct surface *s, double distance)
 {
     if (ppm->ps->radius > 0)
@@ -185,6 +203,27 @@ static double initial_radius(const struct ppm *ppm, const struct surface *s, dou
     return fmax(r, least);
 }
 
+/* R0 of a hit point's caustic estimate, whose global one starts at global_r0: --radius
+ * if given; else ps->caustic_footprints footprints, at most global_r0 when that was fitted
+ * to the surface (a smaller disc lies on it too); 0 (no caustic estimate: caustic photons
+ * go to the global one) when ps->caustic_footprints is 0. */
+static double caustic_radius(const struct ppm *ppm, double global_r0, double distance)
+{
+    const struct ppm_settings *ps = ppm->ps;
+    if (ps->caustic_footprints <= 0)
+        return 0.0;
+    if (ps->radius > 0)
+        return ps->radius;
+    double r0 = ps->caustic_footprints * distance * ppm->footprint_per_distance;
+    return ps->fit_radius ? fmin(r0, global_r0) : r0;
+}
+
+static struct progressive_estimate empty_estimate(double radius)
+{
+    struct progressive_estimate e = {radius, 0.0, {0.0, 0.0, 0.0}, 0};
+    return e;
+}
+
 /* Whether a hit point at s with outgoing direction s->wo can stand in for hp, of the same
  * pixel: the same material, within hp's disc, facing and seen the same way to within
  * PPM_MERGE_COS. Photons then reach both alike, and Eq. 13 at hp, a footprint or less
@@ -192,7 +231,7 @@ static double initial_radius(const struct ppm *ppm, const struct surface *s, dou
 static int same_hit_point(const struct hit_point *hp, const struct surface *s)
 {
     return hp->material == s->material &&
-           vec3_length2(vec3_sub(hp->x, s->p)) <= hp->radius * hp->radius &&
+           vec3_length2(vec3_sub(hp->x, s->p)) <= hp->global.radius * hp->global.radius &&
            vec3_dot(hp->n, s->ng) >= PPM_MERGE_COS && vec3_dot(hp->wo, s->wo) >= PPM_MERGE_COS;
 }
 
@@ -221,10 +260,8 @@ static void store_hit_point(struct ppm *ppm, const struct surface *s,
     hp->material = s->material;
     hp->pixel = path->pixel;
     hp->weight = weight;
-    hp->radius = initial_radius(ppm, s, path->distance);
-    hp->n_photons = 0.0;
-    hp->tau = vec3_zero();
-    hp->m_photons = 0;
+    hp->global = empty_estimate(initial_radius(ppm, s, path->distance));
+    hp->caustic = empty_estimate(caustic_radius(ppm, hp->global.radius, path->distance));
 }
 
 /* The specular directions an eye path follows from s into lobes[]; returns how many. Sec.
@@ -347,13 +384,13 @@ static void ray_tracing_pass(struct ppm *ppm)
 
 /* ---- 4.2 Photon tracing passes ------------------------------------------------------ */
 
-/* A photon within hit point i's disc: tau_M += f_r(x, w, w_p) Phi'_p and M += 1 (Eq. 11),
- * unless the two surfaces face apart (a photon on the far side of a thin wall, or on the
- * back of the hit point's own surface). Departs from Sec. 4.2, which takes every photon
- * within R: the sphere of radius R also reaches through thin walls. A photon on a wall at
- * right angles is not counted either, though its disc's area pi R^2 still counts the part
- * beyond the corner, where no photon lands: the corner's bias (modes/README.md). No cosine: it is
- * in the photon's flux already. */
+/* A photon within reach of hit point i: tau_M += f_r(x, w, w_p) Phi'_p and M += 1 (Eq. 11)
+ * for the estimate it belongs to (the caustic one for a caustic photon, if the hit point
+ * has one; else the global one), if it lies within that estimate's disc and, with the
+ * facing test, the two surfaces do not face apart (a photon on the far side of a thin
+ * wall, or on the back of the hit point's own surface). A photon on a wall at right
+ * angles is not counted either, which is why R0 stops at walls. No cosine: it is in the
+ * photon's flux already. */
 static void add_flux(void *context, size_t i)
 {
     struct ppm *ppm = context;
@@ -361,9 +398,14 @@ static void add_flux(void *context, size_t i)
     const struct photon_event *photon = ppm->photon;
     if (ppm->ps->facing_test && vec3_dot(hp->n, photon->normal) <= 0)
         return;
+    struct progressive_estimate *e =
+        photon->kind == PHOTON_CAUSTIC && ppm->ps->caustic_footprints > 0 ? &hp->caustic
+                                                                          : &hp->global;
+    if (vec3_length2(vec3_sub(photon->position, hp->x)) > e->radius * e->radius)
+        return; /* within the hit point's reach, not within this estimate's disc */
     struct vec3 f = brdf_eval(hp->material, &hp->frame, hp->wo, photon->wi);
-    hp->tau = vec3_add(hp->tau, vec3_mul(f, vec3_scale(photon->power, ppm->unnormalise)));
-    hp->m_photons++;
+    e->tau = vec3_add(e->tau, vec3_mul(f, vec3_scale(photon->power, ppm->unnormalise)));
+    e->m_photons++;
 }
 
 /* The tracer's sink: each stored photon goes to the hit points around it, then is gone. */
@@ -431,18 +473,22 @@ struct vec3 ppm_corrected_flux(struct vec3 tau_n_plus_m, double n, double m, dou
     return vec3_scale(tau_n_plus_m, (n + alpha * m) / (n + m));
 }
 
-/* After a pass, per hit point: Eq. 12, Eq. 9 and Eq. 7, in that order, since all three
- * use the N and M of the pass that just ended. */
+/* After a pass: Eq. 12, Eq. 9 and Eq. 7, in that order, since all three use the N and M
+ * of the pass that just ended. */
+static void update_estimate(struct progressive_estimate *e, double alpha)
+{
+    double m = (double)e->m_photons;
+    e->tau = ppm_corrected_flux(e->tau, e->n_photons, m, alpha);
+    e->radius = ppm_reduced_radius(e->radius, e->n_photons, m, alpha);
+    e->n_photons = ppm_accumulated_photons(e->n_photons, m, alpha);
+    e->m_photons = 0;
+}
+
 static void progressive_update(struct ppm *ppm)
 {
-    double alpha = ppm->ps->alpha;
     for (size_t i = 0; i < ppm->n_points; i++) {
-        struct hit_point *hp = &ppm->points[i];
-        double m = (double)hp->m_photons;
-        hp->tau = ppm_corrected_flux(hp->tau, hp->n_photons, m, alpha);
-        hp->radius = ppm_reduced_radius(hp->radius, hp->n_photons, m, alpha);
-        hp->n_photons = ppm_accumulated_photons(hp->n_photons, m, alpha);
-        hp->m_photons = 0;
+        update_estimate(&ppm->points[i].global, ppm->ps->alpha);
+        update_estimate(&ppm->points[i].caustic, ppm->ps->alpha);
     }
     hit_point_tree_refit(&ppm->tree); /* the discs shrank: tighten the boxes */
 }
@@ -470,7 +516,9 @@ static void evaluate_image(const struct ppm *ppm, struct image *image)
     }
     for (size_t i = 0; i < ppm->n_points; i++) {
         const struct hit_point *hp = &ppm->points[ppm->tree.place[i]]; /* the i-th made */
-        struct vec3 l = ppm_radiance(hp->tau, hp->radius, (double)ppm->photons_emitted);
+        double n_emitted = (double)ppm->photons_emitted;
+        struct vec3 l = vec3_add(ppm_radiance(hp->global.tau, hp->global.radius, n_emitted),
+                                 ppm_radiance(hp->caustic.tau, hp->caustic.radius, n_emitted));
         image->pixels[hp->pixel] = vec3_add(image->pixels[hp->pixel], vec3_mul(hp->weight, l));
     }
     for (size_t i = 0; i < n_pixels; i++)
@@ -486,7 +534,7 @@ static double mean_radius(const struct ppm *ppm)
 {
     double sum = 0.0;
     for (size_t i = 0; i < ppm->n_points; i++)
-        sum += ppm->points[i].radius;
+        sum += ppm->points[i].global.radius;
     return ppm->n_points > 0 ? sum / (double)ppm->n_points : 0.0;
 }
 

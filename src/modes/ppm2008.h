@@ -11,7 +11,7 @@
 #include "render.h"
 
 #define PPM_DEFAULT_PHOTONS_PER_PASS 100000 /* the paper's (Sec. 5)                      */
-#define PPM_DEFAULT_PASSES 160              /* the fewest (by 16) that keep every 16 x 16
+#define PPM_DEFAULT_PASSES 144              /* the fewest (by 16) that keep every 16 x 16
                                                block of both Cornell boxes within 3%     */
 #define PPM_DEFAULT_ALPHA 0.7               /* the paper's (Sec. 5)                      */
 #define PPM_DEFAULT_SPP 16                  /* eye rays per pixel that store hit points,
@@ -21,6 +21,7 @@
                                                costs a hit point of ~300 bytes (README)   */
 #define PPM_DEFAULT_FOOTPRINTS 4.0          /* default R0 in pixel footprints; the paper's
                                                "footprint of the pixel" (Sec. 4) is 1     */
+#define PPM_DEFAULT_CAUSTIC_FOOTPRINTS 1.0  /* R0 of the caustic estimate, in footprints */
 #define MAX_PASSES 100000000                /* documented limit on --passes              */
 #define PPM_MAX_EYE_RAYS (1 << 24)          /* documented limit on pixels x spp: each eye
                                                ray leaves a hit point of ~300 bytes      */
@@ -48,6 +49,9 @@ struct ppm_settings {
                                          sees; 0: only the ray tracing pass's rays do    */
     int facing_test;                  /* 1: a photon counts only at hit points whose
                                          surface faces its own                           */
+    double caustic_footprints;        /* > 0: caustic photons (L S+ D) gather in an
+                                         estimate of their own, R0 this many footprints;
+                                         0: in the one estimate, the paper's             */
     int fit_radius;                   /* 1: R0 shortened until the disc lies on the
                                          surface, clear of walls and open edges          */
     const struct checkpoint *report;  /* borrowed or NULL: gets the image after passes 1,

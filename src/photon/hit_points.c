@@ -20,10 +20,11 @@
 #define HIT_POINT_LEAF 8 /* points in a leaf; measured on the Cornell box: 4, 8 and 16 are
                             within 5% of each other, 1 (no leaves) is 1.5x slower */
 
-/* The box of the sphere of radius R around the hit point: its disc and then some. */
+/* The box of the sphere of the hit point's reach around it: its discs and then some. */
 static struct aabb disc_box(const struct hit_point *hp)
 {
-    struct vec3 r = vec3(hp->radius, hp->radius, hp->radius);
+    double reach = hit_point_reach(hp);
+    struct vec3 r = vec3(reach, reach, reach);
     struct aabb box;
     box.lo = vec3_sub(hp->x, r);
     box.hi = vec3_add(hp->x, r);
@@ -125,7 +126,7 @@ static struct aabb refit_node(struct hit_point_tree *tree, size_t m)
 {
     const struct hit_point *hp = &tree->points[m];
     tree->nodes[m].x = hp->x;
-    tree->nodes[m].r2 = hp->radius * hp->radius;
+    tree->nodes[m].r2 = hit_point_reach(hp) * hit_point_reach(hp);
     return disc_box(hp);
 }
 

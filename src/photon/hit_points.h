@@ -6,12 +6,14 @@
  * The paper's struct hitpoint, field for field: position x, normal n, ray direction w, the
  * BRDF, the pixel, the pixel weight, and the three values of the progressive estimate:
  * radius R, accumulated photon count N, accumulated flux tau. Our N is a double, since
- * Eq. 7 adds alpha M, a fraction of a photon.
+ * Eq. 7 adds alpha M, a fraction of a photon. A hit point may hold two such estimates,
+ * as Jensen's global and caustic photon maps: caustic photons, sparse and sharp, at a
+ * smaller radius of their own (ppm2008.c).
  *
  * The tree is a kd-tree over the hit points' positions, balanced by median splits and
  * stored without pointers (node = the middle of an index range), each node with the box
- * that bounds the discs (as spheres of radius R) of every hit point below it, and a copy
- * of its own hit point's position and R^2. The build moves the hit points themselves into
+ * that bounds the discs (as spheres of the reach) of every hit point below it, and a copy
+ * of its own hit point's position and reach squared. The build moves the hit points into
  * the tree's order, so that a search, which reads the nodes in tree order, finds the hit
  * points it adds a photon to beside each other in memory too, not scattered over the
  * whole array; place[] remembers where each went, so the image can still sum a pixel's
@@ -28,6 +30,16 @@
 #include "../geom/ray.h"
 #include "../scene/brdf.h"
 
+/* One progressive estimate (Sec. 4.3) of a hit point. */
+struct progressive_estimate {
+    double radius;     /* R(x)                                                           */
+    double n_photons;  /* N(x), photons accumulated                                      */
+    struct vec3 tau;   /* tau(x, w): flux times BRDF, unnormalised; during a pass it also
+                          gathers the pass's tau_M                                       */
+    uint32_t m_photons; /* M(x): photons found in the current pass, at most the photons a
+                           pass traces (MAX_PHOTONS < 2^32)                              */
+};
+
 struct hit_point {
     struct vec3 x;                   /* hit location                                     */
     struct vec3 n;                   /* unit geometric normal, on the viewer's side      */
@@ -36,20 +48,23 @@ struct hit_point {
     const struct material *material; /* borrowed from the scene: the paper's BRDF index  */
     size_t pixel;                    /* row-major index in the rendered window           */
     struct vec3 weight;              /* pixel weight: the eye path's throughput / spp    */
-    double radius;                   /* R(x)                                             */
-    double n_photons;                /* N(x), photons accumulated                        */
-    struct vec3 tau;                 /* tau(x, w): flux times BRDF, unnormalised; during
-                                        a pass it also gathers the pass's tau_M          */
-    uint32_t m_photons;              /* M(x): photons found in the current pass, at most
-                                        the photons a pass traces (MAX_PHOTONS < 2^32)   */
+    struct progressive_estimate global;  /* from every photon the caustic one leaves    */
+    struct progressive_estimate caustic; /* from caustic photons (L S+ D) alone, at a
+                                            radius of their own; radius 0 when unused   */
 };
+
+/* How far from x a photon can count for hp: the larger of its estimates' radii. */
+static inline double hit_point_reach(const struct hit_point *hp)
+{
+    return hp->global.radius > hp->caustic.radius ? hp->global.radius : hp->caustic.radius;
+}
 
 /* The node whose middle is m: what a search reads. */
 struct hit_point_node {
     struct aabb box; /* bounds the discs of every hit point in the node's index range
                         (in a leaf, only the middle node has one)                       */
     struct vec3 x;   /* position of hit point index[m]                                   */
-    double r2;       /* its R^2 at the last build or refit                               */
+    double r2;       /* its reach squared at the last build or refit                     */
 };
 
 struct hit_point_tree {
@@ -67,8 +82,8 @@ void hit_point_tree_build(struct hit_point_tree *tree, struct hit_point *points,
 /* Takes the hit points' current radii into the nodes and tightens every box to them. */
 void hit_point_tree_refit(struct hit_point_tree *tree);
 
-/* Calls visit(context, i) for every hit point points[i] whose disc holds p:
- * |x_i - p| <= R_i with R_i as at the last build or refit, in tree order. */
+/* Calls visit(context, i) for every hit point points[i] whose reach holds p:
+ * |x_i - p| <= hit_point_reach() as at the last build or refit, in tree order. */
 void hit_point_tree_visit(const struct hit_point_tree *tree, struct vec3 p,
                           void (*visit)(void *context, size_t i), void *context);
 
