@@ -61,23 +61,33 @@ static void test_uniform_numbers(struct check *t)
 
 /* truth: the definition of a (0,k,2)-net in base 2: the first 2^k points put exactly one
  *   point in every elementary interval of area 2^-k, counted by brute force for every
- *   shape 2^j x 2^(k-j), k <= 10, under several random digital shifts.
+ *   shape 2^j x 2^(k-j), k <= 10, under several random digital shifts, in the sequence's
+ *   own order and in orders shuffled by sequence02_shuffled() (whose first 2^k must be an
+ *   aligned block of the sequence, so a net too).
  * tolerance: none (counts).
  * catches: a wrong generator matrix (Sobol's second dimension is Pascal's triangle mod 2;
  *   the identity, or van der Corput twice, fails at k = 2), a shift applied to the index
- *   instead of the point, bits lost in the conversion to double. */
+ *   instead of the point, bits lost in the conversion to double, a shuffle that is a plain
+ *   hash of the index (its first points are not a block) or not a permutation, or one
+ *   that leaves the order as it was (most of the first 64 places must move). */
 static void test_sequence02_is_a_net(struct check *t)
 {
     static int count[1 << 10];
-    for (int shift = 0; shift < 4; shift++) {
+    for (int shift = 0; shift < 8; shift++) {
         struct rng r = rng_stream(3, STREAM_TEST, (uint64_t)shift, 0);
         uint64_t word = shift == 0 ? 0 : rng_next(&r);
+        uint32_t order = (uint32_t)rng_next(&r); /* shifts 4 to 7: shuffled */
+        int moved = 0; /* a shuffle must move points, or it pairs them as before */
+        for (uint32_t i = 0; i < 64; i++)
+            moved += sequence02_shuffled(i, order) != i;
+        CHECK(t, shift < 4 || moved > 32);
         for (int k = 0; k <= 10; k++)
             for (int j = 0; j <= k; j++) {
                 memset(count, 0, sizeof count);
                 for (uint32_t i = 0; i < (1u << k); i++) {
                     double x, y;
-                    sequence02_point(i, (uint32_t)word, (uint32_t)(word >> 32), &x, &y);
+                    uint32_t place = shift < 4 ? i : sequence02_shuffled(i, order);
+                    sequence02_point(place, (uint32_t)word, (uint32_t)(word >> 32), &x, &y);
                     int cell_x = (int)(x * (1 << j)), cell_y = (int)(y * (1 << (k - j)));
                     count[(cell_y << j) + cell_x]++;
                 }

@@ -34,7 +34,7 @@ static int tree_matches_scan(const struct hit_point_tree *tree, const struct hit
         hit_point_tree_visit(tree, p, mark_visited, &v);
         for (size_t i = 0; i < n; i++) {
             double d2 = vec3_length2(vec3_sub(p, points[i].x));
-            same = same && v.hit[i] == (d2 <= points[i].radius * points[i].radius);
+            same = same && v.hit[i] == (d2 <= points[i].global.radius * points[i].global.radius);
         }
     }
     free(v.hit);
@@ -60,13 +60,13 @@ static void test_hit_point_tree(struct check *t)
             points[i].x = duplicate ? vec3(0.5, 0.5, 0.05)
                                     : vec3(rng_uniform(&rng), rng_uniform(&rng),
                                            rng_uniform(&rng) * 0.1);
-            points[i].radius = 0.1 * rng_uniform(&rng);
+            points[i].global.radius = 0.1 * rng_uniform(&rng);
         }
         struct hit_point_tree tree;
         hit_point_tree_build(&tree, points, n);
         CHECK(t, tree_matches_scan(&tree, points, n, &rng));
         for (size_t i = 0; i < n; i++)
-            points[i].radius *= i % 5 == 0 ? 0.0 : rng_uniform(&rng);
+            points[i].global.radius *= i % 5 == 0 ? 0.0 : rng_uniform(&rng);
         hit_point_tree_refit(&tree);
         CHECK(t, tree_matches_scan(&tree, points, n, &rng));
         hit_point_tree_free(&tree);

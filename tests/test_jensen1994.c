@@ -266,22 +266,6 @@ static void test_caustic(struct check *t)
 
 /* ---- the paper's Fig. 7-8: a caustic profile against the exact solution ---- */
 
-/* scenes/mirror-caustic.scene: a point light of Phi = 25 W at (0.5, 0.8, 0), a mirror
- * square of reflectance 1 at x = 1 (y 0.2..0.8, z -0.3..0.3), the Lambertian square at
- * y = 0. The exact caustic irradiance at p on the floor: the image source l' = (1.5, 0.8,
- * 0) seen through the mirror's outline, E = I cos / |p - l'|^2 with I = Phi / (4 pi). */
-static double exact_caustic(struct vec3 p)
-{
-    struct vec3 image = vec3(1.5, 0.8, 0);
-    double t = (1 - p.x) / (image.x - p.x); /* where p -> l' crosses the mirror's plane */
-    struct vec3 m = vec3_add(p, vec3_scale(vec3_sub(image, p), t));
-    if (!(t > 0 && t < 1 && m.y >= 0.2 && m.y <= 0.8 && fabs(m.z) <= 0.3))
-        return 0;
-    struct vec3 d = vec3_sub(image, p);
-    double d2 = vec3_length2(d);
-    return 25 / (4 * PI) * (d.y / sqrt(d2)) / d2;
-}
-
 /* The caustic profile along x = 0.3 across the caustic (edges at z = +-0.72): the
  * relative RMS error (relative to the caustic's level inside, 1.9 W/m^2) of the CP
  * estimate (n = 200, the paper's) without and with differential checking and of the
@@ -317,7 +301,7 @@ static struct profile_errors caustic_profile_errors(const struct scene *scene,
     struct nearest *nn = nearest_create(200);
     for (int i = 0; i <= 200; i++) {
         struct vec3 p = vec3(0.3, 0, -0.9 + 1.8 * i / 200.0);
-        double exact = exact_caustic(p), edge = fabs(fabs(p.z) - 0.72);
+        double exact = mirror_caustic_irradiance(p), edge = fabs(fabs(p.z) - 0.72);
         if (exact <= 0 && edge > 0.1)
             continue; /* outside, away from the edge: no caustic to err on */
         for (int variant = 0; variant < 3; variant++) {
@@ -471,7 +455,7 @@ static void test_command_line(struct check *t)
 }
 
 /* truth: app/probe.h's contract: one row per sample with the header it documents, the
- *   exact caustic column equal to this file's closed form (exact_caustic() above) and
+ *   exact caustic column equal to this file's closed form (mirror_caustic_irradiance(), truths.h) and
  *   the direct column to I cos / d^2; bad input exits 2 with a message and writes
  *   nothing.
  * tolerance: 1e-6 relative (the CSV's 9 digits).
@@ -513,7 +497,7 @@ static void test_probe_command(struct check *t)
             double d2 = vec3_length2(to_light);
             CHECK_CLOSE(t, v[2], -0.9 + 0.3 * i, 1e-9);
             CHECK_CLOSE(t, v[3], 25 / (4 * PI) * (to_light.y / sqrt(d2)) / d2, 1e-6 * v[3]);
-            CHECK_CLOSE(t, v[4], exact_caustic(p), 1e-6 * v[4] + 1e-12);
+            CHECK_CLOSE(t, v[4], mirror_caustic_irradiance(p), 1e-6 * v[4] + 1e-12);
         }
         free(csv);
     }

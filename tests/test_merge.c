@@ -78,6 +78,7 @@ static const char *const other_pixels_options[] = {
     "--mode 2008 --radius 2", "--mode 2008 --direct-photons", "--mode 2008 --footprints 2",
     "--mode 2008 --no-fit-radius", "--mode 2008 --no-merge-hit-points",
     "--mode 2008 --no-resample-emission", "--mode 2008 --no-facing-test",
+    "--mode 2008 --caustic-footprints 2",
 };
 
 /* The hash words are compared with: that of their leading "--mode M" alone when more

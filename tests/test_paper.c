@@ -100,7 +100,8 @@ static void test_paper_renders_as_its_words(struct check *t)
          "--caustic-radius-fraction 1 --no-both-lobes --no-glossy-corner --no-bounded-reach "
          "--no-gradient-limit --specular-spp 2"},
         {"--mode 2008 --passes 3 --photons-per-pass 5000 --spp 2",
-         "--direct-photons --footprints 1 --no-fit-radius --no-merge-hit-points "
+         "--direct-photons --footprints 1 --caustic-footprints 0 --no-fit-radius "
+         "--no-merge-hit-points "
          "--no-resample-emission --no-facing-test"},
     };
     for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {

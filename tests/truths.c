@@ -56,6 +56,27 @@ static double plane_radiance(const struct scene *scene, double px, double py)
     return 0.5 * 1000 * 1.0 / (4 * PI * PI * d * d * d);
 }
 
+double point_over_plane_sample(const struct scene *scene, int x, int y)
+{
+    struct rng rng;
+    struct ray r = camera_sample(scene, 1, x, y, 0, &rng);
+    struct vec3 p = ray_at(r, -r.origin.y / r.dir.y);
+    double d = vec3_length(vec3_sub(p, vec3(0, 1, 0)));
+    return 0.5 * 1000 / (4 * PI * PI * d * d * d);
+}
+
+double mirror_caustic_irradiance(struct vec3 p)
+{
+    struct vec3 image = vec3(1.5, 0.8, 0);
+    double t = (1 - p.x) / (image.x - p.x); /* where p -> l' crosses the mirror's plane */
+    struct vec3 m = vec3_add(p, vec3_scale(vec3_sub(image, p), t));
+    if (!(t > 0 && t < 1 && m.y >= 0.2 && m.y <= 0.8 && fabs(m.z) <= 0.3))
+        return 0;
+    struct vec3 d = vec3_sub(image, p);
+    double d2 = vec3_length2(d);
+    return 25 / (4 * PI) * (d.y / sqrt(d2)) / d2;
+}
+
 int within_point_over_plane(const struct scene *scene, const struct image *image)
 {
     int inside = 1;

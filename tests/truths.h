@@ -30,6 +30,18 @@ double area_over_floor(struct ray r);
  * test_jensen1996.c). */
 int within_point_over_plane(const struct scene *scene, const struct image *image);
 
+/* The closed form of scenes/analytic/point-over-plane.scene (or any scene with its plane
+ * and light) where pixel (x, y)'s camera sample 0 (seed 1) meets the plane y = 0:
+ * L = rho Phi h / (4 pi^2 d^3) (test_ppm.c, test_ppm_departures.c). */
+double point_over_plane_sample(const struct scene *scene, int x, int y);
+
+/* scenes/mirror-caustic.scene: a point light of Phi = 25 W at (0.5, 0.8, 0), a mirror
+ * square of reflectance 1 at x = 1 (y 0.2..0.8, z -0.3..0.3), the Lambertian square at
+ * y = 0. The exact caustic irradiance at p on the floor: the image source l' = (1.5, 0.8,
+ * 0) seen through the mirror's outline, E = I cos / |p - l'|^2 with I = Phi / (4 pi)
+ * (test_jensen1994.c, test_ppm_departures.c). */
+double mirror_caustic_irradiance(struct vec3 p);
+
 /* Loads and finishes the scene at path for width x height (0: the file's own size); the
  * caller frees it with scene_free. NULL, with the error printed, when it cannot be read. */
 struct scene *load_test_scene(const char *path, int width, int height);
