@@ -1,11 +1,12 @@
 /*
  * reference/ppm-fig4.c -- the data of reference/ppm-fig4.png, the 2008 paper's Fig. 4 on
  * the Cornell box: R(x) and N(x) of three hit points, pass after pass (Eq. 7 and 9 at
- * work), at --mode 2008's defaults. Not part of the renderer: built and run by the
- * commands in reference/README.md.
+ * work), with photons the only light and R0 one footprint. Not part of the renderer:
+ * built and run by the commands in reference/README.md.
  *
- * Each hit point is the first one made for its pixel (eye ray 0), rendered as a crop of
- * that one pixel, which gives it exactly the radius and photons it has in the whole image
+ * Each hit point is the one eye ray 0 makes for its pixel, rendered as a crop of that one
+ * pixel with that one eye ray, which gives it exactly the radius and photons it has in
+ * the whole image: a hit point's R and N depend on its own place and the photons alone
  * (a crop is bit-identical to the same window of the whole render). For each of A, B, C it
  * writes DIR/R/NAME.csv and DIR/N/NAME.csv with the header photon plot reads,
  * "seconds,relmse", holding the pass and R(x) in mm, or the pass and N(x), at about
@@ -44,8 +45,8 @@ static void after_pass(void *context, long pass, const struct hit_point *hp, siz
     struct track *t = context;
     if (n_points == 0 || (pass < t->next && pass != FIG4_PASSES))
         return;
-    fprintf(t->r, "%ld,%.9g\n", pass, hp[0].radius);
-    fprintf(t->n, "%ld,%.9g\n", pass, hp[0].n_photons);
+    fprintf(t->r, "%ld,%.9g\n", pass, hp[0].global.radius);
+    fprintf(t->n, "%ld,%.9g\n", pass, hp[0].global.n_photons);
     long step = (long)(t->next * 0.41421356); /* sqrt(2) - 1 */
     t->next += step > 0 ? step : 1;
 }
@@ -80,17 +81,18 @@ int main(int argc, char **argv)
         const struct tracked_point *p = &points[k];
         struct track t = {open_csv(argv[1], "R", p->name), open_csv(argv[1], "N", p->name), 1};
         struct ppm_observer observer = {after_pass, &t};
-        struct render_settings rs = render_settings_whole(scene, 1, PPM_DEFAULT_SPP,
-                                                          MAX_DEPTH_LIMIT);
+        struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
         rs.x0 = p->x;
         rs.y0 = p->y;
         rs.x1 = p->x + 1;
         rs.y1 = p->y + 1;
         struct ppm_settings ps = ppm_settings_default();
         ps.passes = FIG4_PASSES;
-        ps.direct_photons = 1; /* the paper's way: every photon counts, as in its Fig. 4 */
+        ps.direct_photons = 1; /* every photon counts, as in the paper's Fig. 4 */
+        ps.footprints = 1;     /* R0 one footprint (shortened by walls), one estimate */
+        ps.caustic_footprints = 0;
         ps.observer = &observer;
-        struct render_counters counters = {0, 0, 0, 0};
+        struct render_counters counters = {0, 0, 0, 0, 0};
         struct ppm_stats stats;
         struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
         printf("%s: pixel (%d, %d), %s; %zu hit points; L = %.6g %.6g %.6g\n", p->name, p->x,

@@ -32,21 +32,9 @@ static double error_at_edge(const struct scene *scene, int fit_radius, int *n)
     ps.fit_radius = fit_radius;
     struct ppm_stats stats;
     struct image *image = render(scene, 1, &ps, &stats);
-    double sum = 0.0;
-    *n = 0;
-    for (int y = 0; y < 12; y++)
-        for (int x = 0; x < 12; x++) {
-            struct rng rng;
-            struct ray r = camera_sample(scene, 1, x, y, 0, &rng);
-            double foot = r.origin.x - r.origin.y / r.dir.y * r.dir.x;
-            if (foot < 0.3 && foot > 0.3 - 0.29) {
-                double truth = point_over_plane_sample(scene, x, y);
-                sum += (image_get(image, x, y).y - truth) / truth;
-                (*n)++;
-            }
-        }
+    double error = error_before_edge(scene, image, n);
     image_free(image);
-    return *n > 0 ? sum / *n : INFINITY;
+    return error;
 }
 
 /* truth: scenes/analytic/point-over-plane-edge.scene: up to the plane's open edge the

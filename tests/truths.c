@@ -65,6 +65,24 @@ double point_over_plane_sample(const struct scene *scene, int x, int y)
     return 0.5 * 1000 / (4 * PI * PI * d * d * d);
 }
 
+double error_before_edge(const struct scene *scene, const struct image *image, int *n)
+{
+    double sum = 0.0;
+    *n = 0;
+    for (int y = 0; y < image->height; y++)
+        for (int x = 0; x < image->width; x++) {
+            struct rng rng;
+            struct ray r = camera_sample(scene, 1, x, y, 0, &rng);
+            double foot = r.origin.x - r.origin.y / r.dir.y * r.dir.x;
+            if (foot < 0.3 && foot > 0.3 - 0.29) {
+                double truth = point_over_plane_sample(scene, x, y);
+                sum += (image_get(image, x, y).y - truth) / truth;
+                (*n)++;
+            }
+        }
+    return *n > 0 ? sum / *n : INFINITY;
+}
+
 double mirror_caustic_irradiance(struct vec3 p)
 {
     struct vec3 image = vec3(1.5, 0.8, 0);

@@ -35,6 +35,13 @@ int within_point_over_plane(const struct scene *scene, const struct image *image
  * L = rho Phi h / (4 pi^2 d^3) (test_ppm.c, test_ppm_departures.c). */
 double point_over_plane_sample(const struct scene *scene, int x, int y);
 
+/* The mean signed relative error, against point_over_plane_sample(), of the pixels of
+ * image (a render of a scene with point-over-plane's plane and light, seed 1) whose camera
+ * sample 0 meets the plane within 0.29 (a footprint at 12 x 12) before x = 0.3, where
+ * scenes/analytic/point-over-plane-wall.scene's wall stands and point-over-plane-edge's
+ * plane ends; *n: how many (test_ppm.c, test_ppm_departures.c). */
+double error_before_edge(const struct scene *scene, const struct image *image, int *n);
+
 /* scenes/mirror-caustic.scene: a point light of Phi = 25 W at (0.5, 0.8, 0), a mirror
  * square of reflectance 1 at x = 1 (y 0.2..0.8, z -0.3..0.3), the Lambertian square at
  * y = 0. The exact caustic irradiance at p on the floor: the image source l' = (1.5, 0.8,

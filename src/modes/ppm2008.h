@@ -16,15 +16,16 @@
 #define PPM_DEFAULT_ALPHA 0.7               /* the paper's (Sec. 5)                      */
 #define PPM_DEFAULT_SPP 16                  /* eye rays per pixel that store hit points,
                                                fixed for the whole render (each pass adds
-                                               one that only sees emission): edges in the
-                                               photon estimate keep their aliasing; each
-                                               costs a hit point of ~300 bytes (README)   */
+                                               one for the direct light and emission):
+                                               edges in the photon estimate keep their
+                                               aliasing; rays that meet a surface within a
+                                               hit point's disc share it (ppm2008.c)      */
 #define PPM_DEFAULT_FOOTPRINTS 4.0          /* default R0 in pixel footprints; the paper's
                                                "footprint of the pixel" (Sec. 4) is 1     */
 #define PPM_DEFAULT_CAUSTIC_FOOTPRINTS 1.0  /* R0 of the caustic estimate, in footprints */
 #define MAX_PASSES 100000000                /* documented limit on --passes              */
 #define PPM_MAX_EYE_RAYS (1 << 24)          /* documented limit on pixels x spp: each eye
-                                               ray leaves a hit point of ~300 bytes      */
+                                               ray may leave a hit point of ~380 bytes   */
 
 struct hit_point;
 
