@@ -83,8 +83,29 @@ static void test_fit_fallbacks(struct check *t)
     CHECK_CLOSE(t, tte_fit_time_to(&fit, 0.001), 20, 1e-9);
 }
 
+/* truth: with the floor c given (the reference's variance image's), rows exactly on
+ *   a / t + c give back a; rows on a / t + c' with c' != c give the a that puts the law
+ *   through them as best it can, and the time it gives to an error reads the given floor:
+ *   the specular box's case, whose checkpoints are all far above the floor.
+ * tolerance: 1e-9 relative on exact rows.
+ * catches: the floor ignored (a fitted to the whole relmse), c not kept in the fit, the
+ *   weights' sums of the free fit reused. */
+static void test_fit_above_given_floor(struct check *t)
+{
+    double seconds[N_ROWS], relmse[N_ROWS];
+    exact_rows(0.438, 0.000121, 0.2, seconds, relmse);
+    struct tte_fit fit = tte_fit_rows_above(seconds, relmse, N_ROWS, 0.000121);
+    CHECK(t, fit.fitted && fit.c == 0.000121);
+    CHECK_CLOSE(t, fit.a, 0.438, 1e-9 * 0.438);
+    CHECK_CLOSE(t, tte_fit_time_to(&fit, 0.000121 + 0.438 / 5000), 5000, 1e-6 * 5000);
+    struct tte_fit low = tte_fit_rows_above(seconds, relmse, N_ROWS, 0);
+    CHECK(t, low.fitted && low.c == 0 && low.a > 0.438);
+    CHECK(t, isinf(tte_fit_time_to(&fit, 0.0001)) && isfinite(tte_fit_time_to(&low, 0.0001)));
+}
+
 void test_tte_fit(struct check *t)
 {
+    RUN_TEST(t, test_fit_above_given_floor);
     RUN_TEST(t, test_fit_recovers_law);
     RUN_TEST(t, test_floor_unreachable);
     RUN_TEST(t, test_fit_fallbacks);

@@ -11,7 +11,8 @@
  * mode's seconds, and every mode's figure is read off that one curve: log-log
  * interpolation between the two checkpoints around the target or, past pt's last
  * checkpoint, the fit relmse = a / t + c of its checkpoints (tte_fit.h, pt_fit; c is the
- * reference's own noise) and tte.MODE.SCENE.extrapolated=1. A target at or below c is one
+ * reference's own noise, from its variance image: reference_floor()) and
+ * tte.MODE.SCENE.extrapolated=1. A target at or below c is one
  * pt never reaches by the fit (extrapolated=unreachable): its pt_seconds and ratio are then
  * lower bounds, from pt's last checkpoint, which had not reached it.
  * ratio = pt's seconds / the mode's: above 1 the photon mode is faster to its error.
@@ -227,22 +228,48 @@ static void run_mode(const struct scene *scene, const struct image *reference, i
     render_result_free(&result);
 }
 
-/* pt's relmse = a / t + c, t in seconds, for past its last checkpoint. The law holds in
- * samples a pixel, but CPU seconds per sample are not steady (on a shared machine the first
- * checkpoints' samples can cost a fifth more than the later ones'), and a fit in seconds
- * takes that wander for the curve's bend and misplaces c, the floor. So the fit is in
- * samples, and a is turned into seconds at the pace of the last checkpoint, the pace pt
- * would go on at. */
-static struct tte_fit pt_fit(const struct curve *pt)
+/* pt's relmse = a / t + c, t in seconds, for past its last checkpoint, c the floor (< 0:
+ * unknown, fitted too). The law holds in samples a pixel, but CPU seconds per sample are
+ * not steady (on a shared machine the first checkpoints' samples can cost a fifth more
+ * than the later ones'), and a fit in seconds takes that wander for the curve's bend. So
+ * the fit is in samples, and a is turned into seconds at the pace of the last checkpoint,
+ * the pace pt would go on at. */
+static struct tte_fit pt_fit(const struct curve *pt, double floor)
 {
-    struct tte_fit fit = tte_fit_rows(pt->work, pt->relmse, pt->n);
+    struct tte_fit fit = floor >= 0 ? tte_fit_rows_above(pt->work, pt->relmse, pt->n, floor)
+                                    : tte_fit_rows(pt->work, pt->relmse, pt->n);
     fit.a *= pt->seconds[pt->n - 1] / pt->work[pt->n - 1];
     return fit;
 }
 
+/* The reference's own expected relmse against the truth, from its variance image (the
+ * variance of each pixel's mean, per channel): the mean of var / (b^2 + 1e-2), the
+ * relmse's own terms (image/compare.h). window: the rendered window of the reference. -1
+ * (a note on stderr) when the image cannot be read. */
+static double reference_floor(const char *variance_path, const struct image *window,
+                              const struct render_settings *rs)
+{
+    struct error err;
+    struct image *variance = pfm_read(variance_path, &err);
+    if (variance == NULL) {
+        fprintf(stderr, "bench: tte: no noise floor from the reference's variance, fitted: ");
+        error_print(&err);
+        return -1;
+    }
+    double sum = 0;
+    for (int y = rs->y0; y < rs->y1; y++)
+        for (int x = rs->x0; x < rs->x1; x++)
+            for (int c = 0; c < 3; c++) {
+                double b = vec3_get(image_get(window, x - rs->x0, y - rs->y0), c);
+                sum += vec3_get(image_get(variance, x, y), c) / (b * b + 1e-2);
+            }
+    image_free(variance);
+    return sum / (3.0 * (double)(rs->x1 - rs->x0) * (double)(rs->y1 - rs->y0));
+}
+
 /* pt's curve on scene for PT_TIME_FACTOR times the longest of the modes' seconds. */
 static void run_pt(const struct scene *scene, const struct mode_run *runs, int n_runs,
-                   int trial, const char *name, struct curve *pt)
+                   int trial, const char *name, double floor, struct curve *pt)
 {
     double longest = 0;
     for (int i = 0; i < n_runs; i++)
@@ -256,7 +283,7 @@ static void run_pt(const struct scene *scene, const struct mode_run *runs, int n
     render_result_free(&result);
     fprintf(stderr, "bench: tte: %s: --mode pt: relmse %g after %d samples, %.1f s\n", name,
             pt->relmse[pt->n - 1], counters.passes, pt->seconds[pt->n - 1]);
-    pt->fit = pt_fit(pt);
+    pt->fit = pt_fit(pt, floor);
     if (!pt->fit.fitted)
         fprintf(stderr, "bench: tte: %s: pt's checkpoints fit no a / t + c with a > 0; "
                         "past them, relmse ~ 1 / time from the last\n", name);
@@ -303,6 +330,7 @@ static void print_figures(const struct mode_run *run, const struct curve *pt, co
 /* A scene, its reference and the photon modes measured on it. */
 struct tte_case {
     const char *name, *scene_path, *reference_path;
+    const char *variance_path; /* the reference's variance image: its noise floor     */
     const struct photon_mode *modes; /* borrowed: n_modes of them */
     int n_modes;                     /* 1..N_PHOTON_MODES */
 };
@@ -352,7 +380,8 @@ static void time_to_error_on(const struct tte_case *tc, int trial)
     }
     if (n_runs > 0) {
         struct curve pt = {reference, {0}, {0}, {0}, 0, {0, 0, 0}};
-        run_pt(scene, runs, n_runs, trial, tc->name, &pt);
+        run_pt(scene, runs, n_runs, trial, tc->name,
+               reference_floor(tc->variance_path, reference, &window), &pt);
         for (int i = 0; i < n_runs; i++)
             print_figures(&runs[i], &pt, tc->name);
     }
@@ -367,10 +396,13 @@ void bench_tte(void)
     static const struct photon_mode modes[N_PHOTON_MODES] = {
         {"1994", render_1994}, {"1996", render_1996}, {"2008", render_2008}};
     static const struct tte_case cases[3] = {
-        {"cornell", "scenes/cornell.scene", "reference/cornell-pt.pfm", modes, 3},
+        {"cornell", "scenes/cornell.scene", "reference/cornell-pt.pfm",
+         "reference/cornell-pt-var.pfm", modes, 3},
         {"cornell-specular", "scenes/cornell-specular.scene",
-         "reference/cornell-specular-pt.pfm", modes, 3},
-        {"ppm-box", "scenes/ppm-box.scene", "reference/ppm-box.pfm", modes + 2, 1}};
+         "reference/cornell-specular-pt.pfm", "reference/cornell-specular-pt-var.pfm", modes,
+         3},
+        {"ppm-box", "scenes/ppm-box.scene", "reference/ppm-box.pfm", "reference/ppm-box-var.pfm",
+         modes + 2, 1}};
     const char *trial_text = getenv("PHOTON_TTE_TRIAL");
     int trial = trial_text != NULL && trial_text[0] != '\0';
     if (trial)

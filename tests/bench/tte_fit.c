@@ -13,11 +13,25 @@
 
 #include <math.h>
 
-/* The rule relmse ~ 1 / t through the row (t, relmse): what is left when no line can be
- * fitted. */
-static struct tte_fit one_over_t(double t, double relmse)
+/* The rule relmse - c ~ 1 / t through the row (t, relmse): what is left when no line can
+ * be fitted. */
+static struct tte_fit one_over_t(double t, double relmse, double c)
 {
-    struct tte_fit fit = {relmse * t, 0, 0};
+    struct tte_fit fit = {(relmse - c) * t, c, 0};
+    return fit;
+}
+
+struct tte_fit tte_fit_rows_above(const double *t, const double *relmse, int n, double c)
+{
+    double sxx = 0, sxe = 0;
+    for (int i = 0; i < n; i++) {
+        double w = 1 / (relmse[i] * relmse[i]), x = 1 / t[i];
+        sxx += w * x * x;
+        sxe += w * x * (relmse[i] - c);
+    }
+    struct tte_fit fit = {sxe / sxx, c, 1};
+    if (!(fit.a > 0)) /* error that does not fall with t: not pt's law */
+        return one_over_t(t[n - 1], relmse[n - 1], c);
     return fit;
 }
 
@@ -31,25 +45,21 @@ struct tte_fit tte_fit_rows(const double *t, const double *relmse, int n)
         swe += w * relmse[i];
     }
     double x_m = swx / sw, e_m = swe / sw;
-    double sxx = 0, sxe = 0, sxx0 = 0, sxe0 = 0;
+    double sxx = 0, sxe = 0;
     for (int i = 0; i < n; i++) {
         double w = 1 / (relmse[i] * relmse[i]), x = 1 / t[i];
         sxx += w * (x - x_m) * (x - x_m);
         sxe += w * (x - x_m) * (relmse[i] - e_m);
-        sxx0 += w * x * x; /* the sums of the fit held to c = 0 */
-        sxe0 += w * x * relmse[i];
     }
     if (!(sxx > 0)) /* fewer than two distinct t: no slope to fit */
-        return one_over_t(t[n - 1], relmse[n - 1]);
+        return one_over_t(t[n - 1], relmse[n - 1], 0);
     struct tte_fit fit = {sxe / sxx, e_m - sxe / sxx * x_m, 1};
-    if (fit.c < 0) {
-        /* The squared misses are a convex bowl in (a, c); with its floor at c < 0 the best
-         * c >= 0 lies on the edge c = 0, where the fit is the line through the origin. */
-        fit.a = sxe0 / sxx0;
-        fit.c = 0;
-    }
+    /* The squared misses are a convex bowl in (a, c); with its floor at c < 0 the best
+     * c >= 0 lies on the edge c = 0, where the fit is the line through the origin. */
+    if (fit.c < 0)
+        return tte_fit_rows_above(t, relmse, n, 0);
     if (!(fit.a > 0)) /* error that does not fall with t: not pt's law */
-        return one_over_t(t[n - 1], relmse[n - 1]);
+        return one_over_t(t[n - 1], relmse[n - 1], 0);
     return fit;
 }
 
