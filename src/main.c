@@ -11,6 +11,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "app/export.h"
 #include "app/options.h"
 #include "app/merge.h"
 #include "app/probe.h"
@@ -422,6 +423,8 @@ int main(int argc, char **argv)
         return probe_command(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "merge") == 0)
         return merge_command(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "export") == 0)
+        return export_command(argc - 1, argv + 1);
     struct run run;
     struct error err;
     memset(&run, 0, sizeof run);

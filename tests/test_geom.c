@@ -99,7 +99,7 @@ static void ball_free(void *shape)
 }
 
 static const struct shape_ops ball_ops = {"ball", ball_bounds, ball_intersect, ball_occluded,
-                                          ball_bytes, ball_free};
+                                          ball_bytes, ball_free, NULL, NULL};
 
 /* ---- brute force: every primitive twice, once in a geometry, once in a plain list ---- */
 

@@ -301,6 +301,9 @@ static void print_help(void)
            "                   [--normal NX NY NZ] [--photons N] [--gather N]\n"
            "                   [--differential R] [--seed S]   (irradiance along a line)\n"
            "       photon merge -o FULL.pfm TILE.pfm [TILE.pfm ...] [--exposure E]\n"
+           "       photon export --format pbrt|mitsuba|blender SCENE -o OUT [--spp N]\n"
+           "                    [--channel R|G|B]   (the scene for pbrt-v4, Mitsuba 3 or\n"
+           "                    Blender; see README: Rendering our scenes elsewhere)\n"
            "\noptions:\n");
     for (size_t i = 0; i < N_SPECS; i++) {
         char left[40], note[80];

@@ -578,3 +578,46 @@ int geometry_uv_extent(const struct geometry *g, int prim, double *length_u, dou
         return 0;
     }
 }
+
+/* ---- the primitives as such ---- */
+
+static void visit_triangle(const struct geometry *g, const struct triangle *tri,
+                           const struct primitive_visitor *v)
+{
+    struct vec3 corner[3];
+    for (int i = 0; i < 3; i++)
+        corner[i] = vec3(tri->v[i][0], tri->v[i][1], tri->v[i][2]);
+    v->triangle(v->context, corner, tri->normals >= 0 ? &g->normals[tri->normals] : NULL,
+                tri->material);
+}
+
+void geometry_visit(const struct geometry *g, const struct primitive_visitor *v)
+{
+    for (size_t id = 0; id < g->n_prims; id++) {
+        uint32_t ref = g->id_refs[id];
+        size_t index = ref & REF_INDEX_MASK;
+        switch ((enum kind)(ref >> REF_KIND_SHIFT)) {
+        case KIND_SPHERE: {
+            const struct sphere *s = &g->spheres[index];
+            if (!sphere_is_degenerate(s))
+                v->sphere(v->context, s->centre, s->radius, s->material);
+            break;
+        }
+        case KIND_TRIANGLE:
+            if (!triangle_is_degenerate(&g->triangles[index]))
+                visit_triangle(g, &g->triangles[index], v);
+            break;
+        case KIND_QUAD: {
+            const struct quad *q = &g->quads[index];
+            if (!quad_is_degenerate(q))
+                v->quad(v->context, q->p0, q->e1, q->e2, q->material);
+            break;
+        }
+        default: {
+            const struct shape *s = &g->shapes[index];
+            v->shape(v->context, s->ops->name, s->ops->approximation);
+            s->ops->primitives(s->data, v);
+        }
+        }
+    }
+}

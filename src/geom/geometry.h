@@ -22,6 +22,19 @@
  * (each primitive costs well under 200 bytes). Beyond it geometry_add_*() returns -1. */
 #define MAX_PRIMITIVES (1 << 28)
 
+/* The plain primitives a scene is made of, handed one by one to whoever needs them as such
+ * (app/export.c writes them for other renderers). Each callback gets `context`; normals is
+ * NULL or a triangle's three unit vertex normals. */
+struct primitive_visitor {
+    void *context;
+    void (*sphere)(void *context, struct vec3 centre, double radius, int material);
+    void (*triangle)(void *context, const struct vec3 v[3], const struct vec3 *normals,
+                     int material);
+    void (*quad)(void *context, struct vec3 p0, struct vec3 e1, struct vec3 e2, int material);
+    /* Called before a procedural shape's primitives: its ops' name and approximation. */
+    void (*shape)(void *context, const char *name, const char *approximation);
+};
+
 /* A procedural shape (sphere flake, heightfield, ...): one BVH leaf with its own internal
  * acceleration. The shape fills every field of struct hit except prim, which geometry sets. */
 struct shape_ops {
@@ -33,6 +46,10 @@ struct shape_ops {
     int (*occluded)(const void *shape, struct ray ray, double tmax);
     size_t (*bytes)(const void *shape);  /* memory the shape holds, for --stats */
     void (*free)(void *shape);
+    /* Hands the shape to v as plain spheres and triangles: exactly the surface it
+     * intersects when approximation is NULL, else what approximation says. */
+    void (*primitives)(const void *shape, const struct primitive_visitor *v);
+    const char *approximation;
 };
 
 struct geometry;
@@ -61,6 +78,10 @@ void geometry_build(struct geometry *g);
 int geometry_intersect(const struct geometry *g, struct ray ray, double tmax, struct hit *hit);
 /* Whether anything is hit with t in (0, tmax): the any-hit query for shadow rays. */
 int geometry_occluded(const struct geometry *g, struct ray ray, double tmax);
+
+/* Hands every primitive that can be hit (degenerate ones are left out, as the BVH leaves
+ * them) to v, in the order of their ids; a procedural shape through its ops->primitives. */
+void geometry_visit(const struct geometry *g, const struct primitive_visitor *v);
 
 /* For --stats and benches. */
 size_t geometry_primitive_count(const struct geometry *g);

@@ -529,8 +529,13 @@ static void hf_free(void *shape)
     heightfield_free(shape);
 }
 
+static void hf_primitives(const void *shape, const struct primitive_visitor *v)
+{
+    heightfield_triangles(shape, v->triangle, v->context);
+}
+
 const struct shape_ops heightfield_ops = {"heightfield", hf_bounds, hf_intersect, hf_occluded,
-                                          hf_bytes, hf_free};
+                                          hf_bytes, hf_free, hf_primitives, NULL};
 
 /* ---- the triangles, one by one ----------------------------------------------------- */
 

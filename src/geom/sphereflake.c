@@ -342,8 +342,14 @@ static void flake_free(void *shape)
     sphereflake_free(shape);
 }
 
+static void flake_primitives(const void *shape, const struct primitive_visitor *v)
+{
+    sphereflake_spheres(shape, v->sphere, v->context);
+}
+
 const struct shape_ops sphereflake_ops = {"sphereflake", flake_bounds, flake_intersect,
-                                          flake_occluded, flake_bytes, flake_free};
+                                          flake_occluded, flake_bytes, flake_free,
+                                          flake_primitives, NULL};
 
 /* ---- the spheres, one by one ------------------------------------------------------------ */
 

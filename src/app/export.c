@@ -1,0 +1,371 @@
+/*
+ * app/export.c -- `photon export`: the scene flattened for the writers, and the command
+ * (see export.h).
+ */
+#include "export.h"
+
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../base/alloc.h"
+
+#define EXPORT_USAGE                                                                      \
+    "usage: photon export --format pbrt|mitsuba|blender SCENE -o OUT [--spp N] "         \
+    "[--channel R|G|B]"
+
+/* Companion files open beside the output, committed or abandoned with it. */
+#define MAX_COMPANIONS 4096
+static FILE *companions[MAX_COMPANIONS];
+static size_t n_companions;
+
+/* ---- flattening the geometry ---- */
+
+/* Collects the visited primitives: spheres as they are, triangles into one growing list
+ * per (material, with normals) pair, and how many primitives each procedural shape gave. */
+struct collector {
+    struct export_scene *es;
+    size_t cap_spheres;
+    size_t *cap_triangles;      /* per mesh */
+    int *mesh_of;               /* 2 per material: mesh index without / with normals, or -1 */
+    const char *shape_name;     /* the procedural shape being visited, or NULL */
+    size_t shape_spheres, shape_triangles;
+};
+
+static void used(struct collector *c, int material)
+{
+    c->es->material_used[material] = 1;
+}
+
+static void add_sphere(void *context, struct vec3 centre, double radius, int material)
+{
+    struct collector *c = context;
+    struct export_scene *es = c->es;
+    if (es->n_spheres == c->cap_spheres) {
+        c->cap_spheres = c->cap_spheres < 16 ? 16 : 2 * c->cap_spheres;
+        es->spheres = xrealloc(es->spheres, c->cap_spheres, sizeof *es->spheres, "spheres");
+    }
+    es->spheres[es->n_spheres].centre = centre;
+    es->spheres[es->n_spheres].radius = radius;
+    es->spheres[es->n_spheres++].material = material;
+    used(c, material);
+    c->shape_spheres++;
+}
+
+/* The mesh of a material's triangles with or without normals, made when first needed. */
+static struct export_mesh *mesh_for(struct collector *c, int material, int with_normals)
+{
+    struct export_scene *es = c->es;
+    int *slot = &c->mesh_of[2 * material + with_normals];
+    if (*slot < 0) {
+        *slot = (int)es->n_meshes;
+        es->meshes = xrealloc(es->meshes, es->n_meshes + 1, sizeof *es->meshes, "meshes");
+        c->cap_triangles = xrealloc(c->cap_triangles, es->n_meshes + 1,
+                                    sizeof *c->cap_triangles, "meshes");
+        struct export_mesh *m = &es->meshes[es->n_meshes++];
+        m->material = material;
+        m->n_triangles = 0;
+        m->vertices = NULL;
+        m->normals = NULL;
+        c->cap_triangles[*slot] = 0;
+    }
+    return &es->meshes[*slot];
+}
+
+static void add_triangle(void *context, const struct vec3 v[3], const struct vec3 *normals,
+                         int material)
+{
+    struct collector *c = context;
+    struct export_mesh *m = mesh_for(c, material, normals != NULL);
+    size_t *cap = &c->cap_triangles[m - c->es->meshes];
+    if (m->n_triangles == *cap) {
+        *cap = *cap < 16 ? 16 : 2 * *cap;
+        m->vertices = xrealloc(m->vertices, 3 * *cap, sizeof *m->vertices, "mesh vertices");
+        if (normals != NULL)
+            m->normals = xrealloc(m->normals, 3 * *cap, sizeof *m->normals, "mesh normals");
+    }
+    for (int i = 0; i < 3; i++) {
+        m->vertices[3 * m->n_triangles + i] = v[i];
+        if (normals != NULL)
+            m->normals[3 * m->n_triangles + i] = normals[i];
+    }
+    m->n_triangles++;
+    used(c, material);
+    c->shape_triangles++;
+}
+
+static void add_quad(void *context, struct vec3 p0, struct vec3 e1, struct vec3 e2,
+                     int material)
+{
+    struct vec3 p2 = vec3_add(vec3_add(p0, e1), e2);
+    struct vec3 first[3] = {p0, vec3_add(p0, e1), p2};
+    struct vec3 second[3] = {p0, p2, vec3_add(p0, e2)};
+    add_triangle(context, first, NULL, material);
+    add_triangle(context, second, NULL, material);
+}
+
+/* Says what the last procedural shape became: the writers' targets store its primitives. */
+static void report_shape(struct collector *c)
+{
+    if (c->shape_name != NULL)
+        export_note("%s: %zu spheres and %zu triangles", c->shape_name, c->shape_spheres,
+                    c->shape_triangles);
+}
+
+static void begin_shape(void *context, const char *name, const char *approximation)
+{
+    struct collector *c = context;
+    report_shape(c);
+    if (approximation != NULL)
+        export_note("%s: no exact equivalent; written as %s", name, approximation);
+    c->shape_name = name;
+    c->shape_spheres = c->shape_triangles = 0;
+}
+
+/* ---- the scene ---- */
+
+static struct vec3 grey(struct vec3 c, int channel)
+{
+    if (channel < 0)
+        return c;
+    double v = channel == 0 ? c.x : channel == 1 ? c.y : c.z;
+    return vec3(v, v, v);
+}
+
+static void make_grey(struct export_scene *es)
+{
+    int ch = es->channel;
+    es->background = grey(es->background, ch);
+    for (size_t i = 0; i < es->n_materials; i++) {
+        struct material *m = &es->materials[i];
+        m->rho = grey(m->rho, ch);
+        m->rho_s = grey(m->rho_s, ch);
+        m->absorption = grey(m->absorption, ch);
+        m->emission = grey(m->emission, ch);
+    }
+    for (size_t i = 0; i < es->n_point_lights; i++)
+        es->point_lights[i].power = grey(es->point_lights[i].power, ch);
+}
+
+void export_scene_make(struct export_scene *es, const struct scene *scene, int spp,
+                       int channel)
+{
+    memset(es, 0, sizeof *es);
+    es->spheres = NULL;
+    es->meshes = NULL;
+    es->width = scene->width;
+    es->height = scene->height;
+    es->camera = scene->camera;
+    es->background = scene->background;
+    es->spp = spp;
+    es->channel = channel;
+    es->n_materials = scene->n_materials;
+    es->materials = xmalloc(scene->n_materials + 1, sizeof *es->materials, "materials");
+    memcpy(es->materials, scene->materials, scene->n_materials * sizeof *es->materials);
+    es->material_used = xcalloc(scene->n_materials + 1, sizeof *es->material_used, "materials");
+    es->point_lights = xmalloc(scene->n_lights + 1, sizeof *es->point_lights, "lights");
+    for (size_t i = 0; i < scene->n_lights; i++)
+        if (scene->lights[i].kind == LIGHT_POINT)
+            es->point_lights[es->n_point_lights++] = scene->lights[i];
+
+    struct collector c;
+    memset(&c, 0, sizeof c);
+    c.es = es;
+    c.cap_triangles = NULL;
+    c.shape_name = NULL;
+    c.mesh_of = xmalloc(2 * scene->n_materials + 2, sizeof *c.mesh_of, "meshes");
+    for (size_t i = 0; i < 2 * scene->n_materials + 2; i++)
+        c.mesh_of[i] = -1;
+    struct primitive_visitor v = {&c, add_sphere, add_triangle, add_quad, begin_shape};
+    geometry_visit(scene->geometry, &v);
+    report_shape(&c);
+    xfree(c.mesh_of);
+    xfree(c.cap_triangles);
+    make_grey(es);
+}
+
+void export_scene_free(struct export_scene *es)
+{
+    for (size_t i = 0; i < es->n_meshes; i++) {
+        xfree(es->meshes[i].vertices);
+        xfree(es->meshes[i].normals);
+    }
+    xfree(es->meshes);
+    xfree(es->spheres);
+    xfree(es->materials);
+    xfree(es->material_used);
+    xfree(es->point_lights);
+}
+
+/* ---- what the writers share ---- */
+
+void export_note(const char *format, ...)
+{
+    va_list ap;
+    va_start(ap, format);
+    fputs("photon: export: ", stderr);
+    vfprintf(stderr, format, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+}
+
+FILE *export_companion(const char *name, struct error *err)
+{
+    if (n_companions == MAX_COMPANIONS) {
+        error_set(err, "", 0, "export: more than %d companion files", MAX_COMPANIONS);
+        return NULL;
+    }
+    if (output_check(name, err) < 0)
+        return NULL;
+    FILE *f = output_open(name, err);
+    if (f != NULL)
+        companions[n_companions++] = f;
+    return f;
+}
+
+void export_rgb(FILE *f, const char *separator, struct vec3 c)
+{
+    fprintf(f, "%.9g%s%.9g%s%.9g", c.x, separator, c.y, separator, c.z);
+}
+
+/* ---- the command ---- */
+
+struct export_args {
+    const char *scene;
+    const char *output;
+    enum export_format format;
+    int spp;
+    int channel;
+};
+
+static int parse_format(const char *word, enum export_format *format, struct error *err)
+{
+    static const char *const names[] = {"pbrt", "mitsuba", "blender"};
+    for (int i = 0; i < 3; i++)
+        if (strcmp(word, names[i]) == 0) {
+            *format = (enum export_format)i;
+            return 0;
+        }
+    return error_set(err, "", 0, "export: --format '%s': expected pbrt, mitsuba or blender",
+                     word);
+}
+
+static int parse_channel(const char *word, int *channel, struct error *err)
+{
+    static const char channels[] = "RGB";
+    for (int i = 0; i < 3; i++)
+        if (word[0] == channels[i] && word[1] == '\0') {
+            *channel = i;
+            return 0;
+        }
+    return error_set(err, "", 0, "export: --channel '%s': expected R, G or B", word);
+}
+
+static int parse_spp(const char *word, int *spp, struct error *err)
+{
+    char *end;
+    long v = strtol(word, &end, 10);
+    if (end == word || *end != '\0' || v < 1 || v > 1 << 24)
+        return error_set(err, "", 0, "export: --spp '%s': expected a whole number in 1..%d",
+                         word, 1 << 24);
+    *spp = (int)v;
+    return 0;
+}
+
+static int parse_export_args(int argc, char **argv, struct export_args *a, struct error *err)
+{
+    int has_format = 0;
+    a->scene = a->output = NULL;
+    a->format = EXPORT_PBRT;
+    a->spp = EXPORT_DEFAULT_SPP;
+    a->channel = -1;
+    for (int i = 1; i < argc; i++) {
+        const char *opt = argv[i];
+        int takes_value = strcmp(opt, "--format") == 0 || strcmp(opt, "-o") == 0 ||
+                          strcmp(opt, "--spp") == 0 || strcmp(opt, "--channel") == 0;
+        if (takes_value && i + 1 == argc)
+            return error_set(err, "", 0, "export: %s needs a value; " EXPORT_USAGE, opt);
+        if (strcmp(opt, "--format") == 0) {
+            if (parse_format(argv[++i], &a->format, err) < 0)
+                return -1;
+            has_format = 1;
+        } else if (strcmp(opt, "-o") == 0) {
+            a->output = argv[++i];
+        } else if (strcmp(opt, "--spp") == 0) {
+            if (parse_spp(argv[++i], &a->spp, err) < 0)
+                return -1;
+        } else if (strcmp(opt, "--channel") == 0) {
+            if (parse_channel(argv[++i], &a->channel, err) < 0)
+                return -1;
+        } else if (opt[0] == '-') {
+            return error_set(err, "", 0, "export: unknown option '%s'; " EXPORT_USAGE, opt);
+        } else if (a->scene == NULL) {
+            a->scene = opt;
+        } else {
+            return error_set(err, "", 0, "export: more than one scene; " EXPORT_USAGE);
+        }
+    }
+    if (!has_format || a->scene == NULL || a->output == NULL)
+        return error_set(err, "", 0, "export: needs --format, a scene and -o; " EXPORT_USAGE);
+    return 0;
+}
+
+static void abandon_companions(void)
+{
+    for (size_t i = 0; i < n_companions; i++)
+        output_abandon(companions[i]);
+    n_companions = 0;
+}
+
+/* Writes the scene with the chosen writer, then commits the output and its companions. */
+static int write_export(const struct export_args *a, struct export_scene *es,
+                        struct error *err)
+{
+    static int (*const writers[])(FILE *, const struct export_scene *, struct error *) = {
+        export_pbrt, export_mitsuba, export_blender};
+    FILE *f = output_open(a->output, err);
+    if (f == NULL)
+        return -1;
+    if (writers[a->format](f, es, err) < 0) {
+        output_abandon(f);
+        abandon_companions();
+        return -1;
+    }
+    for (size_t i = 0; i < n_companions; i++)
+        if (output_commit(companions[i], err) < 0) {
+            companions[i] = companions[--n_companions];
+            output_abandon(f);
+            abandon_companions();
+            return -1;
+        }
+    n_companions = 0;
+    return output_commit(f, err);
+}
+
+int export_command(int argc, char **argv)
+{
+    struct export_args a;
+    struct error err;
+    if (parse_export_args(argc, argv, &a, &err) < 0 || output_check(a.output, &err) < 0) {
+        error_print(&err);
+        return 2;
+    }
+    struct scene *scene = scene_load(a.scene, &err);
+    if (scene == NULL) {
+        error_print(&err);
+        return 2;
+    }
+    scene_finish(scene, scene->width, scene->height);
+    struct export_scene es;
+    export_scene_make(&es, scene, a.spp, a.channel);
+    es.scene_path = a.scene;
+    es.output = a.output;
+    int status = write_export(&a, &es, &err);
+    export_scene_free(&es);
+    scene_free(scene);
+    if (status < 0) {
+        error_print(&err);
+        return error_exit_status(&err);
+    }
+    return 0;
+}
