@@ -4,6 +4,7 @@
  */
 #include "export.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -107,16 +108,19 @@ static void add_quad(void *context, struct vec3 p0, struct vec3 e1, struct vec3 
 /* Says what the last procedural shape became: the writers' targets store its primitives. */
 static void report_shape(struct collector *c)
 {
-    if (c->shape_name != NULL)
-        export_note("%s: %zu spheres and %zu triangles", c->shape_name, c->shape_spheres,
-                    c->shape_triangles);
+    if (c->shape_name == NULL)
+        return;
+    if (c->shape_spheres > 0)
+        export_note("%s: written as its %zu spheres", c->shape_name, c->shape_spheres);
+    if (c->shape_triangles > 0)
+        export_note("%s: written as its %zu triangles", c->shape_name, c->shape_triangles);
 }
 
-static void begin_shape(void *context, const char *name, const char *approximation)
+static void begin_or_end_shape(void *context, const char *name, const char *approximation)
 {
     struct collector *c = context;
     report_shape(c);
-    if (approximation != NULL)
+    if (name != NULL && approximation != NULL)
         export_note("%s: no exact equivalent; written as %s", name, approximation);
     c->shape_name = name;
     c->shape_spheres = c->shape_triangles = 0;
@@ -176,9 +180,8 @@ void export_scene_make(struct export_scene *es, const struct scene *scene, int s
     c.mesh_of = xmalloc(2 * scene->n_materials + 2, sizeof *c.mesh_of, "meshes");
     for (size_t i = 0; i < 2 * scene->n_materials + 2; i++)
         c.mesh_of[i] = -1;
-    struct primitive_visitor v = {&c, add_sphere, add_triangle, add_quad, begin_shape};
+    struct primitive_visitor v = {&c, add_sphere, add_triangle, add_quad, begin_or_end_shape};
     geometry_visit(scene->geometry, &v);
-    report_shape(&c);
     xfree(c.mesh_of);
     xfree(c.cap_triangles);
     make_grey(es);
@@ -221,6 +224,53 @@ FILE *export_companion(const char *name, struct error *err)
     if (f != NULL)
         companions[n_companions++] = f;
     return f;
+}
+
+struct glossy_blend export_glossy_blend(const struct material *m)
+{
+    struct glossy_blend g;
+    if (m->kind == MATERIAL_SCHLICK) {
+        double r = m->roughness, b = 4.0 * r * (1.0 - r); /* schlick.c's weights */
+        g.w = b;
+        g.base_is_mirror = r < 0.5;
+        g.base = g.lobe = m->rho;
+        g.alpha_u = sqrt(r * m->isotropy);
+        g.alpha_v = sqrt(r / m->isotropy);
+        g.ggx = 1;
+        g.exact = m->isotropy == 1;
+        return g;
+    }
+    double w = fmax(m->rho_s.x, fmax(m->rho_s.y, m->rho_s.z));
+    g.w = fmin(fmax(w, 1e-6), 1.0 - 1e-6); /* both parts present: both divisions work */
+    g.base_is_mirror = 0;
+    g.base = vec3_scale(m->rho, 1.0 / (1.0 - g.w));
+    g.lobe = vec3_scale(m->rho_s, 1.0 / g.w);
+    if (m->kind == MATERIAL_WARD) {
+        g.alpha_u = m->alpha_x;
+        g.alpha_v = m->alpha_y;
+    } else {
+        g.alpha_u = g.alpha_v = sqrt(2.0 / (m->exponent + 2.0));
+    }
+    g.ggx = 0;
+    g.exact = 0;
+    return g;
+}
+
+const char *export_model_name(const struct material *m)
+{
+    static const char *const names[] = {"Lambert", "mirror", "glass", "Phong", "Ward",
+                                        "Schlick"};
+    return names[m->kind];
+}
+
+void export_name(FILE *f, const char *name)
+{
+    for (const char *c = name; *c != '\0'; c++)
+        fputc((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9') ||
+                      strchr(" _.#+", *c) != NULL
+                  ? *c
+                  : '_',
+              f);
 }
 
 void export_rgb(FILE *f, const char *separator, struct vec3 c)

@@ -80,6 +80,35 @@ int export_pbrt(FILE *f, const struct export_scene *es, struct error *err);
 int export_mitsuba(FILE *f, const struct export_scene *es, struct error *err);
 int export_blender(FILE *f, const struct export_scene *es, struct error *err);
 
+/* Phong, Ward and Schlick as Mitsuba and pbrt can build them: a blend, with weights 1 - w
+ * and w, of a base -- a Lambertian surface, or for Schlick's r < 1/2 a smooth mirror -- of
+ * reflectance `base` and a microfacet mirror (Fresnel 1) of reflectance `lobe` and rms
+ * slopes alpha_u, alpha_v along our shading frame's t and b; the blend's mean is the sum
+ * of the two parts.
+ *   Schlick (scene/schlick.c) is exactly such a sum: C a / pi or C c delta, plus C b times
+ *   a GGX lobe with alpha_u = sqrt(r p), alpha_v = sqrt(r / p) and Smith masking; so
+ *   w = b, both reflectances C. Exact when isotropic (p = 1): the targets orient an
+ *   anisotropic lobe by their own tangent frame.
+ *   Phong and Ward are rho / pi plus a lobe that is no microfacet model: the closest is a
+ *   Beckmann lobe of slopes sqrt(2 / (n + 2)) (Phong's exponent n, Walter et al. 2007,
+ *   Sec. 5.2) or Ward's alpha_x, alpha_y. w = the largest channel of rho_s keeps both
+ *   reflectances at most 1 where that is possible. Never exact. */
+struct glossy_blend {
+    double w;              /* the lobe's weight, in (0, 1]                   */
+    int base_is_mirror;    /* the base is a smooth mirror, not Lambertian   */
+    struct vec3 base;      /* the base's reflectance                        */
+    struct vec3 lobe;      /* the lobe's reflectance                        */
+    double alpha_u, alpha_v;
+    int ggx;               /* the lobe's distribution: 1 GGX, 0 Beckmann      */
+    int exact;             /* whether the blend is our model exactly         */
+};
+struct glossy_blend export_glossy_blend(const struct material *m);
+const char *export_model_name(const struct material *m); /* "Phong", "Ward", ... */
+
+/* Our material name in a comment: letters, digits and " _.#+" as they are, any other
+ * byte as '_' (an XML comment must not hold "--"). */
+void export_name(FILE *f, const char *name);
+
 /* A colour as the target reads it, with %.9g: enough digits to give back our doubles'
  * floats, which is what every target stores. */
 void export_rgb(FILE *f, const char *separator, struct vec3 c);

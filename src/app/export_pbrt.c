@@ -78,11 +78,48 @@ static int is_grey(struct vec3 c)
     return c.x == c.y && c.y == c.z;
 }
 
+/* A reflectance pbrt accepts: at most 1 in every channel. */
+static struct vec3 albedo(struct vec3 c)
+{
+    return vec3(fmin(c.x, 1.0), fmin(c.y, 1.0), fmin(c.z, 1.0));
+}
+
+/* Phong, Ward, Schlick: export_glossy_blend()'s two parts, mixed point by point. pbrt's
+ * conductor gets its Fresnel from the reflectance and its lobe is always GGX, so no
+ * such blend is exact here. */
+static void write_glossy(FILE *f, size_t i, const struct material *m)
+{
+    struct glossy_blend g = export_glossy_blend(m);
+    if (g.base_is_mirror)
+        fprintf(f, "MakeNamedMaterial \"m%zu-base\" \"string type\" \"conductor\" "
+                   "\"float roughness\" 0 \"rgb reflectance\" [", i);
+    else
+        fprintf(f, "MakeNamedMaterial \"m%zu-base\" \"string type\" \"diffuse\" "
+                   "\"rgb reflectance\" [", i);
+    export_rgb(f, " ", albedo(g.base));
+    fprintf(f, "]\nMakeNamedMaterial \"m%zu-lobe\" \"string type\" \"conductor\" "
+               "\"float uroughness\" [%.9g] \"float vroughness\" [%.9g]\n"
+               "    \"bool remaproughness\" false \"rgb reflectance\" [", i, g.alpha_u,
+            g.alpha_v);
+    export_rgb(f, " ", albedo(g.lobe));
+    fprintf(f, "]\nMakeNamedMaterial \"m%zu\" \"string type\" \"mix\" \"string materials\" "
+               "[\"m%zu-base\" \"m%zu-lobe\"] \"float amount\" [%.9g]\n", i, i, i, g.w);
+    export_note("pbrt: material \"%s\": pbrt has no %s model; written as a mix of a %s "
+                "surface and a GGX conductor (slopes %.3g, %.3g) with weight %.3g: the "
+                "highlight's shape%s differ", m->name, export_model_name(m),
+                g.base_is_mirror ? "mirror" : "Lambertian", g.alpha_u, g.alpha_v, g.w,
+                g.base.x > 1 || g.base.y > 1 || g.base.z > 1 ? ", its Fresnel and (clamped "
+                                                              "to 1) the base's colour"
+                                                            : " and its Fresnel");
+}
+
 /* "m<i>": our names may hold any printable byte, pbrt's strings not a quote. */
 static void write_material(FILE *f, const struct export_scene *es, size_t i)
 {
     const struct material *m = &es->materials[i];
-    fprintf(f, "# material %zu: \"%s\"\n", i, m->name);
+    fprintf(f, "# material %zu: ", i);
+    export_name(f, m->name);
+    fprintf(f, "\n");
     switch (m->kind) {
     case MATERIAL_LAMBERT:
         fprintf(f, "MakeNamedMaterial \"m%zu\" \"string type\" \"diffuse\" \"rgb reflectance\" [",
@@ -116,23 +153,8 @@ static void write_material(FILE *f, const struct export_scene *es, size_t i)
             export_note("pbrt: material \"%s\": pbrt's dielectric has no colour filter; "
                         "written as clear glass", m->name);
         break;
-    default: {
-        /* The closest pbrt model: a diffuse base under a rough dielectric coat. */
-        double alpha = m->kind == MATERIAL_PHONG ? sqrt(2.0 / (m->exponent + 2.0))
-                       : m->kind == MATERIAL_WARD ? sqrt(m->alpha_x * m->alpha_y)
-                                                  : m->roughness;
-        fprintf(f, "MakeNamedMaterial \"m%zu\" \"string type\" \"coateddiffuse\" "
-                   "\"rgb reflectance\" [", i);
-        export_rgb(f, " ", m->rho);
-        fprintf(f, "] \"float roughness\" [%.9g] \"bool remaproughness\" false\n", alpha);
-        export_note("pbrt: material \"%s\": pbrt has no %s model; written as coateddiffuse "
-                    "(reflectance %g %g %g under a dielectric coat of roughness %.3g): its "
-                    "highlight's colour, strength and shape differ",
-                    m->name,
-                    m->kind == MATERIAL_PHONG ? "Phong" : m->kind == MATERIAL_WARD ? "Ward"
-                                                                                  : "Schlick",
-                    m->rho.x, m->rho.y, m->rho.z, alpha);
-    }
+    default:
+        write_glossy(f, i, m);
     }
 }
 

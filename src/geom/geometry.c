@@ -617,6 +617,7 @@ void geometry_visit(const struct geometry *g, const struct primitive_visitor *v)
             const struct shape *s = &g->shapes[index];
             v->shape(v->context, s->ops->name, s->ops->approximation);
             s->ops->primitives(s->data, v);
+            v->shape(v->context, NULL, NULL);
         }
         }
     }

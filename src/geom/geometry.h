@@ -31,7 +31,8 @@ struct primitive_visitor {
     void (*triangle)(void *context, const struct vec3 v[3], const struct vec3 *normals,
                      int material);
     void (*quad)(void *context, struct vec3 p0, struct vec3 e1, struct vec3 e2, int material);
-    /* Called before a procedural shape's primitives: its ops' name and approximation. */
+    /* Called before a procedural shape's primitives with its ops' name and approximation,
+     * and after them with both NULL. */
     void (*shape)(void *context, const char *name, const char *approximation);
 };
 

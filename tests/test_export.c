@@ -1,0 +1,311 @@
+/*
+ * tests/test_export.c -- the export room: `photon export` to pbrt-v4 and Mitsuba 3, read
+ * back as text against values worked out by hand from the conventions in app/export_*.c
+ * (the field of view of pbrt's shorter axis, intensity Phi / (4 pi), one-sided emitters,
+ * the mirror's mix, the glass filter, the quads' triangles, the camera's handedness), a
+ * round trip of Mitsuba's mesh files through our own OBJ reader, and the failures: exit
+ * status 2, a message, no output file. The Blender writer has its own tests.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "files.h"
+#include "tests.h"
+
+#define NAME_BYTES 256
+#define ARGS_BYTES 1024
+
+/* Every primitive, material and light kind once. A 20 x 40 image: taller than wide, so
+ * pbrt's "fov" (the shorter axis's, here horizontal) differs from ours (vertical, 30). */
+static const char every_kind[] =
+    "image 20 40\n"
+    "camera 0 1 -5  0 1 0  0 1 0  30\n"
+    "background 0.1 0.2 0.3\n"
+    "material white lambert 0.725 0.71 0.68\n"
+    "material half mirror 0.5 0.5 0.5\n"
+    "material tinted glass 1.5 0.8 0.9 1\n"
+    "material shiny phong 0.3 0.3 0.3  0.5 0.5 0.5  30\n"
+    "material brushed ward 0.25 0.245 0.235  0.5 0.5 0.5  0.02 0.08\n"
+    "material satin schlick 0.6 0.6 0.6  0.3\n"
+    "material glow lambert 0.5 0.5 0.5 emit 2 3 4 twosided\n"
+    "quad 0 0 0  4 0 0  4 0 2  0 0 2  white\n"
+    "smooth_triangle 0 0 0  1 0 0  0 1 0  0 0 1  0 0 1  0 0 1  shiny\n"
+    "triangle 0 0 3  1 0 3  0 1 3  brushed\n"
+    "triangle 0 0 4  1 0 4  0 1 4  satin\n"
+    "triangle 0 0 5  1 0 5  0 1 5  glow\n"
+    "sphere 1 2 3 0.5 tinted\n"
+    "sphere -1 2 3 0.25 half\n"
+    "sphereflake 0 3 0 0.5 1  0 1 0  white\n"
+    "heightfield -1 0 -1  2 3 2  0.5 1  0.1 7  white\n"
+    "light point 0 4 0  100 100 40\n"
+    "light quad -1 3 -1  1 3 -1  1 3 1  -1 3 1  17 12 4\n";
+
+struct exported {
+    char scene[NAME_BYTES], out[NAME_BYTES], log[NAME_BYTES];
+    char *text; /* the output's text, NULL when it was not written */
+    int status;
+};
+
+/* Writes scene_text to a temporary scene, exports it with the given words and reads the
+ * output back. out_suffix: ".pbrt" or ".xml". */
+static void export_scene(struct exported *e, const char *what, const char *scene_text,
+                         const char *words, const char *out_suffix)
+{
+    char args[ARGS_BYTES];
+    temp_name(e->scene, sizeof e->scene, "export", what);
+    strncat(e->scene, ".scene", sizeof e->scene - strlen(e->scene) - 1);
+    temp_name(e->out, sizeof e->out, "export", what);
+    strncat(e->out, out_suffix, sizeof e->out - strlen(e->out) - 1);
+    temp_name(e->log, sizeof e->log, "export", what);
+    strncat(e->log, ".log", sizeof e->log - strlen(e->log) - 1);
+    write_text_file(e->scene, scene_text);
+    snprintf(args, sizeof args, "%s %s -o %s", words, e->scene, e->out);
+    e->status = photon_logged("export", args, e->log);
+    e->text = read_text_file(e->out);
+}
+
+static void exported_free(struct exported *e)
+{
+    free(e->text);
+    remove(e->scene);
+    remove(e->out);
+    remove(e->log);
+}
+
+static int has(const struct exported *e, const char *text)
+{
+    return e->text != NULL && strstr(e->text, text) != NULL;
+}
+
+/* Whether a appears in the output before b (both present). */
+static int before(const struct exported *e, const char *a, const char *b)
+{
+    const char *pa = e->text != NULL ? strstr(e->text, a) : NULL;
+    const char *pb = e->text != NULL ? strstr(e->text, b) : NULL;
+    return pa != NULL && pb != NULL && pa < pb;
+}
+
+static void test_pbrt_camera_and_film(struct check *t)
+{
+    struct exported e;
+    export_scene(&e, "camera", every_kind, "--format pbrt --spp 37", ".pbrt");
+    REQUIRE(t, e.status == 0 && e.text != NULL);
+    /* pbrt's LookAt puts up x dir on the right: without the flip, a mirror image. */
+    CHECK(t, before(&e, "Scale -1 1 1\n", "LookAt 0 1 -5  0 1 0  0 1 0\n"));
+    CHECK(t, before(&e, "LookAt", "WorldBegin"));
+    /* 2 atan(tan(15 deg) x 20 / 40) = 15.2614804248601 degrees, the horizontal field. */
+    CHECK(t, has(&e, "\"float fov\" [15.2614804248601]"));
+    CHECK(t, has(&e, "\"integer pixelsamples\" [37]"));
+    CHECK(t, has(&e, "PixelFilter \"box\" \"float xradius\" [0.5] \"float yradius\" [0.5]"));
+    CHECK(t, has(&e, "\"integer xresolution\" [20] \"integer yresolution\" [40]"));
+    CHECK(t, has(&e, "\"string sensor\" \"cie1931\" \"float iso\" [100]"));
+    exported_free(&e);
+
+    /* A wide image: the shorter axis is the vertical one, whose field is ours. */
+    char wide[sizeof every_kind];
+    strcpy(wide, every_kind);
+    memcpy(strstr(wide, "image 20 40"), "image 40 20", 11);
+    export_scene(&e, "wide", wide, "--format pbrt", ".pbrt");
+    CHECK(t, has(&e, "\"float fov\" [30]"));
+    CHECK(t, has(&e, "\"integer pixelsamples\" [1024]"));
+    exported_free(&e);
+}
+
+static void test_pbrt_lights(struct check *t)
+{
+    struct exported e;
+    export_scene(&e, "lights", every_kind, "--format pbrt", ".pbrt");
+    REQUIRE(t, e.status == 0 && e.text != NULL);
+    /* Phi / (4 pi): 100 / 4 pi = 7.95774715459477, 40 / 4 pi = 3.18309886183791. */
+    CHECK(t, has(&e, "LightSource \"point\" \"point3 from\" [0 4 0] "
+                     "\"rgb I\" [7.95774715 7.95774715 3.18309886]"));
+    /* The area light: its radiance, one-sided; the glowing material two-sided. */
+    CHECK(t, has(&e, "AreaLightSource \"diffuse\" \"rgb L\" [17 12 4]\n"));
+    CHECK(t, has(&e, "AreaLightSource \"diffuse\" \"rgb L\" [2 3 4] \"bool twosided\" true"));
+    CHECK(t, has(&e, "LightSource \"infinite\" \"rgb L\" [0.1 0.2 0.3]"));
+    exported_free(&e);
+}
+
+static void test_pbrt_materials_and_shapes(struct check *t)
+{
+    struct exported e;
+    export_scene(&e, "materials", every_kind, "--format pbrt", ".pbrt");
+    REQUIRE(t, e.status == 0 && e.text != NULL);
+    CHECK(t, has(&e, "\"string type\" \"diffuse\" \"rgb reflectance\" [0.725 0.71 0.68]"));
+    /* A mirror of 0.5: a perfect conductor half of the time, black the other half. */
+    CHECK(t, has(&e, "\"m1-mirror\" \"string type\" \"conductor\" \"rgb reflectance\" [1 1 1]"));
+    CHECK(t, has(&e, "\"string materials\" [\"m1-black\" \"m1-mirror\"] \"float amount\" [0.5]"));
+    CHECK(t, has(&e, "\"m2\" \"string type\" \"dielectric\" \"float eta\" [1.5]"));
+    /* Schlick's r = 0.3: glossy weight 4 r (1 - r) = 0.84 over a mirror, slope sqrt(0.3). */
+    CHECK(t, has(&e, "\"m5-base\" \"string type\" \"conductor\""));
+    CHECK(t, has(&e, "\"float uroughness\" [0.547722558]"));
+    CHECK(t, has(&e, "[\"m5-base\" \"m5-lobe\"] \"float amount\" [0.84]"));
+    /* Phong's n = 30: slope sqrt(2 / 32) = 0.25; weight 0.5 doubles both parts. */
+    CHECK(t, has(&e, "\"m3-base\" \"string type\" \"diffuse\" \"rgb reflectance\" [0.6 0.6 0.6]"));
+    CHECK(t, has(&e, "\"float uroughness\" [0.25] \"float vroughness\" [0.25]"));
+    /* Spheres as spheres, the quad as two triangles keeping its front side. */
+    CHECK(t, has(&e, "  Translate 1 2 3\n  Shape \"sphere\" \"float radius\" [0.5]"));
+    CHECK(t, has(&e, "      0 0 0\n      4 0 0\n      4 0 2\n      0 0 0\n      4 0 2\n"
+                     "      0 0 2\n"));
+    CHECK(t, has(&e, "\"normal N\" [\n      0 0 1\n      0 0 1\n      0 0 1\n    ]"));
+    /* What pbrt cannot do is said, and what the shapes became. */
+    CHECK(t, file_contains(e.log, "\"tinted\": pbrt's dielectric has no colour filter"));
+    CHECK(t, file_contains(e.log, "\"shiny\": pbrt has no Phong model"));
+    CHECK(t, file_contains(e.log, "\"brushed\": pbrt has no Ward model"));
+    CHECK(t, file_contains(e.log, "sphereflake: written as its 10 spheres"));
+    CHECK(t, file_contains(e.log, "heightfield: written as its 8 triangles"));
+    exported_free(&e);
+}
+
+/* --channel G: every colour the green one, a constant spectrum in pbrt. */
+static void test_channel(struct check *t)
+{
+    struct exported e;
+    export_scene(&e, "channel", every_kind, "--format pbrt --channel G", ".pbrt");
+    REQUIRE(t, e.status == 0 && e.text != NULL);
+    CHECK(t, has(&e, "\"rgb reflectance\" [0.71 0.71 0.71]"));
+    CHECK(t, has(&e, "\"rgb L\" [12 12 12]\n"));
+    CHECK(t, has(&e, "\"rgb I\" [7.95774715 7.95774715 7.95774715]"));
+    CHECK(t, has(&e, "LightSource \"infinite\" \"rgb L\" [0.2 0.2 0.2]"));
+    CHECK(t, !has(&e, "0.725"));
+    exported_free(&e);
+}
+
+static void test_mitsuba(struct check *t)
+{
+    struct exported e;
+    export_scene(&e, "mitsuba", every_kind, "--format mitsuba --spp 8", ".xml");
+    REQUIRE(t, e.status == 0 && e.text != NULL);
+    CHECK(t, has(&e, "<string name=\"fov_axis\" value=\"y\"/>\n"
+                     "        <float name=\"fov\" value=\"30\"/>"));
+    CHECK(t, has(&e, "<lookat origin=\"0, 1, -5\" target=\"0, 1, 0\" up=\"0, 1, 0\"/>"));
+    CHECK(t, has(&e, "<integer name=\"sample_count\" value=\"8\"/>"));
+    CHECK(t, has(&e, "<rfilter type=\"box\"/>"));
+    CHECK(t, has(&e, "<rgb name=\"intensity\" value=\"7.95774715, 7.95774715, 3.18309886\"/>"));
+    /* Reflecting materials on both sides; glass with its filter 1 - absorption. */
+    CHECK(t, has(&e, "<bsdf type=\"twosided\" id=\"m0\">\n        <bsdf type=\"diffuse\">"));
+    CHECK(t, has(&e, "<bsdf type=\"dielectric\" id=\"m2\">"));
+    CHECK(t, has(&e, "<rgb name=\"specular_transmittance\" value=\"0.8, 0.9, 1\"/>"));
+    CHECK(t, has(&e, "<string name=\"material\" value=\"none\"/>\n"
+                     "            <rgb name=\"specular_reflectance\" value=\"0.5, 0.5, 0.5\"/>"));
+    /* Schlick's isotropic blend is exact: GGX, no note; Ward's is not. */
+    CHECK(t, has(&e, "<string name=\"distribution\" value=\"ggx\"/>"));
+    CHECK(t, !file_contains(e.log, "\"satin\""));
+    CHECK(t, file_contains(e.log, "mitsuba: material \"brushed\": Mitsuba has no Ward model"));
+    CHECK(t, file_contains(e.log, "\"glow\": Mitsuba's area emitters are one-sided"));
+    CHECK(t, has(&e, "<point name=\"center\" x=\"1\" y=\"2\" z=\"3\"/>"));
+
+    /* The white quad's mesh: its two triangles, in our winding. */
+    const char *base = strrchr(e.out, '/') + 1;
+    char mesh[NAME_BYTES], line[NAME_BYTES];
+    snprintf(mesh, sizeof mesh, "%.*s-mesh0.obj", (int)(strlen(e.out) - 4), e.out);
+    snprintf(line, sizeof line, "<string name=\"filename\" value=\"%.*s-mesh0.obj\"/>",
+             (int)(strlen(base) - 4), base);
+    CHECK(t, has(&e, line));
+    CHECK(t, file_contains(mesh, "v 0 0 0\nv 4 0 0\nv 4 0 2\nv 0 0 0\nv 4 0 2\nv 0 0 2\n"));
+    CHECK(t, file_contains(mesh, "f 1 2 3\nf 4 5 6\n"));
+
+    /* Round trip: the mesh file, read by our OBJ reader and exported again, comes back
+     * with the same vertices and faces. */
+    char again[2 * NAME_BYTES];
+    snprintf(again, sizeof again, "image 20 40\ncamera 0 1 -5  0 1 0  0 1 0  30\n"
+                                  "material white lambert 0.725 0.71 0.68\nobj %s white\n",
+             mesh);
+    struct exported r;
+    export_scene(&r, "again", again, "--format mitsuba", ".xml");
+    char mesh_again[NAME_BYTES];
+    snprintf(mesh_again, sizeof mesh_again, "%.*s-mesh0.obj", (int)(strlen(r.out) - 4), r.out);
+    CHECK(t, r.status == 0);
+    char *first = read_text_file(mesh), *second = read_text_file(mesh_again);
+    CHECK(t, first != NULL && second != NULL && strcmp(first, second) == 0);
+    free(first);
+    free(second);
+    for (int k = 0; k < 8; k++) {
+        snprintf(mesh, sizeof mesh, "%.*s-mesh%d.obj", (int)(strlen(e.out) - 4), e.out, k);
+        remove(mesh);
+    }
+    remove(mesh_again);
+    exported_free(&r);
+    exported_free(&e);
+}
+
+/* Every shipped scene exports in every text format (the NFF one through the same path,
+ * its cone as facets, said on stderr). */
+static void test_shipped_scenes(struct check *t)
+{
+    static const char *const scenes[] = {"scenes/cornell.scene", "scenes/every-primitive.nff",
+                                         "scenes/cardioid-ring.scene"};
+    char out[NAME_BYTES], log[NAME_BYTES], args[ARGS_BYTES];
+    temp_name(out, sizeof out, "export", "shipped.pbrt");
+    temp_name(log, sizeof log, "export", "shipped.log");
+    for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
+        snprintf(args, sizeof args, "--format pbrt %s -o %s", scenes[i], out);
+        CHECK(t, photon_logged("export", args, log) == 0);
+        CHECK(t, file_contains(out, "WorldBegin"));
+        if (i == 1)
+            CHECK(t, file_contains(log, "cone: no exact equivalent; written as 128 flat facets"));
+    }
+    remove(out);
+    remove(log);
+}
+
+/* words with every "OUT" replaced by out and every "BAD" by bad, into args. */
+static void substitute(char *args, size_t size, const char *words, const char *out,
+                       const char *bad)
+{
+    size_t n = 0;
+    while (*words != '\0' && n + 1 < size) {
+        const char *with = strncmp(words, "OUT", 3) == 0 ? out
+                           : strncmp(words, "BAD", 3) == 0 ? bad
+                                                           : NULL;
+        if (with != NULL) {
+            n += (size_t)snprintf(args + n, size - n, "%s", with);
+            words += 3;
+        } else {
+            args[n++] = *words++;
+        }
+    }
+    args[n < size ? n : size - 1] = '\0';
+}
+
+/* Bad input: exit status 2, a message on stderr, and no output file. */
+static void test_failures(struct check *t)
+{
+    static const struct {
+        const char *args, *message;
+    } cases[] = {
+        {"--format povray scenes/cornell.scene -o OUT", "--format 'povray': expected pbrt"},
+        {"--format pbrt scenes/cornell.scene -o /nonexistent-dir/x.pbrt", "nonexistent-dir"},
+        {"--format pbrt scenes/no-such.scene -o OUT", "no-such.scene"},
+        {"--format pbrt scenes/cornell.scene -o OUT --channel Y", "--channel 'Y'"},
+        {"--format pbrt scenes/cornell.scene -o OUT --spp 0", "--spp '0'"},
+        {"--format pbrt scenes/cornell.scene", "needs --format, a scene and -o"},
+        {"--format mitsuba BAD -o OUT", ":2: "},
+    };
+    char out[NAME_BYTES], log[NAME_BYTES], bad[NAME_BYTES], args[ARGS_BYTES];
+    temp_name(out, sizeof out, "export", "failed.xml");
+    temp_name(log, sizeof log, "export", "failed.log");
+    temp_name(bad, sizeof bad, "export", "bad.scene");
+    write_text_file(bad, "image 8 8\nsphere 0 0 0 1 undefined\n");
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        substitute(args, sizeof args, cases[i].args, out, bad);
+        CHECK(t, photon_logged("export", args, log) == 2);
+        CHECK(t, file_contains(log, cases[i].message));
+        CHECK(t, !file_exists(out));
+    }
+    remove(bad);
+    remove(log);
+}
+
+void test_export(struct check *t)
+{
+    RUN_TEST(t, test_pbrt_camera_and_film);
+    RUN_TEST(t, test_pbrt_lights);
+    RUN_TEST(t, test_pbrt_materials_and_shapes);
+    RUN_TEST(t, test_channel);
+    RUN_TEST(t, test_mitsuba);
+    RUN_TEST(t, test_shipped_scenes);
+    RUN_TEST(t, test_failures);
+}
