@@ -43,18 +43,10 @@
  * this is most of the speed; the aliasing the merge leaves (one point stands for a
  * pixel's part of a surface) is of the photons' smooth light only.
  *
- * The initial radius (--footprints, --fit-radius). R0 is PPM_DEFAULT_FOOTPRINTS times the
- * width a pixel covers at the hit point's distance along its eye path, d 2 tan(fov / 2) /
- * height (the paper's "footprint of the pixel" is one). It scales with the scene
- * (millimetres or kilometres alike) and is the hit point's own, so a crop starts with the
- * radii the whole image has. Mirrors and lenses change a pixel's real footprint; this
- * ignores that, which only moves the start. Noise falls as the disc holds more photons,
- * bias grows where the light changes within it: where a wall meets the surface (a corner)
- * or the surface ends (an open edge), no photon lands in the part of the disc beyond it,
- * though pi R^2 counts it. So R0 is shortened until the disc lies on its surface: to the
- * nearest wall that rays along the tangent plane find, then halved until a surface lies
- * under the rim of a disc twice as wide (the light falls off towards an open edge over a
- * disc's width). The paper leaves R0 to the user.
+ * The initial radius (--footprints, --fit-radius). R0 is PPM_DEFAULT_FOOTPRINTS widths of
+ * a pixel at the hit point's distance along its eye path (the paper's "footprint of the
+ * pixel" is one; it leaves R0 to the user), shortened until the disc lies on its surface,
+ * clear of walls and open edges (ppm_radius.c says why and how).
  *
  * The caustic estimate (--caustic-footprints). Caustic photons are sparse and their light
  * sharp; a disc wide enough for the smooth indirect light blurs them. As Jensen's caustic
@@ -80,16 +72,12 @@
 #include <time.h>
 
 #include "../base/alloc.h"
-#include "../photon/disc_coverage.h"
 #include "../photon/hit_points.h"
 #include "../photon/trace.h"
 #include "ppm_direct.h"
+#include "ppm_radius.h"
 #include "surface.h"
 
-#define PPM_WALL_PROBES 8   /* tangent directions searched for a wall across the disc */
-#define PPM_WALL_COS 0.5    /* a wall's normal is more than 60 degrees from the surface's */
-#define PPM_WALL_RISE 0.125 /* wall probes run this part of R0 above the tangent plane */
-#define PPM_WALL_FLOOR 0.25 /* the shortest fitted initial radius, in footprints     */
 #define PPM_MERGE_COS 0.9    /* hit points merge within 26 degrees (same_hit_point())   */
 #define PPM_ROULETTE_DEPTH 8 /* eye-path bounces before Russian roulette (take_lobe())  */
 /* The photons that reach hit points when a light sample takes the direct light: those
@@ -160,49 +148,6 @@ struct eye_path {
                          takes the direct light's samples              */
 };
 
-/* The radius r0, shortened to the nearest wall across the hit point's disc:
- * PPM_WALL_PROBES rays along the surface's tangent plane, each as long as the radius so
- * far. A wall is a surface turned more than 60 degrees from this one; a surface that
- * curves gently up to meet the ray (the inside of a sphere) is the same surface, whose
- * photons the disc rightly counts. */
-static double disc_clear_of_walls(const struct ppm *ppm, const struct surface *s, double r0)
-{
-    struct vec3 t, b;
-    vec3_frame(s->ng, &t, &b);
-    struct vec3 origin = vec3_madd(offset_origin(s->p, s->ng), s->ng, PPM_WALL_RISE * r0);
-    double r = r0;
-    for (int k = 0; k < PPM_WALL_PROBES; k++) {
-        double phi = 2 * PI * k / PPM_WALL_PROBES;
-        struct vec3 along = vec3_add(vec3_scale(t, cos(phi)), vec3_scale(b, sin(phi)));
-        struct hit hit;
-        ppm->counters->rays++;
-        if (scene_intersect(ppm->scene, make_ray(origin, along), r, &hit) &&
-            fabs(vec3_dot(hit.ng, s->ng)) < PPM_WALL_COS)
-            r = hit.t;
-    }
-    return r;
-}
-
-/* R0 of a hit point's global estimate at s, seen at the given distance along its eye
- * path: --radius if given; else ps->footprints pixel footprints, and with ps->fit_radius
- * shortened until the disc lies on the surface: clear of walls (disc_clear_of_walls())
- * and, halving, of open edges (disc_rim_covered()), never below PPM_WALL_FLOOR of a
- * footprint. */
-static double initial_radius(const struct ppm *ppm, const struct surface *s, double distance)
-{
-    if (ppm->ps->radius > 0)
-        return ppm->ps->radius;
-    double footprint = distance * ppm->footprint_per_distance;
-    double r = ppm->ps->footprints * footprint;
-    if (!ppm->ps->fit_radius)
-        return r;
-    double least = PPM_WALL_FLOOR * footprint;
-    r = disc_clear_of_walls(ppm, s, r);
-    while (r > least && !disc_rim_covered(ppm->scene, s->p, s->ng, 2 * r))
-        r *= 0.5;
-    return fmax(r, least);
-}
-
 /* R0 of a hit point's caustic estimate, whose global one starts at global_r0: --radius
  * if given; else ps->caustic_footprints footprints, at most global_r0 when that was fitted
  * to the surface (a smaller disc lies on it too); 0 (no caustic estimate: caustic photons
@@ -260,7 +205,8 @@ static void store_hit_point(struct ppm *ppm, const struct surface *s,
     hp->material = s->material;
     hp->pixel = path->pixel;
     hp->weight = weight;
-    hp->global = empty_estimate(initial_radius(ppm, s, path->distance));
+    hp->global = empty_estimate(ppm_initial_radius(ppm->scene, ppm->ps, ppm->counters, s,
+                                                   path->distance));
     hp->caustic = empty_estimate(caustic_radius(ppm, hp->global.radius, path->distance));
 }
 
@@ -384,28 +330,14 @@ static void ray_tracing_pass(struct ppm *ppm)
 
 /* ---- 4.2 Photon tracing passes ------------------------------------------------------ */
 
-/* A photon within reach of hit point i: tau_M += f_r(x, w, w_p) Phi'_p and M += 1 (Eq. 11)
- * for the estimate it belongs to (the caustic one for a caustic photon, if the hit point
- * has one; else the global one), if it lies within that estimate's disc and, with the
- * facing test, the two surfaces do not face apart (a photon on the far side of a thin
- * wall, or on the back of the hit point's own surface). A photon on a wall at right
- * angles is not counted either, which is why R0 stops at walls. No cosine: it is in the
- * photon's flux already. */
+/* A photon within reach of hit point i: Eq. 11 for the estimate it belongs to
+ * (hit_point_add_photon()): the caustic one for a caustic photon, if the hit points
+ * keep one. */
 static void add_flux(void *context, size_t i)
 {
     struct ppm *ppm = context;
-    struct hit_point *hp = &ppm->points[i];
-    const struct photon_event *photon = ppm->photon;
-    if (ppm->ps->facing_test && vec3_dot(hp->n, photon->normal) <= 0)
-        return;
-    struct progressive_estimate *e =
-        photon->kind == PHOTON_CAUSTIC && ppm->ps->caustic_footprints > 0 ? &hp->caustic
-                                                                          : &hp->global;
-    if (vec3_length2(vec3_sub(photon->position, hp->x)) > e->radius * e->radius)
-        return; /* within the hit point's reach, not within this estimate's disc */
-    struct vec3 f = brdf_eval(hp->material, &hp->frame, hp->wo, photon->wi);
-    e->tau = vec3_add(e->tau, vec3_mul(f, vec3_scale(photon->power, ppm->unnormalise)));
-    e->m_photons++;
+    hit_point_add_photon(&ppm->points[i], ppm->photon, ppm->unnormalise, ppm->ps->facing_test,
+                         ppm->ps->caustic_footprints > 0);
 }
 
 /* The tracer's sink: each stored photon goes to the hit points around it, then is gone. */
@@ -475,7 +407,7 @@ struct vec3 ppm_corrected_flux(struct vec3 tau_n_plus_m, double n, double m, dou
 
 /* After a pass: Eq. 12, Eq. 9 and Eq. 7, in that order, since all three use the N and M
  * of the pass that just ended. */
-static void update_estimate(struct progressive_estimate *e, double alpha)
+void ppm_update_estimate(struct progressive_estimate *e, double alpha)
 {
     double m = (double)e->m_photons;
     e->tau = ppm_corrected_flux(e->tau, e->n_photons, m, alpha);
@@ -487,8 +419,8 @@ static void update_estimate(struct progressive_estimate *e, double alpha)
 static void progressive_update(struct ppm *ppm)
 {
     for (size_t i = 0; i < ppm->n_points; i++) {
-        update_estimate(&ppm->points[i].global, ppm->ps->alpha);
-        update_estimate(&ppm->points[i].caustic, ppm->ps->alpha);
+        ppm_update_estimate(&ppm->points[i].global, ppm->ps->alpha);
+        ppm_update_estimate(&ppm->points[i].caustic, ppm->ps->alpha);
     }
     hit_point_tree_refit(&ppm->tree); /* the discs shrank: tighten the boxes */
 }

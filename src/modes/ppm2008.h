@@ -28,6 +28,7 @@
                                                ray may leave a hit point of ~380 bytes   */
 
 struct hit_point;
+struct progressive_estimate;
 
 /* Sees the hit points after every pass's update (Eq. 7, 9, 12), e.g. to follow R(x) and
  * N(x) as the paper's Fig. 4 does. */
@@ -92,6 +93,10 @@ double ppm_reduced_radius(double r, double n, double m, double alpha);
 
 /* Eq. 12: tau <- (tau_N + tau_M) (N + alpha M) / (N + M); tau_n_plus_m itself when M = 0. */
 struct vec3 ppm_corrected_flux(struct vec3 tau_n_plus_m, double n, double m, double alpha);
+
+/* After a pass, one estimate's tau_N + tau_M (in e->tau) and M (e->m_photons): Eq. 12,
+ * Eq. 9 and Eq. 7 in turn, then M = 0 for the next pass. */
+void ppm_update_estimate(struct progressive_estimate *e, double alpha);
 
 /* Eq. 13: L = tau / (pi R^2 N_emitted); zero when R or N_emitted is zero (nothing can
  * have been found yet). */

@@ -16,6 +16,7 @@
 #include <stdlib.h>
 
 #include "../base/alloc.h"
+#include "trace.h"
 
 #define HIT_POINT_LEAF 8 /* points in a leaf; measured on the Cornell box: 4, 8 and 16 are
                             within 5% of each other, 1 (no leaves) is 1.5x slower */
@@ -205,4 +206,18 @@ void hit_point_tree_free(struct hit_point_tree *tree)
     tree->place = NULL;
     tree->nodes = NULL;
     tree->n = 0;
+}
+
+void hit_point_add_photon(struct hit_point *hp, const struct photon_event *photon,
+                          double unnormalise, int facing_test, int caustic_apart)
+{
+    if (facing_test && vec3_dot(hp->n, photon->normal) <= 0)
+        return;
+    struct progressive_estimate *e =
+        photon->kind == PHOTON_CAUSTIC && caustic_apart ? &hp->caustic : &hp->global;
+    if (vec3_length2(vec3_sub(photon->position, hp->x)) > e->radius * e->radius)
+        return; /* within the hit point's reach, not within this estimate's disc */
+    struct vec3 f = brdf_eval(hp->material, &hp->frame, hp->wo, photon->wi);
+    e->tau = vec3_add(e->tau, vec3_mul(f, vec3_scale(photon->power, unnormalise)));
+    e->m_photons++;
 }
