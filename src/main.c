@@ -27,6 +27,7 @@
 #include "modes/photons.h"
 #include "modes/ppm2008.h"
 #include "modes/pt.h"
+#include "modes/sppm2009.h"
 
 /* What one render command holds; released by finish_run() whatever happened. */
 struct run {
@@ -38,7 +39,7 @@ struct run {
     struct render_counters counters;
     struct render_result result;
     struct photon_stats photon_stats; /* --mode photons only */
-    struct ppm_stats ppm_stats;       /* --mode 2008 only */
+    struct ppm_stats ppm_stats;       /* --mode 2008 and 2009 only */
     struct jensen1994_stats j94_stats; /* --mode 1994 only */
     struct jensen1996_stats j96_stats; /* --mode 1996 only */
     struct global_work work;           /* the photon modes' maps and cache (and 1994's
@@ -268,15 +269,16 @@ static void print_stats(const struct run *run)
     int spp = c->passes < run->rs.spp ? c->passes : run->rs.spp;
     fprintf(stderr, "width=%d\nheight=%d\nspp=%d\nseed=%llu\n", scene->width, scene->height,
             spp, (unsigned long long)run->o.seed);
-    if (run->o.mode != MODE_PPM2008)
+    int progressive = run->o.mode == MODE_PPM2008 || run->o.mode == MODE_SPPM2009;
+    if (!progressive)
         fprintf(stderr, "specular_spp=%d\nspecular_pixels=%zu\n",
                 c->specular_pixels > 0 ? c->passes : run->rs.specular_spp, c->specular_pixels);
     double pixels = (double)(run->rs.x1 - run->rs.x0) * (double)(run->rs.y1 - run->rs.y0);
-    if (run->o.mode != MODE_PPM2008)
+    if (!progressive)
         fprintf(stderr, "samples_per_pixel=%.3f\n", (double)c->samples / pixels);
     if (run->o.mode == MODE_PHOTONS)
         print_photon_stats(&run->photon_stats);
-    if (run->o.mode == MODE_PPM2008)
+    if (progressive)
         print_ppm_stats(&run->ppm_stats);
     if (run->o.mode == MODE_JENSEN1994)
         print_jensen1994_stats(&run->j94_stats);
@@ -352,6 +354,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         return render_jensen1996(run->scene, &run->rs, &js, want_variance, &run->counters,
                                  &run->j96_stats, err);
     case MODE_PPM2008:
+    case MODE_SPPM2009:
         pp.photons_per_pass = (size_t)run->o.photons_per_pass;
         pp.passes = run->o.passes;
         pp.alpha = run->o.alpha;
@@ -366,6 +369,8 @@ static struct render_result render_mode(struct run *run, struct error *err)
         pp.snapshot_every = run->o.checkpoint;
         pp.report = checkpoint;
         pp.snapshot = run->o.checkpoint > 0 ? &snapshot : NULL;
+        if (run->o.mode == MODE_SPPM2009)
+            return render_sppm(run->scene, &run->rs, &pp, &run->counters, &run->ppm_stats);
         return render_ppm(run->scene, &run->rs, &pp, &run->counters, &run->ppm_stats);
     case MODE_DIRECT:
         break;

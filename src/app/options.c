@@ -17,6 +17,7 @@
 #include "../modes/jensen1996.h"
 #include "../modes/photons.h"
 #include "../modes/ppm2008.h"
+#include "../modes/sppm2009.h"
 #include "../modes/render.h"
 #include "../photon/trace.h"
 #include "option_values.h"
@@ -48,13 +49,16 @@ struct option_spec {
 #define FOR_1994 (1u << MODE_JENSEN1994)
 #define FOR_1996 (1u << MODE_JENSEN1996)
 #define FOR_2008 (1u << MODE_PPM2008)
-#define FOR_ALL (FOR_DIRECT | FOR_PT | FOR_PHOTONS | FOR_1994 | FOR_1996 | FOR_2008)
+#define FOR_2009 (1u << MODE_SPPM2009)
+#define FOR_ALL (FOR_DIRECT | FOR_PT | FOR_PHOTONS | FOR_1994 | FOR_1996 | FOR_2008 | FOR_2009)
 #define FOR_PHOTON_MAPS (FOR_PHOTONS | FOR_1994 | FOR_1996) /* the modes that keep maps */
-#define FOR_SAMPLES (FOR_ALL & ~FOR_2008) /* pixels that are means of independent samples */
+#define FOR_PROGRESSIVE (FOR_2008 | FOR_2009)
+#define FOR_SAMPLES (FOR_ALL & ~FOR_PROGRESSIVE) /* pixels that are means of independent
+                                                    samples */
 
 static const struct option_spec specs[] = {
     {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME",
-     "rendering mode: direct, pt, photons, 1994, 1996 or 2008 (default direct)", FOR_ALL},
+     "rendering mode: direct, pt, photons, 1994, 1996, 2008 or 2009 (default direct)", FOR_ALL},
     {"--quality", OPT_QUALITY, FIELD(quality), 0, 0, "NAME",
      "preview, default or reference: the mode's preset of options (listed below), applied "
      "before the other options given (default default)", FOR_ALL},
@@ -67,7 +71,7 @@ static const struct option_spec specs[] = {
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)", FOR_ALL},
     {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N",
      "camera samples per pixel (default 16; 1994: 64; 1996: 128; 2008: eye rays per pixel, "
-     "default 16)", FOR_ALL},
+     "default 16)", FOR_ALL & ~FOR_2009},
     {"--specular-spp", OPT_INT, FIELD(specular_spp), 1, MAX_SPP, "N",
      "camera samples of a pixel in which the camera sees a light through mirrors or glass, "
      "at least --spp (default: --spp; 1994, 1996: 64 x --spp)", FOR_SAMPLES},
@@ -185,25 +189,26 @@ static const struct option_spec specs[] = {
     {"--no-projection-maps", OPT_FLAG, FIELD(projection_maps), 0, 0, "",
      "emit photons into all directions instead of through projection maps", FOR_1994},
     {"--passes", OPT_INT, FIELD(passes), 1, MAX_PASSES, "N",
-     "photon passes (default 144; --time-limit may stop sooner)", FOR_2008},
+     "photon passes (default 144; 2009: 256, each with one new eye path a pixel; "
+     "--time-limit may stop sooner)", FOR_PROGRESSIVE},
     {"--photons-per-pass", OPT_INT, FIELD(photons_per_pass), 1, MAX_PHOTONS, "N",
-     "photons traced in each pass (default 100000)", FOR_2008},
+     "photons traced in each pass (default 100000; 2009: 50000)", FOR_PROGRESSIVE},
     {"--alpha", OPT_REAL, FIELD(alpha), 0, 1, "A",
-     "fraction of new photons kept, 0 < A < 1 (Eq. 7; default 0.7)", FOR_2008},
+     "fraction of new photons kept, 0 < A < 1 (Eq. 7; default 0.7)", FOR_PROGRESSIVE},
     {"--radius", OPT_REAL, FIELD(radius), 0, 1e30, "R",
      "initial radius in scene units (default: --footprints pixel footprints at each hit "
-     "point)", FOR_2008},
+     "point)", FOR_PROGRESSIVE},
     {"--footprints", OPT_REAL, FIELD(footprints), 0, 1e6, "K",
      "initial radius in pixel footprints at each hit point (default 4; the paper's: 1)",
-     FOR_2008},
+     FOR_PROGRESSIVE},
     {"--caustic-footprints", OPT_REAL, FIELD(caustic_footprints), 0, 1e6, "K",
      "caustic photons gather in an estimate of their own, R0 of K footprints; 0 = in the "
      "one estimate, the paper's (default 1)", FOR_2008},
     {"--fit-radius", OPT_FLAG, FIELD(fit_radius), 0, 0, "",
      "shorten each initial radius until its disc lies on its surface, clear of walls and "
-     "open edges (the default)", FOR_2008},
+     "open edges (the default)", FOR_PROGRESSIVE},
     {"--no-fit-radius", OPT_FLAG, FIELD(fit_radius), 0, 0, "",
-     "keep the initial radius whole, the paper's", FOR_2008},
+     "keep the initial radius whole, the paper's", FOR_PROGRESSIVE},
     {"--merge-hit-points", OPT_FLAG, FIELD(merge_hit_points), 0, 0, "",
      "a pixel's eye rays that meet a surface within a hit point's disc add to it (the "
      "default)", FOR_2008},
@@ -215,15 +220,15 @@ static const struct option_spec specs[] = {
      "emission only from the --spp eye rays of the ray tracing pass, the paper's", FOR_2008},
     {"--facing-test", OPT_FLAG, FIELD(facing_test), 0, 0, "",
      "a photon counts only at hit points whose surface faces its own (the default)",
-     FOR_2008},
+     FOR_PROGRESSIVE},
     {"--no-facing-test", OPT_FLAG, FIELD(facing_test), 0, 0, "",
-     "every photon within R counts, the paper's", FOR_2008},
+     "every photon within R counts, the paper's", FOR_PROGRESSIVE},
     {"--direct-photons", OPT_FLAG, FIELD(direct_photons), 0, 0, "",
      "direct light from photons too, the paper's way (default: a light sample at each "
-     "hit point each pass, photons only after their first bounce)", FOR_2008},
+     "hit point each pass, photons only after their first bounce)", FOR_PROGRESSIVE},
     {"--checkpoint", OPT_INT, FIELD(checkpoint), 1, MAX_PASSES, "K",
      "write the image (-o) every K passes, each write complete (default: at the end)",
-     FOR_2008},
+     FOR_PROGRESSIVE},
     {"--exposure", OPT_REAL, FIELD(exposure), 0, 1e30, "E",
      "PNG or PPM only (not the PFM): multiply radiance by E before sRGB encoding "
      "(default 1)", FOR_ALL},
@@ -248,12 +253,14 @@ const char *mode_name(enum mode mode)
         return "1996";
     case MODE_PPM2008:
         return "2008";
+    case MODE_SPPM2009:
+        return "2009";
     }
     return "?";
 }
 
 static const enum mode every_mode[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1994,
-                                       MODE_JENSEN1996, MODE_PPM2008};
+                                       MODE_JENSEN1996, MODE_PPM2008, MODE_SPPM2009};
 #define N_MODES (sizeof every_mode / sizeof every_mode[0])
 
 /* The modes of set (an option_spec.modes) into text[size], in the order of every_mode,
@@ -329,8 +336,8 @@ static void set_defaults(struct options *o)
     o->display = DISPLAY_PNG;
     o->photons = 0; /* the mode's default, set after parsing */
     o->gather = 0; /* the mode's default, set after parsing */
-    o->passes = PPM_DEFAULT_PASSES;
-    o->photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
+    o->passes = 0;           /* the mode's default, set after parsing */
+    o->photons_per_pass = 0; /* the mode's default, set after parsing */
     o->alpha = PPM_DEFAULT_ALPHA;
     struct ppm_settings pp = ppm_settings_default();
     o->footprints = pp.footprints;
@@ -370,7 +377,8 @@ static int read_mode(const char *text, enum mode *mode, struct error *err)
             return 0;
         }
     return error_set(err, "", 0,
-                     "--mode: unknown mode '%s' (available: direct, pt, photons, 1994, 1996, 2008)",
+                     "--mode: unknown mode '%s' (available: direct, pt, photons, 1994, 1996, 2008, "
+                     "2009)",
                      text != NULL ? text : "nothing");
 }
 
@@ -452,10 +460,10 @@ static int check_global_work_options(const struct options *o, struct error *err)
     if (o->mode == MODE_DIRECT || o->mode == MODE_PT)
         return error_set(err, "", 0, "%s: mode %s has no global work to save (every sample "
                          "belongs to its pixel)", name, mode_name(o->mode));
-    if (o->mode == MODE_PPM2008)
-        return error_set(err, "", 0, "%s: mode 2008 traces new photons in every pass; they "
+    if (o->mode == MODE_PPM2008 || o->mode == MODE_SPPM2009)
+        return error_set(err, "", 0, "%s: mode %s traces new photons in every pass; they "
                          "are not saved (their tracing is the smaller part of a tile's "
-                         "work: scripts/README.md)", name);
+                         "work: scripts/README.md)", name, mode_name(o->mode));
     return 0;
 }
 
@@ -585,14 +593,23 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         o->gather = o->mode == MODE_JENSEN1994   ? J94_DEFAULT_GATHER
                     : o->mode == MODE_JENSEN1996 ? J96_DEFAULT_GATHER
                                                  : PHOTONS_DEFAULT_GATHER;
-    if (o->mode == MODE_PPM2008 && o->adaptive > 0)
-        return error_set(err, "", 0, "--adaptive: not available with --mode 2008, whose "
-                                     "pixels are not means of independent samples");
+    int progressive = o->mode == MODE_PPM2008 || o->mode == MODE_SPPM2009;
+    if (progressive && o->adaptive > 0)
+        return error_set(err, "", 0, "--adaptive: not available with --mode %s, whose "
+                                     "pixels are not means of independent samples",
+                         mode_name(o->mode));
     if (o->mode == MODE_JENSEN1994 && o->cache_accuracy == 0)
         return error_set(err, "", 0, "--cache-accuracy: mode 1994 needs its irradiance "
                                      "cache, a > 0");
     if (!(o->alpha > 0 && o->alpha < 1))
         return error_set(err, "", 0, "--alpha: expected a number strictly between 0 and 1");
+    if (o->passes == 0)
+        o->passes = o->mode == MODE_SPPM2009 ? SPPM_DEFAULT_PASSES : PPM_DEFAULT_PASSES;
+    if (o->photons_per_pass == 0)
+        o->photons_per_pass = o->mode == MODE_SPPM2009 ? SPPM_DEFAULT_PHOTONS_PER_PASS
+                                                       : PPM_DEFAULT_PHOTONS_PER_PASS;
+    if (o->mode == MODE_SPPM2009)
+        o->spp = o->passes; /* one eye path a pixel each pass (its camera samples) */
     if (o->spp == 0)
         o->spp = o->mode == MODE_PPM2008     ? PPM_DEFAULT_SPP
                  : o->mode == MODE_JENSEN1996 ? J96_DEFAULT_SPP
@@ -601,6 +618,9 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
     if (o->mode == MODE_PPM2008 && o->specular_spp > 0)
         return error_set(err, "", 0, "--specular-spp: not available with --mode 2008, whose "
                                      "eye rays all store hit points once");
+    if (o->mode == MODE_SPPM2009 && o->specular_spp > 0)
+        return error_set(err, "", 0, "--specular-spp: not available with --mode 2009, whose "
+                                     "pixels all take one eye path a pass");
     if (o->specular_spp == 0) /* spp <= MAX_SPP, so the product cannot overflow */
         o->specular_spp = (o->mode == MODE_JENSEN1996 || o->mode == MODE_JENSEN1994) &&
                                   !o->paper
@@ -611,9 +631,10 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
                          o->specular_spp, o->spp);
     if (check_global_work_options(o, err) < 0)
         return -1;
-    if (o->mode == MODE_PPM2008 && o->variance != NULL)
-        return error_set(err, "", 0, "--variance: not available with --mode 2008, whose "
-                                     "pixels are not means of independent samples");
+    if (progressive && o->variance != NULL)
+        return error_set(err, "", 0, "--variance: not available with --mode %s, whose "
+                                     "pixels are not means of independent samples",
+                         mode_name(o->mode));
     return check_modes(o, given, err); /* after the checks above, whose messages say why */
 }
 

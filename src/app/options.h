@@ -15,7 +15,15 @@
 #define PHOTON_VERSION "0.1.0"
 #define OUTPUT_PATH_MAX 1024
 
-enum mode { MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1994, MODE_JENSEN1996, MODE_PPM2008 };
+enum mode {
+    MODE_DIRECT,
+    MODE_PT,
+    MODE_PHOTONS,
+    MODE_JENSEN1994,
+    MODE_JENSEN1996,
+    MODE_PPM2008,
+    MODE_SPPM2009
+};
 
 /* --quality: which of a mode's presets (app/presets.h) stands before the user's options. */
 enum quality { QUALITY_PREVIEW, QUALITY_DEFAULT, QUALITY_REFERENCE };
@@ -74,18 +82,18 @@ struct options {
     int light_samples;            /* 1994: stratified samples of each light        */
     int projection_maps;          /* 1994: emit through projection maps            */
     int illumination_maps;        /* 1994: --irradiance-store illumination         */
-    int passes;                   /* 2008: photon passes                           */
-    int photons_per_pass;         /* 2008: photons traced in each pass             */
-    double alpha;                 /* 2008: Eq. 7's alpha, in (0, 1)                */
-    double radius;                /* 2008: initial radius; 0 = pixel footprints    */
-    double footprints;            /* 2008: initial radius in pixel footprints      */
-    int fit_radius;               /* 2008: initial radius fitted to the surface    */
+    int passes;                   /* 2008, 2009: photon passes                     */
+    int photons_per_pass;         /* 2008, 2009: photons traced in each pass       */
+    double alpha;                 /* 2008, 2009: Eq. 7's alpha, in (0, 1)          */
+    double radius;                /* 2008, 2009: initial radius; 0 = pixel footprints */
+    double footprints;            /* 2008, 2009: initial radius in pixel footprints */
+    int fit_radius;               /* 2008, 2009: initial radius fitted to the surface */
     double caustic_footprints;    /* 2008: caustic estimate's R0; 0 = none         */
     int merge_hit_points;         /* 2008: a pixel's eye rays share hit points     */
     int resample_emission;        /* 2008: each pass's eye ray adds emission       */
-    int facing_test;              /* 2008: photons count where surfaces face       */
-    int checkpoint;               /* 2008: write the image every this many passes  */
-    int direct_photons;           /* 2008: direct light from photons, the paper's  */
+    int facing_test;              /* 2008, 2009: photons count where surfaces face */
+    int checkpoint;               /* 2008, 2009: write the image every this many passes */
+    int direct_photons;           /* 2008, 2009: direct light from photons, the paper's */
 };
 
 /* Parses argv into *o: the defaults, then the words of the preset that --quality names for

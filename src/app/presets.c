@@ -12,7 +12,8 @@
  *   1994 twice the light rays and gather rays (the worst 16 x 16 block 2.8% -> 1.5%);
  *   1996 the same and 2 x --spp, since its relmse at the default samples is the
  *   camera's noise;
- *   2008 4 x the passes; photons 40 x the photons and 4 x the photons an estimate.
+ *   2008 4 x the passes; 2009 8 x; photons 40 x the photons and 4 x the photons an
+ *   estimate.
  * The measured seconds and errors of each row are in README (Presets);
  * scripts/presets.sh measures them again. A list names only options its mode takes.
  */
@@ -46,6 +47,8 @@ static const struct preset presets[] = {
      "--specular-spp 8192"},
     {MODE_PPM2008, QUALITY_PREVIEW, "--passes 8 --spp 4"},
     {MODE_PPM2008, QUALITY_REFERENCE, "--passes 576"},
+    {MODE_SPPM2009, QUALITY_PREVIEW, "--passes 16"},
+    {MODE_SPPM2009, QUALITY_REFERENCE, "--passes 2048"},
 };
 
 const char *quality_name(enum quality quality)
@@ -92,6 +95,7 @@ static const struct {
     {MODE_PPM2008, "--direct-photons --footprints 1 --caustic-footprints 0 --no-fit-radius "
                     "--no-merge-hit-points "
                     "--no-resample-emission --no-facing-test"},
+    {MODE_SPPM2009, "--direct-photons --footprints 1 --no-fit-radius --no-facing-test"},
 };
 
 /* Splits words, one space apart, into *out. */

@@ -1,0 +1,359 @@
+/*
+ * modes/sppm2009.c -- `--mode 2009`: stochastic progressive photon mapping (Hachisuka and
+ * Jensen 2009), read top to bottom as the paper's algorithm.
+ *
+ * Progressive photon mapping (ppm2008.c) estimates the radiance at fixed points, the hit
+ * points of eye rays traced once; a pixel, the mean over its square, then keeps the
+ * aliasing of those few rays however long the render runs, and so does anything else
+ * that needs many eye paths a pixel (glossy reflections seen by the eye, a light's
+ * outline). The 2009 paper estimates the mean radiance over a region S instead -- here
+ * the part of the scene a pixel sees -- with statistics that S's points share:
+ *
+ *   shared statistics: per pixel, the photon count N, the radius R and the unnormalised
+ *       flux tau, kept across passes (struct progressive_estimate); nothing else stays;
+ *   each pass, the distributed ray tracing pass: one new eye path per pixel (its next
+ *       point of the pixel's camera sequence), followed through mirrors and glass by
+ *       sampling their lobes (Russian roulette on long chains) to its first surface with
+ *       a non-delta part: that pass's hit point of S, with its BRDF and path weight beta;
+ *   then a photon tracing pass with the shared tracer: every photon within R of a hit
+ *       point adds f_r Phi' to it, as in 2008 (hit_point_add_photon());
+ *   then, per pixel, the progressive update with the pass's Phi = beta (sum f_r Phi'):
+ *       N <- N + alpha M,  R <- R sqrt((N + alpha M) / (N + M)),  tau <- (tau + Phi) R'^2 / R^2,
+ *       which is 2008's Eq. 7, 9 and 12 applied to S's shared values (ppm_update_estimate());
+ *   the image: L = tau / (pi R^2 N_emitted) (2008's Eq. 13) plus the emission the eye paths
+ *       saw directly, averaged over the passes.
+ *
+ * The photon search takes the pass's hit points (at most one a pixel) in the kd-tree of
+ * photon/hit_points.c, rebuilt each pass; the memory is O(pixels) and does not grow with
+ * the passes.
+ *
+ * The initial radius: R0 of a pixel is ppm_initial_radius() at the first hit point it
+ * gets: --footprints widths of a pixel at that distance, fitted to the surface
+ * (ppm_radius.c), so it scales with the scene; pbrt's default of one world unit is
+ * wrong in millimetres and in kilometres. --radius sets it in scene units.
+ *
+ * Departures, as in 2008, each with its switch, off under --paper:
+ *   the direct light (--direct-photons is the paper's way) by one shadow-tested light
+ *       sample at each pass's hit point (ppm_direct.c), photons counted only after their
+ *       first bounce (caustics still count): the paper estimates it from photons too;
+ *   the fitted initial radius (--fit-radius) and R0 in footprints: the paper leaves R0
+ *       to the user;
+ *   the facing test (--facing-test): a photon counts only where the surfaces face alike.
+ *
+ * Determinism: eye path p of pixel (x, y) is camera sample p (render.h: its stream is
+ * keyed by the pixel and p), its light samples are keyed by the pixel and the pass
+ * (ppm_direct.h), photon i of pass p by (seed, photon, p, i); a pixel's statistics take
+ * only its own hit point's photons, so the image does not depend on the window.
+ */
+#include "sppm2009.h"
+
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include "../base/alloc.h"
+#include "../photon/hit_points.h"
+#include "../photon/trace.h"
+#include "ppm_direct.h"
+#include "ppm_radius.h"
+#include "surface.h"
+
+/* The photons that reach hit points when a light sample takes the direct light: those
+ * after a diffuse bounce, and caustics (L S+ D), which no shadow ray sees the light by. */
+#define PHOTON_AFTER_FIRST_BOUNCE (PHOTON_CAUSTIC | PHOTON_INDIRECT)
+
+struct sppm {
+    const struct scene *scene;          /* borrowed                                        */
+    const struct render_settings *rs;   /* borrowed                                        */
+    const struct ppm_settings *ps;      /* borrowed                                        */
+    struct render_counters *counters;   /* borrowed                                        */
+    int width;                          /* of the window                                   */
+    size_t n_pixels;
+    struct progressive_estimate *shared; /* owned: per window pixel, S's N, R and tau; R is
+                                            0 until the pixel's first hit point            */
+    struct vec3 *seen;                  /* owned: per window pixel, the sum over passes of
+                                           the emission and background its paths saw      */
+    struct hit_point *points;           /* owned: this pass's hit points, n_points of them,
+                                           room for one a pixel                            */
+    size_t n_points;
+    struct hit_point_tree tree;         /* over points, rebuilt each pass                  */
+    const struct photon_event *photon;  /* the photon being added                          */
+    double unnormalise;                 /* photons per pass: the tracer's Phi / N back to
+                                           the paper's unnormalised Phi'                   */
+    size_t photons_emitted;             /* N_emitted, so far                               */
+    long passes_done;
+    struct ppm_direct direct;           /* the direct term, unless ps->direct_photons      */
+};
+
+static double cpu_seconds(clock_t start)
+{
+    return (double)(clock() - start) / CLOCKS_PER_SEC;
+}
+
+/* ---- the distributed ray tracing pass ----------------------------------------------- */
+
+/* The pass's hit point of window pixel `pixel` at s, reached with throughput beta after
+ * `distance` along its eye path; its disc is the pixel's shared radius, R0 at its first. */
+static void store_hit_point(struct sppm *sppm, size_t pixel, const struct surface *s,
+                            const struct shading_frame *frame, struct vec3 beta,
+                            double distance)
+{
+    struct progressive_estimate *shared = &sppm->shared[pixel];
+    if (shared->radius == 0)
+        shared->radius = ppm_initial_radius(sppm->scene, sppm->ps, sppm->counters, s, distance);
+    struct hit_point *hp = &sppm->points[sppm->n_points++];
+    hp->x = s->p;
+    hp->n = s->ng;
+    hp->wo = s->wo;
+    hp->frame = *frame;
+    hp->material = s->material;
+    hp->pixel = pixel;
+    hp->weight = beta;
+    hp->global.radius = shared->radius;
+    hp->global.n_photons = 0;
+    hp->global.tau = vec3_zero();
+    hp->global.m_photons = 0;
+    hp->caustic = hp->global;
+    hp->caustic.radius = 0; /* one estimate: the paper's */
+}
+
+/* Eye path `pass` of window pixel `pixel` along ray: what emitters and the background
+ * show along it goes to the pixel's seen sum; at its first surface with a non-delta part
+ * lies the pass's hit point. A material with a delta lobe is sampled: brdf_sample()
+ * returns its delta lobe with probability p = brdf_delta_probability(), and the path
+ * follows it with the lobe's weight (reflectance / probability); otherwise the hit point
+ * lies there with weight beta / (1 - p), so each part is counted once, unbiased. */
+static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ray ray,
+                           struct rng *rng)
+{
+    struct vec3 beta = vec3(1.0, 1.0, 1.0);
+    double distance = 0.0;
+    for (int depth = 0;; depth++) {
+        struct surface s;
+        double t;
+        if (!ray_surface(sppm->scene, ray, sppm->counters, &s, &t)) {
+            sppm->seen[pixel] = vec3_add(sppm->seen[pixel],
+                                         vec3_mul(beta, sppm->scene->background));
+            return;
+        }
+        distance += t;
+        sppm->seen[pixel] = vec3_add(sppm->seen[pixel], vec3_mul(beta, surface_emission(&s)));
+        if (depth >= sppm->rs->max_depth)
+            return;
+        struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
+                                                               TRANSPORT_RADIANCE);
+        double p_delta = brdf_delta_probability(s.material);
+        if (p_delta > 0) {
+            if (specular_bounce(&s, &frame, rng, &beta, &ray)) {
+                if (!survives_roulette(&beta, depth + 1, rng))
+                    return;
+                continue;
+            }
+            if (p_delta >= 1)
+                return; /* mirror or glass that scattered nothing */
+            beta = vec3_scale(beta, 1.0 / (1.0 - p_delta));
+        }
+        store_hit_point(sppm, pixel, &s, &frame, beta, distance);
+        if (!sppm->ps->direct_photons)
+            ppm_direct_sample(&sppm->direct, pixel, 0, pass, &s, &frame, beta, sppm->counters);
+        return;
+    }
+}
+
+/* Pass `pass`: one eye path through every pixel of the window, then the hit points' tree. */
+static void distributed_ray_tracing_pass(struct sppm *sppm, long pass)
+{
+    const struct render_settings *rs = sppm->rs;
+    sppm->n_points = 0;
+    for (int y = rs->y0; y < rs->y1; y++)
+        for (int x = rs->x0; x < rs->x1; x++) {
+            size_t pixel = (size_t)(y - rs->y0) * (size_t)sppm->width + (size_t)(x - rs->x0);
+            struct rng rng;
+            struct ray ray = camera_sample(sppm->scene, rs->seed, x, y, (int)pass, &rng);
+            trace_eye_path(sppm, pixel, pass, ray, &rng);
+        }
+    hit_point_tree_free(&sppm->tree);
+    hit_point_tree_build(&sppm->tree, sppm->points, sppm->n_points);
+}
+
+/* ---- the photon tracing pass ----------------------------------------------------------- */
+
+static void add_flux(void *context, size_t i)
+{
+    struct sppm *sppm = context;
+    hit_point_add_photon(&sppm->points[i], sppm->photon, sppm->unnormalise,
+                         sppm->ps->facing_test, 0);
+}
+
+/* The tracer's sink: each stored photon goes to the hit points around it, then is gone. */
+static int add_photon(void *context, const struct photon_event *photon)
+{
+    struct sppm *sppm = context;
+    sppm->photon = photon;
+    hit_point_tree_visit(&sppm->tree, photon->position, add_flux, sppm);
+    return 0;
+}
+
+/* Pass p: photons_per_pass photons, each given to the hit points at every non-specular
+ * hit with --direct-photons, by default from its second (the light samples bring the
+ * first). */
+static void photon_tracing_pass(struct sppm *sppm, long pass, struct ppm_stats *stats)
+{
+    struct trace_settings ts;
+    memset(&ts, 0, sizeof ts);
+    ts.seed = sppm->rs->seed;
+    ts.pass = (uint64_t)pass;
+    ts.n_emit = sppm->ps->photons_per_pass;
+    ts.store = sppm->ps->direct_photons ? PHOTON_MAP_GLOBAL : PHOTON_AFTER_FIRST_BOUNCE;
+    ts.max_depth = sppm->rs->max_depth;
+    ts.targets = NULL;
+    ts.projection = NULL;
+    struct photon_sink sink = {add_photon, sppm};
+    trace_photons_into(sppm->scene, &ts, &sink, &stats->photon_rays);
+    sppm->photons_emitted += ts.n_emit;
+}
+
+/* ---- the progressive update of the shared statistics ---------------------------------- */
+
+/* Each hit point's Phi = beta (sum of f_r Phi') goes to its pixel's tau, and its M to the
+ * update (ppm_update_estimate(): N, R, tau); a pixel without a hit point this pass found
+ * no photon (M = 0) and keeps its values. */
+static void progressive_update(struct sppm *sppm)
+{
+    for (size_t i = 0; i < sppm->n_points; i++) {
+        const struct hit_point *hp = &sppm->points[i];
+        struct progressive_estimate *shared = &sppm->shared[hp->pixel];
+        shared->tau = vec3_add(shared->tau, vec3_mul(hp->weight, hp->global.tau));
+        shared->m_photons = hp->global.m_photons;
+        ppm_update_estimate(shared, sppm->ps->alpha);
+    }
+    if (!sppm->ps->direct_photons)
+        ppm_direct_end_pass(&sppm->direct);
+    sppm->passes_done++;
+}
+
+/* ---- the image ---------------------------------------------------------------------- */
+
+/* The image so far: per pixel, the photons' tau / (pi R^2 N_emitted) plus the mean of
+ * what the eye paths saw directly and, unless photons bring it, of their direct light. */
+static void evaluate_image(const struct sppm *sppm, struct image *image)
+{
+    double passes = sppm->passes_done > 0 ? (double)sppm->passes_done : 1.0;
+    for (size_t i = 0; i < sppm->n_pixels; i++) {
+        const struct progressive_estimate *e = &sppm->shared[i];
+        struct vec3 l = vec3_add(vec3_scale(sppm->seen[i], 1.0 / passes),
+                                 ppm_radiance(e->tau, e->radius, (double)sppm->photons_emitted));
+        if (!sppm->ps->direct_photons)
+            l = vec3_add(l, ppm_direct_radiance(&sppm->direct, i));
+        if (!vec3_is_finite(l)) { /* a bug upstream: report, never write */
+            sppm->counters->nonfinite_samples++;
+            l = vec3_zero();
+        }
+        image->pixels[i] = l;
+    }
+}
+
+static double mean_radius(const struct sppm *sppm)
+{
+    double sum = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < sppm->n_pixels; i++)
+        if (sppm->shared[i].radius > 0) {
+            sum += sppm->shared[i].radius;
+            n++;
+        }
+    return n > 0 ? sum / (double)n : 0.0;
+}
+
+/* ---- the passes -------------------------------------------------------------------- */
+
+static void show_progress(const struct sppm *sppm, double seconds, int done)
+{
+    long pass = sppm->passes_done, passes = sppm->ps->passes;
+    fprintf(stderr, "\rphoton: pass %ld/%ld, %.3g photons, mean radius %.3g, %.1f s, "
+            "about %.0f s left   ", pass, passes, (double)sppm->photons_emitted,
+            mean_radius(sppm), seconds, seconds * (double)(passes - pass) / (double)pass);
+    if (done)
+        fputc('\n', stderr);
+    fflush(stderr);
+}
+
+/* Calls checkpoint with the image so far; returns the CPU seconds it took. */
+static double call_checkpoint(const struct sppm *sppm, const struct checkpoint *checkpoint,
+                              struct image *image, double seconds)
+{
+    evaluate_image(sppm, image);
+    return checkpoint->at(checkpoint->context, image, (long long)sppm->photons_emitted,
+                          seconds);
+}
+
+static int is_power_of_two(long n)
+{
+    return n > 0 && (n & (n - 1)) == 0;
+}
+
+struct render_result render_sppm(const struct scene *scene, const struct render_settings *rs,
+                                 const struct ppm_settings *ps,
+                                 struct render_counters *counters, struct ppm_stats *stats)
+{
+    struct sppm sppm;
+    memset(&sppm, 0, sizeof sppm);
+    memset(stats, 0, sizeof *stats);
+    sppm.scene = scene;
+    sppm.rs = rs;
+    sppm.ps = ps;
+    sppm.counters = counters;
+    sppm.width = rs->x1 - rs->x0;
+    sppm.n_pixels = (size_t)sppm.width * (size_t)(rs->y1 - rs->y0);
+    sppm.shared = xcalloc(sppm.n_pixels, sizeof *sppm.shared, "sppm statistics");
+    sppm.seen = xcalloc(sppm.n_pixels, sizeof *sppm.seen, "sppm pixels");
+    sppm.points = xmalloc(sppm.n_pixels, sizeof *sppm.points, "sppm hit points");
+    sppm.unnormalise = (double)ps->photons_per_pass;
+    hit_point_tree_build(&sppm.tree, sppm.points, 0);
+    if (!ps->direct_photons)
+        ppm_direct_create(&sppm.direct, scene, rs);
+    struct render_result result = {NULL, NULL, 0.0};
+    result.image = image_create(sppm.width, rs->y1 - rs->y0);
+
+    clock_t start = clock();
+    double excluded = 0.0, seconds = 0.0, last_shown = 0.0, limit = rs->time_limit;
+    while (sppm.passes_done < ps->passes && !(sppm.passes_done > 0 && limit > 0 &&
+                                              seconds >= limit)) {
+        long pass = sppm.passes_done;
+        clock_t eye_start = clock();
+        distributed_ray_tracing_pass(&sppm, pass);
+        stats->seconds_ray_pass += cpu_seconds(eye_start);
+        if (pass == 0)
+            stats->initial_mean_radius = mean_radius(&sppm);
+        photon_tracing_pass(&sppm, pass, stats);
+        progressive_update(&sppm);
+        seconds = cpu_seconds(start) - excluded;
+        int last = sppm.passes_done == ps->passes || (limit > 0 && seconds >= limit);
+        if (ps->report != NULL && (is_power_of_two(sppm.passes_done) || last))
+            excluded += call_checkpoint(&sppm, ps->report, result.image, seconds);
+        if (ps->snapshot != NULL && ps->snapshot_every > 0 &&
+            sppm.passes_done % ps->snapshot_every == 0)
+            excluded += call_checkpoint(&sppm, ps->snapshot, result.image, seconds);
+        if (rs->progress && (last || seconds - last_shown >= 0.5)) {
+            show_progress(&sppm, seconds, last);
+            last_shown = seconds;
+        }
+    }
+    evaluate_image(&sppm, result.image);
+    result.seconds = seconds;
+    stats->passes = sppm.passes_done;
+    stats->seconds_photons = seconds - stats->seconds_ray_pass;
+    stats->hit_points = sppm.n_points;
+    stats->bytes_per_hit_point = sizeof(struct hit_point) + HIT_POINT_TREE_BYTES_PER_POINT +
+                                 sizeof(struct progressive_estimate) + sizeof(struct vec3);
+    stats->photons_emitted = sppm.photons_emitted;
+    stats->mean_radius = mean_radius(&sppm);
+    counters->passes = (int)sppm.passes_done;
+    hit_point_tree_free(&sppm.tree);
+    if (!ps->direct_photons)
+        ppm_direct_free(&sppm.direct);
+    xfree(sppm.points);
+    xfree(sppm.seen);
+    xfree(sppm.shared);
+    return result;
+}
