@@ -54,7 +54,7 @@ n=0
 while read -r command; do
     n=$((n + 1))
     case $command in
-    "./photon compare"*|"./photon plot"*|"./photon merge"*|"./photon probe"*) run=$command ;;
+    "./photon compare"*|"./photon plot"*|"./photon merge"*|"./photon probe"*|"./photon export"*) run=$command ;;
     ./photon*) run="$command --quality preview --no-progress" ;;
     *) run=$command ;;
     esac

@@ -66,7 +66,7 @@ static void test_options(struct check *t)
     CHECK(t, photon("--mode 2008 --specular-spp 64 scenes/cornell.scene") == 2 &&
              log_contains("--specular-spp"));
     CHECK(t, photon("--mode pt --passes 3 --gather 7 scenes/cornell.scene") == 2 &&
-             log_contains("--passes: only for --mode 2008 (this render is --mode pt)"));
+             log_contains("--passes: only for --mode 2008 or 2009 (this render is --mode pt)"));
     CHECK(t, photon("--gather 7 scenes/cornell.scene") == 2 &&
              log_contains("--gather: only for --mode photons, 1994 or 1996"));
     CHECK(t, photon("--cone 2 --mode 1994 scenes/cornell.scene") == 2 &&
@@ -77,9 +77,10 @@ static void test_options(struct check *t)
              log_contains("--irradiance-store: only for --mode 1994"));
     CHECK(t, photon("--mode pt --save-photons w.work scenes/cornell.scene") == 2 &&
              log_contains("no global work to save"));
-    CHECK(t, photon("--help") == 0 && log_contains("2008: photon passes") &&
+    CHECK(t, photon("--help") == 0 && log_contains("2008, 2009: photon passes") &&
              log_contains("photons, 1994, 1996: photons emitted") &&
-             log_contains("not with 2008: also write each pixel's variance"));
+             log_contains("not with 2008 or 2009: also write each pixel's variance") &&
+             log_contains("not with 2009: camera samples per pixel"));
     CHECK(t, photon("") == 2 && log_contains("no scene"));
     CHECK(t, photon("a.scene b.scene") == 2 && log_contains("more than one"));
 }

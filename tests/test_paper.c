@@ -21,7 +21,8 @@
 
 #define OUT "build/test_paper"
 
-static const char *const modes[] = {"direct", "pt", "photons", "1994", "1996", "2008"};
+static const char *const modes[] = {"direct", "pt", "photons", "1994", "1996", "2008",
+                                    "2009"};
 #define N_MODES (sizeof modes / sizeof modes[0])
 
 /* truth: the contract of --paper (presets.h, options.h): for every mode, the options
@@ -49,7 +50,7 @@ static void test_paper_is_its_words(struct check *t)
             n += snprintf(spelled + n, sizeof spelled - (size_t)n, " %s", p.word[i]);
         char row[512]; /* the words alone, as --help prints them */
         snprintf(row, sizeof row, "%s", spelled + strlen("--mode ") + strlen(modes[m]));
-        if (o.mode != MODE_PPM2008) /* 2008 has no specular pixels: it refuses the option */
+        if (o.mode != MODE_PPM2008 && o.mode != MODE_SPPM2009) /* no specular pixels: refused */
             snprintf(spelled + n, sizeof spelled - (size_t)n, " --specular-spp %d", o.spp);
         CHECK(t, hash_of(words) == hash_of(spelled));
         snprintf(words, sizeof words, "--mode %s", modes[m]);

@@ -16,7 +16,8 @@
 
 #define OUT "build/test_presets"
 
-static const char *const modes[] = {"direct", "pt", "photons", "1994", "1996", "2008"};
+static const char *const modes[] = {"direct", "pt", "photons", "1994", "1996", "2008",
+                                    "2009"};
 static const char *const qualities[] = {"preview", "default", "reference"};
 
 #define N_MODES (sizeof modes / sizeof modes[0])
@@ -143,7 +144,7 @@ static void test_unknown_quality_refused(struct check *t)
 static void test_default_is_no_quality(struct check *t)
 {
     static const enum mode all[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1994,
-                                    MODE_JENSEN1996, MODE_PPM2008};
+                                    MODE_JENSEN1996, MODE_PPM2008, MODE_SPPM2009};
     for (size_t m = 0; m < sizeof all / sizeof all[0]; m++) {
         struct preset_words p;
         preset_words(all[m], QUALITY_DEFAULT, &p);

@@ -36,6 +36,7 @@ void test_presets(struct check *t); /* test_presets.c: --quality's presets      
 void test_paper(struct check *t);  /* test_paper.c: --paper and its switches       */
 void test_tte_fit(struct check *t); /* test_tte_fit.c: make bench's fit of pt's error */
 void test_ppm_departures(struct check *t); /* test_ppm_departures.c: 2008's departures */
+void test_sppm(struct check *t);    /* test_sppm.c: --mode 2009, stochastic PPM        */
 void test_export(struct check *t);  /* test_export.c: photon export to pbrt-v4, Mitsuba 3 */
 void test_switches(struct check *t); /* test_switches.c: each paper switch of 1994, 1996 */
 

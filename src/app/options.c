@@ -281,7 +281,7 @@ static void mode_list(unsigned set, const char *last, char *text, size_t size)
 }
 
 /* What --help says of the modes an option is for, before its text: nothing when it is for
- * every mode, "not with MODES: " when it is for most, else "MODES: ". */
+ * every mode, "not with MODES: " when it is for all but one or two, else "MODES: ". */
 static void mode_note(unsigned set, char *text, size_t size)
 {
     char modes[64];
@@ -290,8 +290,9 @@ static void mode_note(unsigned set, char *text, size_t size)
         text[0] = '\0';
         return;
     }
-    int most = (missing & (missing - 1)) == 0; /* one mode missing */
-    mode_list(most ? missing : set, ", ", modes, sizeof modes);
+    unsigned but_one = missing & (missing - 1);
+    int most = (but_one & (but_one - 1)) == 0; /* one or two modes missing */
+    mode_list(most ? missing : set, most ? " or " : ", ", modes, sizeof modes);
     snprintf(text, size, "%s%s: ", most ? "not with " : "", modes);
 }
 
