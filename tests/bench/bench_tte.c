@@ -34,10 +34,11 @@
 #include "../../src/modes/jensen1996.h"
 #include "../../src/modes/ppm2008.h"
 #include "../../src/modes/pt.h"
+#include "../../src/modes/sppm2009.h"
 #include "tte_fit.h"
 
 #define MAX_ROWS 64
-#define N_PHOTON_MODES 3
+#define N_PHOTON_MODES 4
 #define PT_TIME_FACTOR 4 /* pt's cap: this many times the longest mode's seconds */
 #define TRIAL_SIZE 32
 #define TRIAL_SHRINK 100
@@ -183,6 +184,26 @@ static struct render_result render_2008(const struct scene *scene, int trial, st
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
+    phase(ph, "seconds_ray_pass", stats.seconds_ray_pass);
+    phase(ph, "seconds_photons", stats.seconds_photons);
+    return result;
+}
+
+static struct render_result render_2009(const struct scene *scene, int trial, struct phases *ph,
+                                        struct error *err)
+{
+    (void)err; /* render_sppm does not fail on a finished scene */
+    struct ppm_settings ps = ppm_settings_default();
+    ps.passes = SPPM_DEFAULT_PASSES;
+    ps.photons_per_pass = SPPM_DEFAULT_PHOTONS_PER_PASS;
+    if (trial) {
+        ps.photons_per_pass /= TRIAL_SHRINK;
+        ps.passes = TRIAL_PASSES;
+    }
+    struct render_settings rs = settings_at(scene, (int)ps.passes, trial);
+    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct ppm_stats stats;
+    struct render_result result = render_sppm(scene, &rs, &ps, &counters, &stats);
     phase(ph, "seconds_ray_pass", stats.seconds_ray_pass);
     phase(ph, "seconds_photons", stats.seconds_photons);
     return result;
@@ -394,15 +415,16 @@ static void time_to_error_on(const struct tte_case *tc, int trial)
 void bench_tte(void)
 {
     static const struct photon_mode modes[N_PHOTON_MODES] = {
-        {"1994", render_1994}, {"1996", render_1996}, {"2008", render_2008}};
+        {"1994", render_1994}, {"1996", render_1996}, {"2008", render_2008},
+        {"2009", render_2009}};
     static const struct tte_case cases[3] = {
         {"cornell", "scenes/cornell.scene", "reference/cornell-pt.pfm",
-         "reference/cornell-pt-var.pfm", modes, 3},
+         "reference/cornell-pt-var.pfm", modes, 4},
         {"cornell-specular", "scenes/cornell-specular.scene",
          "reference/cornell-specular-pt.pfm", "reference/cornell-specular-pt-var.pfm", modes,
-         3},
+         4},
         {"ppm-box", "scenes/ppm-box.scene", "reference/ppm-box.pfm", "reference/ppm-box-var.pfm",
-         modes + 2, 1}};
+         modes + 2, 2}};
     const char *trial_text = getenv("PHOTON_TTE_TRIAL");
     int trial = trial_text != NULL && trial_text[0] != '\0';
     if (trial)
