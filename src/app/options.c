@@ -192,7 +192,7 @@ static const struct option_spec specs[] = {
      "photon passes (default 144; 2009: 256, each with one new eye path a pixel; "
      "--time-limit may stop sooner)", FOR_PROGRESSIVE},
     {"--photons-per-pass", OPT_INT, FIELD(photons_per_pass), 1, MAX_PHOTONS, "N",
-     "photons traced in each pass (default 100000; 2009: 50000)", FOR_PROGRESSIVE},
+     "photons traced in each pass (default 100000)", FOR_PROGRESSIVE},
     {"--alpha", OPT_REAL, FIELD(alpha), 0, 1, "A",
      "fraction of new photons kept, 0 < A < 1 (Eq. 7; default 0.7)", FOR_PROGRESSIVE},
     {"--radius", OPT_REAL, FIELD(radius), 0, 1e30, "R",
