@@ -12,9 +12,9 @@
  *   shared statistics: per pixel, the photon count N, the radius R and the unnormalised
  *       flux tau, kept across passes (struct progressive_estimate); nothing else stays;
  *   each pass, the distributed ray tracing pass: one new eye path per pixel (its next
- *       point of the pixel's camera sequence), followed through mirrors and glass by
- *       sampling their lobes (Russian roulette on long chains) to its first surface with
- *       a non-delta part: that pass's hit point of S, with its BRDF and path weight beta;
+ *       point of the pixel's camera sequence), followed through mirrors, glass and glossy
+ *       lobes by sampling them (Russian roulette on long chains) to a diffuse surface:
+ *       that pass's hit point of S, with its BRDF and path weight beta;
  *   then a photon tracing pass with the shared tracer: every photon within R of a hit
  *       point adds f_r Phi' to it, as in 2008 (hit_point_add_photon());
  *   then, per pixel, the progressive update with the pass's Phi = beta (sum f_r Phi'):
@@ -83,6 +83,8 @@ struct sppm {
     size_t photons_emitted;             /* N_emitted, so far                               */
     long passes_done;
     struct ppm_direct direct;           /* the direct term, unless ps->direct_photons      */
+    struct brdf_split *parts;           /* owned: each scene material's diffuse and
+                                           specular parts (brdf_split())                   */
 };
 
 static double cpu_seconds(clock_t start)
@@ -117,12 +119,29 @@ static void store_hit_point(struct sppm *sppm, size_t pixel, const struct surfac
     hp->caustic.radius = 0; /* one estimate: the paper's */
 }
 
+/* The probability that an eye path at a surface with these parts ends there, in a hit
+ * point for the diffuse part, rather than going on along the specular part (a glossy
+ * lobe, a mirror, glass): 1 without a specular part, 0 without a diffuse one, else the
+ * diffuse part's share of the two albedos seen from wo. */
+static double hit_point_probability(const struct brdf_split *part,
+                                    const struct shading_frame *frame, struct vec3 wo)
+{
+    if (!part->has_specular)
+        return 1.0;
+    if (!part->has_diffuse)
+        return 0.0;
+    double d = vec3_luminance(brdf_albedo(&part->diffuse, frame, wo));
+    double g = vec3_luminance(brdf_albedo(&part->specular, frame, wo));
+    return d + g > 0 ? d / (d + g) : 0.5;
+}
+
 /* Eye path `pass` of window pixel `pixel` along ray: what emitters and the background
- * show along it goes to the pixel's seen sum; at its first surface with a non-delta part
- * lies the pass's hit point. A material with a delta lobe is sampled: brdf_sample()
- * returns its delta lobe with probability p = brdf_delta_probability(), and the path
- * follows it with the lobe's weight (reflectance / probability); otherwise the hit point
- * lies there with weight beta / (1 - p), so each part is counted once, unbiased. */
+ * show along it goes to the pixel's seen sum; it ends at a surface's diffuse part (the
+ * split of brdf.h: Lambertian terms, broad lobes), where the pass's hit point lies with
+ * that part's BRDF. A specular part -- a mirror, glass, a glossy lobe -- is sampled and
+ * followed instead, as a path tracer would: a photon estimate behind a narrow lobe would
+ * be all noise. A surface with both chooses one by hit_point_probability() p, the
+ * weight divided by the probability of the choice, so each part counts once, unbiased. */
 static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ray ray,
                            struct rng *rng)
 {
@@ -142,17 +161,26 @@ static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ra
             return;
         struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
                                                                TRANSPORT_RADIANCE);
-        double p_delta = brdf_delta_probability(s.material);
-        if (p_delta > 0) {
-            if (specular_bounce(&s, &frame, rng, &beta, &ray)) {
-                if (!survives_roulette(&beta, depth + 1, rng))
-                    return;
-                continue;
-            }
-            if (p_delta >= 1)
-                return; /* mirror or glass that scattered nothing */
-            beta = vec3_scale(beta, 1.0 / (1.0 - p_delta));
+        const struct brdf_split *part = &sppm->parts[s.material - sppm->scene->materials];
+        double p = hit_point_probability(part, &frame, s.wo);
+        if (p < 1 && (p == 0 || rng_uniform(rng) >= p)) {
+            double u[3];
+            for (int k = 0; k < 3; k++)
+                u[k] = rng_uniform(rng); /* one by one: an initializer's order is unspecified */
+            struct brdf_sample bs;
+            if (!brdf_sample(part->has_diffuse ? &part->specular : s.material, &frame, s.wo, u,
+                             &bs))
+                return;
+            beta = vec3_scale(vec3_mul(beta, bs.weight), 1.0 / (1.0 - p));
+            ray = surface_ray(&s, bs.wi, bs.transmitted);
+            if (!survives_roulette(&beta, depth + 1, rng))
+                return;
+            continue;
         }
+        if (!part->has_diffuse)
+            return; /* black: reflects nothing */
+        s.material = part->has_specular ? &part->diffuse : s.material;
+        beta = vec3_scale(beta, 1.0 / p);
         store_hit_point(sppm, pixel, &s, &frame, beta, distance);
         if (!sppm->ps->direct_photons)
             ppm_direct_sample(&sppm->direct, pixel, 0, pass, &s, &frame, beta, sppm->counters);
@@ -309,6 +337,9 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     sppm.seen = xcalloc(sppm.n_pixels, sizeof *sppm.seen, "sppm pixels");
     sppm.points = xmalloc(sppm.n_pixels, sizeof *sppm.points, "sppm hit points");
     sppm.unnormalise = (double)ps->photons_per_pass;
+    sppm.parts = xmalloc(scene->n_materials + 1, sizeof *sppm.parts, "sppm materials");
+    for (size_t m = 0; m < scene->n_materials; m++)
+        sppm.parts[m] = brdf_split(&scene->materials[m]);
     hit_point_tree_build(&sppm.tree, sppm.points, 0);
     if (!ps->direct_photons)
         ppm_direct_create(&sppm.direct, scene, rs);
@@ -352,6 +383,7 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     hit_point_tree_free(&sppm.tree);
     if (!ps->direct_photons)
         ppm_direct_free(&sppm.direct);
+    xfree(sppm.parts);
     xfree(sppm.points);
     xfree(sppm.seen);
     xfree(sppm.shared);

@@ -246,13 +246,6 @@ int brdf_has_delta(const struct material *m)
            (m->kind == MATERIAL_SCHLICK && m->roughness < 0.5); /* Schlick's c > 0 (schlick.c) */
 }
 
-double brdf_delta_probability(const struct material *m)
-{
-    if (brdf_is_delta(m))
-        return 1.0;
-    return m->kind == MATERIAL_SCHLICK ? schlick_delta_probability(m) : 0.0;
-}
-
 /* m's Lambertian term rho / pi as a material of its own. */
 static struct material lambertian_part(const struct material *m, struct vec3 rho)
 {

@@ -131,8 +131,4 @@ int brdf_has_diffuse(const struct material *m);
  * Whitted-style tracer follows ideal specular rays. */
 int brdf_has_delta(const struct material *m);
 
-/* The probability that brdf_sample() returns a delta lobe: 1 for mirror and glass,
- * Schlick's c for his model, 0 for the rest. */
-double brdf_delta_probability(const struct material *m);
-
 #endif

@@ -29,8 +29,6 @@ int ward_sample(const struct material *m, struct vec3 wo, const double u[3],
 
 struct vec3 schlick_eval(const struct material *m, struct vec3 wo, struct vec3 wi);
 double schlick_pdf(const struct material *m, struct vec3 wo, struct vec3 wi);
-/* The weight c of the mirror part: the probability that schlick_sample() picks it. */
-double schlick_delta_probability(const struct material *m);
 int schlick_sample(const struct material *m, struct vec3 wo, const double u[3],
                    struct brdf_sample *s);
 

@@ -54,11 +54,6 @@ static struct schlick_parts schlick_parts(double r)
     return w;
 }
 
-double schlick_delta_probability(const struct material *m)
-{
-    return schlick_parts(m->roughness).c;
-}
-
 static void assert_schlick(const struct material *m)
 {
     assert(m->roughness >= 0 && m->roughness <= 1);
