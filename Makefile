@@ -98,16 +98,17 @@ check:
 	$(MAKE) --no-print-directory BUILD=build/tcc BIN=build/tcc/photon CC=tcc test
 	$(MAKE) --no-print-directory BUILD=build/asan BIN=build/asan/photon CC=gcc OPT="-O1 -g" \
 	    EXTRA="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" test
-	@for m in direct pt photons 1994 1996 2008; do \
+	@for m in direct pt photons 1994 1996 2008 2009; do \
 	    case $$m in \
-	    photons) work="--photons 20000";; \
-	    1994) work="--photons 20000 --gather-rays 32";; \
-	    1996) work="--photons 20000 --caustic-photons 20000 --gather-rays 32";; \
-	    2008) work="--passes 2 --photons-per-pass 20000";; \
-	    *) work="";; \
+	    photons) work="--spp 2 --photons 20000";; \
+	    1994) work="--spp 2 --photons 20000 --gather-rays 32";; \
+	    1996) work="--spp 2 --photons 20000 --caustic-photons 20000 --gather-rays 32";; \
+	    2008) work="--spp 2 --passes 2 --photons-per-pass 20000";; \
+	    2009) work="--passes 2 --photons-per-pass 20000";; \
+	    *) work="--spp 2";; \
 	    esac; \
 	    for b in gcc clang tcc asan; do \
-	    build/$$b/photon --no-progress --mode $$m --width 48 --height 32 --spp 2 $$work \
+	    build/$$b/photon --no-progress --mode $$m --width 48 --height 32 $$work \
 	        scenes/cornell-specular.scene -o build/$$b/determinism-$$m.pfm || exit 1; \
 	    cmp build/gcc/determinism-$$m.pfm build/$$b/determinism-$$m.pfm || exit 1; \
 	done; done

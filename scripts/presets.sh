@@ -4,7 +4,7 @@
 #
 #   scripts/presets.sh PHOTON OUT.md [MODE ...]
 #
-# Run from the top of the repository. For each mode (default: all six) and each preset
+# Run from the top of the repository. For each mode (default: all seven) and each preset
 # named in PRESETS (default "preview default"; "reference" takes minutes to an hour a
 # render), renders scenes/cornell.scene and scenes/cornell-specular.scene at 256 x 256
 # with `--mode MODE --quality PRESET --stats`, and puts in the table the preset's words as
@@ -25,7 +25,7 @@ fi
 photon=$1
 out=$2
 shift 2
-modes=${*:-direct pt photons 1994 1996 2008}
+modes=${*:-direct pt photons 1994 1996 2008 2009}
 presets=${PRESETS:-preview default}
 work=$(mktemp -d "${TMPDIR:-/tmp}/photon-presets.XXXXXX")
 trap 'rm -rf "$work"' EXIT

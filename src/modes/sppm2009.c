@@ -23,9 +23,11 @@
  *   the image: L = tau / (pi R^2 N_emitted) (2008's Eq. 13) plus the emission the eye paths
  *       saw directly, averaged over the passes.
  *
- * The photon search takes the pass's hit points (at most one a pixel) in the kd-tree of
- * photon/hit_points.c, rebuilt each pass; the memory is O(pixels) and does not grow with
- * the passes.
+ * The photon search finds the pass's hit points (at most one a pixel) in a hash grid
+ * (photon/hit_point_grid.c), rebuilt each pass: built without sorting, it made the whole
+ * render 7% faster than the kd-tree of photon/hit_points.c that 2008 keeps for its fixed
+ * hit points (specular box, 24 passes, paired timings, CPU ratio 0.926), with the same
+ * image to the bit. The memory is O(pixels) and does not grow with the passes.
  *
  * The initial radius: R0 of a pixel is ppm_initial_radius() at the first hit point it
  * gets: --footprints widths of a pixel at that distance, fitted to the surface
@@ -52,6 +54,7 @@
 #include <time.h>
 
 #include "../base/alloc.h"
+#include "../photon/hit_point_grid.h"
 #include "../photon/hit_points.h"
 #include "../photon/trace.h"
 #include "ppm_direct.h"
@@ -76,7 +79,7 @@ struct sppm {
     struct hit_point *points;           /* owned: this pass's hit points, n_points of them,
                                            room for one a pixel                            */
     size_t n_points;
-    struct hit_point_tree tree;         /* over points, rebuilt each pass                  */
+    struct hit_point_grid grid;         /* over points, rebuilt each pass                  */
     const struct photon_event *photon;  /* the photon being added                          */
     double unnormalise;                 /* photons per pass: the tracer's Phi / N back to
                                            the paper's unnormalised Phi'                   */
@@ -188,7 +191,7 @@ static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ra
     }
 }
 
-/* Pass `pass`: one eye path through every pixel of the window, then the hit points' tree. */
+/* Pass `pass`: one eye path through every pixel of the window, then the hit points' grid. */
 static void distributed_ray_tracing_pass(struct sppm *sppm, long pass)
 {
     const struct render_settings *rs = sppm->rs;
@@ -200,8 +203,8 @@ static void distributed_ray_tracing_pass(struct sppm *sppm, long pass)
             struct ray ray = camera_sample(sppm->scene, rs->seed, x, y, (int)pass, &rng);
             trace_eye_path(sppm, pixel, pass, ray, &rng);
         }
-    hit_point_tree_free(&sppm->tree);
-    hit_point_tree_build(&sppm->tree, sppm->points, sppm->n_points);
+    hit_point_grid_free(&sppm->grid);
+    hit_point_grid_build(&sppm->grid, sppm->points, sppm->n_points);
 }
 
 /* ---- the photon tracing pass ----------------------------------------------------------- */
@@ -218,7 +221,7 @@ static int add_photon(void *context, const struct photon_event *photon)
 {
     struct sppm *sppm = context;
     sppm->photon = photon;
-    hit_point_tree_visit(&sppm->tree, photon->position, add_flux, sppm);
+    hit_point_grid_visit(&sppm->grid, photon->position, add_flux, sppm);
     return 0;
 }
 
@@ -340,7 +343,7 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     sppm.parts = xmalloc(scene->n_materials + 1, sizeof *sppm.parts, "sppm materials");
     for (size_t m = 0; m < scene->n_materials; m++)
         sppm.parts[m] = brdf_split(&scene->materials[m]);
-    hit_point_tree_build(&sppm.tree, sppm.points, 0);
+    hit_point_grid_build(&sppm.grid, sppm.points, 0);
     if (!ps->direct_photons)
         ppm_direct_create(&sppm.direct, scene, rs);
     struct render_result result = {NULL, NULL, 0.0};
@@ -375,12 +378,12 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     stats->passes = sppm.passes_done;
     stats->seconds_photons = seconds - stats->seconds_ray_pass;
     stats->hit_points = sppm.n_points;
-    stats->bytes_per_hit_point = sizeof(struct hit_point) + HIT_POINT_TREE_BYTES_PER_POINT +
+    stats->bytes_per_hit_point = sizeof(struct hit_point) + HIT_POINT_GRID_BYTES_PER_POINT +
                                  sizeof(struct progressive_estimate) + sizeof(struct vec3);
     stats->photons_emitted = sppm.photons_emitted;
     stats->mean_radius = mean_radius(&sppm);
     counters->passes = (int)sppm.passes_done;
-    hit_point_tree_free(&sppm.tree);
+    hit_point_grid_free(&sppm.grid);
     if (!ps->direct_photons)
         ppm_direct_free(&sppm.direct);
     xfree(sppm.parts);
