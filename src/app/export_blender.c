@@ -41,9 +41,18 @@
  *     culls a point's back face, so a ray from inside misses it: glass spheres and
  *     emitting ones become icospheres (subdivision SPHERE_LEVEL, smooth shading) scaled
  *     to the sphere's area 4 pi r^2, so an emitter keeps its power; export_note says so.
- *   - Meshes. Flat lists of floats, one triangle a line, vertices not shared; vertex
- *     normals become custom split normals (Blender keeps them to about 1e-4 rad), with
- *     Cycles' shadow-terminator offsets set to 0.
+ *   - Units. Blender's unit is UNIT = 2^-k of ours, k the smallest that brings the scene
+ *     within one unit of the camera (a power of 2: the scaling is exact). Cycles 3.4
+ *     samples a triangle light by its solid angle, computed with an approximate arccos,
+ *     unless the longest edge times twice the area is below the distance to its plane, a
+ *     test in absolute units: at our millimetres the Cornell box came out 1.4% dark where
+ *     the light is seen at grazing angles, and a light cut into small triangles tens of %;
+ *     within a unit every triangle is sampled by area, exactly. Radiance does not change
+ *     with scale; a point light's power is multiplied by UNIT^2.
+ *   - Meshes. Flat lists of numbers in a string that floats() splits (a Python literal
+ *     of a million numbers costs its compiler gigabytes), one triangle a line, vertices not
+ *     shared; vertex normals become custom split normals (Blender keeps them to about
+ *     1e-4 rad), with Cycles' shadow-terminator offsets set to 0.
  *   - Output. A name ending in ".pfm" makes the script render to a temporary EXR and
  *     write a PFM ("PF", width height, -1.0, little-endian floats, bottom row first).
  */
@@ -106,6 +115,11 @@ static const char *const PREAMBLE[] = {
     "    # a pixel is the mean over its square: a box 1 pixel wide; exposure 1",
     "    c.pixel_filter_type, c.filter_width, c.film_exposure = 'BOX', 1.0, 1.0",
     "    c.seed = 0",
+    "",
+    "def floats(text):",
+    "    # numbers as one string, parsed at run time: a literal of a million numbers",
+    "    # would cost Python's compiler gigabytes",
+    "    return [float(x) for x in text.split()]",
     "",
     "def scaled(V):",
     "    # our lengths in Blender's units: times UNIT, a power of 2, so exactly",
@@ -324,13 +338,13 @@ static void py_vec(FILE *f, struct vec3 v)
     fputc(')', f);
 }
 
-/* A flat tuple of points, one triangle (or one point, per) a line. */
+/* A flat list of points as floats('''...'''), `per` points (a triangle: 3) a line. */
 static void py_points(FILE *f, const struct vec3 *p, size_t n, size_t per)
 {
-    fputc('(', f);
+    fputs("floats('''", f);
     for (size_t i = 0; i < n; i++)
-        fprintf(f, "%s%.9g,%.9g,%.9g,", i % per == 0 ? "\n " : "", p[i].x, p[i].y, p[i].z);
-    fprintf(f, ")");
+        fprintf(f, "%s%.9g %.9g %.9g", i % per == 0 ? "\n" : "  ", p[i].x, p[i].y, p[i].z);
+    fputs("''')", f);
 }
 
 /* ---- the scene ---- */
@@ -359,7 +373,9 @@ static double reach(const struct export_scene *es)
 static void write_camera(FILE *f, const struct export_scene *es)
 {
     const struct camera *c = &es->camera;
-    struct vec3 u = c->u, v = c->v, w = vec3_neg(c->w), p = c->from;
+    /* + 0.0 turns a -0 into 0, only for the reader's eye */
+    struct vec3 u = vec3_add(c->u, vec3_zero()), v = vec3_add(c->v, vec3_zero());
+    struct vec3 w = vec3_sub(vec3_zero(), c->w), p = c->from;
     double r = reach(es);
     fprintf(f, "# camera: our vertical field of view %.9g degrees; world matrix of columns\n"
                "# u (right), v (up), -w (Blender looks down -z) and the position\n", c->fov);
@@ -498,19 +514,19 @@ static void write_spheres(FILE *f, const struct export_scene *es, int k)
             }
         return;
     }
-    fprintf(f, "spheres('spheres m%d', M%d, (", k, k);
+    fprintf(f, "spheres('spheres m%d', M%d, floats('''", k, k);
     size_t written = 0;
     for (size_t i = 0; i < es->n_spheres; i++)
         if (es->spheres[i].material == k) {
             struct vec3 c = es->spheres[i].centre;
-            fprintf(f, "%s%.9g,%.9g,%.9g,", written++ % 4 == 0 ? "\n " : "", c.x, c.y, c.z);
+            fprintf(f, "%s%.9g %.9g %.9g", written++ % 4 == 0 ? "\n" : "  ", c.x, c.y, c.z);
         }
-    fprintf(f, "),\n (");
+    fprintf(f, "'''),\n    floats('''");
     written = 0;
     for (size_t i = 0; i < es->n_spheres; i++)
         if (es->spheres[i].material == k)
-            fprintf(f, "%s%.9g,", written++ % 8 == 0 ? "\n " : "", es->spheres[i].radius);
-    fprintf(f, "))\n");
+            fprintf(f, "%s%.9g", written++ % 8 == 0 ? "\n" : " ", es->spheres[i].radius);
+    fprintf(f, "'''))\n");
 }
 
 static void write_mesh(FILE *f, size_t i, const struct export_mesh *m)
