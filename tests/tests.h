@@ -37,5 +37,6 @@ void test_paper(struct check *t);  /* test_paper.c: --paper and its switches    
 void test_tte_fit(struct check *t); /* test_tte_fit.c: make bench's fit of pt's error */
 void test_ppm_departures(struct check *t); /* test_ppm_departures.c: 2008's departures */
 void test_switches(struct check *t); /* test_switches.c: each paper switch of 1994, 1996 */
+void test_export_blender(struct check *t); /* test_export_blender.c: the Blender script */
 
 #endif
