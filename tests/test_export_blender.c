@@ -135,7 +135,7 @@ static void test_blender_notes(struct check *t)
     free(py);
     CHECK(t, file_contains(OUT ".log", "material \"plastic\": Cycles has no Phong model"));
     CHECK(t, file_contains(OUT ".log", "material \"satin\": Schlick's model as Diffuse + GGX"));
-    CHECK(t, file_contains(OUT ".log", "1 sphere of material \"tinted\": glass"));
+    CHECK(t, file_contains(OUT ".log", "sphere 1 (material \"tinted\"): glass"));
     CHECK(t, !file_contains(OUT ".log", "\"chrome\""));
 }
 

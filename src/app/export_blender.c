@@ -483,48 +483,63 @@ static void write_lights(FILE *f, const struct export_scene *es)
     }
 }
 
-/* Whether Cycles' point cloud renders the material's spheres exactly: not when a ray
- * must hit a sphere from inside (glass), nor when it emits (a point cloud is no light
- * Cycles samples, and a one-sided test needs the mesh's back faces). */
-static int points_exact(const struct material *m)
+static int inside(struct vec3 p, const struct export_sphere *s)
 {
-    return m->kind != MATERIAL_GLASS && !material_emits(m);
+    return vec3_length(vec3_sub(p, s->centre)) < s->radius;
 }
 
-/* The spheres of material k: those Cycles can make exact as one point cloud, the rest
- * as icospheres. */
+/* Why sphere i cannot be one of Cycles' points, or NULL when it can. Cycles culls a
+ * point's back face (kernel/geom/point_intersect.h), so a ray from inside passes out
+ * through it: glass, and a sphere holding the camera, a point light or an emitting
+ * sphere's centre, must be a mesh. So must an emitter: Cycles samples only triangles as
+ * lights, and the one-sided emission needs the back faces a mesh has. */
+static const char *not_points(const struct export_scene *es, size_t i)
+{
+    const struct export_sphere *s = &es->spheres[i];
+    const struct material *m = &es->materials[s->material];
+    if (material_emits(m))
+        return "emitting";
+    if (m->kind == MATERIAL_GLASS)
+        return "glass, which rays cross (Cycles' points have no inside)";
+    int seen = inside(es->camera.from, s);
+    for (size_t k = 0; k < es->n_point_lights; k++)
+        seen |= inside(es->point_lights[k].position, s);
+    for (size_t k = 0; k < es->n_spheres; k++)
+        seen |= k != i && material_emits(&es->materials[es->spheres[k].material]) &&
+                inside(es->spheres[k].centre, s);
+    return seen ? "seen from inside (Cycles' points have no inside)" : NULL;
+}
+
+/* The spheres of material k: those Cycles can make exact as one point cloud, the rest as
+ * icospheres. */
 static void write_spheres(FILE *f, const struct export_scene *es, int k)
 {
-    const struct material *m = &es->materials[k];
-    size_t n = 0;
-    for (size_t i = 0; i < es->n_spheres; i++)
-        n += es->spheres[i].material == k;
+    size_t n = 0, written = 0;
+    for (size_t i = 0; i < es->n_spheres; i++) {
+        const char *why = es->spheres[i].material == k ? not_points(es, i) : NULL;
+        if (es->spheres[i].material == k && why == NULL)
+            n++;
+        else if (why != NULL) {
+            export_note("blender: sphere %zu (material \"%s\"): %s; written as an icosphere "
+                        "of %d triangles with the sphere's area", i, es->materials[k].name,
+                        why, 20 << (2 * SPHERE_LEVEL));
+            fprintf(f, "sphere_mesh('sphere %zu', M%d, ", i, k);
+            py_vec(f, es->spheres[i].centre);
+            fprintf(f, ", %.9g, %d)\n", es->spheres[i].radius, SPHERE_LEVEL);
+        }
+    }
     if (n == 0)
         return;
-    if (!points_exact(m)) {
-        export_note("blender: %zu sphere%s of material \"%s\": %s, written as icospheres of "
-                    "%d triangles with the sphere's area", n, n == 1 ? "" : "s", m->name,
-                    material_emits(m) ? "emitting" : "glass (Cycles' points have no inside)",
-                    20 << (2 * SPHERE_LEVEL));
-        for (size_t i = 0; i < es->n_spheres; i++)
-            if (es->spheres[i].material == k) {
-                fprintf(f, "sphere_mesh('sphere %zu', M%d, ", i, k);
-                py_vec(f, es->spheres[i].centre);
-                fprintf(f, ", %.9g, %d)\n", es->spheres[i].radius, SPHERE_LEVEL);
-            }
-        return;
-    }
     fprintf(f, "spheres('spheres m%d', M%d, floats('''", k, k);
-    size_t written = 0;
     for (size_t i = 0; i < es->n_spheres; i++)
-        if (es->spheres[i].material == k) {
+        if (es->spheres[i].material == k && not_points(es, i) == NULL) {
             struct vec3 c = es->spheres[i].centre;
             fprintf(f, "%s%.9g %.9g %.9g", written++ % 4 == 0 ? "\n" : "  ", c.x, c.y, c.z);
         }
     fprintf(f, "'''),\n    floats('''");
     written = 0;
     for (size_t i = 0; i < es->n_spheres; i++)
-        if (es->spheres[i].material == k)
+        if (es->spheres[i].material == k && not_points(es, i) == NULL)
             fprintf(f, "%s%.9g", written++ % 8 == 0 ? "\n" : " ", es->spheres[i].radius);
     fprintf(f, "'''))\n");
 }
