@@ -41,8 +41,8 @@
  *     culls a point's back face, so a ray from inside misses it: glass spheres and
  *     emitting ones become icospheres (subdivision SPHERE_LEVEL, smooth shading) scaled
  *     to the sphere's area 4 pi r^2, so an emitter keeps its power; export_note says so.
- *   - Units. Blender's unit is UNIT = 2^-k of ours, k the smallest that brings the scene
- *     within one unit of the camera (a power of 2: the scaling is exact). Cycles 3.4
+ *   - Units. Our lengths times UNIT = 2^-k are Blender's, k the smallest that brings the
+ *     scene within one unit of the camera (a power of 2: the scaling is exact). Cycles 3.4
  *     samples a triangle light by its solid angle, computed with an approximate arccos,
  *     unless the longest edge times twice the area is below the distance to its plane, a
  *     test in absolute units: at our millimetres the Cornell box came out 1.4% dark where
@@ -59,6 +59,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "../base/alloc.h"
 #include "export.h"
 
 #define PI 3.14159265358979323846
@@ -488,12 +489,19 @@ static int inside(struct vec3 p, const struct export_sphere *s)
     return vec3_length(vec3_sub(p, s->centre)) < s->radius;
 }
 
+/* The emitting spheres, listed once: every sphere is tested against each. */
+struct emitters {
+    size_t *index;
+    size_t n;
+};
+
 /* Why sphere i cannot be one of Cycles' points, or NULL when it can. Cycles culls a
  * point's back face (kernel/geom/point_intersect.h), so a ray from inside passes out
  * through it: glass, and a sphere holding the camera, a point light or an emitting
  * sphere's centre, must be a mesh. So must an emitter: Cycles samples only triangles as
  * lights, and the one-sided emission needs the back faces a mesh has. */
-static const char *not_points(const struct export_scene *es, size_t i)
+static const char *not_points(const struct export_scene *es, const struct emitters *lit,
+                              size_t i)
 {
     const struct export_sphere *s = &es->spheres[i];
     const struct material *m = &es->materials[s->material];
@@ -504,19 +512,19 @@ static const char *not_points(const struct export_scene *es, size_t i)
     int seen = inside(es->camera.from, s);
     for (size_t k = 0; k < es->n_point_lights; k++)
         seen |= inside(es->point_lights[k].position, s);
-    for (size_t k = 0; k < es->n_spheres; k++)
-        seen |= k != i && material_emits(&es->materials[es->spheres[k].material]) &&
-                inside(es->spheres[k].centre, s);
+    for (size_t k = 0; k < lit->n; k++)
+        seen |= lit->index[k] != i && inside(es->spheres[lit->index[k]].centre, s);
     return seen ? "seen from inside (Cycles' points have no inside)" : NULL;
 }
 
 /* The spheres of material k: those Cycles can make exact as one point cloud, the rest as
  * icospheres. */
-static void write_spheres(FILE *f, const struct export_scene *es, int k)
+static void write_spheres(FILE *f, const struct export_scene *es, const struct emitters *lit,
+                          int k)
 {
     size_t n = 0, written = 0;
     for (size_t i = 0; i < es->n_spheres; i++) {
-        const char *why = es->spheres[i].material == k ? not_points(es, i) : NULL;
+        const char *why = es->spheres[i].material == k ? not_points(es, lit, i) : NULL;
         if (es->spheres[i].material == k && why == NULL)
             n++;
         else if (why != NULL) {
@@ -532,14 +540,14 @@ static void write_spheres(FILE *f, const struct export_scene *es, int k)
         return;
     fprintf(f, "spheres('spheres m%d', M%d, floats('''", k, k);
     for (size_t i = 0; i < es->n_spheres; i++)
-        if (es->spheres[i].material == k && not_points(es, i) == NULL) {
+        if (es->spheres[i].material == k && not_points(es, lit, i) == NULL) {
             struct vec3 c = es->spheres[i].centre;
             fprintf(f, "%s%.9g %.9g %.9g", written++ % 4 == 0 ? "\n" : "  ", c.x, c.y, c.z);
         }
     fprintf(f, "'''),\n    floats('''");
     written = 0;
     for (size_t i = 0; i < es->n_spheres; i++)
-        if (es->spheres[i].material == k && not_points(es, i) == NULL)
+        if (es->spheres[i].material == k && not_points(es, lit, i) == NULL)
             fprintf(f, "%s%.9g", written++ % 8 == 0 ? "\n" : " ", es->spheres[i].radius);
     fprintf(f, "'''))\n");
 }
@@ -576,8 +584,13 @@ int export_blender(FILE *f, const struct export_scene *es, struct error *err)
     for (size_t i = 0; i < es->n_materials; i++)
         if (es->material_used[i])
             write_material(f, es, i);
+    struct emitters lit = {xmalloc(es->n_spheres + 1, sizeof *lit.index, "spheres"), 0};
+    for (size_t i = 0; i < es->n_spheres; i++)
+        if (material_emits(&es->materials[es->spheres[i].material]))
+            lit.index[lit.n++] = i;
     for (size_t k = 0; k < es->n_materials; k++)
-        write_spheres(f, es, (int)k);
+        write_spheres(f, es, &lit, (int)k);
+    xfree(lit.index);
     for (size_t i = 0; i < es->n_meshes; i++)
         write_mesh(f, i, &es->meshes[i]);
     fprintf(f, "\nrender()\n");
