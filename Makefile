@@ -16,7 +16,7 @@
 #   make fuzz       libFuzzer targets for the four readers, built with clang (development)
 #   make crosscheck our pt references against Blender's Cycles, where blender (3.4+) is
 #                   installed: each scene exported, rendered, compared (CROSSCHECK_SPP,
-#                   default 4096: about half an hour; scripts/crosscheck.sh; development)
+#                   default 4096: about 35 minutes; scripts/crosscheck.sh; development)
 #   make clean
 #
 # BUILD names the object directory, so several compilers can build side by side.
