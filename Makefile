@@ -14,6 +14,9 @@
 #   make figures    re-measure the figures README.md states and write them into it (long;
 #                   ONLY=presets|bench for one part; bench is the tte workload's table)
 #   make fuzz       libFuzzer targets for the four readers, built with clang (development)
+#   make crosscheck our pt references against Blender's Cycles, where blender (3.4+) is
+#                   installed: each scene exported, rendered, compared (CROSSCHECK_SPP,
+#                   default 4096: about 35 minutes; scripts/crosscheck.sh; development)
 #   make clean
 #
 # BUILD names the object directory, so several compilers can build side by side.
@@ -42,7 +45,7 @@ MAIN_OBJ := $(BUILD)/src/main.o
 TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)) tests/bench/tte_fit.c)
 BENCH_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/bench/*.c)))
 
-.PHONY: all run test test-spd check bench figures fuzz clean
+.PHONY: all run test test-spd check bench figures fuzz crosscheck clean
 
 # test-spd refuses at once, before building anything, when it has no folder of SPD files.
 ifneq ($(filter test-spd,$(MAKECMDGOALS)),)
@@ -133,6 +136,10 @@ fuzz: $(FUZZ_BIN)
 build/fuzz/%: tests/fuzz/%.c tests/fuzz/input.c tests/fuzz/input.h $(SRC) $(HEADERS)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -o $@ $< tests/fuzz/input.c $(SRC) -lm
+
+# Cycles against the pt references (scripts/crosscheck.sh): a development check, not a test.
+crosscheck: $(BIN)
+	sh scripts/crosscheck.sh
 
 clean:
 	rm -rf build out $(BIN)

@@ -31,7 +31,8 @@ static const struct room rooms[] = {
     {"precomputed", test_precomputed, 0}, {"paper", test_paper, 0},
     {"hit_points", test_hit_points, 0}, {"tte_fit", test_tte_fit, 0},
     {"switches", test_switches, 0}, {"ppm_departures", test_ppm_departures, 0},
-    {"export", test_export, 0},   {"sppm", test_sppm, 0},
+    {"export", test_export, 0},   {"export_blender", test_export_blender, 0},
+    {"sppm", test_sppm, 0},
     {"spd", test_spd, 1},
 };
 

@@ -353,6 +353,11 @@ static void test_compare_command_line(struct check *t)
     snprintf(args, sizeof args, "%s %s --block 4", f.image, f.image);
     CHECK(t, photon_compare(args, f.log) == 0 &&
              file_contains(f.log, " worst_block=0 worst_block_at=0,0 blocks="));
+    CHECK(t, file_contains(f.log, " mean_ratio=1\n"));
+    /* var.pfm is image.pfm plus 0.01 grey in one pixel: mean luminances 0.49295 / 4 and
+     * 0.48295 / 4 (the other pixel 0.2126 0.25 + 0.7152 0.5 + 0.0722 1 = 0.48295) */
+    snprintf(args, sizeof args, "%s %s --block 4", f.var, f.image);
+    CHECK(t, photon_compare(args, f.log) == 0 && file_contains(f.log, " mean_ratio=1.02071\n"));
     snprintf(args, sizeof args, "%s %s --block 0", f.image, f.image);
     CHECK(t, photon_compare(args, f.log) == 2 && file_contains(f.log, "--block"));
     snprintf(args, sizeof args, "%s %s --alpha 0.05", f.image, f.image);

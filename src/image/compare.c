@@ -33,6 +33,9 @@
  * --ref-variance VB.pfm (b's variance) and/or --test-variance VA.pfm (a's; 0 without),
  * and --alpha ALPHA (default 0.01), the same line goes on with
  *   " pass_fraction=%.6f consistent=yes|no alpha=%g"
+ * and --block N puts before those the worst N x N block's relative error of its mean
+ * luminance, where it is, the counts, and the whole image's mean luminance ratio a / b:
+ *   " worst_block=%.6g worst_block_at=X,Y blocks=%d blocks_within_3pct=%d mean_ratio=%.6g"
  * Options are parsed into struct compare_args: a new flag is one field and one branch.
  */
 #include "compare.h"
@@ -391,6 +394,10 @@ static void print_results(const struct image_error *e, const struct compare_inpu
         struct block_error w = image_worst_block(in->a, in->b, args->block);
         printf(" worst_block=%.6g worst_block_at=%d,%d blocks=%d blocks_within_3pct=%d",
                w.relative_error, w.x0, w.y0, w.n_blocks, w.n_within);
+        /* the whole image as one block: a's mean luminance over b's (inf when b's is 0) */
+        double mean_a = block_mean(in->a, 0, 0, in->a->width, in->a->height);
+        double mean_b = block_mean(in->b, 0, 0, in->b->width, in->b->height);
+        printf(" mean_ratio=%.6g", mean_a == mean_b ? 1.0 : mean_a / mean_b);
     }
     if (in->var_a != NULL || in->var_b != NULL) {
         struct consistency s = image_consistency(in->a, in->b, in->var_a, in->var_b,
