@@ -64,7 +64,8 @@ all=$(rows | awk -F'|' '{ gsub(/[ \t]/, "", $1); print $1 }')
 names=${*:-$all}
 for name in $names; do
     printf '%s\n' "$all" | grep -qx "$name" || {
-        echo "reference: no reference named '$name' in $table; the names are:" $all >&2
+        echo "reference: no reference named '$name' in $table; the names are:" \
+            "$(printf '%s\n' "$all" | tr '\n' ' ')" >&2
         exit 2
     }
 done
@@ -88,6 +89,10 @@ printf '  %-26s %6d s, about %d h %02d min\n' "total" "$total" $((total / 3600))
 
 # percent FRACTION: 0.0123 as 1.2%.
 percent() { awk -v f="$1" 'BEGIN { printf "%.1f%%", 100 * f }'; }
+
+# shown FORMAT NUMBER: the number as printf's FORMAT prints it (two digits of a relmse are
+# all its noise lets mean; whole CPU seconds).
+shown() { awk -v f="$1" -v x="$2" 'BEGIN { printf f, x }'; }
 
 # write_suite NAME ROW: writes reference/suite.md, the header, a row per reference in the
 # table's order (ROW for NAME, for the others the row suite.md had) and the table's notes.
@@ -125,10 +130,16 @@ write_suite() {
     mv "$out.tmp" "$out"
 }
 
-# blocks LINE: photon compare's block statistics in words.
+# blocks LINE: photon compare's block statistics in words. The worst block is infinitely
+# far off when it is black in the reference and not in the image compared.
 blocks() {
-    echo "$(key "$1" blocks_within_3pct) of $(key "$1" blocks) blocks within 3%, worst" \
-        "$(percent "$(key "$1" worst_block)") at ($(key "$1" worst_block_at | sed 's/,/, /'))"
+    worst=$(key "$1" worst_block)
+    at="($(key "$1" worst_block_at | sed 's/,/, /'))"
+    case $worst in
+    inf) worst="the worst, $at, black in the reference and not here" ;;
+    *) worst="worst $(percent "$worst") at $at" ;;
+    esac
+    echo "$(key "$1" blocks_within_3pct) of $(key "$1" blocks) blocks within 3%, $worst"
 }
 
 k=0
@@ -171,7 +182,7 @@ for name in $names; do
     echo "[$k/$n] $name: seed 2 against seed 1: $seeds"
 
     log=$dir/1.log
-    seconds=$(stat_of "$log" seconds_total)
+    seconds=$(shown %.0f "$(stat_of "$log" seconds_total)")
     case " $options " in
     *" --mode 2008 "*)
         passes=$(stat_of "$log" passes)
@@ -181,11 +192,13 @@ for name in $names; do
         samples="$(stat_of "$log" spp) a pixel" ;;
     esac
     relmse=$(key "$seeds" relmse)
-    truth=$(awk -v r="$relmse" 'BEGIN { printf "%.2g", r / 2 }')
+    truth=$(shown %.2g "$(awk -v r="$relmse" 'BEGIN { print r / 2 }')")
+    relmse=$(shown %.2g "$relmse")
     how="seed 2: $(blocks "$seeds")"
     if [ -n "$variance" ]; then
-        how="$how; $(key "$seeds" pass_fraction) of the pixels consistent at α = 0.01 by the"
-        how="$how two variance images"
+        pixels=$(awk -v p="$(key "$seeds" pass_fraction)" \
+            'BEGIN { if (p == 1) print "every pixel"; else printf "%.2f%% of the pixels", 100 * p }')
+        how="$how; $pixels consistent at α = 0.01 by the two variance images"
     fi
 
     if [ "$check" != "-" ]; then
@@ -195,8 +208,8 @@ for name in $names; do
             -o "$dir/check.pfm"
         against=$("$photon" compare "$dir/check.pfm" "$dir/1.pfm" --block 16)
         echo "[$k/$n] $name: check against the reference: $against"
-        how="$how. Against \`$check\` ($(stat_of "$dir/check.log" seconds_total) s): relmse"
-        how="$how $(key "$against" relmse), $(blocks "$against")"
+        how="$how. Against \`$check\` ($(shown %.0f "$(stat_of "$dir/check.log" seconds_total)") s):"
+        how="$how relmse $(shown %.2g "$(key "$against" relmse)"), $(blocks "$against")"
     fi
 
     # The command that makes the kept file, as a user would type it.
