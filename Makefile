@@ -13,6 +13,8 @@
 #                   adds the workloads on SPD files, which are skipped without it
 #   make figures    re-measure the figures README.md states and write them into it (long;
 #                   ONLY=presets|bench for one part; bench is the tte workload's table)
+#   make reference  render the converged references of reference/suite.txt and write
+#                   reference/suite.md (hours; says how long first; ONLY=NAME for one)
 #   make fuzz       libFuzzer targets for the four readers, built with clang (development)
 #   make crosscheck our pt references against Blender's Cycles, where blender (3.4+) is
 #                   installed: each scene exported, rendered, compared (CROSSCHECK_SPP,
@@ -45,7 +47,7 @@ MAIN_OBJ := $(BUILD)/src/main.o
 TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)) tests/bench/tte_fit.c)
 BENCH_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/bench/*.c)))
 
-.PHONY: all run test test-spd check bench figures fuzz crosscheck clean
+.PHONY: all run test test-spd check bench figures reference fuzz crosscheck clean
 
 # test-spd refuses at once, before building anything, when it has no folder of SPD files.
 ifneq ($(filter test-spd,$(MAKECMDGOALS)),)
@@ -124,6 +126,11 @@ bench: $(BIN) $(BUILD)/bench
 # The figures README.md states, re-measured and written into it (ONLY=presets or bench).
 figures: $(BIN) $(BUILD)/bench
 	sh scripts/figures.sh $(ONLY)
+
+# The reference suite (reference/suite.txt), one render at a time; ONLY=NAME (or
+# ONLY="NAME NAME") renders only those, keeping the other rows of reference/suite.md.
+reference: $(BIN)
+	PHOTON=./$(BIN) sh scripts/reference.sh $(ONLY)
 
 # Fuzz targets (a development tool, not part of the product build): one per reader. Run
 # e.g. build/fuzz/fuzz_nff -max_len=8192 -max_total_time=600 CORPUS_DIR < /dev/null
