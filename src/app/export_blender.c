@@ -32,21 +32,24 @@
  *     dielectric Fresnel (Cycles inverts the ior on back faces, and the Fresnel is 1 at
  *     total internal reflection) with our filter on refraction only. Cycles does not scale
  *     radiance by 1/eta^2 on refraction; for light that enters and leaves a body the
- *     factors cancel, so only emitters inside glass would differ. Phong, Ward and Schlick
- *     have no equivalent: a Diffuse plus a Glossy lobe (Beckmann of alpha sqrt(2/(n+2))
- *     for Phong, sqrt(ax ay) for Ward; for Schlick our own split a, b, c into Diffuse,
- *     GGX of alpha sqrt(r) and a sharp mirror), each announced by export_note.
+ *     factors cancel, so only an emitter or the camera inside glass would differ. Phong,
+ *     Ward and Schlick have no equivalent: a Diffuse plus a Glossy lobe (Beckmann of
+ *     alpha sqrt(2/(n+2)) for Phong, sqrt(ax ay) for Ward; for Schlick our own split
+ *     a, b, c into Diffuse, GGX of alpha sqrt(r) and a sharp mirror), each announced by
+ *     export_note.
  *   - Spheres. Cycles' point cloud gives exact spheres: one vertex a sphere with its
  *     radius as an attribute, turned into points by a Geometry Nodes modifier. Cycles
- *     culls a point's back face, so a ray from inside misses it: glass spheres and
- *     emitting ones become icospheres (subdivision SPHERE_LEVEL, smooth shading) scaled
- *     to the sphere's area 4 pi r^2, so an emitter keeps its power; export_note says so.
+ *     culls a point's back face, so a ray from inside misses it: glass spheres, emitting
+ *     ones and those seen from inside (holding the camera, a point light or an emitting
+ *     sphere's centre) become icospheres (subdivision SPHERE_LEVEL, smooth shading)
+ *     scaled to the sphere's area 4 pi r^2, so an emitter keeps its power; export_note
+ *     says so.
  *   - Units. Our lengths times UNIT = 2^-k are Blender's, k the smallest that brings the
  *     scene within one unit of the camera (a power of 2: the scaling is exact). Cycles 3.4
  *     samples a triangle light by its solid angle, computed with an approximate arccos,
  *     unless the longest edge times twice the area is below the distance to its plane, a
- *     test in absolute units: at our millimetres the Cornell box came out 1.4% dark where
- *     the light is seen at grazing angles, and a light cut into small triangles tens of %;
+ *     test in absolute units: at our millimetres the Cornell box came out 1-1.4% dark
+ *     where the light is seen at grazing angles, a light cut into small triangles tens of %;
  *     within a unit every triangle is sampled by area, exactly. Radiance does not change
  *     with scale; a point light's power is multiplied by UNIT^2.
  *   - Meshes. Flat lists of numbers in a string that floats() splits (a Python literal
