@@ -24,16 +24,33 @@ static void mark_visited(void *context, size_t i)
     v->hit[i] = 1;
 }
 
-/* Whether the tree visits exactly the hit points a linear scan finds for 2000 queries. */
-static int tree_matches_scan(const struct hit_point_tree *tree, const struct hit_point *points,
-                             size_t n, struct rng *rng)
+/* A search over hit points: the tree's or the grid's visit, on index. */
+typedef void (*search_fn)(const void *index, struct vec3 p,
+                          void (*visit)(void *context, size_t i), void *context);
+
+static void tree_search(const void *index, struct vec3 p, void (*visit)(void *, size_t),
+                        void *context)
 {
-    struct visited v = {calloc(n, 1), 0};
+    hit_point_tree_visit(index, p, visit, context);
+}
+
+static void grid_search(const void *index, struct vec3 p, void (*visit)(void *, size_t),
+                        void *context)
+{
+    hit_point_grid_visit(index, p, visit, context);
+}
+
+/* Whether search visits exactly the hit points a linear scan finds for 2000 queries,
+ * each once. */
+static int matches_scan(search_fn search, const void *index, const struct hit_point *points,
+                        size_t n, struct rng *rng)
+{
+    struct visited v = {calloc(n > 0 ? n : 1, 1), 0};
     int same = 1;
     for (int q = 0; q < 2000; q++) {
         struct vec3 p = vec3(rng_uniform(rng), rng_uniform(rng), rng_uniform(rng) * 0.1);
         memset(v.hit, 0, n);
-        hit_point_tree_visit(tree, p, mark_visited, &v);
+        search(index, p, mark_visited, &v);
         for (size_t i = 0; i < n; i++) {
             double d2 = vec3_length2(vec3_sub(p, points[i].x));
             same = same && v.hit[i] == (d2 <= points[i].global.radius * points[i].global.radius);
@@ -66,34 +83,14 @@ static void test_hit_point_tree(struct check *t)
         }
         struct hit_point_tree tree;
         hit_point_tree_build(&tree, points, n);
-        CHECK(t, tree_matches_scan(&tree, points, n, &rng));
+        CHECK(t, matches_scan(tree_search, &tree, points, n, &rng));
         for (size_t i = 0; i < n; i++)
             points[i].global.radius *= i % 5 == 0 ? 0.0 : rng_uniform(&rng);
         hit_point_tree_refit(&tree);
-        CHECK(t, tree_matches_scan(&tree, points, n, &rng));
+        CHECK(t, matches_scan(tree_search, &tree, points, n, &rng));
         hit_point_tree_free(&tree);
         free(points);
     }
-}
-
-/* Whether the grid visits exactly the hit points a linear scan finds for 2000 queries,
- * each once. */
-static int grid_matches_scan(const struct hit_point_grid *grid, const struct hit_point *points,
-                             size_t n, struct rng *rng)
-{
-    struct visited v = {calloc(n > 0 ? n : 1, 1), 0};
-    int same = 1;
-    for (int q = 0; q < 2000; q++) {
-        struct vec3 p = vec3(rng_uniform(rng), rng_uniform(rng), rng_uniform(rng) * 0.1);
-        memset(v.hit, 0, n);
-        hit_point_grid_visit(grid, p, mark_visited, &v);
-        for (size_t i = 0; i < n; i++) {
-            double d2 = vec3_length2(vec3_sub(p, points[i].x));
-            same = same && v.hit[i] == (d2 <= points[i].global.radius * points[i].global.radius);
-        }
-    }
-    free(v.hit);
-    return same && !v.twice;
 }
 
 /* truth: brute force, as for the tree: random points in a thin slab with radii from 0 to
@@ -118,12 +115,12 @@ static void test_hit_point_grid(struct check *t)
         }
         struct hit_point_grid grid;
         hit_point_grid_build(&grid, points, n);
-        CHECK(t, grid_matches_scan(&grid, points, n, &rng));
+        CHECK(t, matches_scan(grid_search, &grid, points, n, &rng));
         hit_point_grid_free(&grid);
         for (size_t i = 0; i < n; i++)
             points[i].global.radius = 0;
         hit_point_grid_build(&grid, points, n);
-        CHECK(t, grid_matches_scan(&grid, points, n, &rng));
+        CHECK(t, matches_scan(grid_search, &grid, points, n, &rng));
         hit_point_grid_free(&grid);
         free(points);
     }

@@ -99,68 +99,35 @@ static struct image *whole_image(const struct scene *scene, size_t photons_per_p
     return seeded_image(scene, 1, photons_per_pass, passes, direct_photons);
 }
 
-/* Error of each checkpoint's image against a closed form, by power-of-two pass. */
+/* A render's inputs and its error_curve (truths.h). */
 struct convergence {
     int direct_photons; /* input: ppm_settings.direct_photons */
     int spp;            /* input: eye rays per pixel          */
-    const struct scene *scene;
-    double (*truth)(const struct scene *scene, int x, int y);
-    double error[32];  /* mean |L - truth| / truth over the pixels where truth > 0, after
-                          2^k passes                                                     */
-    int n;
+    struct error_curve curve;
 };
-
-static double record_error(void *context, const struct image *mean, long long work,
-                           double seconds)
-{
-    (void)work;
-    (void)seconds;
-    struct convergence *c = context;
-    double sum = 0;
-    int n = 0;
-    for (int y = 0; y < mean->height; y++)
-        for (int x = 0; x < mean->width; x++) {
-            double truth = c->truth(c->scene, x, y);
-            if (truth > 0) {
-                sum += fabs(image_get(mean, x, y).y - truth) / truth;
-                n++;
-            }
-        }
-    if (c->n < 32)
-        c->error[c->n++] = n > 0 ? sum / n : INFINITY;
-    return 0;
-}
 
 /* Renders path with passes x photons_per_pass, recording the error at 1, 2, 4, ... passes. */
 static void converge(const char *path, int width, long passes, size_t photons_per_pass,
                      struct convergence *c)
 {
     struct scene *scene = load_test_scene(path, width, width);
-    memset(c->error, 0, sizeof c->error);
-    c->n = 0;
+    memset(c->curve.error, 0, sizeof c->curve.error);
+    c->curve.n = 0;
     if (scene == NULL)
         return;
-    c->scene = scene;
+    c->curve.scene = scene;
     struct render_settings rs = render_settings_whole(scene, 1, c->spp, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(photons_per_pass, passes);
     ps.direct_photons = c->direct_photons;
     ps.footprints = 1;
     ps.fit_radius = 0;
-    struct checkpoint checkpoint = {record_error, c};
+    struct checkpoint checkpoint = {error_curve_record, &c->curve};
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     ps.report = &checkpoint;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
     render_result_free(&result);
     scene_free(scene);
-}
-
-static double furnace_truth(const struct scene *scene, int x, int y)
-{
-    (void)scene;
-    (void)x;
-    (void)y;
-    return 4.0; /* rho Phi / (4 pi^2 R^2 (1 - rho)), scenes/analytic/point-in-sphere.scene */
 }
 
 
@@ -209,16 +176,16 @@ static double area_truth(const struct scene *scene, int x, int y)
 static void test_converges_to_closed_forms(struct check *t)
 {
     struct convergence c;
-    c.truth = furnace_truth;
+    c.curve.truth = point_in_sphere_truth;
     c.spp = 1;
     for (c.direct_photons = 0; c.direct_photons < 2; c.direct_photons++) {
         converge("scenes/analytic/point-in-sphere.scene", 8, 256, 4000, &c);
-        CHECK(t, c.n == 9 && c.error[8] < 0.01 && c.error[8] < 0.5 * c.error[2]);
+        CHECK(t, c.curve.n == 9 && c.curve.error[8] < 0.01 && c.curve.error[8] < 0.5 * c.curve.error[2]);
     }
-    c.truth = point_over_plane_sample;
+    c.curve.truth = point_over_plane_sample;
     c.direct_photons = 1;
     converge("scenes/analytic/point-over-plane.scene", 12, 256, 64000, &c);
-    CHECK(t, c.n == 9 && c.error[8] < 0.01 && c.error[8] < 0.5 * c.error[2]);
+    CHECK(t, c.curve.n == 9 && c.curve.error[8] < 0.01 && c.curve.error[8] < 0.5 * c.curve.error[2]);
 }
 
 /* truth: Lambert's formula for a square light over a floor (area_over_floor()), the floor's
@@ -237,11 +204,11 @@ static void test_converges_to_closed_forms(struct check *t)
 static void test_direct_light_sampled(struct check *t)
 {
     struct convergence c;
-    c.truth = area_truth;
+    c.curve.truth = area_truth;
     c.direct_photons = 0;
     c.spp = AREA_SPP;
     converge("scenes/analytic/area-over-floor.scene", 12, AREA_PASSES, 100, &c);
-    CHECK(t, c.n == 9 && c.error[8] < 0.01 && c.error[8] < 0.5 * c.error[2]);
+    CHECK(t, c.curve.n == 9 && c.curve.error[8] < 0.01 && c.curve.error[8] < 0.5 * c.curve.error[2]);
 }
 
 /* Sums tau(x) and N(x) over every hit point after the last pass. */

@@ -17,35 +17,6 @@
 #include "tests.h"
 #include "truths.h"
 
-/* The mean |L - truth| / truth over the pixels where truth > 0, after 2^k passes. */
-struct convergence {
-    const struct scene *scene;
-    double (*truth)(const struct scene *scene, int x, int y);
-    double error[32];
-    int n;
-};
-
-static double record_error(void *context, const struct image *mean, long long work,
-                           double seconds)
-{
-    (void)work;
-    (void)seconds;
-    struct convergence *c = context;
-    double sum = 0;
-    int n = 0;
-    for (int y = 0; y < mean->height; y++)
-        for (int x = 0; x < mean->width; x++) {
-            double truth = c->truth(c->scene, x, y);
-            if (truth > 0) {
-                sum += fabs(image_get(mean, x, y).y - truth) / truth;
-                n++;
-            }
-        }
-    if (c->n < 32)
-        c->error[c->n++] = n > 0 ? sum / n : INFINITY;
-    return 0;
-}
-
 /* The paper's R0 (one footprint, whole) and the given photons, passes and direct way. */
 static struct ppm_settings sppm_settings(size_t photons_per_pass, long passes,
                                          int direct_photons)
@@ -61,7 +32,7 @@ static struct ppm_settings sppm_settings(size_t photons_per_pass, long passes,
 
 /* Renders path (width x width) recording the error at 1, 2, 4, ... passes. */
 static void converge(const char *path, int width, long passes, size_t photons_per_pass,
-                     int direct_photons, struct convergence *c)
+                     int direct_photons, struct error_curve *c)
 {
     struct scene *scene = load_test_scene(path, width, width);
     memset(c->error, 0, sizeof c->error);
@@ -71,21 +42,13 @@ static void converge(const char *path, int width, long passes, size_t photons_pe
     c->scene = scene;
     struct render_settings rs = render_settings_whole(scene, 1, (int)passes, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = sppm_settings(photons_per_pass, passes, direct_photons);
-    struct checkpoint checkpoint = {record_error, c};
+    struct checkpoint checkpoint = {error_curve_record, c};
     ps.report = &checkpoint;
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     struct render_result result = render_sppm(scene, &rs, &ps, &counters, &stats);
     render_result_free(&result);
     scene_free(scene);
-}
-
-static double furnace_truth(const struct scene *scene, int x, int y)
-{
-    (void)scene;
-    (void)x;
-    (void)y;
-    return 4.0; /* rho Phi / (4 pi^2 R^2 (1 - rho)), scenes/analytic/point-in-sphere.scene */
 }
 
 #define PLANE_PASSES 256
@@ -119,8 +82,8 @@ static double plane_truth(const struct scene *scene, int x, int y)
  *   reset each pass (the error would not fall). */
 static void test_converges_to_closed_forms(struct check *t)
 {
-    struct convergence c;
-    c.truth = furnace_truth;
+    struct error_curve c;
+    c.truth = point_in_sphere_truth;
     for (int direct_photons = 0; direct_photons < 2; direct_photons++) {
         converge("scenes/analytic/point-in-sphere.scene", 8, 256, 8000, direct_photons, &c);
         CHECK(t, c.n == 9 && c.error[8] < 0.01 && c.error[8] < 0.5 * c.error[2]);

@@ -286,3 +286,32 @@ const char *mode_work_options(const char *render)
             return work[i][1];
     return "";
 }
+
+double error_curve_record(void *context, const struct image *mean, long long work,
+                          double seconds)
+{
+    (void)work;
+    (void)seconds;
+    struct error_curve *c = context;
+    double sum = 0;
+    int n = 0;
+    for (int y = 0; y < mean->height; y++)
+        for (int x = 0; x < mean->width; x++) {
+            double truth = c->truth(c->scene, x, y);
+            if (truth > 0) {
+                sum += fabs(image_get(mean, x, y).y - truth) / truth;
+                n++;
+            }
+        }
+    if (c->n < 32)
+        c->error[c->n++] = n > 0 ? sum / n : INFINITY;
+    return 0;
+}
+
+double point_in_sphere_truth(const struct scene *scene, int x, int y)
+{
+    (void)scene;
+    (void)x;
+    (void)y;
+    return 4.0;
+}

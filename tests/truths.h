@@ -49,6 +49,24 @@ double error_before_edge(const struct scene *scene, const struct image *image, i
  * (test_jensen1994.c, test_ppm_departures.c). */
 double mirror_caustic_irradiance(struct vec3 p);
 
+/* scenes/analytic/point-in-sphere.scene's radiance, 4 in every pixel: rho Phi / (4 pi^2
+ * R^2 (1 - rho)) (test_ppm.c, test_sppm.c). */
+double point_in_sphere_truth(const struct scene *scene, int x, int y);
+
+/* The error of a progressive render's checkpoints against a closed form truth(scene, x,
+ * y): the mean |L - truth| / truth over the pixels where truth > 0, after 1, 2, 4, ...
+ * passes (test_ppm.c, test_sppm.c). */
+struct error_curve {
+    const struct scene *scene;
+    double (*truth)(const struct scene *scene, int x, int y);
+    double error[32];
+    int n;
+};
+
+/* A checkpoint's at() for an error_curve: records the image's error as the next entry. */
+double error_curve_record(void *context, const struct image *mean, long long work,
+                          double seconds);
+
 /* Loads and finishes the scene at path for width x height (0: the file's own size); the
  * caller frees it with scene_free. NULL, with the error printed, when it cannot be read. */
 struct scene *load_test_scene(const char *path, int width, int height);

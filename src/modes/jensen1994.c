@@ -80,11 +80,6 @@ struct jensen1994_settings jensen1994_settings_default(void)
     return js;
 }
 
-static double cpu_seconds(clock_t start)
-{
-    return (double)(clock() - start) / CLOCKS_PER_SEC;
-}
-
 /* ---- Sec. 3, pass 1: light path tracing into the photon map ---- */
 
 /* Where pass 1 deposits: the illumination maps for photons on a surface that has one,

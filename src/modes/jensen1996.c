@@ -72,11 +72,6 @@
 #include "photons.h"
 #include "surface.h"
 
-static double cpu_seconds(clock_t start)
-{
-    return (double)(clock() - start) / CLOCKS_PER_SEC;
-}
-
 /* ---- Sec. 4, pass 2: rendering ---- */
 
 enum evaluation { ACCURATE, CORNER, APPROXIMATE };

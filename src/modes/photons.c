@@ -39,11 +39,6 @@ struct photons_mode {
     int max_depth;               /* longest chain of specular bounces from the camera   */
 };
 
-static double cpu_seconds(clock_t start)
-{
-    return (double)(clock() - start) / CLOCKS_PER_SEC;
-}
-
 /* Eq. 3 / Eq. 5 at the surface s, seen along s->wo. */
 static struct vec3 estimate_at(const struct photons_mode *pm, const struct surface *s,
                                const struct shading_frame *frame)

@@ -109,11 +109,6 @@ struct ppm {
                                            ray (all its branches) has met so far          */
 };
 
-static double cpu_seconds(clock_t start)
-{
-    return (double)(clock() - start) / CLOCKS_PER_SEC;
-}
-
 struct ppm_settings ppm_settings_default(void)
 {
     struct ppm_settings ps;
@@ -349,24 +344,32 @@ static int add_photon(void *context, const struct photon_event *photon)
     return 0;
 }
 
+size_t ppm_photon_pass(const struct scene *scene, const struct render_settings *rs,
+                       const struct ppm_settings *ps, long pass, const struct photon_sink *sink,
+                       unsigned long long *photon_rays)
+{
+    struct trace_settings ts;
+    memset(&ts, 0, sizeof ts);
+    ts.seed = rs->seed;
+    ts.pass = (uint64_t)pass;
+    ts.n_emit = ps->photons_per_pass; /* max_stored: unused, nothing is stored */
+    ts.store = ps->direct_photons ? PHOTON_MAP_GLOBAL : PHOTON_AFTER_FIRST_BOUNCE;
+    ts.max_depth = rs->max_depth;
+    ts.targets = NULL;
+    ts.projection = NULL;
+    trace_photons_into(scene, &ts, sink, photon_rays); /* the sink never stops it */
+    return ts.n_emit;
+}
+
 /* Pass p: photons_per_pass photons, each handed to the hit points at every non-specular
  * hit (Sec. 4.2: direct, caustic and indirect alike) with --direct-photons; by default
  * except the first hit straight from the light. Departs from Sec. 4.2 there: the light
  * samples of ppm_direct.c bring that light (the departure at the top). */
 static void photon_tracing_pass(struct ppm *ppm, long pass, struct ppm_stats *stats)
 {
-    struct trace_settings ts;
-    memset(&ts, 0, sizeof ts);
-    ts.seed = ppm->rs->seed;
-    ts.pass = (uint64_t)pass;
-    ts.n_emit = ppm->ps->photons_per_pass; /* max_stored: unused, nothing is stored */
-    ts.store = ppm->ps->direct_photons ? PHOTON_MAP_GLOBAL : PHOTON_AFTER_FIRST_BOUNCE;
-    ts.max_depth = ppm->rs->max_depth;
-    ts.targets = NULL;
-    ts.projection = NULL;
     struct photon_sink sink = {add_photon, ppm};
-    trace_photons_into(ppm->scene, &ts, &sink, &stats->photon_rays); /* the sink never stops it */
-    ppm->photons_emitted += ts.n_emit;
+    ppm->photons_emitted += ppm_photon_pass(ppm->scene, ppm->rs, ppm->ps, pass, &sink,
+                                            &stats->photon_rays);
 }
 
 /* After photon pass p (from 0), one more eye ray through every pixel that takes the direct
@@ -470,21 +473,15 @@ static double mean_radius(const struct ppm *ppm)
     return ppm->n_points > 0 ? sum / (double)ppm->n_points : 0.0;
 }
 
-static void show_progress(const struct ppm *ppm, long pass, double seconds, int done)
+void ppm_show_progress(long pass, long passes, double photons, double mean_radius,
+                       double seconds, int done)
 {
-    long passes = ppm->ps->passes;
     double left = seconds * (double)(passes - pass) / (double)pass;
     fprintf(stderr, "\rphoton: pass %ld/%ld, %.3g photons, mean radius %.3g, %.1f s, "
-            "about %.0f s left   ", pass, passes, (double)ppm->photons_emitted,
-            mean_radius(ppm), seconds, left);
+            "about %.0f s left   ", pass, passes, photons, mean_radius, seconds, left);
     if (done)
         fputc('\n', stderr);
     fflush(stderr);
-}
-
-static int is_power_of_two(long n)
-{
-    return n > 0 && (n & (n - 1)) == 0;
 }
 
 /* Calls checkpoint with the image so far; returns the CPU seconds it took. */
@@ -519,7 +516,8 @@ static void photon_passes(struct ppm *ppm, double offset, struct image *image,
         if (ps->snapshot != NULL && ps->snapshot_every > 0 && pass % ps->snapshot_every == 0)
             excluded += call_checkpoint(ppm, ps->snapshot, image, offset + seconds);
         if (ppm->rs->progress && (last || seconds - last_shown >= 0.5)) {
-            show_progress(ppm, pass, seconds, last);
+            ppm_show_progress(pass, ps->passes, (double)ppm->photons_emitted, mean_radius(ppm),
+                              seconds, last);
             last_shown = seconds;
         }
     }

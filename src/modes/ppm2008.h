@@ -98,6 +98,20 @@ struct vec3 ppm_corrected_flux(struct vec3 tau_n_plus_m, double n, double m, dou
  * Eq. 9 and Eq. 7 in turn, then M = 0 for the next pass. */
 void ppm_update_estimate(struct progressive_estimate *e, double alpha);
 
+struct photon_sink;
+
+/* Photon pass `pass` of a progressive render: ps->photons_per_pass photons with the
+ * shared tracer, each stored photon handed to sink at once -- every one with
+ * ps->direct_photons, else those after their first bounce (the light samples bring the
+ * first); adds the tracer's rays to *photon_rays. Returns the photons emitted. */
+size_t ppm_photon_pass(const struct scene *scene, const struct render_settings *rs,
+                       const struct ppm_settings *ps, long pass, const struct photon_sink *sink,
+                       unsigned long long *photon_rays);
+
+/* The progress line of a progressive render after `pass` of `passes`. */
+void ppm_show_progress(long pass, long passes, double photons, double mean_radius,
+                       double seconds, int done);
+
 /* Eq. 13: L = tau / (pi R^2 N_emitted); zero when R or N_emitted is zero (nothing can
  * have been found yet). */
 struct vec3 ppm_radiance(struct vec3 tau, double r, double n_emitted);

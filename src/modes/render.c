@@ -44,11 +44,6 @@ struct accumulator {
     size_t n_active;         /* pixels the last pass sampled                             */
 };
 
-static double cpu_seconds(clock_t start)
-{
-    return (double)(clock() - start) / CLOCKS_PER_SEC;
-}
-
 struct render_settings render_settings_whole(const struct scene *scene, uint64_t seed, int spp,
                                              int max_depth)
 {
@@ -72,11 +67,6 @@ struct ray camera_sample(const struct scene *scene, uint64_t seed, int x, int y,
     sequence02_point((uint32_t)s, (uint32_t)shift, (uint32_t)(shift >> 32), &u, &v);
     *rng = rng_stream(seed, STREAM_CAMERA, pixel, (uint64_t)s);
     return camera_ray(&scene->camera, x + u, y + v);
-}
-
-static int is_power_of_two(int n)
-{
-    return n > 0 && (n & (n - 1)) == 0;
 }
 
 /* The adaptive rule of render.h for pixel i at its n = n[i] samples: whether it stops. It

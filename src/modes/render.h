@@ -45,6 +45,7 @@
 #define PHOTON_RENDER_H
 
 #include <stdint.h>
+#include <time.h>
 
 #include "../base/rng.h"
 #include "../image/image.h"
@@ -111,6 +112,18 @@ struct radiance_estimator {
  * the samples per pixel, that is all samples taken in the window divided by its pixels,
  * rounded to the nearest integer (the passes run, when adaptive sampling is off). Returns
  * the CPU seconds it spent, which the render excludes from its own clock. */
+/* CPU seconds since start, a clock() reading: what every mode's timings count. */
+static inline double cpu_seconds(clock_t start)
+{
+    return (double)(clock() - start) / CLOCKS_PER_SEC;
+}
+
+/* Whether n is 1, 2, 4, 8, ...: the passes after which a checkpoint is called. */
+static inline int is_power_of_two(long n)
+{
+    return n > 0 && (n & (n - 1)) == 0;
+}
+
 struct checkpoint {
     double (*at)(void *context, const struct image *mean, long long work, double seconds);
     void *context;

@@ -61,10 +61,6 @@
 #include "ppm_radius.h"
 #include "surface.h"
 
-/* The photons that reach hit points when a light sample takes the direct light: those
- * after a diffuse bounce, and caustics (L S+ D), which no shadow ray sees the light by. */
-#define PHOTON_AFTER_FIRST_BOUNCE (PHOTON_CAUSTIC | PHOTON_INDIRECT)
-
 struct sppm {
     const struct scene *scene;          /* borrowed                                        */
     const struct render_settings *rs;   /* borrowed                                        */
@@ -89,11 +85,6 @@ struct sppm {
     struct brdf_split *parts;           /* owned: each scene material's diffuse and
                                            specular parts (brdf_split())                   */
 };
-
-static double cpu_seconds(clock_t start)
-{
-    return (double)(clock() - start) / CLOCKS_PER_SEC;
-}
 
 /* ---- the distributed ray tracing pass ----------------------------------------------- */
 
@@ -225,23 +216,13 @@ static int add_photon(void *context, const struct photon_event *photon)
     return 0;
 }
 
-/* Pass p: photons_per_pass photons, each given to the hit points at every non-specular
- * hit with --direct-photons, by default from its second (the light samples bring the
- * first). */
+/* Pass p: photons_per_pass photons with 2008's photon pass, each given to the hit
+ * points around it. */
 static void photon_tracing_pass(struct sppm *sppm, long pass, struct ppm_stats *stats)
 {
-    struct trace_settings ts;
-    memset(&ts, 0, sizeof ts);
-    ts.seed = sppm->rs->seed;
-    ts.pass = (uint64_t)pass;
-    ts.n_emit = sppm->ps->photons_per_pass;
-    ts.store = sppm->ps->direct_photons ? PHOTON_MAP_GLOBAL : PHOTON_AFTER_FIRST_BOUNCE;
-    ts.max_depth = sppm->rs->max_depth;
-    ts.targets = NULL;
-    ts.projection = NULL;
     struct photon_sink sink = {add_photon, sppm};
-    trace_photons_into(sppm->scene, &ts, &sink, &stats->photon_rays);
-    sppm->photons_emitted += ts.n_emit;
+    sppm->photons_emitted += ppm_photon_pass(sppm->scene, sppm->rs, sppm->ps, pass, &sink,
+                                             &stats->photon_rays);
 }
 
 /* ---- the progressive update of the shared statistics ---------------------------------- */
@@ -298,17 +279,6 @@ static double mean_radius(const struct sppm *sppm)
 
 /* ---- the passes -------------------------------------------------------------------- */
 
-static void show_progress(const struct sppm *sppm, double seconds, int done)
-{
-    long pass = sppm->passes_done, passes = sppm->ps->passes;
-    fprintf(stderr, "\rphoton: pass %ld/%ld, %.3g photons, mean radius %.3g, %.1f s, "
-            "about %.0f s left   ", pass, passes, (double)sppm->photons_emitted,
-            mean_radius(sppm), seconds, seconds * (double)(passes - pass) / (double)pass);
-    if (done)
-        fputc('\n', stderr);
-    fflush(stderr);
-}
-
 /* Calls checkpoint with the image so far; returns the CPU seconds it took. */
 static double call_checkpoint(const struct sppm *sppm, const struct checkpoint *checkpoint,
                               struct image *image, double seconds)
@@ -316,11 +286,6 @@ static double call_checkpoint(const struct sppm *sppm, const struct checkpoint *
     evaluate_image(sppm, image);
     return checkpoint->at(checkpoint->context, image, (long long)sppm->photons_emitted,
                           seconds);
-}
-
-static int is_power_of_two(long n)
-{
-    return n > 0 && (n & (n - 1)) == 0;
 }
 
 struct render_result render_sppm(const struct scene *scene, const struct render_settings *rs,
@@ -369,7 +334,8 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
             sppm.passes_done % ps->snapshot_every == 0)
             excluded += call_checkpoint(&sppm, ps->snapshot, result.image, seconds);
         if (rs->progress && (last || seconds - last_shown >= 0.5)) {
-            show_progress(&sppm, seconds, last);
+            ppm_show_progress(sppm.passes_done, ps->passes, (double)sppm.photons_emitted,
+                              mean_radius(&sppm), seconds, last);
             last_shown = seconds;
         }
     }
