@@ -10,11 +10,16 @@
 #     `./photon` or `mkdir` runs, in order, in an empty directory that sees only scenes/ and
 #     reference/, and must exit 0. Renders get `--quality preview` appended (an explicit
 #     option still wins over it), so the whole README runs in well under a minute.
+#  4. The reference suite's table (reference/suite.txt) and its files agree: every line has
+#     reference/NAME.pfm, NAME.png and, but for 2008, NAME-var.pfm, and a measured row in
+#     reference/suite.md; every PFM in reference/ has its line; every scene the table names
+#     exists, every scenes/analytic/ scene has a reference, and every option the table
+#     gives is one photon's --help lists. Nothing is rendered.
 # Prints one line per problem and "docs: N problems"; exits 1 when there is any.
 set -u
 photon=$1
 case $photon in /*) ;; *) photon=$(pwd)/$photon ;; esac
-docs="README.md src/modes/README.md reference/README.md scripts/README.md tests/bench/README.md"
+docs="README.md src/modes/README.md reference/README.md reference/suite.md scripts/README.md tests/bench/README.md"
 problems=0
 problem() { echo "docs: $*"; problems=$((problems + 1)); }
 
@@ -66,5 +71,43 @@ while read -r command; do
 done < "$scratch/commands"
 rm -rf "$scratch"
 [ "$n" -gt 0 ] || problem "no ./photon command found in README.md's sh blocks"
+# 4. The reference suite: the table's lines (comments and blank lines dropped), fields
+#    trimmed; field 1 the name, 2 the scene, 3 the options, 5 the check's options.
+suite=reference/suite.txt
+sed -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' "$suite" |
+    awk -F'|' '{ for (i = 1; i <= NF; i++) gsub(/^[ \t]+|[ \t]+$/, "", $i)
+                 print $1 "|" $2 "|" $3 "|" $5 }' > docs-suite.tmp
+{
+    while IFS='|' read -r name scene options check; do
+        [ -f "$scene" ] || echo "$suite: $name renders $scene, which does not exist"
+        for file in "$name.pfm" "$name.png"; do
+            [ -f "reference/$file" ] || echo "$suite: $name has no reference/$file"
+        done
+        case " $options " in
+        *" --mode 2008 "*) ;; # 2008 writes no variance image
+        *) [ -f "reference/$name-var.pfm" ] || echo "$suite: $name has no reference/$name-var.pfm" ;;
+        esac
+        grep "^| \`$name.pfm\` |" reference/suite.md | grep -qv 'not rendered yet' ||
+            echo "reference/suite.md has no measured row for $name (make reference ONLY=$name)"
+        for option in $options $check; do
+            case $option in
+            --*) printf '%s\n' "$usage" | grep -qe "$option" ||
+                echo "$suite: $name shows $option, which photon --help does not list" ;;
+            esac
+        done
+    done < docs-suite.tmp
+    for file in reference/*.pfm; do
+        name=$(basename "$file" .pfm)
+        grep -q "^$name|" docs-suite.tmp || grep -q "^${name%-var}|" docs-suite.tmp ||
+            echo "$file is in reference/ but no line of $suite makes it"
+    done
+    for scene in scenes/analytic/*.scene; do
+        cut -d'|' -f2 docs-suite.tmp | grep -qx "$scene" ||
+            echo "$scene has no reference in $suite"
+    done
+} > docs-suite-problems.tmp
+while read -r line; do problem "$line"; done < docs-suite-problems.tmp
+rm -f docs-suite.tmp docs-suite-problems.tmp
+
 echo "docs: $n README commands run, $problems problems"
 [ "$problems" -eq 0 ]
