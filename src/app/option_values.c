@@ -1,6 +1,7 @@
 /*
  * app/option_values.c -- reading the values that follow an option's name: numbers, the
- * seed, -o's file name, --irradiance-store's word (options.h, option_values.h).
+ * seed, -o's file name, --irradiance-store's word (options.h, option_values.h); and
+ * the defaults each mode gives the options left unset.
  */
 #include "option_values.h"
 
@@ -9,6 +10,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "../modes/jensen1994.h"
+#include "../modes/jensen1996.h"
+#include "../modes/photons.h"
+#include "../modes/sppm2009.h"
 
 int read_number(const char *name, const char *text, double min, double max, int integer,
                 double *value, struct error *err)
@@ -75,4 +81,30 @@ void default_output(const char *scene_path, char *output)
     if (n > OUTPUT_PATH_MAX - 5)
         n = OUTPUT_PATH_MAX - 5;
     sprintf(output, "%.*s.pfm", n, base);
+}
+
+void mode_defaults(struct options *o)
+{
+    if (o->cone < 0)
+        o->cone = o->mode == MODE_JENSEN1996 ? 1.0 : 0.0;
+    if (o->photons == 0)
+        o->photons = o->mode == MODE_JENSEN1996   ? J96_DEFAULT_PHOTONS
+                     : o->mode == MODE_JENSEN1994 ? J94_DEFAULT_PHOTONS
+                                                  : PHOTONS_DEFAULT_N;
+    if (o->gather == 0)
+        o->gather = o->mode == MODE_JENSEN1994   ? J94_DEFAULT_GATHER
+                    : o->mode == MODE_JENSEN1996 ? J96_DEFAULT_GATHER
+                                                 : PHOTONS_DEFAULT_GATHER;
+    if (o->passes == 0)
+        o->passes = o->mode == MODE_SPPM2009 ? SPPM_DEFAULT_PASSES : PPM_DEFAULT_PASSES;
+    if (o->photons_per_pass == 0)
+        o->photons_per_pass = o->mode == MODE_SPPM2009 ? SPPM_DEFAULT_PHOTONS_PER_PASS
+                                                       : PPM_DEFAULT_PHOTONS_PER_PASS;
+    if (o->mode == MODE_SPPM2009)
+        o->spp = o->passes; /* one eye path a pixel each pass (its camera samples) */
+    if (o->spp == 0)
+        o->spp = o->mode == MODE_PPM2008     ? PPM_DEFAULT_SPP
+                 : o->mode == MODE_JENSEN1996 ? J96_DEFAULT_SPP
+                 : o->mode == MODE_JENSEN1994 ? J94_DEFAULT_SPP
+                                              : DEFAULT_SPP;
 }

@@ -1,6 +1,7 @@
 /*
  * app/option_values.h -- the value readers options.c uses beyond those options.h offers
- * to the subcommands (read_number(), read_seed(), read_output(), in option_values.c).
+ * to the subcommands (read_number(), read_seed(), read_output(), in option_values.c), and
+ * the defaults that depend on the mode.
  */
 #ifndef PHOTON_OPTION_VALUES_H
 #define PHOTON_OPTION_VALUES_H
@@ -14,5 +15,9 @@ int read_store(const char *text, int *illumination, struct error *err);
 /* The default output: the scene file's name without directory and extension, + ".pfm",
  * into output[OUTPUT_PATH_MAX]. */
 void default_output(const char *scene_path, char *output);
+
+/* The defaults that depend on --mode, for the options the command line left unset (0, or
+ * -1 for --cone): photons, gather, cone, passes, photons a pass and spp. */
+void mode_defaults(struct options *o);
 
 #endif

@@ -582,18 +582,9 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         default_output(o->scene_path, o->output);
     if ((o->reference == NULL) != (o->report == NULL))
         return error_set(err, "", 0, "--reference and --report go together");
+    mode_defaults(o);
     if (o->cone > 0 && o->cone < 1)
         return error_set(err, "", 0, "--cone: k must be 0 (no filter) or at least 1");
-    if (o->cone < 0)
-        o->cone = o->mode == MODE_JENSEN1996 ? 1.0 : 0.0;
-    if (o->photons == 0)
-        o->photons = o->mode == MODE_JENSEN1996   ? J96_DEFAULT_PHOTONS
-                     : o->mode == MODE_JENSEN1994 ? J94_DEFAULT_PHOTONS
-                                                  : PHOTONS_DEFAULT_N;
-    if (o->gather == 0)
-        o->gather = o->mode == MODE_JENSEN1994   ? J94_DEFAULT_GATHER
-                    : o->mode == MODE_JENSEN1996 ? J96_DEFAULT_GATHER
-                                                 : PHOTONS_DEFAULT_GATHER;
     int progressive = o->mode == MODE_PPM2008 || o->mode == MODE_SPPM2009;
     if (progressive && o->adaptive > 0)
         return error_set(err, "", 0, "--adaptive: not available with --mode %s, whose "
@@ -604,24 +595,9 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
                                      "cache, a > 0");
     if (!(o->alpha > 0 && o->alpha < 1))
         return error_set(err, "", 0, "--alpha: expected a number strictly between 0 and 1");
-    if (o->passes == 0)
-        o->passes = o->mode == MODE_SPPM2009 ? SPPM_DEFAULT_PASSES : PPM_DEFAULT_PASSES;
-    if (o->photons_per_pass == 0)
-        o->photons_per_pass = o->mode == MODE_SPPM2009 ? SPPM_DEFAULT_PHOTONS_PER_PASS
-                                                       : PPM_DEFAULT_PHOTONS_PER_PASS;
-    if (o->mode == MODE_SPPM2009)
-        o->spp = o->passes; /* one eye path a pixel each pass (its camera samples) */
-    if (o->spp == 0)
-        o->spp = o->mode == MODE_PPM2008     ? PPM_DEFAULT_SPP
-                 : o->mode == MODE_JENSEN1996 ? J96_DEFAULT_SPP
-                 : o->mode == MODE_JENSEN1994 ? J94_DEFAULT_SPP
-                                              : DEFAULT_SPP;
-    if (o->mode == MODE_PPM2008 && o->specular_spp > 0)
-        return error_set(err, "", 0, "--specular-spp: not available with --mode 2008, whose "
-                                     "eye rays all store hit points once");
-    if (o->mode == MODE_SPPM2009 && o->specular_spp > 0)
-        return error_set(err, "", 0, "--specular-spp: not available with --mode 2009, whose "
-                                     "pixels all take one eye path a pass");
+    if (progressive && o->specular_spp > 0)
+        return error_set(err, "", 0, "--specular-spp: not available with --mode %s, whose "
+                                     "pixels all take the same eye rays", mode_name(o->mode));
     if (o->specular_spp == 0) /* spp <= MAX_SPP, so the product cannot overflow */
         o->specular_spp = (o->mode == MODE_JENSEN1996 || o->mode == MODE_JENSEN1994) &&
                                   !o->paper
