@@ -361,6 +361,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         pp.radius = run->o.radius;
         pp.footprints = run->o.footprints;
         pp.fit_radius = run->o.fit_radius;
+        pp.disc_coverage = run->o.mode == MODE_SPPM2009 && run->o.disc_coverage;
         pp.caustic_footprints = run->o.caustic_footprints;
         pp.merge_hit_points = run->o.merge_hit_points;
         pp.resample_emission = run->o.resample_emission;

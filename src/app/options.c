@@ -150,11 +150,11 @@ static const struct option_spec specs[] = {
      "gather rays read irradiance precomputed at every N-th global photon (Christensen "
      "1999); 0 = a radiance estimate at each ray's end, the paper's (default 16)", FOR_1996},
     {"--disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
-     "records of precomputed irradiance count the photons of their disc's plane over "
-     "the part of the disc a surface covers, found by probe rays, in place of pi r^2 "
-     "(the default)", FOR_1996},
+     "records of precomputed irradiance (2009: a pixel's estimate) count the photons of "
+     "their disc's plane over the part of the disc a surface covers, found by probe rays "
+     "(2009: one a pass), in place of pi r^2 (the default)", FOR_1996 | FOR_2009},
     {"--no-disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
-     "over the whole disc, pi r^2, as Eq. 3 (the paper's)", FOR_1996},
+     "over the whole disc, pi r^2, as Eq. 3 (the paper's)", FOR_1996 | FOR_2009},
     {"--both-lobes", OPT_FLAG, FIELD(both_lobes), 0, 0, "",
      "glass traces its reflected and refracted rays both, as Whitted's ray tracer (1996: "
      "at accurate points) (the default)", FOR_1994 | FOR_1996},
@@ -206,7 +206,8 @@ static const struct option_spec specs[] = {
      "one estimate, the paper's (default 1)", FOR_2008},
     {"--fit-radius", OPT_FLAG, FIELD(fit_radius), 0, 0, "",
      "shorten each initial radius until its disc lies on its surface, clear of walls and "
-     "open edges (the default)", FOR_PROGRESSIVE},
+     "open edges (2009 with --disc-coverage: clear of walls the surface goes on past) "
+     "(the default)", FOR_PROGRESSIVE},
     {"--no-fit-radius", OPT_FLAG, FIELD(fit_radius), 0, 0, "",
      "keep the initial radius whole, the paper's", FOR_PROGRESSIVE},
     {"--merge-hit-points", OPT_FLAG, FIELD(merge_hit_points), 0, 0, "",

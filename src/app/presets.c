@@ -95,7 +95,8 @@ static const struct {
     {MODE_PPM2008, "--direct-photons --footprints 1 --caustic-footprints 0 --no-fit-radius "
                     "--no-merge-hit-points "
                     "--no-resample-emission --no-facing-test"},
-    {MODE_SPPM2009, "--direct-photons --footprints 1 --no-fit-radius --no-facing-test"},
+    {MODE_SPPM2009, "--direct-photons --footprints 1 --no-fit-radius --no-disc-coverage "
+                     "--no-facing-test"},
 };
 
 /* Splits words, one space apart, into *out. */

@@ -24,8 +24,9 @@ enum stream {
     STREAM_TEST = 4,     /* tests and benches                                            */
     STREAM_SCENE = 5,    /* procedural geometry (noise permutations)                      */
     STREAM_PIXEL = 6,    /* index = pixel: the digital shift of its camera samples       */
-    STREAM_LIGHT = 7     /* index = pixel, sub = hit point within it: the digital shifts of
+    STREAM_LIGHT = 7,    /* index = pixel, sub = hit point within it: the digital shifts of
                             its light samples, one per light (PPM's direct term)          */
+    STREAM_DISC = 8      /* index = pixel: the shift and order of its disc probes (2009)  */
 };
 
 struct rng {

@@ -118,6 +118,7 @@ struct ppm_settings ppm_settings_default(void)
     ps.radius = 0.0;
     ps.footprints = PPM_DEFAULT_FOOTPRINTS;
     ps.fit_radius = 1;
+    ps.disc_coverage = 0;
     ps.caustic_footprints = PPM_DEFAULT_CAUSTIC_FOOTPRINTS;
     ps.merge_hit_points = 1;
     ps.resample_emission = 1;

@@ -56,6 +56,10 @@ struct ppm_settings {
                                          0: in the one estimate, the paper's             */
     int fit_radius;                   /* 1: R0 shortened until the disc lies on the
                                          surface, clear of walls and open edges          */
+    int disc_coverage;                /* --mode 2009 only, 1: each pixel's estimate over
+                                         the part of its discs a surface covers, R0 fitted
+                                         to walls the surface goes on past (sppm2009.c);
+                                         0 for 2008                                      */
     const struct checkpoint *report;  /* borrowed or NULL: gets the image after passes 1,
                                          2, 4, ... and the last, work = photons emitted  */
     long snapshot_every;              /* > 0: call snapshot after every this many passes */

@@ -28,21 +28,13 @@ void ppm_direct_create(struct ppm_direct *d, const struct scene *scene,
     d->passes = 0;
 }
 
-/* The index in the whole image of window pixel i. */
-static uint64_t whole_image_pixel(const struct ppm_direct *d, size_t i)
-{
-    const struct render_settings *rs = d->rs;
-    size_t width = (size_t)(rs->x1 - rs->x0); /* >= 1: a window is never empty */
-    uint64_t x = (uint64_t)rs->x0 + i % width, y = (uint64_t)rs->y0 + i / width;
-    return y * (uint64_t)d->scene->width + x;
-}
-
 void ppm_direct_sample(struct ppm_direct *d, size_t pixel, uint64_t k, long pass,
                        const struct surface *s, const struct shading_frame *frame,
                        struct vec3 beta, struct render_counters *counters)
 {
     const struct scene *scene = d->scene;
-    struct rng shifts = rng_stream(d->rs->seed, STREAM_LIGHT, whole_image_pixel(d, pixel), k);
+    struct rng shifts =
+        rng_stream(d->rs->seed, STREAM_LIGHT, image_pixel(d->rs, scene->width, pixel), k);
     struct vec3 sum = vec3_zero();
     for (size_t i = 0; i < scene->n_lights; i++) {
         uint64_t shift = rng_next(&shifts); /* drawn for every light: keeps the others' */

@@ -11,8 +11,8 @@
 
 /* R0 at surface s, seen at `distance` along its eye path: ps->radius if it is given; else
  * ps->footprints pixel footprints (the width a pixel covers at that distance), and with
- * ps->fit_radius shortened until the disc lies on the surface. Adds its probe rays to
- * counters->rays. */
+ * ps->fit_radius shortened until the disc lies on the surface (with ps->disc_coverage,
+ * only to clear walls the surface goes on past). Adds its wall probes to counters->rays. */
 double ppm_initial_radius(const struct scene *scene, const struct ppm_settings *ps,
                           struct render_counters *counters, const struct surface *s,
                           double distance);

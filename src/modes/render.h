@@ -107,11 +107,6 @@ struct radiance_estimator {
     const void *mode; /* borrowed; passed back to radiance() */
 };
 
-/* Called at each checkpoint with the current mean image (each pixel the mean of its own
- * samples) and the work done so far: photons emitted for photon passes; for camera modes
- * the samples per pixel, that is all samples taken in the window divided by its pixels,
- * rounded to the nearest integer (the passes run, when adaptive sampling is off). Returns
- * the CPU seconds it spent, which the render excludes from its own clock. */
 /* CPU seconds since start, a clock() reading: what every mode's timings count. */
 static inline double cpu_seconds(clock_t start)
 {
@@ -124,6 +119,20 @@ static inline int is_power_of_two(long n)
     return n > 0 && (n & (n - 1)) == 0;
 }
 
+/* The whole image's row-major index of pixel i of rs's window, in an image `width` wide:
+ * what keys a pixel's random streams, so that a crop draws the numbers the whole does. */
+static inline uint64_t image_pixel(const struct render_settings *rs, int width, size_t i)
+{
+    size_t window_width = (size_t)(rs->x1 - rs->x0); /* >= 1: a window is never empty */
+    uint64_t x = (uint64_t)rs->x0 + i % window_width, y = (uint64_t)rs->y0 + i / window_width;
+    return y * (uint64_t)width + x;
+}
+
+/* Called at each checkpoint with the current mean image (each pixel the mean of its own
+ * samples) and the work done so far: photons emitted for photon passes; for camera modes
+ * the samples per pixel, that is all samples taken in the window divided by its pixels,
+ * rounded to the nearest integer (the passes run, when adaptive sampling is off). Returns
+ * the CPU seconds it spent, which the render excludes from its own clock. */
 struct checkpoint {
     double (*at)(void *context, const struct image *mean, long long work, double seconds);
     void *context;

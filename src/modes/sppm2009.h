@@ -1,8 +1,8 @@
 /*
  * modes/sppm2009.h -- `--mode 2009`: stochastic progressive photon mapping (Hachisuka and
  * Jensen 2009). Its settings are 2008's (struct ppm_settings), of which it reads
- * photons_per_pass, passes, alpha, radius, footprints, fit_radius, facing_test,
- * direct_photons, report, snapshot_every and snapshot.
+ * photons_per_pass, passes, alpha, radius, footprints, fit_radius, disc_coverage,
+ * facing_test, direct_photons, report, snapshot_every and snapshot.
  */
 #ifndef PHOTON_SPPM2009_H
 #define PHOTON_SPPM2009_H
@@ -14,6 +14,10 @@
  * 0.00061 in 27 CPU s, 256 of 50,000 0.00063 in 36 s: an eye pass costs about as much as
  * 50,000 photons, so fewer, fuller passes reach an error sooner. */
 #define SPPM_DEFAULT_PHOTONS_PER_PASS 100000
+
+/* 2009's defaults: ppm_settings_default() with SPPM_DEFAULT_PASSES passes of
+ * SPPM_DEFAULT_PHOTONS_PER_PASS photons and the disc coverage on. */
+struct ppm_settings sppm_settings_default(void);
 
 /* Renders the window of rs: ps->passes passes (fewer when rs->time_limit passes first),
  * each one eye path through every pixel and ps->photons_per_pass photons, calling

@@ -9,7 +9,7 @@
  * the plane, not on it, so that a surface that curves away below the plane (a sphere) or
  * rises a little above it is still found; it looks r deep, to r / 2 below the plane.
  * The test "turned less than 60 degrees, either way" is the 2008 mode's wall test
- * (ppm2008.c, disc_clear_of_walls()), read the other way: there a surface turned more is
+ * (ppm_radius.c, disc_clear_of_walls()), read the other way: there a surface turned more is
  * a wall that ends the disc; here one turned less continues it.
  */
 #include "disc_coverage.h"
@@ -19,7 +19,6 @@
 #include "../scene/brdf.h"
 #include "trace.h"
 
-#define DISC_SAME_SURFACE_COS 0.5 /* cos 60 degrees */
 #define DISC_PROBE_HITS 4         /* surfaces a probe may meet: mirrors and glass it passes,
                                      one more where it stops                             */
 
@@ -45,32 +44,31 @@ static int probe_finds_surface(const struct scene *scene, struct vec3 q, struct 
     return 0;
 }
 
-double disc_coverage(const struct scene *scene, struct vec3 x, struct vec3 n, double r)
+int disc_probe(const struct scene *scene, struct vec3 x, struct vec3 n, double r, double u,
+               double phi)
 {
     struct vec3 t, b;
     vec3_frame(n, &t, &b);
+    double rho = r * sqrt(u);
+    struct vec3 q = vec3_madd(vec3_madd(x, t, rho * cos(phi)), b, rho * sin(phi));
+    return probe_finds_surface(scene, q, n, DISC_DEPTH * r);
+}
+
+double disc_coverage(const struct scene *scene, struct vec3 x, struct vec3 n, double r)
+{
     int covered = 0;
-    for (int i = 0; i < DISC_RINGS; i++) {
-        double rho = r * sqrt((i + 0.5) / DISC_RINGS);
-        for (int j = 0; j < DISC_SPOKES; j++) {
-            double phi = 2 * PI * (j + 0.5 * (i % 2)) / DISC_SPOKES;
-            struct vec3 q = vec3_madd(vec3_madd(x, t, rho * cos(phi)), b, rho * sin(phi));
-            covered += probe_finds_surface(scene, q, n, DISC_DEPTH * r);
-        }
-    }
+    for (int i = 0; i < DISC_RINGS; i++)
+        for (int j = 0; j < DISC_SPOKES; j++)
+            covered += disc_probe(scene, x, n, r, (i + 0.5) / DISC_RINGS,
+                                  2 * PI * (j + 0.5 * (i % 2)) / DISC_SPOKES);
     return fmax(DISC_COVERAGE_FLOOR, (double)covered / (DISC_RINGS * DISC_SPOKES));
 }
 
 int disc_rim_covered(const struct scene *scene, struct vec3 x, struct vec3 n, double r)
 {
-    struct vec3 t, b;
-    vec3_frame(n, &t, &b);
-    for (int j = 0; j < DISC_SPOKES; j++) {
-        double phi = 2 * PI * j / DISC_SPOKES;
-        struct vec3 q = vec3_madd(vec3_madd(x, t, r * cos(phi)), b, r * sin(phi));
-        if (!probe_finds_surface(scene, q, n, DISC_DEPTH * r))
+    for (int j = 0; j < DISC_SPOKES; j++)
+        if (!disc_probe(scene, x, n, r, 1.0, 2 * PI * j / DISC_SPOKES))
             return 0;
-    }
     return 1;
 }
 

@@ -28,6 +28,8 @@
  * the disc while r <= 2 R DISC_DEPTH (22 mm on the Cornell box's balls); a wall across
  * the disc puts photons in it only along a strip this deep. */
 #define DISC_DEPTH 0.125
+/* A surface turned less than 60 degrees from the disc's plane, either way, continues it. */
+#define DISC_SAME_SURFACE_COS 0.5
 
 /* The share of the disc of radius r > 0 around x, in the plane with unit normal n, over
  * which a surface that holds photons (trace.h: a non-delta part that reflects) lies
@@ -38,6 +40,26 @@
  * way, counts, so a gently curved one (a sphere seen from a disc smaller than itself)
  * is the same surface. Deterministic: no random numbers. */
 double disc_coverage(const struct scene *scene, struct vec3 x, struct vec3 n, double r);
+
+/* Whether a surface that holds photons lies under the point of the disc of radius r > 0
+ * around x (unit normal n) at distance r sqrt(u) from x and angle phi in a frame fixed by
+ * n, found as disc_coverage() finds one: for u uniform in [0, 1) and phi in [0, 2 pi) the
+ * point is uniform over the disc, so the share of such probes that find one estimates
+ * the disc's coverage without bias (--mode 2009 spreads them over its passes). */
+int disc_probe(const struct scene *scene, struct vec3 x, struct vec3 n, double r, double u,
+               double phi);
+
+/* Whether a photon at `position`, arrived on a surface with unit normal `normal` on its
+ * side, lies on the disc of radius r around x with unit normal n as the probes see the
+ * disc: within DISC_DEPTH r of its plane, on a surface that continues the plane (turned
+ * less than 60 degrees, facing the same way). The photons such a test keeps, over the
+ * covered part of pi r^2, are an estimate that does not darken by the disc's edges. */
+static inline int disc_holds_photon(struct vec3 x, struct vec3 n, double r,
+                                    struct vec3 position, struct vec3 normal)
+{
+    return fabs(vec3_dot(vec3_sub(position, x), n)) <= DISC_DEPTH * r &&
+           vec3_dot(normal, n) >= DISC_SAME_SURFACE_COS;
+}
 
 /* Whether a surface that holds photons lies under each of DISC_SPOKES points on the rim
  * of the disc of radius r > 0 around x (unit normal n), found as disc_coverage() finds

@@ -193,9 +193,7 @@ static struct render_result render_2009(const struct scene *scene, int trial, st
                                         struct error *err)
 {
     (void)err; /* render_sppm does not fail on a finished scene */
-    struct ppm_settings ps = ppm_settings_default();
-    ps.passes = SPPM_DEFAULT_PASSES;
-    ps.photons_per_pass = SPPM_DEFAULT_PHOTONS_PER_PASS;
+    struct ppm_settings ps = sppm_settings_default();
     if (trial) {
         ps.photons_per_pass /= TRIAL_SHRINK;
         ps.passes = TRIAL_PASSES;
