@@ -1,8 +1,9 @@
 /*
  * tests/test_sppm.c -- `--mode 2009`, stochastic progressive photon mapping: convergence to
  * closed forms as passes grow; pixels that are means over their square (a light's outline),
- * where 2008's eye rays, traced once, keep their first error; memory flat in the passes;
- * a crop equal to the window of the whole image.
+ * where 2008's eye rays, traced once, keep their first error; the disc coverage at an open
+ * edge and the radius fitted to a wall the surface goes on past; memory flat in the
+ * passes; a crop equal to the window of the whole image.
  */
 #include <math.h>
 #include <stdio.h>
@@ -91,6 +92,87 @@ static void test_converges_to_closed_forms(struct check *t)
     c.truth = plane_truth;
     converge("scenes/analytic/point-over-plane.scene", 12, PLANE_PASSES, 64000, 1, &c);
     CHECK(t, c.n == 9 && c.error[8] < 0.01 && c.error[8] < 0.5 * c.error[2]);
+}
+
+#define EDGE_X 0.3     /* where point-over-plane-edge's plane ends, -wall's wall stands */
+#define EDGE_BAND 0.58 /* two footprints of the 12 x 12 renders at the plane            */
+
+/* The mean signed relative error, against plane_truth(), of the pixels of a 12 x 12 image
+ * of the point-over-plane plane (seed 1, PLANE_PASSES passes) whose every eye path meets
+ * it before x = EDGE_X and some within EDGE_BAND of it; *n: how many. */
+static double error_before_edge_2009(const struct scene *scene, const struct image *image,
+                                     int *n)
+{
+    double sum = 0.0;
+    *n = 0;
+    for (int y = 0; y < image->height; y++)
+        for (int x = 0; x < image->width; x++) {
+            double farthest = -INFINITY;
+            for (int s = 0; s < PLANE_PASSES; s++) {
+                struct rng rng;
+                struct ray r = camera_sample(scene, 1, x, y, s, &rng);
+                farthest = fmax(farthest, r.origin.x - r.origin.y / r.dir.y * r.dir.x);
+            }
+            if (farthest < EDGE_X && farthest > EDGE_X - EDGE_BAND) {
+                double truth = plane_truth(scene, x, y);
+                sum += (image_get(image, x, y).y - truth) / truth;
+                (*n)++;
+            }
+        }
+    return *n > 0 ? sum / *n : INFINITY;
+}
+
+/* error_before_edge_2009() of a 2009 render of path, the photons bringing all the light
+ * (PLANE_PASSES passes of 64,000), R0 4 footprints, with the given departures. */
+static double error_at_edge(const char *path, int disc_coverage, int fit_radius, int *n)
+{
+    *n = 0;
+    struct scene *scene = load_test_scene(path, 12, 12);
+    if (scene == NULL)
+        return INFINITY;
+    struct render_settings rs = render_settings_whole(scene, 1, PLANE_PASSES, MAX_DEPTH_LIMIT);
+    struct ppm_settings ps = sppm_settings_default();
+    ps.photons_per_pass = 64000;
+    ps.passes = PLANE_PASSES;
+    ps.direct_photons = 1;
+    ps.disc_coverage = disc_coverage;
+    ps.fit_radius = fit_radius;
+    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct ppm_stats stats;
+    struct render_result r = render_sppm(scene, &rs, &ps, &counters, &stats);
+    double error = error_before_edge_2009(scene, r.image, n);
+    render_result_free(&r);
+    scene_free(scene);
+    return error;
+}
+
+/* truth: point-over-plane's closed form, each pixel's mean over its eye paths
+ *   (plane_truth()), which holds up to the open edge of point-over-plane-edge's plane and
+ *   up to the black wall that stands on point-over-plane-wall's (whose far side is in
+ *   its shadow); the pixels within two footprints of either, R0 4 footprints.
+ * tolerance: mean signed error within 2% with the disc coverage and the radius fitted as
+ *   it fits it, and more than 5% dark without (so the test can tell): at the open edge
+ *   without the coverage (the disc reaches where no photon lands, though pi R^2 counts
+ *   it), at the wall without the fit (the disc reaches past the wall into its shadow,
+ *   where the surface goes on, so the coverage counts it as the disc's own). Measured
+ *   over 24 pixels: edge +0.2% with, -18.3% without; wall -0.6% fitted, -18.3% not (the
+ *   same photons land before x = 0.3 in both scenes, and neither disc finds any beyond).
+ * catches: probes that miss the plane or find it beyond its edge, a coverage divided
+ *   the wrong way or never, the fit's test of a wall the surface goes on past reversed
+ *   (then neither the wall nor a corner would be fitted right). */
+static void test_disc_coverage(struct check *t)
+{
+    int n_with, n_without;
+    const char *edge = "scenes/analytic/point-over-plane-edge.scene";
+    double with = error_at_edge(edge, 1, 1, &n_with);
+    double without = error_at_edge(edge, 0, 0, &n_without);
+    CHECK(t, n_with >= 8 && n_without == n_with);
+    CHECK(t, fabs(with) <= 0.02 && without < -0.05);
+    const char *wall = "scenes/analytic/point-over-plane-wall.scene";
+    with = error_at_edge(wall, 1, 1, &n_with);
+    without = error_at_edge(wall, 1, 0, &n_without);
+    CHECK(t, n_with >= 8 && n_without == n_with);
+    CHECK(t, fabs(with) <= 0.02 && without < -0.05);
 }
 
 #define EDGE_WIDTH 24
@@ -263,7 +345,7 @@ static void test_crop_is_window(struct check *t)
     REQUIRE(t, scene != NULL);
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
-    struct ppm_settings ps = ppm_settings_default();
+    struct ppm_settings ps = sppm_settings_default(); /* the disc probes' streams too */
     ps.photons_per_pass = 5000;
     ps.passes = 6;
     struct render_settings rs = render_settings_whole(scene, 7, 6, MAX_DEPTH_LIMIT);
@@ -286,6 +368,7 @@ static void test_crop_is_window(struct check *t)
 void test_sppm(struct check *t)
 {
     RUN_TEST(t, test_converges_to_closed_forms);
+    RUN_TEST(t, test_disc_coverage);
     RUN_TEST(t, test_light_outline);
     RUN_TEST(t, test_glossy_floor);
     RUN_TEST(t, test_memory_flat);

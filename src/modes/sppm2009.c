@@ -61,8 +61,8 @@
  * Determinism: eye path p of pixel (x, y) is camera sample p (render.h: its stream is
  * keyed by the pixel and p), its light samples are keyed by the pixel and the pass
  * (ppm_direct.h), its disc probes by the pixel and the pass, photon i of pass p by
- * (seed, photon, p, i); a pixel's statistics take
- * only its own hit point's photons, so the image does not depend on the window.
+ * (seed, photon, p, i); a pixel's statistics take only its own hit point's photons, so
+ * the image does not depend on the window.
  */
 #include "sppm2009.h"
 
@@ -112,7 +112,6 @@ struct sppm {
     struct disc_share *coverage;        /* owned, with ps->disc_coverage: per window pixel,
                                            its probes of its hit points' discs            */
 };
-
 
 /* ---- the distributed ray tracing pass ----------------------------------------------- */
 
