@@ -47,7 +47,11 @@
  * so the sum is short by the mean of the c_i, which the probes estimate without bias. A
  * photon counts on a disc as the probes see the disc (disc_holds_photon()). R0 is then
  * fitted only to walls the surface goes on past, whose far side's photons the coverage
- * would count as the disc's own (ppm_radius.c).
+ * would count as the disc's own (ppm_radius.c). A pixel's radius is fitted at its first
+ * hit point, and that fit knows only its surface: a pixel that also sees another (the
+ * ceiling beside a lamp's shroud, first met on the shroud's side) fits again at each hit
+ * point off the first one's plane, and a shorter fit shrinks the shared disc
+ * (shrink_estimate()).
  *
  * Departures, as in 2008, each with its switch, off under --paper:
  *   the direct light (--direct-photons is the paper's way) by one shadow-tested light
@@ -86,6 +90,12 @@ struct disc_share {
     uint32_t covered;
 };
 
+/* The plane of the hit point a pixel's radius was fitted at: its point and unit normal. */
+struct fitted_plane {
+    struct vec3 x;
+    struct vec3 n;
+};
+
 struct sppm {
     const struct scene *scene;          /* borrowed                                        */
     const struct render_settings *rs;   /* borrowed                                        */
@@ -111,9 +121,43 @@ struct sppm {
                                            specular parts (brdf_split())                   */
     struct disc_share *coverage;        /* owned, with ps->disc_coverage: per window pixel,
                                            its probes of its hit points' discs            */
+    struct fitted_plane *fitted;        /* owned, with ps->disc_coverage: per window pixel,
+                                           the plane its radius was fitted on             */
 };
 
 /* ---- the distributed ray tracing pass ----------------------------------------------- */
+
+/* Shrinks the disc of e to radius r < e->radius, keeping its photon density and its
+ * estimate: tau / (pi R^2) and N / (pi R^2) stay, as Eq. 12 keeps them when R shrinks. */
+static void shrink_estimate(struct progressive_estimate *e, double r)
+{
+    double ratio2 = (r / e->radius) * (r / e->radius);
+    e->tau = vec3_scale(e->tau, ratio2);
+    e->n_photons *= ratio2;
+    e->radius = r;
+}
+
+/* With the disc coverage, the fit of window pixel `pixel`'s shared radius to the walls
+ * that its hit point at s sees: the first hit point's fit is the radius itself and its
+ * plane is kept; a hit point off that plane (turned 60 degrees or more from it, or
+ * farther from it than the radius) is fitted again, and a shorter fit shrinks the disc. */
+static void fit_to_surface(struct sppm *sppm, size_t pixel, const struct surface *s,
+                           double distance)
+{
+    struct fitted_plane *plane = &sppm->fitted[pixel];
+    struct progressive_estimate *shared = &sppm->shared[pixel];
+    if (vec3_length2(plane->n) == 0) { /* the first hit point: its fit is the radius */
+        plane->x = s->p;
+        plane->n = s->ng;
+        return;
+    }
+    if (vec3_dot(plane->n, s->ng) >= DISC_SAME_SURFACE_COS &&
+        fabs(vec3_dot(vec3_sub(s->p, plane->x), plane->n)) <= shared->radius)
+        return;
+    double r = ppm_initial_radius(sppm->scene, sppm->ps, sppm->counters, s, distance);
+    if (r < shared->radius)
+        shrink_estimate(shared, r);
+}
 
 /* The pass's hit point of window pixel `pixel` at s, reached with throughput beta after
  * `distance` along its eye path; its disc is the pixel's shared radius, R0 at its first. */
@@ -124,6 +168,8 @@ static void store_hit_point(struct sppm *sppm, size_t pixel, const struct surfac
     struct progressive_estimate *shared = &sppm->shared[pixel];
     if (shared->radius == 0)
         shared->radius = ppm_initial_radius(sppm->scene, sppm->ps, sppm->counters, s, distance);
+    if (sppm->ps->disc_coverage)
+        fit_to_surface(sppm, pixel, s, distance);
     struct hit_point *hp = &sppm->points[sppm->n_points++];
     hp->x = s->p;
     hp->n = s->ng;
@@ -374,8 +420,10 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     sppm.shared = xcalloc(sppm.n_pixels, sizeof *sppm.shared, "sppm statistics");
     sppm.seen = xcalloc(sppm.n_pixels, sizeof *sppm.seen, "sppm pixels");
     sppm.points = xmalloc(sppm.n_pixels, sizeof *sppm.points, "sppm hit points");
-    if (ps->disc_coverage)
+    if (ps->disc_coverage) {
         sppm.coverage = xcalloc(sppm.n_pixels, sizeof *sppm.coverage, "sppm disc coverage");
+        sppm.fitted = xcalloc(sppm.n_pixels, sizeof *sppm.fitted, "sppm fitted planes");
+    }
     sppm.unnormalise = (double)ps->photons_per_pass;
     sppm.parts = xmalloc(scene->n_materials + 1, sizeof *sppm.parts, "sppm materials");
     for (size_t m = 0; m < scene->n_materials; m++)
@@ -418,7 +466,9 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     stats->hit_points = sppm.n_points;
     stats->bytes_per_hit_point = sizeof(struct hit_point) + HIT_POINT_GRID_BYTES_PER_POINT +
                                  sizeof(struct progressive_estimate) + sizeof(struct vec3) +
-                                 (ps->disc_coverage ? sizeof(struct disc_share) : 0);
+                                 (ps->disc_coverage ? sizeof(struct disc_share) +
+                                                          sizeof(struct fitted_plane)
+                                                    : 0);
     stats->photons_emitted = sppm.photons_emitted;
     stats->mean_radius = mean_radius(&sppm);
     counters->passes = (int)sppm.passes_done;
@@ -427,6 +477,7 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
         ppm_direct_free(&sppm.direct);
     xfree(sppm.parts);
     xfree(sppm.coverage);
+    xfree(sppm.fitted);
     xfree(sppm.points);
     xfree(sppm.seen);
     xfree(sppm.shared);
