@@ -168,8 +168,8 @@ static void store_hit_point(struct sppm *sppm, size_t pixel, const struct surfac
     struct progressive_estimate *shared = &sppm->shared[pixel];
     if (shared->radius == 0)
         shared->radius = ppm_initial_radius(sppm->scene, sppm->ps, sppm->counters, s, distance);
-    if (sppm->ps->disc_coverage)
-        fit_to_surface(sppm, pixel, s, distance);
+    if (sppm->ps->disc_coverage && sppm->ps->fit_radius && sppm->ps->radius <= 0)
+        fit_to_surface(sppm, pixel, s, distance); /* else no fit could shorten R */
     struct hit_point *hp = &sppm->points[sppm->n_points++];
     hp->x = s->p;
     hp->n = s->ng;
