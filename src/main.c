@@ -152,8 +152,7 @@ static int write_outputs(struct run *run, struct error *err)
         return -1;
     if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
         return -1;
-    if (o->has_crop ? write_tile_record(run, err) < 0
-                        : tile_record_remove(o->output, err) < 0)
+    if (o->has_crop && write_tile_record(run, err) < 0)
         return -1;
     clock_t start = clock();
     if (o->save_photons != NULL &&
@@ -173,7 +172,8 @@ static double write_snapshot(void *context, const struct image *image, long long
     clock_t start = clock();
     const struct options *o = context;
     struct error err;
-    if (image_write_pair(o->output, o->display, image, o->exposure, &err) < 0)
+    if (image_write_pair(o->output, o->display, image, o->exposure, &err) < 0 ||
+        outputs_publish(&err) < 0)
         error_print(&err);
     return seconds_since(start);
 }
@@ -379,14 +379,20 @@ static struct render_result render_mode(struct run *run, struct error *err)
     return render_direct(run->scene, &run->rs, want_variance, checkpoint, &run->counters);
 }
 
-/* Every file the render will write can be created where it is to go (error.h). */
+/* Every file the render will write, declared and checked before any work (output.h). */
 static int check_outputs(const struct options *o, struct error *err)
 {
-    const char *outputs[] = {o->output, o->variance, o->report, o->save_photons};
-    for (size_t i = 0; i < sizeof outputs / sizeof outputs[0]; i++)
-        if (outputs[i] != NULL && output_check(outputs[i], err) < 0)
-            return -1;
-    return 0;
+    image_declare_pair(o->output, o->display, "-o",
+                       o->display == DISPLAY_PPM ? "the PPM beside -o" : "the PNG beside -o");
+    if (o->variance != NULL)
+        output_declare(o->variance, "--variance");
+    if (o->report != NULL)
+        output_declare(o->report, "--report");
+    if (o->save_photons != NULL)
+        output_declare(o->save_photons, "--save-photons");
+    if (o->has_crop)
+        tile_record_declare(o->output);
+    return outputs_check(err);
 }
 
 static int render_command(struct run *run, struct error *err)
@@ -402,7 +408,9 @@ static int render_command(struct run *run, struct error *err)
     if (run->result.image == NULL)
         return 2;
     if (write_outputs(run, err) < 0 ||
-        (run->reference != NULL && report_close(&run->report, err) < 0))
+        (run->reference != NULL && report_close(&run->report, err) < 0) ||
+        outputs_publish(err) < 0 || (!run->o.has_crop && tile_record_remove(run->o.output,
+                                                                             err) < 0))
         return 1; /* every output could be created before the render: a failed write */
     if (run->o.stats)
         print_stats(run);

@@ -70,10 +70,12 @@ void export_scene_free(struct export_scene *es);
 /* "photon: export: " and a line on stderr: what the target renders differently. */
 void export_note(const char *format, ...);
 
-/* Opens a companion file NAME beside the output (Mitsuba's meshes): written to NAME.tmp and
- * renamed with the output, or removed with it when the export fails. NULL with *err
- * filled when it cannot be created. */
-FILE *export_companion(const char *name, struct error *err);
+/* Mitsuba's mesh k, NAME-meshK.obj beside the output NAME.xml: into path[size] (with the
+ * output's directory) and *base (without it, for the XML, which Mitsuba reads relative to
+ * its own folder). export_command() declares each as an output before anything is
+ * written (base/output.h). */
+void export_mitsuba_mesh_name(const char *output, size_t k, char *path, size_t size,
+                              const char **base);
 
 /* The writers: the whole scene to f. 0, or -1 with *err filled. */
 int export_pbrt(FILE *f, const struct export_scene *es, struct error *err);

@@ -232,11 +232,17 @@ int merge_command(int argc, char **argv)
     struct merge_args args;
     struct error err;
     int parsed = parse_merge_args(argc, argv, &args, &err);
-    int status = parsed == 0 ? output_check(args.output, &err) : parsed;
+    if (parsed == 0)
+        image_declare_pair(args.output, args.display, "-o", args.display == DISPLAY_PPM
+                                                                ? "the PPM beside -o"
+                                                                : "the PNG beside -o");
+    int status = parsed == 0 ? outputs_check(&err) : parsed;
     if (status == 0) {
         struct tile_record *records = xmalloc((size_t)args.n_tiles, sizeof *records,
                                               "tile records");
         status = merge_tiles(&args, records, &err);
+        if (status == 0)
+            status = outputs_publish(&err);
         xfree(records);
     }
     if (status < 0)

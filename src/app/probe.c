@@ -268,7 +268,7 @@ int probe_command(int argc, char **argv)
             error_print(&err);
         return parsed < 0 ? 2 : 0;
     }
-    struct scene *scene = output_check(args.output, &err) == 0
+    struct scene *scene = output_check_one(args.output, "-o", &err) == 0
                               ? scene_load(args.scene_path, &err)
                               : NULL;
     if (scene == NULL) {
@@ -286,7 +286,8 @@ int probe_command(int argc, char **argv)
                                   &stats, &err) == 0 &&
                          jensen1994_trace(scene, args.seed, MAX_DEPTH_LIMIT, &with_maps,
                                           &st.illumination, &stats, &err) == 0 &&
-                         write_probe(scene, &st, &args, &err) == 0
+                         write_probe(scene, &st, &args, &err) == 0 &&
+                         outputs_publish(&err) == 0
                      ? 0
                      : error_exit_status(&err);
     if (status != 0)

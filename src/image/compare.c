@@ -419,6 +419,8 @@ static int compare_files(const struct compare_args *args, struct error *err)
         if (args->diff != NULL)
             status = write_diff(args->diff, in.a, in.b, e.maxerr, err);
         if (status == 0)
+            status = outputs_publish(err);
+        if (status == 0)
             print_results(&e, &in, args);
     }
     image_free(in.var_b);
@@ -434,7 +436,7 @@ int compare_command(int argc, char **argv)
     struct error err;
     struct compare_args args;
     if (parse_compare_args(argc, argv, &args, &err) != 0 ||
-        (args.diff != NULL && output_check(args.diff, &err) < 0) ||
+        (args.diff != NULL && output_check_one(args.diff, "--diff", &err) < 0) ||
         compare_files(&args, &err) != 0) {
         error_print(&err);
         return error_exit_status(&err); /* 1: the diff's write failed */

@@ -62,6 +62,12 @@ const char *display_suffix(enum display_format format);
  * output_open()/output_commit(). -1 with *err filled when the file cannot be written. */
 int ppm_write(const char *name, const struct image *img, double exposure, struct error *err);
 
+/* Declares the pair image_write_pair() writes as outputs of the command (base/output.h):
+ * pfm_name, ending in ".pfm", under role ("-o"), and the display image beside it under
+ * display_role ("the PNG beside -o"). */
+void image_declare_pair(const char *pfm_name, enum display_format display, const char *role,
+                        const char *display_role);
+
 /* The pair every image-making command writes: the PFM pfm_name, which ends in ".pfm" (the
  * caller checked), then the display image of the same name ending in display_suffix()
  * beside it, each written whole or not at all. -1 with *err filled when either cannot be

@@ -22,8 +22,9 @@
  */
 #include "image.h"
 
+#include "../base/input.h"
+
 #include <assert.h>
-#include <errno.h>
 #include <float.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -237,20 +238,18 @@ struct image *pfm_read(const char *name, struct error *err)
 {
     struct pfm_header h;
     struct image *img = NULL;
-    FILE *f = fopen(name, "rb");
-    if (f == NULL) {
-        error_set(err, name, 0, "cannot open for reading: %s", strerror(errno));
+    struct input in;
+    if (input_open(&in, name, err) < 0)
         return NULL;
-    }
-    if (read_header(f, name, &h, err) != 0 || check_data_size(f, name, &h, err) != 0)
+    if (read_header(in.f, name, &h, err) != 0 || check_data_size(in.f, name, &h, err) != 0)
         goto fail;
     img = image_create(h.width, h.height);
-    if (read_pixels(f, name, &h, img, err) != 0)
+    if (read_pixels(in.f, name, &h, img, err) != 0)
         goto fail;
-    fclose(f);
+    input_close(&in);
     return img;
 fail:
     image_free(img);
-    fclose(f);
+    input_close(&in);
     return NULL;
 }
