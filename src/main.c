@@ -111,8 +111,9 @@ static int prepare_run(struct run *run, struct error *err)
                          eye_rays, PPM_MAX_EYE_RAYS);
     if (o->reference != NULL) {
         run->reference = pfm_read(o->reference, err);
-        if (run->reference == NULL ||
-            report_open(&run->report, o->report, run->reference, width, height, &run->rs,
+        if (run->reference == NULL)
+            return error_set(err, err->file, err->line, "%s (--reference)", err->message);
+        if (report_open(&run->report, o->report, run->reference, width, height, &run->rs,
                         err) < 0)
             return -1;
     }
@@ -265,14 +266,16 @@ static void print_stats(const struct run *run)
     /* the most payload the x-allocators held at once, up to this line (base/alloc.h) */
     fprintf(stderr, "bytes_peak=%zu\n", alloc_bytes_peak());
     /* spp: the samples of a pixel (the passes that ran, at most --spp); pixels that see a
-     * light through mirrors or glass take specular_spp (render.h), shown apart */
+     * light through mirrors or glass take specular_spp (render.h), shown apart: the
+     * samples taken, at most the passes that ran (fewer after a --time-limit stop) */
     int spp = c->passes < run->rs.spp ? c->passes : run->rs.spp;
     fprintf(stderr, "width=%d\nheight=%d\nspp=%d\nseed=%llu\n", scene->width, scene->height,
             spp, (unsigned long long)run->o.seed);
     int progressive = run->o.mode == MODE_PPM2008 || run->o.mode == MODE_SPPM2009;
     if (!progressive)
         fprintf(stderr, "specular_spp=%d\nspecular_pixels=%zu\n",
-                c->specular_pixels > 0 ? c->passes : run->rs.specular_spp, c->specular_pixels);
+                c->passes < run->rs.specular_spp ? c->passes : run->rs.specular_spp,
+                c->specular_pixels);
     double pixels = (double)(run->rs.x1 - run->rs.x0) * (double)(run->rs.y1 - run->rs.y0);
     if (!progressive)
         fprintf(stderr, "samples_per_pixel=%.3f\n", (double)c->samples / pixels);

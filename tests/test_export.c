@@ -280,7 +280,8 @@ static void test_failures(struct check *t)
         {"--format pbrt scenes/cornell.scene -o /nonexistent-dir/x.pbrt", "nonexistent-dir"},
         {"--format pbrt scenes/no-such.scene -o OUT", "no-such.scene"},
         {"--format pbrt scenes/cornell.scene -o OUT --channel Y", "--channel 'Y'"},
-        {"--format pbrt scenes/cornell.scene -o OUT --spp 0", "--spp '0'"},
+        {"--format pbrt scenes/cornell.scene -o OUT --spp 0",
+         "--spp: expected a whole number from 1 to 16777216, got '0'"},
         {"--format pbrt scenes/cornell.scene", "needs --format, a scene and -o"},
         {"--format mitsuba BAD -o OUT", ":2: "},
     };

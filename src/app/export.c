@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "options.h"
 
 #define EXPORT_USAGE                                                                      \
     "usage: photon export --format pbrt|mitsuba|blender SCENE -o OUT [--spp N] "         \
@@ -294,11 +295,9 @@ static int parse_channel(const char *word, int *channel, struct error *err)
 
 static int parse_spp(const char *word, int *spp, struct error *err)
 {
-    char *end;
-    long v = strtol(word, &end, 10);
-    if (end == word || *end != '\0' || v < 1 || v > 1 << 24)
-        return error_set(err, "", 0, "export: --spp '%s': expected a whole number in 1..%d",
-                         word, 1 << 24);
+    double v;
+    if (read_number("export: --spp", word, 1, 1 << 24, NUMBER_WHOLE, &v, err) < 0)
+        return -1;
     *spp = (int)v;
     return 0;
 }

@@ -227,7 +227,7 @@ static int read_pixels(FILE *f, const char *name, const struct pfm_header *h,
                                             decode_float(b + 8, little_endian)), magnitude);
             if (!vec3_is_finite(v))
                 return error_set(err, name, 0, "pixel (%d, %d) from the top left is NaN or "
-                                               "infinite; a reference must be finite", x, y);
+                                               "infinite: photon reads only finite images", x, y);
             image_set(img, x, y, v);
         }
     }
