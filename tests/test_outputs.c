@@ -131,7 +131,7 @@ static void test_directory_outputs_refused(struct check *t)
         "-o " OUT "_x.pfm --reference r.pfm --report " OUT "_d.pfm build/no_such.scene",
         "-o " OUT "_w.pfm --crop 0 0 1 1 build/no_such.scene",
         "export --format pbrt build/no_such.scene -o " OUT "_d.pfm",
-        "compare build/no_such.pfm build/no_such.pfm --diff " OUT "_d.pfm/",
+        "compare build/no_such.pfm build/no_such.pfm --diff " OUT "_d.png",
         "plot build/no_such.csv -o " OUT "_d.svg",
         "probe build/no_such.scene --line 0 0 0 1 1 1 --samples 2 -o " OUT "_d.pfm",
         "merge -o " OUT "_d.pfm build/no_such.pfm",
@@ -283,6 +283,46 @@ static void test_nul_byte_refused(struct check *t)
     clean();
 }
 
+/* truth: image.h: a PFM holds floats, and radiance beyond their range is an error (status
+ *   1, a machine's limit reached after the work), not a clamp: a point light of 1 W at
+ *   1e-21 over a white floor gives E = 1 / (4 pi 1e-42) and L = E / pi, about 2.5e40 >
+ *   FLT_MAX. Nothing is written. The same floor at 1e-3 renders, to the closed form.
+ * catches: pixels clamped to 3.4e38 in an image that claims to be radiance. */
+static void test_radiance_beyond_float_refused(struct check *t)
+{
+    static const char *const scales[][2] = {{"1e-21", "2e-21"}, {"1e-3", "2e-3"}};
+    clean();
+    for (int i = 0; i < 2; i++) {
+        char text[512];
+        const char *h = scales[i][0];
+        snprintf(text, sizeof text, "image 1 1\ncamera 0 %s 0 0 0 0 0 0 1 1\n"
+                 "material w lambert 1 1 1\nquad -%s 0 -%s -%s 0 %s %s 0 %s %s 0 -%s w\n"
+                 "light point 0 %s 0 1 1 1\n", scales[i][1], h, h, h, h, h, h, h, h, h);
+        write_text_file(OUT "_f.scene", text);
+        int status = photon("--no-progress -o " OUT "_f.pfm " OUT "_f.scene");
+        CHECK(t, i == 0 ? status == 1 && log_contains("beyond a PFM's float range") &&
+                              !file_exists(OUT "_f.pfm") && !file_exists(OUT "_f.png")
+                        : status == 0 && file_exists(OUT "_f.pfm"));
+    }
+    clean();
+}
+
+/* truth: compare --diff follows -o's rule: a PNG for NAME.png, a PPM for NAME.ppm, any
+ *   other ending refused (status 2) before the images are read.
+ * catches: a P6 PPM written into a file named .png. */
+static void test_diff_format_by_name(struct check *t)
+{
+    clean();
+    CHECK(t, photon(TINY " -o " OUT "_a.pfm " SCENE) == 0);
+    CHECK(t, photon("compare " OUT "_a.pfm " OUT "_a.pfm --diff " OUT "_d.png") == 0 &&
+             file_contains(OUT "_d.png", "PNG"));
+    CHECK(t, photon("compare " OUT "_a.pfm " OUT "_a.pfm --diff " OUT "_d.ppm") == 0 &&
+             file_contains(OUT "_d.ppm", "P6\n4 4\n255\n"));
+    CHECK(t, photon("compare build/no_such.pfm " OUT "_a.pfm --diff " OUT "_d.jpg") == 2 &&
+             log_contains("--diff") && !file_exists(OUT "_d.jpg"));
+    clean();
+}
+
 void test_outputs(struct check *t)
 {
     RUN_TEST(t, test_two_outputs_one_file_refused);
@@ -293,4 +333,6 @@ void test_outputs(struct check *t)
     RUN_TEST(t, test_museum_exports_to_mitsuba);
     RUN_TEST(t, test_inputs_must_be_regular_files);
     RUN_TEST(t, test_nul_byte_refused);
+    RUN_TEST(t, test_radiance_beyond_float_refused);
+    RUN_TEST(t, test_diff_format_by_name);
 }

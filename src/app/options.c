@@ -328,7 +328,7 @@ static void print_help(void)
 {
     printf("usage: photon [options] SCENE       render SCENE: a scene file, or an NFF file by its\n"
            "                                    .nff name (see README: Scene files)\n"
-           "       photon compare A.pfm B.pfm [--diff OUT.ppm] [--ref-variance VB.pfm]\n"
+           "       photon compare A.pfm B.pfm [--diff OUT.png|.ppm] [--ref-variance VB.pfm]\n"
            "                      [--test-variance VA.pfm] [--alpha ALPHA] [--block N]\n"
            "       photon plot A.csv [B.csv ...] -o PLOT.svg      (relmse against seconds)\n"
            "       photon plot --linear --x COL --y COL [--y COL]... [--x-title T]\n"

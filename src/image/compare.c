@@ -28,7 +28,7 @@
  * per cent at the far levels Sidak reaches for a megapixel (1e-6: 5.013 against 4.892),
  * where z is the less conservative.
  *
- * `photon compare A.pfm B.pfm [--diff OUT.ppm]` prints one line
+ * `photon compare A.pfm B.pfm [--diff OUT.png|.ppm]` prints one line
  *   rmse=%.6g relmse=%.6g psnr=%.4f maxerr=%.6g
  * on stdout, or on bad input a message on stderr, nothing on stdout, and status 2. With
  * --ref-variance VB.pfm (b's variance) and/or --test-variance VA.pfm (a's; 0 without),
@@ -42,13 +42,14 @@
 #include "compare.h"
 
 #include "../base/number.h"
+#include "png.h"
 
 #include <assert.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define RELMSE_EPSILON 1e-2 /* compare.h's definition of relmse */
-#define COMPARE_USAGE "usage: photon compare A.pfm B.pfm [--diff OUT.ppm] " \
+#define COMPARE_USAGE "usage: photon compare A.pfm B.pfm [--diff OUT.png|.ppm] " \
                       "[--ref-variance VB.pfm] [--test-variance VA.pfm] [--alpha ALPHA] " \
                       "[--block N]"
 #define DEFAULT_ALPHA 0.01 /* family-wise level of the test when --alpha is not given */
@@ -202,7 +203,7 @@ struct image *variance_read(const char *name, const struct image *like, struct e
 struct compare_args {
     const char *test;          /* A.pfm, the image judged                     */
     const char *reference;     /* B.pfm, the reference it is judged by          */
-    const char *diff;          /* --diff OUT.ppm, or NULL                       */
+    const char *diff;          /* --diff OUT.png or .ppm, or NULL                     */
     const char *ref_variance;  /* --ref-variance VB.pfm (b's variance), or NULL */
     const char *test_variance; /* --test-variance VA.pfm (a's variance), or NULL */
     const char *alpha_text;    /* --alpha as given, or NULL                     */
@@ -320,11 +321,17 @@ static int parse_compare_args(int argc, char **argv, struct compare_args *args,
         return error_set(err, "", 0, "compare: expected two images; " COMPARE_USAGE);
     args->test = files[0];
     args->reference = files[1];
+    size_t n = args->diff != NULL ? strlen(args->diff) : 0;
+    if (args->diff != NULL && (n < 5 || (strcmp(args->diff + n - 4, ".png") != 0 &&
+                                         strcmp(args->diff + n - 4, ".ppm") != 0)))
+        return error_set(err, "", 0, "compare: --diff '%s': expected a file name ending in "
+                         ".png or .ppm", args->diff);
     return parse_alpha(args, err) < 0 ? -1 : parse_block(args, err);
 }
 
 /* --diff: |a - b| per channel divided by maxerr, so the largest error shows as full white
- * and identical images as black; sRGB-encoded like any PPM we write. */
+ * and identical images as black; sRGB-encoded like any display image we write, a PNG or
+ * a PPM by the name's ending (parse_compare_args refused any other). */
 static int write_diff(const char *name, const struct image *a, const struct image *b,
                       double maxerr, struct error *err)
 {
@@ -335,7 +342,10 @@ static int write_diff(const char *name, const struct image *a, const struct imag
         struct vec3 d = vec3_sub(a->pixels[i], b->pixels[i]);
         diff->pixels[i] = vec3_scale(vec3(fabs(d.x), fabs(d.y), fabs(d.z)), inv_maxerr);
     }
-    int status = ppm_write(name, diff, 1.0, err);
+    size_t n = strlen(name);
+    int status = strcmp(name + n - 4, display_suffix(DISPLAY_PPM)) == 0
+                     ? ppm_write(name, diff, 1.0, err)
+                     : png_write(name, diff, 1.0, err);
     image_free(diff);
     return status;
 }

@@ -34,7 +34,8 @@ static inline void image_set(struct image *img, int x, int y, struct vec3 value)
 }
 
 /* PFM ("PF", little-endian, negative scale, rows bottom to top), written atomically
- * through output_open()/output_commit(). Each double is rounded to the nearest float. */
+ * through output_open()/output_commit(). Each double is rounded to the nearest float; an
+ * image with a value beyond the float range is refused (-1, *err a failed write). */
 int pfm_write(const char *name, const struct image *img, struct error *err);
 /* Reads a colour PFM of either byte order. NULL with *err filled for anything malformed. */
 struct image *pfm_read(const char *name, struct error *err);

@@ -42,7 +42,8 @@ struct pfm_header {
 
 /* The one place a double becomes a file float: rounded to nearest (C99 6.3.1.5, default
  * rounding mode). A finite double beyond the float range would be undefined to convert
- * (and Inf under IEEE), so it saturates to +-FLT_MAX: a written file is always finite. */
+ * (and Inf under IEEE), so it saturates to +-FLT_MAX; pfm_write() refuses such an image
+ * first (check_float_range), so only the display image, clamped anyway, sees it. */
 static uint32_t float_bits(double value)
 {
     assert(isfinite(value)); /* the renderer lets no NaN or Inf reach an image */
@@ -71,8 +72,31 @@ static void put_little_endian(uint32_t bits, FILE *f)
         putc((int)((bits >> (8 * i)) & 0xFF), f);
 }
 
+/* Refuses an image with a value beyond the float range before a byte is written: a PFM
+ * holds floats, and a clamp to FLT_MAX would be a silently wrong image. */
+static int check_float_range(const char *name, const struct image *img, struct error *err)
+{
+    for (int y = 0; y < img->height; y++)
+        for (int x = 0; x < img->width; x++) {
+            struct vec3 v = image_get(img, x, y);
+            double m = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
+            if (m > FLT_MAX) {
+                error_set(err, name, 0, "pixel (%d, %d) from the top left holds %g, beyond "
+                          "a PFM's float range (%g): the scene's units give more radiance "
+                          "than a float holds (scale the scene up or its lights down)", x, y,
+                          m, FLT_MAX);
+                if (err != NULL)
+                    err->failed_write = 1;
+                return -1;
+            }
+        }
+    return 0;
+}
+
 int pfm_write(const char *name, const struct image *img, struct error *err)
 {
+    if (check_float_range(name, img, err) < 0)
+        return -1;
     FILE *f = output_open(name, err);
     if (f == NULL)
         return -1;
