@@ -19,6 +19,10 @@
 #   make crosscheck our pt references against Blender's Cycles, where blender (3.4+) is
 #                   installed: each scene exported, rendered, compared (CROSSCHECK_SPP,
 #                   default 4096: about 35 minutes; scripts/crosscheck.sh; development)
+#   make install    photon in $(DESTDIR)$(PREFIX)/bin, its manual page photon.1 (written by
+#                   photon --manual from --help's text) in share/man/man1, the shipped scenes
+#                   in share/photon; PREFIX defaults to /usr/local. make uninstall removes
+#                   exactly those files (and the share/photon folders, once empty)
 #   make clean
 #
 # BUILD names the object directory, so several compilers can build side by side.
@@ -47,7 +51,8 @@ MAIN_OBJ := $(BUILD)/src/main.o
 TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)) tests/bench/tte_fit.c)
 BENCH_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/bench/*.c)))
 
-.PHONY: all run test test-spd check bench figures reference fuzz crosscheck clean
+.PHONY: all run test test-spd check bench figures reference fuzz crosscheck install \
+        uninstall clean
 
 # test-spd refuses at once, before building anything, when it has no folder of SPD files.
 ifneq ($(filter test-spd,$(MAKECMDGOALS)),)
@@ -147,6 +152,32 @@ build/fuzz/%: tests/fuzz/%.c tests/fuzz/input.c tests/fuzz/input.h $(SRC) $(HEAD
 # Cycles against the pt references (scripts/crosscheck.sh): a development check, not a test.
 crosscheck: $(BIN)
 	sh scripts/crosscheck.sh
+
+PREFIX ?= /usr/local
+DESTDIR ?=
+SCENE_FILES := $(sort $(wildcard scenes/*.* scenes/*/*.*))
+SCENE_DIRS := $(sort $(dir $(SCENE_FILES)))
+
+$(BUILD)/photon.1: $(BIN)
+	./$(BIN) --manual > $@.tmp && mv $@.tmp $@
+
+install: $(BIN) $(BUILD)/photon.1
+	mkdir -p '$(DESTDIR)$(PREFIX)/bin' '$(DESTDIR)$(PREFIX)/share/man/man1'
+	cp $(BIN) '$(DESTDIR)$(PREFIX)/bin/photon'
+	chmod 755 '$(DESTDIR)$(PREFIX)/bin/photon'
+	cp $(BUILD)/photon.1 '$(DESTDIR)$(PREFIX)/share/man/man1/photon.1'
+	chmod 644 '$(DESTDIR)$(PREFIX)/share/man/man1/photon.1'
+	for d in $(SCENE_DIRS:scenes/%=%); do \
+	    mkdir -p '$(DESTDIR)$(PREFIX)/share/photon/'"$$d" || exit 1; done
+	for f in $(SCENE_FILES:scenes/%=%); do \
+	    cp "scenes/$$f" '$(DESTDIR)$(PREFIX)/share/photon/'"$$f" && \
+	    chmod 644 '$(DESTDIR)$(PREFIX)/share/photon/'"$$f" || exit 1; done
+
+uninstall:
+	rm -f '$(DESTDIR)$(PREFIX)/bin/photon' '$(DESTDIR)$(PREFIX)/share/man/man1/photon.1'
+	for f in $(SCENE_FILES:scenes/%=%); do rm -f '$(DESTDIR)$(PREFIX)/share/photon/'"$$f"; done
+	for d in $(sort $(SCENE_DIRS:scenes/%=%)) ''; do \
+	    rmdir '$(DESTDIR)$(PREFIX)/share/photon/'"$$d" 2>/dev/null || true; done
 
 clean:
 	rm -rf build out $(BIN)

@@ -20,6 +20,7 @@
 #include "../modes/sppm2009.h"
 #include "../modes/render.h"
 #include "../photon/trace.h"
+#include "help.h"
 #include "option_values.h"
 #include "presets.h"
 
@@ -324,9 +325,12 @@ static void value_note(const struct option_spec *spec, char *text, size_t size)
     snprintf(text, size, " (%s: %s)", spec->kind == OPT_CROP ? "each" : spec->args, range);
 }
 
-static void print_help(void)
+static void print_help(enum help_format format)
 {
-    printf("usage: photon [options] SCENE       render SCENE: a scene file, or an NFF file by its\n"
+    help_begin(format, PHOTON_VERSION);
+    if (format == HELP_ROFF)
+        help_section(format, "synopsis");
+    help_lines(format, "usage: photon [options] SCENE       render SCENE: a scene file, or an NFF file by its\n"
            "                                    .nff name (see README: Scene files)\n"
            "       photon compare A.pfm B.pfm [--diff OUT.png|.ppm] [--ref-variance VB.pfm]\n"
            "                      [--test-variance VA.pfm] [--alpha ALPHA] [--block N]\n"
@@ -339,18 +343,21 @@ static void print_help(void)
            "       photon merge -o FULL.pfm TILE.pfm [TILE.pfm ...] [--exposure E]\n"
            "       photon export --format pbrt|mitsuba|blender SCENE -o OUT [--spp N]\n"
            "                    [--channel R|G|B]   (the scene for pbrt-v4, Mitsuba 3 or\n"
-           "                    Blender; see README: Rendering our scenes elsewhere)\n"
-           "\noptions:\n");
+           "                    Blender; see README: Rendering our scenes elsewhere)\n");
+    help_section(format, "options");
     for (size_t i = 0; i < N_SPECS; i++) {
-        char left[40], note[80], range[128];
+        char left[40], note[80], range[128], text[1024];
         snprintf(left, sizeof left, "%s %s", specs[i].name, specs[i].args);
         mode_note(specs[i].modes, note, sizeof note);
         value_note(&specs[i], range, sizeof range);
-        printf("  %-26s %s%s%s\n", left, note, specs[i].help, range);
+        snprintf(text, sizeof text, "%s%s%s", note, specs[i].help, range);
+        help_option(format, left, text);
     }
-    printf("  %-26s %s\n  %-26s %s\n", "--help", "print this and exit", "--version",
-           "print the version and exit");
-    print_presets();
+    help_option(format, "--help", "print this and exit");
+    help_option(format, "--version", "print the version and exit");
+    help_option(format, "--manual", "print this as a manual page (roff; make install writes "
+                                    "photon.1 from it) and exit");
+    print_presets(format);
 }
 
 static int read_mode(const char *text, enum mode *mode, struct error *err)
@@ -486,8 +493,9 @@ static int apply_words(const struct words *w, struct options *o, int given[N_SPE
     char **argv = w->word;
     int argc = w->n;
     for (int i = w->first; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            print_help();
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0 ||
+            strcmp(argv[i], "--manual") == 0) {
+            print_help(strcmp(argv[i], "--manual") == 0 ? HELP_ROFF : HELP_TEXT);
             return 1;
         }
         if (strcmp(argv[i], "--version") == 0) {
