@@ -247,12 +247,12 @@ const char *export_model_name(const struct material *m)
 
 void export_name(FILE *f, const char *name)
 {
-    for (const char *c = name; *c != '\0'; c++)
-        fputc((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9') ||
-                      strchr(" _.#+", *c) != NULL
-                  ? *c
-                  : '_',
-              f);
+    for (const char *c = name; *c != '\0'; c++) {
+        int plain = (*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') ||
+                    (*c >= '0' && *c <= '9') || strchr(" _.#+/,:=()", *c) != NULL ||
+                    (*c == '-' && (c == name || c[-1] != '-'));
+        fputc(plain ? *c : '_', f);
+    }
 }
 
 void export_rgb(FILE *f, const char *separator, struct vec3 c)
@@ -375,11 +375,23 @@ static int write_export(const struct export_args *a, struct export_scene *es,
     return outputs_publish(err);
 }
 
+/* -o's name goes into what the targets read as data (pbrt's film in a quoted string,
+ * Mitsuba's mesh files in attributes): a name those cannot hold is refused. */
+static int check_output_name(const char *output, struct error *err)
+{
+    for (const unsigned char *c = (const unsigned char *)output; *c != '\0'; c++)
+        if (*c < 0x20 || *c >= 0x7F || *c == '"' || *c == '\\' || *c == '&' || *c == '<' ||
+            *c == '>')
+            return error_set(err, "", 0, "export: -o '%s': the files written name it, so it "
+                             "must be printable ASCII without \" \\ & < >", output);
+    return 0;
+}
+
 int export_command(int argc, char **argv)
 {
     struct export_args a;
     struct error err;
-    if (parse_export_args(argc, argv, &a, &err) < 0 ||
+    if (parse_export_args(argc, argv, &a, &err) < 0 || check_output_name(a.output, &err) < 0 ||
         output_check_one(a.output, "-o", &err) < 0) {
         error_print(&err);
         return 2;

@@ -107,8 +107,9 @@ struct glossy_blend {
 struct glossy_blend export_glossy_blend(const struct material *m);
 const char *export_model_name(const struct material *m); /* "Phong", "Ward", ... */
 
-/* Our material name in a comment: letters, digits and " _.#+" as they are, any other
- * byte as '_' (an XML comment must not hold "--"). */
+/* A name (a material's, a file's) in a comment: letters, digits, " _.#+/,:=()" and a '-'
+ * not after another as they are, any other byte as '_': a newline cannot end the comment
+ * and start a directive, and an XML comment never holds "--". */
 void export_name(FILE *f, const char *name);
 
 /* A colour as the target reads it, with %.9g: enough digits to give back our doubles'

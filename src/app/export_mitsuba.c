@@ -199,9 +199,12 @@ static int write_mesh(FILE *f, const struct export_scene *es, size_t k, struct e
 static void write_header(FILE *f, const struct export_scene *es)
 {
     const struct camera *c = &es->camera;
-    fprintf(f, "<!-- %s for Mitsuba 3, written by photon export%s.\n", es->scene_path,
-            es->channel >= 0 ? " (one channel: every colour grey)" : "");
-    fprintf(f, "     render: mitsuba -m scalar_rgb %s -->\n", es->output);
+    fprintf(f, "<!-- ");
+    export_name(f, es->scene_path);
+    fprintf(f, " for Mitsuba 3, written by photon export%s.\n     render: mitsuba -m "
+            "scalar_rgb ", es->channel >= 0 ? " (one channel: every colour grey)" : "");
+    export_name(f, es->output);
+    fprintf(f, " -->\n");
     fprintf(f, "<scene version=\"3.0.0\">\n");
     fprintf(f, "    <integrator type=\"path\">\n");
     fprintf(f, "        <integer name=\"max_depth\" value=\"-1\"/>\n");
