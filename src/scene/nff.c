@@ -145,6 +145,7 @@ static int split_tokens(struct nff_reader *rd, struct error *err)
 static int next_line(struct nff_reader *rd, struct error *err)
 {
     int status;
+    reach_note(rd->scene, rd->file, rd->line); /* what the entity read last added */
     while ((status = input_line(rd->in, rd->text, sizeof rd->text, err)) > 0) {
         rd->line = rd->in->line;
         scene_hash_line(rd->scene, rd->text);
@@ -643,7 +644,8 @@ int nff_import(struct scene *scene, const char *path, struct error *err)
 struct scene *nff_load(const char *path, struct error *err)
 {
     struct scene *scene = scene_create();
-    if (nff_import(scene, path, err) < 0) {
+    if (nff_import(scene, path, err) < 0 || (reach_note(scene, path, 0), 0) ||
+        reach_check(scene, err) < 0) {
         scene_free(scene);
         return NULL;
     }

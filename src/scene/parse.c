@@ -248,6 +248,7 @@ static int parse_lines(struct parser *ps, struct input *in, struct error *err)
         scene_hash_line(ps->scene, ps->text);
         if (parse_line(ps, err) < 0)
             return -1;
+        reach_note(ps->scene, ps->file, ps->line);
     }
     return status;
 }
@@ -280,6 +281,10 @@ struct scene *scene_load(const char *path, struct error *err)
     }
     if (!scene->has_camera) {
         error_set(err, path, 0, "no camera: a scene needs a 'camera' line");
+        scene_free(scene);
+        return NULL;
+    }
+    if (reach_check(scene, err) < 0) {
         scene_free(scene);
         return NULL;
     }
