@@ -15,7 +15,8 @@
 #                   ONLY=presets|bench for one part; bench is the tte workload's table)
 #   make reference  render the converged references of reference/suite.txt and write
 #                   reference/suite.md (hours; says how long first; ONLY=NAME for one)
-#   make fuzz       libFuzzer targets for the four readers, built with clang (development)
+#   make fuzz       libFuzzer targets for every reader (scene, NFF, OBJ, PFM, CSV, tile
+#                   record, work file) and the option parser, built with clang (development)
 #   make crosscheck our pt references against Blender's Cycles, where blender (3.4+) is
 #                   installed: each scene exported, rendered, compared (CROSSCHECK_SPP,
 #                   default 4096: about 35 minutes; scripts/crosscheck.sh; development)
@@ -137,7 +138,8 @@ figures: $(BIN) $(BUILD)/bench
 reference: $(BIN)
 	PHOTON=./$(BIN) sh scripts/reference.sh $(ONLY)
 
-# Fuzz targets (a development tool, not part of the product build): one per reader. Run
+# Fuzz targets (a development tool, not part of the product build): one per reader and
+# the option parser. Run
 # e.g. build/fuzz/fuzz_nff -max_len=8192 -max_total_time=600 CORPUS_DIR < /dev/null
 FUZZ_CC ?= clang
 FUZZ_FLAGS = -std=c99 -g -O1 -ffp-contract=off -fsanitize=fuzzer,address,undefined $(WARN)

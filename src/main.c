@@ -3,8 +3,9 @@
  *
  * Exit status: 0 on success, 2 for bad input (options, scene files, image files; the
  * message names file:line), 1 for a machine failure (out of memory, a failed write).
- * An output whose directory is missing or not writable is bad input, found before any
- * work (output_check); a write that fails later (a full disk) is a machine failure.
+ * Every output is declared and checked before any work (check_outputs, base/output.h):
+ * one that cannot be written there, or is another output or an input, is bad input; a
+ * write that fails later (a full disk) is a machine failure, and no output is left.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -144,8 +145,8 @@ static int write_tile_record(const struct run *run, struct error *err)
 }
 
 /* -o's PFM (the name ends in .pfm: parse_options) and the display image beside it, the
- * variance and, for a crop, its record. A whole render writes no record, so its files stay
- * as before, and removes one an earlier crop left under its name (tile.h). */
+ * variance and, for a crop, its record; put in place together by render_command(). A
+ * whole render writes no record, and removes one an earlier crop left (tile.h). */
 static int write_outputs(struct run *run, struct error *err)
 {
     const struct options *o = &run->o;

@@ -78,8 +78,8 @@ static void check_round_trip(struct check *t, int width, int height, uint64_t in
     if (width * height >= 3) { /* boundaries of the float range, and one past it */
         img->pixels[0] = vec3(1e30, FLT_MAX, ldexp(1.0, -149));
         expected->pixels[0] = vec3(float_rounded(1e30), FLT_MAX, ldexp(1.0, -149));
-        img->pixels[1] = vec3(1e39, -1e39, 0.1);
-        expected->pixels[1] = vec3(FLT_MAX, -FLT_MAX, float_rounded(0.1));
+        img->pixels[1] = vec3(-FLT_MAX, 1e-46, 0.1);
+        expected->pixels[1] = vec3(-FLT_MAX, 0.0, float_rounded(0.1));
         img->pixels[2] = vec3(-0.0, -1e-46, -ldexp(1.0, -149)); /* signed zeros */
         expected->pixels[2] = vec3(-0.0, -0.0, -ldexp(1.0, -149));
     }
@@ -94,19 +94,24 @@ static void check_round_trip(struct check *t, int width, int height, uint64_t in
             CHECK(t, memcmp(&back->pixels[i], &expected->pixels[i], sizeof(struct vec3)) == 0);
     }
     remove(name);
+    if (width * height >= 3) { /* past the float range: refused, nothing written */
+        img->pixels[1] = vec3(0.1, -1e39, 0.1);
+        CHECK(t, pfm_write(name, img, &err) < 0 && err.failed_write && !file_exists(name) &&
+                 no_temporary(name) && strstr(err.message, "float range") != NULL);
+    }
     image_free(back);
     image_free(expected);
     image_free(img);
 }
 
 /* truth: round trip; pfm_read(pfm_write(x)) is x rounded to the nearest float, which C's
- *   own (float) conversion computes apart from the file code; beyond the float range
- *   the writer saturates to +-FLT_MAX (pfm.c).
+ *   own (float) conversion computes apart from the file code; an image with a value
+ *   beyond the float range is refused, a failed write, and nothing is written (image.h).
  * tolerance: none, compared bit for bit (memcmp, so -0.0 keeps its sign): a float is a
  *   double exactly and the file holds its 32 bits.
  * catches: a lost or swapped channel, a byte-order slip only large exponents or sign bits
  *   show, truncation for rounding, subnormals flushed to zero, -0 losing its sign, Inf
- *   written for 1e39, odd sizes (7x5, 1x1, 1x9) indexing past a row, a NAME.tmp left. */
+ *   or a clamped FLT_MAX written for 1e39, odd sizes (7x5, 1x1, 1x9) indexing past a row, a NAME.tmp left. */
 static void test_pfm_round_trip(struct check *t)
 {
     check_round_trip(t, 7, 5, 0);
