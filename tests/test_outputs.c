@@ -285,25 +285,30 @@ static void test_nul_byte_refused(struct check *t)
 }
 
 /* truth: image.h: a PFM holds floats, and radiance beyond their range is an error (status
- *   1, a machine's limit reached after the work), not a clamp: a point light of 1 W at
- *   1e-21 over a white floor gives E = 1 / (4 pi 1e-42) and L = E / pi, about 2.5e40 >
- *   FLT_MAX. Nothing is written. The same floor at 1e-3 renders, to the closed form.
+ *   1, a machine's limit reached after the work), not a clamp: a point light of 1e30 W
+ *   (the largest power) 1e-6 over a white floor gives E = 1e30 / (4 pi 1e-12) and
+ *   L = E / pi, about 2.5e40 > FLT_MAX. Nothing is written. The same floor at 1e-3 with
+ *   1 W renders; scaled to 1e-21 the scene is refused at load (reach.h), status 2.
  * catches: pixels clamped to 3.4e38 in an image that claims to be radiance. */
 static void test_radiance_beyond_float_refused(struct check *t)
 {
-    static const char *const scales[][2] = {{"1e-21", "2e-21"}, {"1e-3", "2e-3"}};
+    static const char *const scales[][3] = {{"1e-6", "2e-6", "1e30"}, {"1e-3", "2e-3", "1"},
+                                            {"1e-21", "2e-21", "1"}};
+    static const int status[] = {1, 0, 2};
     clean();
-    for (int i = 0; i < 2; i++) {
+    for (int i = 0; i < 3; i++) {
         char text[512];
-        const char *h = scales[i][0];
+        const char *h = scales[i][0], *p = scales[i][2];
         snprintf(text, sizeof text, "image 1 1\ncamera 0 %s 0 0 0 0 0 0 1 1\n"
                  "material w lambert 1 1 1\nquad -%s 0 -%s -%s 0 %s %s 0 %s %s 0 -%s w\n"
-                 "light point 0 %s 0 1 1 1\n", scales[i][1], h, h, h, h, h, h, h, h, h);
+                 "light point 0 %s 0 %s %s %s\n", scales[i][1], h, h, h, h, h, h, h, h, h,
+                 p, p, p);
         write_text_file(OUT "_f.scene", text);
-        int status = photon("--no-progress -o " OUT "_f.pfm " OUT "_f.scene");
-        CHECK(t, i == 0 ? status == 1 && log_contains("beyond a PFM's float range") &&
-                              !file_exists(OUT "_f.pfm") && !file_exists(OUT "_f.png")
-                        : status == 0 && file_exists(OUT "_f.pfm"));
+        CHECK(t, photon("--no-progress -o " OUT "_f.pfm " OUT "_f.scene") == status[i]);
+        CHECK(t, file_exists(OUT "_f.pfm") == (status[i] == 0) &&
+                 file_exists(OUT "_f.png") == (status[i] == 0));
+        CHECK(t, status[i] != 1 || log_contains("beyond a PFM's float range"));
+        run_command("rm -f " OUT "_f.p*");
     }
     clean();
 }
