@@ -32,6 +32,8 @@
  * Counting every path once: the eye's rays and the rays of f_r,s add the emission they
  * reach, since direct light is sampled through f_r,d alone; gather rays add none, at
  * their first surface (direct light) or through specular ones (caustics, held by CP).
+ * The sky is a light like the others (scene/light.h): sampled in L_r,d,l, its photons in
+ * the map, and what a ray that leaves the scene sees counts as emission does.
  * The diffuse-like part reflects irradiance as its directional albedo over pi: exact
  * for a Lambertian part, the paper's only diffuse-like kind.
  *
@@ -421,10 +423,8 @@ static struct irradiance_record gather_record(const struct j94 *m, const struct 
             struct surface at;
             double t;
             m->stats->gradient_rays++;
-            if (!ray_surface(m->scene, surface_ray(s, wi, 0), counters, &at, &t)) {
-                sample->radiance = m->scene->background;
-                continue;
-            }
+            if (!ray_surface(m->scene, surface_ray(s, wi, 0), counters, &at, &t))
+                continue; /* the sky: direct light, which direct_light() samples */
             sample->radiance = trace_from(m, &at, gather, rng, counters);
             sample->distance = t;
         }
@@ -505,8 +505,8 @@ static struct vec3 trace(const struct j94 *m, struct ray ray, struct path path, 
 {
     struct surface s;
     double t;
-    if (!ray_surface(m->scene, ray, counters, &s, &t))
-        return m->scene->background;
+    if (!ray_surface(m->scene, ray, counters, &s, &t)) /* the sky, emission as any other */
+        return path.secondary ? vec3_zero() : m->scene->background;
     return trace_from(m, &s, path, rng, counters);
 }
 

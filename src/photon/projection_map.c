@@ -15,6 +15,12 @@
  * scene's box, at most MAX_PATCH_SIDE: 1 to 64 patches for a planar light, the paper's
  * "more positions for larger lights". A sphere's normal turns with its surface, so it is
  * cut into at least SPHERE_MIN_BANDS bands whatever its size (32 to 128 patches).
+ *   sky            one patch whose map is one cell, the whole sphere of directions: its
+ *                  photons start on the disc that faces their direction, outside the
+ *                  scene (emit.c), so every direction reaches every object from some
+ *                  point of the disc, and the cell is marked with specularity 0 (no
+ *                  raise). Departs from Sec. 3.1, which has no sky: its photons leave
+ *                  as light_emit()'s, only stratified with the other lights' cells.
  *
  * Each patch has a centre o, a unit normal n at o (the map's axis), the radius rho
  * (every point of the patch lies within rho of o) and the angle beta (every normal of the
@@ -78,7 +84,9 @@
  * in the others; 8 bands of 16, at 21 and 13. */
 #define SPHERE_MIN_BANDS 4
 
-enum patch_shape { PATCH_POINT, PATCH_PARALLELOGRAM, PATCH_TRIANGLE, PATCH_SPHERE_ZONE };
+enum patch_shape {
+    PATCH_POINT, PATCH_PARALLELOGRAM, PATCH_TRIANGLE, PATCH_SPHERE_ZONE, PATCH_SKY
+};
 
 /* One emission position and its map. */
 struct patch {
@@ -150,9 +158,11 @@ struct cell_table {
 static struct grid grid_of(const struct projection_settings *ps, enum patch_shape shape)
 {
     struct grid g;
-    g.cosine = shape != PATCH_POINT;
+    g.cosine = shape != PATCH_POINT && shape != PATCH_SKY;
     g.n_rows = g.cosine ? ps->n_theta : 2 * ps->n_theta;
     g.n_phi = ps->n_phi;
+    if (shape == PATCH_SKY)
+        g.n_rows = g.n_phi = 1;
     g.d_theta = (g.cosine ? 0.5 * PI : PI) / g.n_rows;
     g.d_phi = 2.0 * PI / g.n_phi;
     return g;
@@ -292,7 +302,8 @@ static void make_patch(struct patch *p, const struct light *l, int n1, int n2, i
     p->area_fraction = 1.0 / ((double)n1 * n2);
     switch (l->kind) {
     case LIGHT_POINT:
-        p->shape = PATCH_POINT;
+    case LIGHT_SKY:
+        p->shape = l->kind == LIGHT_SKY ? PATCH_SKY : PATCH_POINT;
         p->centre = l->position;
         p->t = vec3(1, 0, 0);
         p->bt = vec3(0, 1, 0);
@@ -552,7 +563,9 @@ struct projection_maps *projection_maps_build(const struct scene *scene,
         struct grid g = grid_of(ps, p->shape);
         for (size_t c = 0; c < (size_t)g.n_rows * g.n_phi; c++)
             specularity[c] = -1.0;
-        for (size_t i = 0; i < n_objects; i++)
+        if (p->shape == PATCH_SKY && n_objects > 0)
+            specularity[0] = 0.0; /* the sky's one cell (see the top of the file) */
+        for (size_t i = 0; p->shape != PATCH_SKY && i < n_objects; i++)
             if ((int)i != l->prim) /* the light's own surface: flat or convex */
                 mark_object(&g, &cells, p, &objects[i], specularity);
         collect_marked(pm, k, vec3_luminance(light_power(l)), specularity);
@@ -621,6 +634,7 @@ void projection_origin(const struct projection_maps *pm, const struct scene *sce
     const struct light *l = &scene->lights[p->light];
     switch (p->shape) {
     case PATCH_POINT:
+    case PATCH_SKY: /* the sky's origin depends on the direction: its sphere's centre */
         e->origin = p->centre;
         e->normal = vec3_zero();
         return;
@@ -673,6 +687,16 @@ int projection_emit(const struct projection_maps *pm, const struct scene *scene,
     const struct marked_cell *c = pick_cell(pm, u[0]);
     const struct patch *p = &pm->patches[c->map];
     const struct light *l = &scene->lights[p->light];
+    /* Phi_l a_k F_c / (P_c N) with P_c = lum(Phi_l) a_k F_c (1 + boost s_c) / total:
+     * lum(Phi_l) > 0 (invariant (c)), 1 + boost s_c >= 1 */
+    double weight =
+        pm->total / (vec3_luminance(light_power(l)) * (1.0 + pm->settings.boost * c->specularity));
+    if (p->shape == PATCH_SKY) { /* its one cell is the whole sphere: the sky's own emission */
+        if (!light_emit(l, u + 1, e))
+            return -1;
+        e->weight = weight;
+        return p->light;
+    }
     projection_origin(pm, scene, c->map, u + 1, e);
     struct grid g = grid_of(&pm->settings, p->shape);
     struct vec3 w = cell_direction(&g, c->cell, u[3], u[4]);
@@ -680,10 +704,7 @@ int projection_emit(const struct projection_maps *pm, const struct scene *scene,
                       vec3_scale(p->n, w.z));
     if (p->shape == PATCH_SPHERE_ZONE) /* (2) at the top of the file */
         e->dir = turn_between(e->dir, p->n, e->normal);
-    /* Phi_l a_k F_c / (P_c N) with P_c = lum(Phi_l) a_k F_c (1 + boost s_c) / total:
-     * lum(Phi_l) > 0 (invariant (c)), 1 + boost s_c >= 1 */
-    e->weight = pm->total /
-                (vec3_luminance(light_power(l)) * (1.0 + pm->settings.boost * c->specularity));
+    e->weight = weight;
     return p->light;
 }
 

@@ -3,6 +3,8 @@
  */
 #include "light.h"
 
+#include "brdf_models.h"
+
 /* Whether a point at squared distance d2 from a sphere light's centre sees its outside.
  * Points on the sphere itself (within rounding, 1e-9 relative) do not: they see its
  * surface edge-on, and a point on its inside sees no front side at all. */
@@ -75,7 +77,22 @@ static int sample_planar(const struct light *l, struct vec3 p, struct vec3 q, do
     return 1;
 }
 
-int light_sample(const struct light *l, struct vec3 p, double u1, double u2,
+/* The sky seen from a point with unit normal n: a direction cosine-distributed about n
+ * (pdf cos / pi), along which the sky's radiance arrives unless something is in the way. */
+static int sample_sky(const struct light *l, struct vec3 n, double u1, double u2,
+                      struct light_sample *s)
+{
+    struct vec3 local = sample_cosine_local(u1, u2), t, b;
+    vec3_frame(n, &t, &b);
+    s->wi = vec3_add(vec3_add(vec3_scale(t, local.x), vec3_scale(b, local.y)),
+                     vec3_scale(n, local.z));
+    s->distance = INFINITY;
+    s->li = l->radiance;
+    s->pdf = local.z / PI; /* > 0: sample_cosine_local() keeps z above 0 */
+    return 1;
+}
+
+int light_sample(const struct light *l, struct vec3 p, struct vec3 n, double u1, double u2,
                  struct light_sample *s)
 {
     switch (l->kind) {
@@ -104,14 +121,19 @@ int light_sample(const struct light *l, struct vec3 p, double u1, double u2,
                                                        vec3_scale(l->e2, u2 * su)));
         return sample_planar(l, p, q, planar_area(l), s);
     }
+    case LIGHT_SKY:
+        return sample_sky(l, n, u1, u2, s);
     }
     return 0;
 }
 
-double light_pdf(const struct light *l, struct vec3 p, struct vec3 q, struct vec3 wi)
+double light_pdf(const struct light *l, struct vec3 p, struct vec3 n, struct vec3 q,
+                 struct vec3 wi)
 {
     if (l->kind == LIGHT_POINT)
         return 0.0;
+    if (l->kind == LIGHT_SKY)
+        return fmax(0.0, vec3_dot(n, wi)) / PI;
     if (l->kind == LIGHT_SPHERE) {
         double d2 = vec3_length2(vec3_sub(l->position, p));
         double r2 = l->radius * l->radius;
@@ -121,8 +143,8 @@ double light_pdf(const struct light *l, struct vec3 p, struct vec3 q, struct vec
         double one_minus_cos_max = sin2_max / (1.0 + sqrt(fmax(0.0, 1.0 - sin2_max)));
         return one_minus_cos_max > 0 ? 1.0 / (2.0 * PI * one_minus_cos_max) : 0.0;
     }
-    struct vec3 n = vec3_normalize(vec3_cross(l->e1, l->e2));
-    double cos_light = -vec3_dot(wi, n);
+    struct vec3 front = vec3_normalize(vec3_cross(l->e1, l->e2));
+    double cos_light = -vec3_dot(wi, front);
     double area = planar_area(l);
     if (!(cos_light > 0) || !(area > 0))
         return 0.0; /* the back of a one-sided emitter is never sampled */
@@ -139,6 +161,8 @@ struct vec3 light_power(const struct light *l)
     case LIGHT_QUAD:
     case LIGHT_TRIANGLE:
         return vec3_scale(l->radiance, PI * planar_area(l));
+    case LIGHT_SKY:
+        return vec3_scale(l->radiance, PI * l->radius * l->radius * 4.0 * PI);
     }
     return vec3_zero();
 }
