@@ -230,8 +230,9 @@ static void print_jensen1994_stats(const struct jensen1994_stats *js)
 {
     fprintf(stderr, "photons_emitted=%zu\nphoton_rays=%llu\n", js->photons_emitted,
             js->photon_rays);
-    fprintf(stderr, "photons_stored=%zu\nphotons_caustic=%zu\nbytes_photon_map=%zu\n",
-            js->photons_stored, js->photons_caustic, js->bytes_photon_map);
+    fprintf(stderr, "photons_stored=%zu\nphotons_caustic=%zu\nphotons_glossy=%zu\n"
+            "bytes_photon_map=%zu\n", js->photons_stored, js->photons_caustic,
+            js->photons_glossy, js->bytes_photon_map);
     fprintf(stderr, "bytes_caustic_photons=%zu\n", js->bytes_caustic_photons);
     fprintf(stderr, "bytes_per_photon=%.1f\n",
             js->photons_stored > 0 ? (double)js->bytes_photon_map / js->photons_stored : 0.0);
@@ -321,6 +322,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         j94.light_samples = run->o.light_samples;
         j94.both_lobes = run->o.both_lobes;
         j94.bounded_reach = run->o.bounded_reach;
+        j94.glossy_gather = run->o.glossy_gather;
         j94.gradient_limit = run->o.gradient_limit;
         j94.projection_maps = run->o.projection_maps;
         j94.illumination_maps = run->o.illumination_maps;

@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "../modes/jensen1994.h"
+#include "../modes/jensen1994_maps.h"
 #include "../modes/photons.h"
 #include "../photon/estimate.h"
 #include "../photon/illumination_map.h"

@@ -46,7 +46,7 @@
  * every crop repeats; --load-photons reads them from a file instead (photon/
  * global_work.h).
  */
-#include "jensen1994.h"
+#include "jensen1994_maps.h"
 
 #include <string.h>
 #include <time.h>
@@ -74,205 +74,13 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;
     js.caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     js.both_lobes = 1;
+    js.glossy_gather = 1;
     js.bounded_reach = 1;
     js.gradient_limit = 1;
     js.projection_maps = 1;
     js.illumination_maps = 0;
     js.work = NULL;
     return js;
-}
-
-/* ---- Sec. 3, pass 1: light path tracing into the photon map ---- */
-
-/* Where pass 1 deposits: the illumination maps for photons on a surface that has one,
- * the photon map for the rest. */
-struct deposits {
-    struct photon_trace photons;
-    struct illumination_maps *illumination; /* borrowed; NULL: photon maps everywhere */
-};
-
-/* Sec. 3.3: "with every photon we store the intersection point, the normal, the energy
- * and a bit saying whether it is a caustic photon". The 20-byte record (photon.h) keeps
- * the normal where 1996 keeps the direction, and the caustic bit among its flags. Sec.
- * 3.2: on a surface with an illumination map, the energy goes to the map instead. */
-static int deposit_photon(void *context, const struct photon_event *e)
-{
-    struct deposits *d = context;
-    if (d->illumination != NULL && illumination_covers(d->illumination, e->prim)) {
-        illumination_deposit(d->illumination, e->prim, e->u, e->v, e->power,
-                             e->kind == PHOTON_CAUSTIC);
-        return 0;
-    }
-    struct photon_event stored = *e;
-    stored.wi = e->normal;
-    return photon_trace_store(&d->photons, MAX_PHOTONS, &stored);
-}
-
-/* Light rays through projection maps (when on) into d; fills the projection stats. */
-static int trace_light_paths(const struct scene *scene, const struct trace_settings *base,
-                             const struct jensen1994_settings *js, struct deposits *d,
-                             struct jensen1994_stats *stats)
-{
-    struct trace_settings ts = *base;
-    struct projection_settings ps = {PROJECTION_N_THETA_DEFAULT, PROJECTION_N_PHI_DEFAULT,
-                                     PROJECTION_BOOST_DEFAULT};
-    struct projection_maps *maps = js->projection_maps ? projection_maps_build(scene, &ps) : NULL;
-    ts.projection = maps;
-    struct photon_sink sink = {deposit_photon, d};
-    int status = trace_photons_into(scene, &ts, &sink, &stats->photon_rays);
-    if (maps != NULL) {
-        struct projection_stats pst = projection_maps_stats(maps);
-        stats->projection_maps = pst.n_maps;
-        stats->projection_marked = pst.marked_fraction;
-        stats->bytes_projection_maps = pst.bytes;
-    }
-    projection_maps_free(maps);
-    return status;
-}
-
-/* Sec. 3.2's pretrace: "the distance between rays going through adjacent pixels and
- * striking the same object". One ray through the centre of every pixel of the whole
- * image; footprint[prim] (n_prims entries, owned by the caller) becomes the smallest
- * distance between the hits of horizontally or vertically adjacent pixels on prim, 0
- * where no two adjacent pixels hit prim. Row by row, two rows kept. */
-static double *pretrace_footprints(const struct scene *scene)
-{
-    size_t n_prims = geometry_primitive_count(scene->geometry);
-    double *footprint = xcalloc(n_prims > 0 ? n_prims : 1, sizeof *footprint, "footprints");
-    size_t width = (size_t)scene->width;
-    int *prim = xmalloc(2 * width, sizeof *prim, "pretrace");
-    struct vec3 *p = xmalloc(2 * width, sizeof *p, "pretrace");
-    for (int y = 0; y < scene->height; y++) {
-        size_t row = (size_t)(y % 2) * width, above = (size_t)((y + 1) % 2) * width;
-        for (size_t x = 0; x < width; x++) {
-            struct hit hit;
-            struct ray ray = camera_ray(&scene->camera, x + 0.5, y + 0.5);
-            prim[row + x] = scene_intersect(scene, ray, INFINITY, &hit) ? hit.prim : -1;
-            p[row + x] = hit.p;
-            for (int k = 0; k < 2; k++) { /* the left neighbour, the one above */
-                size_t other = k == 0 ? row + x - 1 : above + x;
-                if ((k == 0 ? x == 0 : y == 0) || prim[row + x] < 0 ||
-                    prim[other] != prim[row + x])
-                    continue;
-                double d = vec3_length(vec3_sub(p[row + x], p[other]));
-                double *f = &footprint[prim[row + x]];
-                *f = *f == 0 || d < *f ? d : *f;
-            }
-        }
-    }
-    xfree(p);
-    xfree(prim);
-    return footprint;
-}
-
-/* Per primitive, whether photons can be stored on it (a non-specular part): mirrors and
- * glass get no illumination map, since no photon would ever reach one. Owned by the
- * caller. */
-static unsigned char *receiving_primitives(const struct scene *scene)
-{
-    size_t n_prims = geometry_primitive_count(scene->geometry);
-    unsigned char *receives = xmalloc(n_prims > 0 ? n_prims : 1, sizeof *receives,
-                                      "receiving primitives");
-    for (size_t i = 0; i < n_prims; i++) {
-        int material = geometry_primitive_material(scene->geometry, (int)i);
-        receives[i] = (unsigned char)brdf_has_diffuse(&scene->materials[material]);
-    }
-    return receives;
-}
-
-/* A kd-tree of copies of the CP photons among traced's (departs from Sec. 3.3, which
- * keeps one map and tells CP photons by their bit: searched for CP photons alone, that
- * map must visit every photon within the radius wherever caustics are sparse or absent,
- * which made the Cornell box's final pass grow with the photons, 85 s at 200,000 and
- * 190 s at 500,000. The copies cost 20 bytes per CP photon.) */
-static struct kdtree *caustic_photons_of(const struct photon_trace *traced)
-{
-    struct photon *cp = xmalloc(traced->n_caustic > 0 ? traced->n_caustic : 1, sizeof *cp,
-                                "caustic photons");
-    size_t n = 0;
-    for (size_t i = 0; i < traced->n_photons; i++)
-        if (traced->photons[i].flags & PHOTON_CAUSTIC)
-            cp[n++] = traced->photons[i];
-    return balance_kdtree(cp, n); /* takes them */
-}
-
-/* The illumination maps' figures for --stats. */
-static void count_illumination(const struct illumination_maps *maps,
-                               struct jensen1994_stats *stats)
-{
-    struct illumination_stats st = illumination_maps_stats(maps);
-    stats->illumination_maps = st.n_maps;
-    stats->illumination_di_elements = st.di_elements;
-    stats->illumination_ci_maps = st.ci_maps;
-    stats->bytes_illumination_maps = st.bytes;
-}
-
-int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
-                     const struct jensen1994_settings *js, struct irradiance_stores *out,
-                     struct jensen1994_stats *stats, struct error *err)
-{
-    struct trace_settings ts;
-    memset(&ts, 0, sizeof ts);
-    ts.seed = seed;
-    ts.n_emit = js->n_photons;
-    ts.max_stored = MAX_PHOTONS;
-    ts.store = PHOTON_MAP_GLOBAL; /* every deposit: direct, caustic and indirect */
-    ts.max_depth = max_depth;
-    ts.targets = NULL;
-    ts.projection = NULL;
-    struct deposits d;
-    memset(&d, 0, sizeof d);
-    d.photons.photons = NULL;
-    d.illumination = NULL;
-    if (js->illumination_maps) {
-        double *footprint = pretrace_footprints(scene);
-        unsigned char *receives = receiving_primitives(scene);
-        d.illumination = illumination_maps_create(scene->geometry, scene_diagonal(scene),
-                                                  footprint, receives);
-        xfree(receives);
-        xfree(footprint);
-    }
-    if (trace_light_paths(scene, &ts, js, &d, stats) < 0) {
-        photon_trace_free(&d.photons);
-        illumination_maps_free(d.illumination);
-        return error_set(err, "", 0,
-                         "photon map: more than %d photons would be stored; emit fewer "
-                         "photons or follow fewer bounces (--max-depth)", MAX_PHOTONS);
-    }
-    stats->photons_emitted = ts.n_emit;
-    stats->photons_caustic = d.photons.n_caustic;
-    out->caustics = caustic_photons_of(&d.photons);
-    out->photons = balance_kdtree(d.photons.photons, d.photons.n_photons); /* takes them */
-    stats->photons_stored = out->photons->n_photons;
-    stats->bytes_photon_map = kdtree_bytes(out->photons);
-    stats->bytes_caustic_photons = kdtree_bytes(out->caustics);
-    out->illumination = d.illumination;
-    if (out->illumination != NULL) {
-        illumination_maps_finish(out->illumination, scene->geometry);
-        count_illumination(out->illumination, stats);
-    }
-    return 0;
-}
-
-void irradiance_stores_free(struct irradiance_stores *stores)
-{
-    kdtree_free(stores->photons);
-    kdtree_free(stores->caustics);
-    illumination_maps_free(stores->illumination);
-    stores->photons = NULL;
-    stores->caustics = NULL;
-    stores->illumination = NULL;
-}
-
-struct vec3 stored_irradiance(const struct irradiance_stores *stores,
-                              const struct store_query *q, struct nearest *nn)
-{
-    if (stores->illumination != NULL && illumination_covers(stores->illumination, q->prim))
-        return illumination_irradiance(stores->illumination, q->prim, q->u, q->v,
-                                       q->estimate->kinds == PHOTON_CAUSTIC);
-    if (q->estimate->kinds == PHOTON_CAUSTIC) /* all of them are: no filter to apply */
-        return irradiance_estimate(stores->caustics, q->x, q->n, q->estimate, nn);
-    return irradiance_estimate(stores->photons, q->x, q->n, q->estimate, nn);
 }
 
 /* ---- Sec. 4, pass 2: Monte Carlo ray tracing ---- */
@@ -292,6 +100,8 @@ struct j94 {
     struct irradiance_cache *cache;
     int filling_cache;               /* the pre-pass: records where none is usable      */
     int strata_theta, strata_phi;    /* a record's m x n strata, one ray each            */
+    int sample_theta, sample_phi;    /* a camera sample's share of them, for a glossy
+                                        part's gather (glossy_interreflection())         */
     int light_strata;                /* each light sampled on light_strata^2 strata      */
     double diagonal;                 /* of the scene's box                               */
     int max_depth;                   /* longest chain of bounces followed                */
@@ -341,14 +151,33 @@ static struct vec3 direct_light(const struct j94 *m, const struct surface *s,
     return sum;
 }
 
+/* The radiance the diffuse-like part reflects from the photons of estimate `is`: albedo
+ * / pi times their irradiance (Sec. 4.0.2-4.0.3: the paper's diffuse-like surfaces are
+ * Lambertian). Departs from them where the photons kept their direction (glossy_gather,
+ * keeps_direction()): through a part that is not Lambertian, the reflected light depends
+ * on where it came from, so it is Jensen 1996's Eq. 3 through f_r,d (no differential
+ * checking). */
+static struct vec3 stored_reflection(const struct j94 *m, const struct surface *s,
+                                     const struct material *diffuse,
+                                     const struct shading_frame *frame,
+                                     const struct irradiance_settings *is)
+{
+    if (keeps_direction(m->js, m->stores.illumination, s->material, s->prim)) {
+        struct estimate_point at = {s->p, s->ng, s->wo, diffuse, frame};
+        struct estimate_settings es = {is->n, is->max_r2, 0.0, is->kinds, is->count_rim};
+        return radiance_estimate(m->stores.glossy, &at, &es, m->nn);
+    }
+    struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, is};
+    return diffuse_reflection(s, diffuse, frame, stored_irradiance(&m->stores, &q, m->nn));
+}
+
 /* -- 4.0.2 L_r,d,s: caustics, from the CP photons alone -- */
 
 static struct vec3 caustic_light(const struct j94 *m, const struct surface *s,
                                  const struct material *diffuse,
                                  const struct shading_frame *frame)
 {
-    struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, &m->caustic_photons};
-    return diffuse_reflection(s, diffuse, frame, stored_irradiance(&m->stores, &q, m->nn));
+    return stored_reflection(m, s, diffuse, frame, &m->caustic_photons);
 }
 
 /* -- L_r,s: the specular-like part by recursive Monte Carlo ray tracing -- */
@@ -399,8 +228,34 @@ static struct vec3 specular_light(const struct j94 *m, const struct surface *s,
 
 /* -- 4.0.3 L_r,d,d: multiple diffuse reflections by irradiance gradients -- */
 
-/* Ward and Heckbert's gather at s: one cosine-distributed ray per stratum, each bringing
- * the radiance a secondary path finds (the irradiance stores where it lands). Fills
+/* The ray of stratum (j, k) of an n_theta x n_phi gather at s (cosine-distributed within
+ * it): the radiance the secondary path finds (the irradiance stores where it lands) and
+ * the distance to its first surface, or zero and infinity when it leaves the scene (the
+ * sky is direct light, which direct_light() samples) or starts below the surface. */
+static struct stratum_sample gather_stratum(const struct j94 *m, const struct surface *s,
+                                            const struct shading_frame *frame, int n_theta,
+                                            int n_phi, int j, int k, struct path gather,
+                                            struct vec3 *wi, struct rng *rng,
+                                            struct render_counters *counters)
+{
+    struct stratum_sample sample = {{0.0, 0.0, 0.0}, INFINITY};
+    double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
+    struct vec3 local = stratum_direction(n_theta, n_phi, j, k, u1, u2);
+    *wi = vec3_add(vec3_add(vec3_scale(frame->t, local.x), vec3_scale(frame->b, local.y)),
+                   vec3_scale(frame->n, local.z));
+    if (!(vec3_dot(*wi, s->ng) > 0))
+        return sample; /* below the geometric surface: no light arrives */
+    struct surface at;
+    double t;
+    m->stats->gradient_rays++;
+    if (!ray_surface(m->scene, surface_ray(s, *wi, 0), counters, &at, &t))
+        return sample;
+    sample.radiance = trace_from(m, &at, gather, rng, counters);
+    sample.distance = t;
+    return sample;
+}
+
+/* Ward and Heckbert's gather at s: one cosine-distributed ray per stratum. Fills
  * m->strata; returns the record with its radius bounded as cache_pass.h says. */
 static struct irradiance_record gather_record(const struct j94 *m, const struct surface *s,
                                               const struct shading_frame *frame,
@@ -408,32 +263,42 @@ static struct irradiance_record gather_record(const struct j94 *m, const struct 
                                               struct render_counters *counters)
 {
     struct path gather = {vec3(1, 1, 1), path.depth + 1, 1};
-    for (int j = 0; j < m->strata_theta; j++) {
+    for (int j = 0; j < m->strata_theta; j++)
         for (int k = 0; k < m->strata_phi; k++) {
-            double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
-            struct vec3 local = stratum_direction(m->strata_theta, m->strata_phi, j, k, u1, u2);
-            struct vec3 wi = vec3_add(vec3_add(vec3_scale(frame->t, local.x),
-                                               vec3_scale(frame->b, local.y)),
-                                      vec3_scale(frame->n, local.z));
-            struct stratum_sample *sample = &m->strata[j * m->strata_phi + k];
-            sample->radiance = vec3_zero();
-            sample->distance = INFINITY;
-            if (!(vec3_dot(wi, s->ng) > 0))
-                continue; /* below the geometric surface: no light arrives */
-            struct surface at;
-            double t;
-            m->stats->gradient_rays++;
-            if (!ray_surface(m->scene, surface_ray(s, wi, 0), counters, &at, &t))
-                continue; /* the sky: direct light, which direct_light() samples */
-            sample->radiance = trace_from(m, &at, gather, rng, counters);
-            sample->distance = t;
+            struct vec3 wi;
+            m->strata[j * m->strata_phi + k] = gather_stratum(
+                m, s, frame, m->strata_theta, m->strata_phi, j, k, gather, &wi, rng, counters);
         }
-    }
     struct record_reach reach =
         record_reach_at(&m->scene->camera, s->p, frame->n, m->js->cache_accuracy, m->diagonal,
                         m->js->bounded_reach, m->js->gradient_limit);
     return irradiance_record_of(s->p, frame->t, frame->b, frame->n, m->strata_theta,
                                 m->strata_phi, m->strata, reach);
+}
+
+/* Departs from Sec. 4.0.3, whose diffuse-like surfaces are Lambertian and reflect the
+ * cache's irradiance as albedo / pi: a diffuse-like part that is not Lambertian (a broad
+ * lobe: Schlick's model with r >= 1/2) reflects int f_r,d L cos, which depends on where
+ * the light comes from as well as how much arrives (on the museum's floor, seen at a
+ * grazing angle, albedo / pi times E is 14% bright), so each camera sample gathers its
+ * share of a record's rays through f_r,d itself: pi / (m n) times the sum over the m x n
+ * strata of f_r,d L, no cache (glossy_gather; off, the paper's albedo / pi times E). */
+static struct vec3 glossy_interreflection(const struct j94 *m, const struct surface *s,
+                                          const struct material *diffuse,
+                                          const struct shading_frame *frame, struct path path,
+                                          struct rng *rng, struct render_counters *counters)
+{
+    struct path gather = {vec3(1, 1, 1), path.depth + 1, 1};
+    struct vec3 sum = vec3_zero();
+    for (int j = 0; j < m->sample_theta; j++)
+        for (int k = 0; k < m->sample_phi; k++) {
+            struct vec3 wi;
+            struct stratum_sample sample = gather_stratum(
+                m, s, frame, m->sample_theta, m->sample_phi, j, k, gather, &wi, rng, counters);
+            sum = vec3_add(sum, vec3_mul(brdf_eval(diffuse, frame, s->wo, wi),
+                                         sample.radiance));
+        }
+    return vec3_scale(sum, PI / (m->sample_theta * m->sample_phi));
 }
 
 /* The irradiance of multiple diffuse reflections at s: interpolated from the cache where
@@ -466,8 +331,13 @@ static struct vec3 eye_radiance(const struct j94 *m, const struct surface *s, st
     if (split.has_diffuse) {
         l = vec3_add(l, direct_light(m, s, &split.diffuse, &frame, rng, counters));
         l = vec3_add(l, caustic_light(m, s, &split.diffuse, &frame));
-        struct vec3 e = diffuse_interreflection(m, s, &frame, path, rng, counters);
-        l = vec3_add(l, diffuse_reflection(s, &split.diffuse, &frame, e));
+        if (!split.lambertian && m->js->glossy_gather) {
+            l = vec3_add(l, glossy_interreflection(m, s, &split.diffuse, &frame, path, rng,
+                                                   counters));
+        } else {
+            struct vec3 e = diffuse_interreflection(m, s, &frame, path, rng, counters);
+            l = vec3_add(l, diffuse_reflection(s, &split.diffuse, &frame, e));
+        }
     }
     if (split.has_specular)
         l = vec3_add(l, specular_light(m, s, &split.specular, &frame, path, rng, counters));
@@ -484,10 +354,8 @@ static struct vec3 secondary_radiance(const struct j94 *m, const struct surface 
     struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
     struct brdf_split split = brdf_split(s->material);
     struct vec3 l = vec3_zero();
-    if (split.has_diffuse) {
-        struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, &m->all_photons};
-        l = diffuse_reflection(s, &split.diffuse, &frame, stored_irradiance(&m->stores, &q, m->nn));
-    }
+    if (split.has_diffuse)
+        l = stored_reflection(m, s, &split.diffuse, &frame, &m->all_photons);
     if (split.has_specular)
         l = vec3_add(l, specular_light(m, s, &split.specular, &frame, path, rng, counters));
     return l;
@@ -540,6 +408,10 @@ static void set_up(struct j94 *m, const struct scene *scene, const struct render
     m->strata_theta = (int)floor(sqrt(js->gather_rays / PI) + 0.5);
     m->strata_theta = m->strata_theta < 1 ? 1 : m->strata_theta;
     m->strata_phi = js->gather_rays / m->strata_theta;
+    int share = js->gather_rays / rs->spp; /* spp >= 1 */
+    m->sample_theta = (int)floor(sqrt(share / PI) + 0.5);
+    m->sample_theta = m->sample_theta < 1 ? 1 : m->sample_theta;
+    m->sample_phi = share / m->sample_theta > 0 ? share / m->sample_theta : 1;
     m->light_strata = (int)floor(sqrt((double)js->light_samples));
     m->filling_cache = 0;
     m->cache = irradiance_cache_create(isfinite(box.lo.x) ? box : (struct aabb){vec3_zero(),
@@ -558,7 +430,7 @@ static void tear_down(struct j94 *m)
 }
 
 /* Pass 1 into work when it is empty (maps[0] the photon map, maps[1] the CP photons'
- * tree, and the illumination maps when js asks for them), else the stores work holds
+ * tree, maps[2] the glossy photons' (keeps_direction()), and the illumination maps when js asks for them), else the stores work holds
  * (loaded from a file). m->stores borrows them from work. */
 static int photon_stores(struct j94 *m, const struct scene *scene,
                          const struct render_settings *rs, struct global_work *work,
@@ -568,25 +440,29 @@ static int photon_stores(struct j94 *m, const struct scene *scene,
         if (jensen1994_trace(scene, rs->seed, rs->max_depth, m->js, &m->stores, m->stats,
                              err) < 0)
             return -1;
-        global_work_add_maps(work, 2);
+        global_work_add_maps(work, 3);
         work->maps[0] = m->stores.photons;
         work->maps[1] = m->stores.caustics;
+        work->maps[2] = m->stores.glossy;
         work->illumination = m->stores.illumination;
         return 0;
     }
-    if (work->n_maps != 2 || work->maps[0] == NULL || work->maps[1] == NULL ||
+    if (work->n_maps != 3 || work->maps[0] == NULL || work->maps[1] == NULL ||
+        work->maps[2] == NULL ||
         (work->illumination != NULL) != (m->js->illumination_maps != 0))
-        return error_set(err, "", 0, "--load-photons: the file does not hold the two photon "
-                                     "maps (and, with --irradiance-store illumination, the "
-                                     "illumination maps) mode 1994 saves");
+        return error_set(err, "", 0, "--load-photons: the file does not hold the three "
+                                     "photon trees (and, with --irradiance-store "
+                                     "illumination, the illumination maps) mode 1994 saves");
     m->stores.photons = work->maps[0];
     m->stores.caustics = work->maps[1];
+    m->stores.glossy = work->maps[2];
     m->stores.illumination = work->illumination;
     if (work->illumination != NULL)
         count_illumination(work->illumination, m->stats);
-    m->stats->photons_stored = work->maps[0]->n_photons;
+    m->stats->photons_stored = work->maps[0]->n_photons + work->maps[2]->n_photons;
     m->stats->photons_caustic = work->maps[1]->n_photons;
-    m->stats->bytes_photon_map = kdtree_bytes(work->maps[0]);
+    m->stats->photons_glossy = work->maps[2]->n_photons;
+    m->stats->bytes_photon_map = kdtree_bytes(work->maps[0]) + kdtree_bytes(work->maps[2]);
     m->stats->bytes_caustic_photons = kdtree_bytes(work->maps[1]);
     return 0;
 }
