@@ -323,6 +323,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         j94.both_lobes = run->o.both_lobes;
         j94.bounded_reach = run->o.bounded_reach;
         j94.glossy_gather = run->o.glossy_gather;
+        j94.glossy_photons = run->o.glossy_photons;
         j94.gradient_limit = run->o.gradient_limit;
         j94.projection_maps = run->o.projection_maps;
         j94.illumination_maps = run->o.illumination_maps;

@@ -166,6 +166,11 @@ static const struct option_spec specs[] = {
      "(the default)", FOR_1996},
     {"--no-glossy-corner", OPT_FLAG, FIELD(glossy_corner), 0, 0, "",
      "evaluate them accurately, with a final gather (the paper's)", FOR_1996},
+    {"--glossy-photons", OPT_FLAG, FIELD(glossy_photons), 0, 0, "",
+     "surfaces seen through a glossy lobe read the photon map, as a gather ray's end, with no "
+     "final gather (the default)", FOR_1994},
+    {"--no-glossy-photons", OPT_FLAG, FIELD(glossy_photons), 0, 0, "",
+     "evaluate them in full, with a final gather (the paper's)", FOR_1994},
     {"--glossy-gather", OPT_FLAG, FIELD(glossy_gather), 0, 0, "",
      "a diffuse-like part that is not Lambertian (Schlick's model, r >= 1/2) reflects what "
      "each camera sample gathers through its BRDF (the default)", FOR_1994},
@@ -376,6 +381,7 @@ static void set_defaults(struct options *o)
     o->light_samples = j94.light_samples;
     o->projection_maps = j94.projection_maps;
     o->glossy_gather = j94.glossy_gather;
+    o->glossy_photons = j94.glossy_photons;
 }
 
 static int read_mode(const char *text, enum mode *mode, struct error *err)

@@ -75,6 +75,7 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     js.both_lobes = 1;
     js.glossy_gather = 1;
+    js.glossy_photons = 1;
     js.bounded_reach = 1;
     js.gradient_limit = 1;
     js.projection_maps = 1;
@@ -89,7 +90,10 @@ struct jensen1994_settings jensen1994_settings_default(void)
 struct path {
     struct vec3 beta; /* throughput since the eye or the gathering point                */
     int depth;        /* bounces so far                                                  */
-    int secondary;    /* 1 on a gather ray: read the photon map, add no emission         */
+    int secondary;    /* 1: surfaces read the photon map (a gather ray, or with
+                         glossy_photons a path through a glossy lobe) instead of gathering */
+    int emission;     /* 1: it adds the emission it reaches (the eye's rays, and any ray
+                         after a glossy bounce: no caustic photon holds that light)       */
 };
 
 struct j94 {
@@ -124,22 +128,25 @@ static struct vec3 diffuse_reflection(const struct surface *s, const struct mate
 
 /* -- 4.0.1 L_r,d,l: direct light -- */
 
-/* Each light sampled on a k x k grid of jittered strata of its sample space, through the
- * diffuse-like part, with a shadow ray per sample; a point light, whose every sample is
- * the same, once. */
+/* Each light sampled on a k x k grid of jittered strata of its sample space, through
+ * `part` (the diffuse-like part), with a shadow ray per sample; a point light, whose every
+ * sample is the same, once. With points_only, the point lights alone (see
+ * specular_light()). */
 static struct vec3 direct_light(const struct j94 *m, const struct surface *s,
-                                const struct material *diffuse,
-                                const struct shading_frame *frame, struct rng *rng,
-                                struct render_counters *counters)
+                                const struct material *part,
+                                const struct shading_frame *frame, int points_only,
+                                struct rng *rng, struct render_counters *counters)
 {
     struct vec3 sum = vec3_zero();
     for (size_t i = 0; i < m->scene->n_lights; i++) {
+        if (points_only && m->scene->lights[i].kind != LIGHT_POINT)
+            continue;
         int k = m->scene->lights[i].kind == LIGHT_POINT ? 1 : m->light_strata;
         for (int j = 0; j < k * k; j++) {
             double u1 = (j % k + rng_uniform(rng)) / k, u2 = (j / k + rng_uniform(rng)) / k;
             struct light_sample ls;
             struct vec3 contribution;
-            if (!light_contribution(&m->scene->lights[i], s, diffuse, frame, u1, u2, &ls,
+            if (!light_contribution(&m->scene->lights[i], s, part, frame, u1, u2, &ls,
                                     &contribution))
                 continue;
             m->stats->shadow_rays++;
@@ -182,6 +189,25 @@ static struct vec3 caustic_light(const struct j94 *m, const struct surface *s,
 
 /* -- L_r,s: the specular-like part by recursive Monte Carlo ray tracing -- */
 
+/* The path after a bounce off lobe bs of f_r,s. A glossy lobe is not a specular one: the
+ * light it brings is no caustic (CP photons follow delta bounces only), so the path adds
+ * the emission it reaches from here on. Departs from Sec. 4's recursion there
+ * (glossy_photons; off, the paper's: every surface seen from the eye is evaluated in
+ * full): a surface seen through a glossy lobe, whose blur hides the photon map's, reads
+ * the photon map as a gather ray's end does, instead of a final gather for every ray of
+ * every glossy bounce (on the sphere flake, whose Phong spheres see each other, half the
+ * camera samples fell outside the cache's records and gathered on the spot). */
+static struct path after_bounce(const struct j94 *m, const struct brdf_sample *bs,
+                                struct path path)
+{
+    path.depth++;
+    if (!bs->delta) {
+        path.emission = 1;
+        path.secondary = path.secondary || m->js->glossy_photons;
+    }
+    return path;
+}
+
 /* The radiance arriving along lobe bs of f_r,s times its weight, with Russian roulette
  * after ROULETTE_DEPTH bounces. */
 static struct vec3 follow_lobe(const struct j94 *m, const struct surface *s,
@@ -193,7 +219,7 @@ static struct vec3 follow_lobe(const struct j94 *m, const struct surface *s,
     if (q < 1 && !(rng_uniform(rng) < q))
         return vec3_zero(); /* absorbed (always when q = 0) */
     path.beta = vec3_scale(path.beta, 1.0 / q);
-    path.depth++;
+    path = after_bounce(m, bs, path);
     struct vec3 li = trace(m, surface_ray(s, bs->wi, bs->transmitted), path, rng, counters);
     return vec3_mul(vec3_scale(bs->weight, 1.0 / q), li);
 }
@@ -262,7 +288,7 @@ static struct irradiance_record gather_record(const struct j94 *m, const struct 
                                               struct path path, struct rng *rng,
                                               struct render_counters *counters)
 {
-    struct path gather = {vec3(1, 1, 1), path.depth + 1, 1};
+    struct path gather = {vec3(1, 1, 1), path.depth + 1, 1, 0};
     for (int j = 0; j < m->strata_theta; j++)
         for (int k = 0; k < m->strata_phi; k++) {
             struct vec3 wi;
@@ -276,33 +302,33 @@ static struct irradiance_record gather_record(const struct j94 *m, const struct 
                                 m->strata_phi, m->strata, reach);
 }
 
-/* Departs from Sec. 4.0.3, whose diffuse-like surfaces are Lambertian and reflect the
- * cache's irradiance as albedo / pi: a diffuse-like part that is not Lambertian (a broad
- * lobe: Schlick's model with r >= 1/2) reflects int f_r,d L cos, which depends on where
- * the light comes from as well as how much arrives (on the museum's floor, seen at a
- * grazing angle, albedo / pi times E is 14% bright), so each camera sample gathers its
- * share of a record's rays through f_r,d itself: pi / (m n) times the sum over the m x n
- * strata of f_r,d L, no cache (glossy_gather; off, the paper's albedo / pi times E). */
-static struct vec3 glossy_interreflection(const struct j94 *m, const struct surface *s,
-                                          const struct material *diffuse,
-                                          const struct shading_frame *frame, struct path path,
-                                          struct rng *rng, struct render_counters *counters)
+/* A camera sample's share of a record's gather at s, sample_theta x sample_phi strata of
+ * one ray each: pi / (m n) times the sum over them of w L, w = f_r,d(wi, wo) through
+ * `through` (the reflected radiance), or 1 for NULL (the irradiance). Its mean over a
+ * pixel's samples is the pixel's, with the cost of one record per pixel. */
+static struct vec3 sample_gather(const struct j94 *m, const struct surface *s,
+                                 const struct material *through,
+                                 const struct shading_frame *frame, struct path path,
+                                 struct rng *rng, struct render_counters *counters)
 {
-    struct path gather = {vec3(1, 1, 1), path.depth + 1, 1};
+    struct path gather = {vec3(1, 1, 1), path.depth + 1, 1, 0};
     struct vec3 sum = vec3_zero();
     for (int j = 0; j < m->sample_theta; j++)
         for (int k = 0; k < m->sample_phi; k++) {
             struct vec3 wi;
             struct stratum_sample sample = gather_stratum(
                 m, s, frame, m->sample_theta, m->sample_phi, j, k, gather, &wi, rng, counters);
-            sum = vec3_add(sum, vec3_mul(brdf_eval(diffuse, frame, s->wo, wi),
-                                         sample.radiance));
+            struct vec3 w = through != NULL ? brdf_eval(through, frame, s->wo, wi)
+                                            : vec3(1.0, 1.0, 1.0);
+            sum = vec3_add(sum, vec3_mul(w, sample.radiance));
         }
     return vec3_scale(sum, PI / (m->sample_theta * m->sample_phi));
 }
 
 /* The irradiance of multiple diffuse reflections at s: interpolated from the cache where
- * a record is usable (Ward 1988); else gathered, and in the pre-pass kept as a record. */
+ * a record is usable (Ward 1988); else gathered, in the pre-pass into a new record, in the
+ * final pass (a point no record covers) with the camera sample's share of a record's rays,
+ * kept nowhere. */
 static struct vec3 diffuse_interreflection(const struct j94 *m, const struct surface *s,
                                            const struct shading_frame *frame, struct path path,
                                            struct rng *rng, struct render_counters *counters)
@@ -311,11 +337,12 @@ static struct vec3 diffuse_interreflection(const struct j94 *m, const struct sur
     double a = m->js->cache_accuracy * (m->filling_cache ? CACHE_FILL_STRICTNESS : 1.0);
     if (irradiance_cache_lookup(m->cache, s->p, frame->n, a, &e))
         return e;
-    struct irradiance_record record = gather_record(m, s, frame, path, rng, counters);
-    if (m->filling_cache)
-        irradiance_cache_add(m->cache, &record);
-    else
+    if (!m->filling_cache) {
         m->stats->gather_fallbacks++;
+        return sample_gather(m, s, NULL, frame, path, rng, counters);
+    }
+    struct irradiance_record record = gather_record(m, s, frame, path, rng, counters);
+    irradiance_cache_add(m->cache, &record);
     return record.e;
 }
 
@@ -329,33 +356,43 @@ static struct vec3 eye_radiance(const struct j94 *m, const struct surface *s, st
     struct brdf_split split = brdf_split(s->material);
     struct vec3 l = surface_emission(s);
     if (split.has_diffuse) {
-        l = vec3_add(l, direct_light(m, s, &split.diffuse, &frame, rng, counters));
+        l = vec3_add(l, direct_light(m, s, &split.diffuse, &frame, 0, rng, counters));
         l = vec3_add(l, caustic_light(m, s, &split.diffuse, &frame));
         if (!split.lambertian && m->js->glossy_gather) {
-            l = vec3_add(l, glossy_interreflection(m, s, &split.diffuse, &frame, path, rng,
-                                                   counters));
+            /* Departs from Sec. 4.0.3, whose diffuse-like surfaces are Lambertian and
+             * reflect the cache's irradiance as albedo / pi: a part that is not (a broad
+             * lobe: Schlick's model with r >= 1/2) reflects int f_r,d L cos, which depends
+             * on where the light comes from, so each camera sample gathers its share
+             * through f_r,d itself, no cache (glossy_gather; off, the paper's). */
+            l = vec3_add(l, sample_gather(m, s, &split.diffuse, &frame, path, rng, counters));
         } else {
             struct vec3 e = diffuse_interreflection(m, s, &frame, path, rng, counters);
             l = vec3_add(l, diffuse_reflection(s, &split.diffuse, &frame, e));
         }
     }
-    if (split.has_specular)
+    if (split.has_specular) {
         l = vec3_add(l, specular_light(m, s, &split.specular, &frame, path, rng, counters));
+        /* L_r,s is traced, and a traced ray never meets a point light, a delta: a glossy
+         * lobe's highlight of one would be lost (the sphere flake's Phong spheres were
+         * 20-35% dark), so the point lights are sampled through a glossy lobe too. */
+        if (brdf_has_diffuse(&split.specular))
+            l = vec3_add(l, direct_light(m, s, &split.specular, &frame, 1, rng, counters));
+    }
     return l;
 }
 
 /* Radiance leaving s towards s->wo on a gather ray (Sec. 4.0.3): the diffuse-like part
  * reflects the irradiance of all photons, read from the photon map; the specular-like
- * part is followed on; no emission. */
+ * part is followed on; emission only on a path that has taken a glossy bounce. */
 static struct vec3 secondary_radiance(const struct j94 *m, const struct surface *s,
                                       struct path path, struct rng *rng,
                                       struct render_counters *counters)
 {
     struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
     struct brdf_split split = brdf_split(s->material);
-    struct vec3 l = vec3_zero();
+    struct vec3 l = path.emission ? surface_emission(s) : vec3_zero();
     if (split.has_diffuse)
-        l = stored_reflection(m, s, &split.diffuse, &frame, &m->all_photons);
+        l = vec3_add(l, stored_reflection(m, s, &split.diffuse, &frame, &m->all_photons));
     if (split.has_specular)
         l = vec3_add(l, specular_light(m, s, &split.specular, &frame, path, rng, counters));
     return l;
@@ -374,14 +411,14 @@ static struct vec3 trace(const struct j94 *m, struct ray ray, struct path path, 
     struct surface s;
     double t;
     if (!ray_surface(m->scene, ray, counters, &s, &t)) /* the sky, emission as any other */
-        return path.secondary ? vec3_zero() : m->scene->background;
+        return path.emission ? m->scene->background : vec3_zero();
     return trace_from(m, &s, path, rng, counters);
 }
 
 static struct vec3 j94_radiance(const void *mode, struct ray ray, struct rng *rng,
                                 struct render_counters *counters)
 {
-    struct path eye = {vec3(1, 1, 1), 0, 0};
+    struct path eye = {vec3(1, 1, 1), 0, 0, 1};
     return trace(mode, ray, eye, rng, counters);
 }
 

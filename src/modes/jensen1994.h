@@ -49,6 +49,8 @@ struct jensen1994_settings {
     int both_lobes;        /* 1: L_r,s follows both lobes of glass (Whitted's way, a
                               departure); 0: one lobe sampled by the BRDF, the paper's
                               "recursive Monte Carlo ray tracing"                       */
+    int glossy_photons;    /* 1: surfaces seen through a glossy lobe read the photon map
+                              (a departure); 0: evaluated in full, the paper's            */
     int glossy_gather;     /* 1: a diffuse-like part that is not Lambertian reflects the
                               light each camera sample gathers through it (a departure);
                               0: albedo / pi times the cache's irradiance, the paper's   */
