@@ -189,8 +189,8 @@ static void print_photon_stats(const struct photon_stats *ps)
 
 static void print_ppm_stats(const struct ppm_stats *ps)
 {
-    fprintf(stderr, "hit_points=%zu\nbytes_per_hit_point=%zu\npasses=%ld\n", ps->hit_points,
-            ps->bytes_per_hit_point, ps->passes);
+    fprintf(stderr, "hit_points=%zu\nbytes_per_hit_point=%zu\nhit_members=%zu\npasses=%ld\n",
+            ps->hit_points, ps->bytes_per_hit_point, ps->hit_members, ps->passes);
     fprintf(stderr, "photons_emitted=%zu\nphoton_rays=%llu\n", ps->photons_emitted,
             ps->photon_rays);
     fprintf(stderr, "seconds_ray_pass=%.3f\nseconds_photons=%.3f\n", ps->seconds_ray_pass,

@@ -184,6 +184,9 @@ static void store_hit_point(struct sppm *sppm, size_t pixel, const struct surfac
     hp->global.m_photons = 0;
     hp->caustic = hp->global;
     hp->caustic.radius = 0; /* one estimate: the paper's */
+    hp->members = NULL; /* a hit point an eye path */
+    hp->n_members = 0;
+    hp->spread = 0.0;
 }
 
 /* The pass's probe of the disc of window pixel `pixel`'s hit point at s (see the top). */
