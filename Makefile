@@ -15,6 +15,10 @@
 #                   ONLY=presets|bench for one part; bench is the tte workload's table)
 #   make reference  render the converged references of reference/suite.txt and write
 #                   reference/suite.md (hours; says how long first; ONLY=NAME for one)
+#   make consistency
+#                   every photon mode on every shipped scene against its reference, the
+#                   table written into reference/suite.md (hours; says how long first;
+#                   ONLY=NAME for some scenes, MODES="1996 2009", QUALITY=reference)
 #   make fuzz       libFuzzer targets for the four readers, built with clang (development)
 #   make crosscheck our pt references against Blender's Cycles, where blender (3.4+) is
 #                   installed: each scene exported, rendered, compared (CROSSCHECK_SPP,
@@ -47,7 +51,7 @@ MAIN_OBJ := $(BUILD)/src/main.o
 TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)) tests/bench/tte_fit.c)
 BENCH_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/bench/*.c)))
 
-.PHONY: all run test test-spd check bench figures reference fuzz crosscheck clean
+.PHONY: all run test test-spd check bench figures reference consistency fuzz crosscheck clean
 
 # test-spd refuses at once, before building anything, when it has no folder of SPD files.
 ifneq ($(filter test-spd,$(MAKECMDGOALS)),)
@@ -131,6 +135,11 @@ figures: $(BIN) $(BUILD)/bench
 # ONLY="NAME NAME") renders only those, keeping the other rows of reference/suite.md.
 reference: $(BIN)
 	PHOTON=./$(BIN) sh scripts/reference.sh $(ONLY)
+
+# Every photon mode on the scenes of reference/consistency.txt (ONLY=NAME ..., MODES=...,
+# QUALITY=preset), the table into reference/suite.md.
+consistency: $(BIN)
+	PHOTON=./$(BIN) MODES='$(MODES)' QUALITY='$(QUALITY)' sh scripts/consistency.sh $(ONLY)
 
 # Fuzz targets (a development tool, not part of the product build): one per reader. Run
 # e.g. build/fuzz/fuzz_nff -max_len=8192 -max_total_time=600 CORPUS_DIR < /dev/null
