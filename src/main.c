@@ -300,6 +300,13 @@ static struct render_result render_mode(struct run *run, struct error *err)
     struct checkpoint snapshot = {write_snapshot, &run->o};
     switch (run->o.mode) {
     case MODE_PT:
+        if (pt_unreachable_light(run->scene) >= 0) {
+            struct vec3 at = run->scene->lights[pt_unreachable_light(run->scene)].position;
+            fprintf(stderr, "photon: warning: pt cannot find the caustics of point lights "
+                    "(the first at %g %g %g): their light through mirrors or glass onto a "
+                    "diffuse surface has probability zero and is missing from the image; "
+                    "the photon modes render it\n", at.x, at.y, at.z);
+        }
         return render_pt(run->scene, &run->rs, want_variance, checkpoint, &run->counters);
     case MODE_PHOTONS:
         ps.n_photons = (size_t)run->o.photons;
