@@ -364,7 +364,7 @@ static void test_light_sampling_irradiance(struct check *t)
     const int n = 40000;
     double se;
     struct light sphere = {LIGHT_SPHERE, {0, 10, 0}, {0, 0, 0}, {0, 0, 0}, 2.0, {0, 0, 0},
-                           {3, 3, 3}, 0};
+                           {3, 3, 3}, 0, 0};
     struct vec3 n_tilted = vec3(sin(0.3), cos(0.3), 0);
     double exact = PI * 3 * (2.0 / 10) * (2.0 / 10) * cos(0.3);
     double e = estimated_irradiance(&sphere, vec3_zero(), n_tilted, n, &se);
@@ -372,7 +372,7 @@ static void test_light_sampling_irradiance(struct check *t)
 
     struct vec3 corners[4] = {{-1, 3, -2}, {2, 3, -2}, {2, 3, 1}, {-1, 3, 1}};
     struct light quad = {LIGHT_QUAD, {-1, 3, -2}, {3, 0, 0}, {0, 0, 3}, 0, {0, 0, 0},
-                         {5, 5, 5}, 0};
+                         {5, 5, 5}, 0, 0};
     struct vec3 p = vec3(0.5, 0, 0.2), n_up = vec3(0.2, 1, 0.1);
     n_up = vec3_normalize(n_up);
     exact = polygon_irradiance(corners, 4, p, n_up, 5);
@@ -380,14 +380,14 @@ static void test_light_sampling_irradiance(struct check *t)
     CHECK(t, fabs(e - exact) <= 0.005 * exact && fabs(e - exact) <= 5 * se);
 
     struct light triangle = {LIGHT_TRIANGLE, {-1, 3, -2}, {3, 0, 0}, {0, 0, 3}, 0, {0, 0, 0},
-                             {5, 5, 5}, 0};
+                             {5, 5, 5}, 0, 0};
     struct vec3 tri[3] = {{-1, 3, -2}, {2, 3, -2}, {-1, 3, 1}};
     exact = polygon_irradiance(tri, 3, p, n_up, 5);
     e = estimated_irradiance(&triangle, p, n_up, n, &se);
     CHECK(t, fabs(e - exact) <= 0.005 * exact && fabs(e - exact) <= 5 * se);
 
     struct light point = {LIGHT_POINT, {0, 4, 3}, {0, 0, 0}, {0, 0, 0}, 0, {100, 100, 100},
-                          {0, 0, 0}, -1};
+                          {0, 0, 0}, -1, 0};
     exact = 100 * (4.0 / 5) / (4 * PI * 25);
     CHECK_CLOSE(t, estimated_irradiance(&point, vec3_zero(), vec3(0, 1, 0), 1, &se), exact,
                 1e-14 * exact);
@@ -430,14 +430,52 @@ static void test_sky_sampling(struct check *t)
     CHECK_CLOSE(t, light_power(&sky).y, 2 * PI * 9 * 4 * PI, 1e-12 * light_power(&sky).y);
 }
 
+/* truth: a two-sided light emits from its back too: behind a two-sided quad the irradiance
+ *   is Lambert's polygon formula again; inside a two-sided sphere light of radiance Le
+ *   every direction meets its inner side, so E = pi Le whatever the normal; each side
+ *   emits pi Le A, the power twice the one-sided's. light_pdf() gives each sample's pdf.
+ * tolerance: as test_light_sampling_irradiance (0.5% and 5 standard errors; the inside by
+ *   ten times the samples, uniform by area there having a long tail); 1e-9 for the pdfs.
+ * catches: the back's cosine taken negative (no light), the inside sampled by the cone
+ *   of an outside point (none), a uniform-area pdf without d^2 / cos, the back's power
+ *   left out of photon emission's share. */
+static void test_two_sided_lights(struct check *t)
+{
+    const int n = 40000;
+    double se;
+    struct light quad = {LIGHT_QUAD, {-1, 3, -2}, {3, 0, 0}, {0, 0, 3}, 0, {0, 0, 0},
+                         {5, 5, 5}, 0, 1};
+    struct vec3 corners[4] = {{-1, 3, -2}, {2, 3, -2}, {2, 3, 1}, {-1, 3, 1}};
+    struct vec3 p = vec3(0.5, 6, 0.2), n_down = vec3_normalize(vec3(0.2, -1, 0.1));
+    double exact = polygon_irradiance(corners, 4, p, n_down, 5);
+    double e = estimated_irradiance(&quad, p, n_down, n, &se);
+    CHECK(t, exact > 0 && fabs(e - exact) <= 0.005 * exact && fabs(e - exact) <= 5 * se);
+    struct light one_sided = quad;
+    one_sided.two_sided = 0;
+    CHECK_CLOSE(t, light_power(&quad).x, 2 * light_power(&one_sided).x, 1e-12);
+    struct light sphere = {LIGHT_SPHERE, {0, 10, 0}, {0, 0, 0}, {0, 0, 0}, 2.0, {0, 0, 0},
+                           {3, 3, 3}, 0, 1};
+    struct vec3 inside = vec3(0.5, 10.7, -0.4), n_any = vec3_normalize(vec3(0.3, -0.2, 1));
+    e = estimated_irradiance(&sphere, inside, n_any, 10 * n, &se);
+    CHECK(t, fabs(e - 3 * PI) <= 0.005 * 3 * PI && fabs(e - 3 * PI) <= 5 * se);
+    struct light_sample s;
+    CHECK(t, light_sample(&sphere, inside, n_any, 0.3, 0.6, &s));
+    struct vec3 q = vec3_madd(inside, s.wi, s.distance);
+    CHECK_CLOSE(t, vec3_length(vec3_sub(q, sphere.position)), 2.0, 1e-9);
+    CHECK_CLOSE(t, light_pdf(&sphere, inside, n_any, q, s.wi), s.pdf, 1e-9 * s.pdf);
+    CHECK(t, light_sample(&quad, p, n_down, 0.3, 0.6, &s));
+    q = vec3_madd(p, s.wi, s.distance);
+    CHECK_CLOSE(t, light_pdf(&quad, p, n_down, q, s.wi), s.pdf, 1e-9 * s.pdf);
+}
+
 /* truth: a light cannot illuminate a point behind a one-sided emitter or inside a sphere
  *   light (both emit from the front only). */
 static void test_light_sides(struct check *t)
 {
     struct light quad = {LIGHT_QUAD, {-1, 3, -2}, {3, 0, 0}, {0, 0, 3}, 0, {0, 0, 0},
-                         {5, 5, 5}, 0};
+                         {5, 5, 5}, 0, 0};
     struct light sphere = {LIGHT_SPHERE, {0, 10, 0}, {0, 0, 0}, {0, 0, 0}, 2.0, {0, 0, 0},
-                           {3, 3, 3}, 0};
+                           {3, 3, 3}, 0, 0};
     struct light_sample s;
     CHECK(t, vec3_cross(quad.e1, quad.e2).y < 0);       /* it faces down, towards y = 0 */
     CHECK(t, light_sample(&quad, vec3(0, 0, 0), vec3(0, 1, 0), 0.5, 0.5, &s));
@@ -482,5 +520,6 @@ void test_scene(struct check *t)
     RUN_TEST(t, test_light_sampling_irradiance);
     RUN_TEST(t, test_light_sides);
     RUN_TEST(t, test_sky_sampling);
+    RUN_TEST(t, test_two_sided_lights);
     RUN_TEST(t, test_fresnel_and_snell);
 }

@@ -132,11 +132,27 @@ static int sky_emit(const struct light *l, const double u[4], struct emission *e
     return l->radius > 0;
 }
 
+/* A point of area light l with light_point() from u1, u2, and the side it emits from: the
+ * front's normal, or for a two-sided light the back's as often, u2 telling which (the
+ * half it falls in, stretched back over [0, 1) for the point). */
+static int emitting_point(const struct light *l, double u1, double u2, struct vec3 *y,
+                          struct vec3 *n)
+{
+    int back = l->two_sided && u2 >= 0.5;
+    if (l->two_sided)
+        u2 = back ? 2.0 * u2 - 1.0 : 2.0 * u2;
+    if (!light_point(l, u1, u2, y, n))
+        return 0;
+    if (back)
+        *n = vec3_neg(*n);
+    return 1;
+}
+
 int light_emit(const struct light *l, const double u[4], struct emission *e)
 {
     if (l->kind == LIGHT_SKY)
         return sky_emit(l, u, e);
-    if (!light_point(l, u[0], u[1], &e->origin, &e->normal))
+    if (!emitting_point(l, u[0], u[1], &e->origin, &e->normal))
         return 0;
     e->weight = 1.0;
     if (l->kind == LIGHT_POINT)
@@ -250,7 +266,7 @@ int light_emit_towards(const struct light *l, const struct emission_targets *tar
 {
     if (l->kind == LIGHT_SKY)
         return sky_emit_towards(l, targets, u, e);
-    if (!light_point(l, u[0], u[1], &e->origin, &e->normal))
+    if (!emitting_point(l, u[0], u[1], &e->origin, &e->normal))
         return 0;
     double total = 0.0; /* Omega / (2 pi) */
     for (size_t t = 0; t < targets->n_spheres; t++) {

@@ -5,12 +5,44 @@
 
 #include "brdf_models.h"
 
+static struct vec3 light_front_power(const struct light *l);
+
 /* Whether a point at squared distance d2 from a sphere light's centre sees its outside.
  * Points on the sphere itself (within rounding, 1e-9 relative) do not: they see its
  * surface edge-on, and a point on its inside sees no front side at all. */
 static int outside_sphere(double d2, double r2)
 {
     return d2 > r2 * (1.0 + 1e-9);
+}
+
+/* The solid-angle pdf of sample_inside() for the direction from p towards q on the sphere:
+ * d^2 / (A cos_l), the inner normal at q facing p. 0 where it does not (rounding). */
+static double inside_pdf(const struct light *l, struct vec3 p, struct vec3 q)
+{
+    struct vec3 to_q = vec3_sub(q, p);
+    double d2 = vec3_length2(to_q);
+    struct vec3 outward = vec3_normalize(vec3_sub(q, l->position));
+    double cos_light = d2 > 0 ? vec3_dot(to_q, outward) / sqrt(d2) : 0.0;
+    double area = 4.0 * PI * l->radius * l->radius;
+    return cos_light > 0 && area > 0 ? d2 / (area * cos_light) : 0.0;
+}
+
+/* Inside a two-sided sphere light: a point q uniform by area over the sphere, every one of
+ * which faces p (its inner side), its pdf in solid angle d^2 / (A cos_l). */
+static int sample_inside(const struct light *l, struct vec3 p, double u1, double u2,
+                         struct light_sample *s)
+{
+    double z = 1.0 - 2.0 * u1, radius = 2.0 * sqrt(u1 * (1.0 - u1)), phi = 2.0 * PI * u2;
+    struct vec3 q = vec3_madd(l->position, vec3(radius * cos(phi), radius * sin(phi), z),
+                              l->radius);
+    struct vec3 to_q = vec3_sub(q, p);
+    s->distance = vec3_length(to_q);
+    if (!(s->distance > 0))
+        return 0;
+    s->wi = vec3_scale(to_q, 1.0 / s->distance);
+    s->li = l->radiance;
+    s->pdf = inside_pdf(l, p, q);
+    return s->pdf > 0;
 }
 
 /* A sphere of radius r seen from distance d > r subtends a cone of half-angle theta_max,
@@ -24,7 +56,7 @@ static int sample_sphere(const struct light *l, struct vec3 p, double u1, double
     double d2 = vec3_length2(to_centre);
     double r2 = l->radius * l->radius;
     if (!outside_sphere(d2, r2))
-        return 0;
+        return l->two_sided ? sample_inside(l, p, u1, u2, s) : 0;
     double d = sqrt(d2);
     double sin2_max = r2 / d2;
     double cos_max = sqrt(fmax(0.0, 1.0 - sin2_max));
@@ -69,6 +101,8 @@ static int sample_planar(const struct light *l, struct vec3 p, struct vec3 q, do
     double d = sqrt(d2);
     s->wi = vec3_scale(to_light, 1.0 / d);
     double cos_light = -vec3_dot(s->wi, n);
+    if (l->two_sided)
+        cos_light = fabs(cos_light); /* its back emits too */
     if (!(cos_light > 0))
         return 0; /* p is behind the one-sided emitter or in its plane */
     s->distance = d;
@@ -137,6 +171,8 @@ double light_pdf(const struct light *l, struct vec3 p, struct vec3 n, struct vec
     if (l->kind == LIGHT_SPHERE) {
         double d2 = vec3_length2(vec3_sub(l->position, p));
         double r2 = l->radius * l->radius;
+        if (!outside_sphere(d2, r2) && l->two_sided)
+            return inside_pdf(l, p, q);
         if (!outside_sphere(d2, r2))
             return 0.0;
         double sin2_max = r2 / d2;
@@ -145,6 +181,7 @@ double light_pdf(const struct light *l, struct vec3 p, struct vec3 n, struct vec
     }
     struct vec3 front = vec3_normalize(vec3_cross(l->e1, l->e2));
     double cos_light = -vec3_dot(wi, front);
+    cos_light = l->two_sided ? fabs(cos_light) : cos_light;
     double area = planar_area(l);
     if (!(cos_light > 0) || !(area > 0))
         return 0.0; /* the back of a one-sided emitter is never sampled */
@@ -152,6 +189,14 @@ double light_pdf(const struct light *l, struct vec3 p, struct vec3 n, struct vec
 }
 
 struct vec3 light_power(const struct light *l)
+{
+    if (l->two_sided && l->kind != LIGHT_POINT && l->kind != LIGHT_SKY)
+        return vec3_scale(light_front_power(l), 2.0);
+    return light_front_power(l);
+}
+
+/* light_power() of the front side alone. */
+static struct vec3 light_front_power(const struct light *l)
 {
     switch (l->kind) {
     case LIGHT_POINT:

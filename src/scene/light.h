@@ -4,8 +4,8 @@
  * Point lights are given by power Phi (watts per RGB channel, radiated uniformly, so the
  * intensity is I = Phi / (4 pi)). Area lights -- spheres, quads, triangles -- are given
  * by the radiance Le leaving their front side (a sphere's outside, the counter-clockwise
- * side of a quad or triangle); they are also geometry, seen by rays, with a black
- * reflectance when made by the `light` keyword.
+ * side of a quad or triangle), and their back too when two-sided; they are also geometry,
+ * seen by rays, with a black reflectance when made by the `light` keyword.
  *
  * The sky is the scene's background seen as a light: rays that leave the scene see its
  * constant radiance Le from every direction, so it lights the scene as an environment
@@ -37,6 +37,8 @@ struct light {
     struct vec3 radiance; /* area lights: Le leaving the front side; sky: its Le          */
     int prim;             /* geometry id of the emitting primitive; -1 for point lights
                              and the sky, which are no geometry                          */
+    int two_sided;        /* area lights: 1 when the back emits Le too (a material's
+                             `twosided`): a sphere's inside, a quad's or triangle's back  */
 };
 
 /* One sampled direction from a shaded point towards a light. */
@@ -64,8 +66,8 @@ double light_pdf(const struct light *l, struct vec3 p, struct vec3 n, struct vec
                  struct vec3 wi);
 
 /* Total emitted power Phi per channel: a point light's power; an area light of radiance
- * Le and area A emitting from one side into the hemisphere, Phi = pi Le A; the sky's
- * Le pi R^2 4 pi (above). */
+ * Le and area A emitting from one side into the hemisphere, Phi = pi Le A (twice that
+ * when two-sided); the sky's Le pi R^2 4 pi (above). */
 struct vec3 light_power(const struct light *l);
 
 #endif

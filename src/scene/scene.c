@@ -102,6 +102,7 @@ static int register_prim(struct scene *scene, int id, int material, struct light
     if (l == NULL || !material_emits(m))
         return id;
     l->radiance = m->emission;
+    l->two_sided = m->two_sided;
     l->prim = id;
     int light = add_light(scene, l);
     if (light < 0)
