@@ -309,6 +309,10 @@ static struct render_result render_mode(struct run *run, struct error *err)
         }
         return render_pt(run->scene, &run->rs, want_variance, checkpoint, &run->counters);
     case MODE_PHOTONS:
+        fprintf(stderr, "photon: warning: --mode photons shows the global photon map's "
+                "estimate directly (Jensen 1996, Fig. 4): blurred by its %d nearest photons "
+                "and noisy at any photon count, it is a look at the map, not a converged "
+                "image; use 1996 or 2009 for one\n", run->o.gather);
         ps.n_photons = (size_t)run->o.photons;
         ps.gather = (size_t)run->o.gather;
         ps.max_radius = run->o.max_radius;
