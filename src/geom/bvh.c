@@ -56,34 +56,41 @@ static float float_at_most(double x)
     return -float_at_least(-x);
 }
 
-/* The ray as the box test uses it, per axis. */
+/* The ray as the box test uses it, per axis a, each value repeated for the BVH_WIDTH
+ * slots (so the slot loop reads it as it reads the boxes). */
 struct box_ray {
-    float origin_near[3], origin_far[3]; /* the origin rounded for near and far planes    */
-    float inv_near[3], inv_far[3];       /* 1/d rounded towards and away from zero       */
-    int near[3], far[3];                 /* BVH_WIDTH * the bound of the plane the ray
-                                            meets first / last along the axis           */
+    float origin_near[3][BVH_WIDTH]; /* the origin rounded for near planes, and far ones */
+    float origin_far[3][BVH_WIDTH];
+    float inv_near[3][BVH_WIDTH];    /* 1/d rounded towards zero, and away from zero     */
+    float inv_far[3][BVH_WIDTH];
+    int near[3], far[3];             /* BVH_WIDTH * the bound of the plane the ray meets
+                                        first / last along the axis                    */
 };
 
 /* The double 1/d is within half an ulp of double of the exact 1/d, far inside the margin
  * of float_at_least() and float_at_most(), so they bound the exact value too. For d = +-0,
  * 1/d = +-inf, and the near factor becomes +-FLT_MAX, which keeps every sign the slab test
- * reads. */
-static struct box_ray box_ray(struct ray ray)
+ * reads. Both roundings are made and one kept, so the ray's signs cost no branches. */
+static void box_ray(struct ray ray, struct box_ray *r)
 {
-    struct box_ray r;
     double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
     double d[3] = {ray.dir.x, ray.dir.y, ray.dir.z};
     for (int a = 0; a < 3; a++) {
         double inv = 1.0 / d[a];   /* d = +-0 gives +-inf */
         int positive = inv > 0;
-        r.origin_near[a] = positive ? float_at_least(o[a]) : float_at_most(o[a]);
-        r.origin_far[a] = positive ? float_at_most(o[a]) : float_at_least(o[a]);
-        r.inv_near[a] = positive ? float_at_most(inv) : float_at_least(inv);
-        r.inv_far[a] = positive ? float_at_least(inv) : float_at_most(inv);
-        r.near[a] = BVH_WIDTH * (positive ? a : 3 + a);
-        r.far[a] = BVH_WIDTH * (positive ? 3 + a : a);
+        float o_up = float_at_least(o[a]), o_down = float_at_most(o[a]);
+        float inv_up = float_at_least(inv), inv_down = float_at_most(inv);
+        float on = positive ? o_up : o_down, of = positive ? o_down : o_up;
+        float in = positive ? inv_down : inv_up, inf_ = positive ? inv_up : inv_down;
+        for (int i = 0; i < BVH_WIDTH; i++) {
+            r->origin_near[a][i] = on;
+            r->origin_far[a][i] = of;
+            r->inv_near[a][i] = in;
+            r->inv_far[a][i] = inf_;
+        }
+        r->near[a] = BVH_WIDTH * (positive ? a : 3 + a);
+        r->far[a] = BVH_WIDTH * (positive ? 3 + a : a);
     }
-    return r;
 }
 
 /* The largest computed entry distance that may still belong to a box entered before tmax. */
@@ -100,31 +107,32 @@ static float reach(float tmax)
 static unsigned enter_slots(const struct bvh_node *node, const struct box_ray *r, float tmax_f,
                             float t_enter[BVH_WIDTH])
 {
-    static const unsigned bit[BVH_WIDTH] = {1, 2, 4, 8};
+    static const unsigned bit[BVH_WIDTH] = {1, 2, 4, 8, 16, 32, 64, 128};
     const float *near_x = node->box + r->near[0], *far_x = node->box + r->far[0];
     const float *near_y = node->box + r->near[1], *far_y = node->box + r->far[1];
     const float *near_z = node->box + r->near[2], *far_z = node->box + r->far[2];
-    float on_x = r->origin_near[0], on_y = r->origin_near[1], on_z = r->origin_near[2];
-    float of_x = r->origin_far[0], of_y = r->origin_far[1], of_z = r->origin_far[2];
-    float in_x = r->inv_near[0], in_y = r->inv_near[1], in_z = r->inv_near[2];
-    float if_x = r->inv_far[0], if_y = r->inv_far[1], if_z = r->inv_far[2];
-    float t_leave[BVH_WIDTH];
+    float t0[BVH_WIDTH], t1[BVH_WIDTH];
     for (int i = 0; i < BVH_WIDTH; i++) {
-        float nx = (near_x[i] - on_x) * in_x, fx = (far_x[i] - of_x) * if_x;
-        float ny = (near_y[i] - on_y) * in_y, fy = (far_y[i] - of_y) * if_y;
-        float nz = (near_z[i] - on_z) * in_z, fz = (far_z[i] - of_z) * if_z;
+        float nx = (near_x[i] - r->origin_near[0][i]) * r->inv_near[0][i];
+        float ny = (near_y[i] - r->origin_near[1][i]) * r->inv_near[1][i];
+        float nz = (near_z[i] - r->origin_near[2][i]) * r->inv_near[2][i];
+        float fx = (far_x[i] - r->origin_far[0][i]) * r->inv_far[0][i];
+        float fy = (far_y[i] - r->origin_far[1][i]) * r->inv_far[1][i];
+        float fz = (far_z[i] - r->origin_far[2][i]) * r->inv_far[2][i];
         float enter = nx > 0.0f ? nx : 0.0f;
         enter = ny > enter ? ny : enter;
         enter = nz > enter ? nz : enter;
         float leave = fx < tmax_f ? fx : tmax_f;
         leave = fy < leave ? fy : leave;
         leave = fz < leave ? fz : leave;
-        t_enter[i] = enter;
-        t_leave[i] = reach(leave);
+        t0[i] = enter;
+        t1[i] = reach(leave);
     }
     unsigned entered = 0;
-    for (int i = 0; i < BVH_WIDTH; i++)
-        entered |= t_enter[i] <= t_leave[i] ? bit[i] : 0u;
+    for (int i = 0; i < BVH_WIDTH; i++) {
+        entered |= t0[i] <= t1[i] ? bit[i] : 0u;
+        t_enter[i] = t0[i];
+    }
     return entered & ((1u << node->n_slots) - 1u);
 }
 
@@ -140,29 +148,39 @@ struct pending {
 
 static uint32_t slot_ref(const struct bvh_node *node, int i)
 {
-    if (i < node->n_nodes)
-        return node->offset + (uint32_t)i;
-    return node->first[i] | (uint32_t)node->count[i] << LEAF_SHIFT;
+    uint32_t child = node->offset + (uint32_t)i;
+    uint32_t items = node->first[i] | (uint32_t)node->count[i] << LEAF_SHIFT;
+    return i < node->n_nodes ? child : items;   /* both made: a select, not a branch */
 }
 
-/* The lowest set bit of a 4-bit mask (mask > 0). */
+/* The index of the lowest set bit of mask (mask > 0). A loop, whose branches the
+ * processor predicts, beat a de Bruijn multiply and table, whose result every following
+ * load waits for. */
 static int lowest_slot(unsigned mask)
 {
-    static const signed char lowest[16] = {-1, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
-    return lowest[mask];
+    int i = 0;
+    while (!(mask >> i & 1u))
+        i++;
+    return i;
 }
 
 /* Of the entered slots (entered > 0), returns the nearest and pushes the others onto
  * stack[*top ...], farthest deepest, when sorted (ties keep the slots' order); else in
- * slot order. */
+ * slot order. Most nodes have one entered slot, which needs neither. */
 static struct pending next_slot(const struct bvh_node *node, unsigned entered,
                                 const float t_enter[BVH_WIDTH], int sorted,
                                 struct pending *stack, int *top)
 {
     struct pending e[BVH_WIDTH];
-    int n = 0;
+    int i = lowest_slot(entered);
+    e[0].ref = slot_ref(node, i);
+    e[0].t_enter = t_enter[i];
+    entered &= entered - 1;
+    if (entered == 0)
+        return e[0];
+    int n = 1;
     for (; entered != 0; entered &= entered - 1) {
-        int i = lowest_slot(entered);
+        i = lowest_slot(entered);
         struct pending p;
         p.ref = slot_ref(node, i);
         p.t_enter = t_enter[i];
@@ -185,7 +203,8 @@ static int traverse(const struct bvh *bvh, struct ray ray, double tmax, int clos
 {
     if (bvh->n_nodes == 0)
         return 0;
-    struct box_ray r = box_ray(ray);
+    struct box_ray r;
+    box_ray(ray, &r);
     float tmax_f = float_at_least(tmax), tmax_reach = reach(tmax_f);
     struct pending stack[STACK_SIZE];
     struct pending p = {0, 0.0f};   /* the root, whose box is no slot's */

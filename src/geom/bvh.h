@@ -1,6 +1,6 @@
 /*
- * geom/bvh.h -- a bounding volume hierarchy over boxes: a 4-wide tree built by binned SAH,
- * one flat array of 128-byte nodes, ordered closest-hit and any-hit traversal.
+ * geom/bvh.h -- a bounding volume hierarchy over boxes: an 8-wide tree built by binned SAH,
+ * one flat array of 256-byte nodes, ordered closest-hit and any-hit traversal.
  *
  * The BVH knows items only as indices 0 .. n-1 into the array of boxes it was built from.
  * A node has BVH_WIDTH slots, and a slot is an interior child, a leaf or empty. The node
@@ -29,7 +29,7 @@
 
 #include "ray.h"
 
-#define BVH_WIDTH 4
+#define BVH_WIDTH 8
 /* Leaves hold at most 4 items: the SAH decides below that; above it a range always splits. */
 #define BVH_MAX_LEAF 4
 /* The longest path: SAH splits stop at binary depth 32, then halving the index range
@@ -37,7 +37,7 @@
  * node spends at least one binary split, so 64 bounds the nodes on a path too. */
 #define BVH_MAX_DEPTH 64
 
-/* 128 bytes, two cache lines. Bounds in float to keep the node small, rounded outward (lo
+/* 256 bytes, four cache lines. Bounds in float to keep the node small, rounded outward (lo
  * down, hi up, one ulp of float at most) so that a slot's box contains the double box it
  * stands for and no hit is lost. box[] is laid out bound by bound, so the four slots' values
  * of one bound are adjacent and the box test is a loop over slots that compilers vectorise. */
@@ -49,9 +49,9 @@ struct bvh_node {
     uint8_t count[BVH_WIDTH]; /* leaf slot i: its number of items; interior, empty: 0  */
     uint8_t n_nodes;          /* slots 0 .. n_nodes - 1 are interior children          */
     uint8_t n_slots;          /* slots n_nodes .. n_slots - 1 are leaves; the rest empty */
-    uint8_t unused[6];        /* zero: makes the node 128 bytes                         */
+    uint8_t unused[18];       /* zero: makes the node 256 bytes                         */
 };
-extern char bvh_node_is_128_bytes[sizeof(struct bvh_node) == 128 ? 1 : -1];
+extern char bvh_node_is_256_bytes[sizeof(struct bvh_node) == 256 ? 1 : -1];
 
 struct bvh {
     struct bvh_node *nodes; /* owned; n_nodes of them, none when built over no items      */

@@ -32,7 +32,7 @@
 #define SAH_COST_TRAVERSE 1.0
 #define SAH_COST_INTERSECT 1.0
 
-char bvh_node_is_128_bytes[sizeof(struct bvh_node) == 128 ? 1 : -1];
+char bvh_node_is_256_bytes[sizeof(struct bvh_node) == 256 ? 1 : -1];
 
 /* ---- node boxes in float, rounded outward ---- */
 
