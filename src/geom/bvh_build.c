@@ -125,8 +125,9 @@ struct builder {
     const struct aabb *bounds;  /* borrowed from bvh_build()'s caller: the items' boxes   */
     struct vec3 *centroids;     /* owned by bvh_build(): the boxes' centres               */
     uint32_t *items;            /* the bvh's item array, partitioned in place              */
-    struct bvh_node *nodes;     /* the bvh's node array, with room for every node         */
-    size_t n_nodes;
+    struct bvh_node *nodes;     /* the bvh's node array: n_nodes made or reserved, room for
+                                   cap_nodes                                               */
+    size_t n_nodes, cap_nodes;
 };
 
 /* The items items[first .. first + count), the union of their boxes and the box of their
@@ -342,8 +343,6 @@ static void build_node(struct builder *b, size_t index, const struct range *r)
     s.is_leaf[0] = 0;
     s.n = 1;
     fill_slots(b, &s);
-    struct bvh_node *node = &b->nodes[index];   /* nodes[] never moves: sized up front */
-    memset(node, 0, sizeof *node);
     int order[BVH_WIDTH], n_nodes = 0;          /* interior slots first, then leaves */
     for (int i = 0; i < s.n; i++)
         if (!s.is_leaf[i])
@@ -352,6 +351,12 @@ static void build_node(struct builder *b, size_t index, const struct range *r)
     for (int i = 0; i < s.n; i++)
         if (s.is_leaf[i])
             order[n_slots++] = i;
+    if (b->n_nodes + (size_t)n_nodes > b->cap_nodes) {   /* before node points into nodes[] */
+        b->cap_nodes = 2 * b->cap_nodes + (size_t)n_nodes;
+        b->nodes = xrealloc(b->nodes, b->cap_nodes, sizeof *b->nodes, "BVH nodes");
+    }
+    struct bvh_node *node = &b->nodes[index];
+    memset(node, 0, sizeof *node);
     for (int i = 0; i < BVH_WIDTH; i++)
         set_slot_box(node, i, i < n_slots ? s.range[order[i]].box : box_empty());
     node->n_nodes = (uint8_t)n_nodes;
@@ -375,9 +380,9 @@ struct bvh *bvh_build(const struct aabb *bounds, size_t n)
     b.bounds = bounds;
     b.centroids = xmalloc(n, sizeof *b.centroids, "BVH centroids");
     b.items = xmalloc(n, sizeof *b.items, "BVH items");
-    /* A node has at least two slots (but a root over one leaf), so n - 1 nodes at most. */
-    b.nodes = xmalloc(n > 1 ? n - 1 : n, sizeof *b.nodes, "BVH nodes");
-    b.n_nodes = n > 0 ? 1 : 0;   /* the root */
+    b.cap_nodes = n > 0 ? 1 : 0;
+    b.nodes = xmalloc(b.cap_nodes, sizeof *b.nodes, "BVH nodes");
+    b.n_nodes = b.cap_nodes;   /* the root */
     for (size_t i = 0; i < n; i++) {
         b.centroids[i] = vec3_add(vec3_scale(bounds[i].lo, 0.5), vec3_scale(bounds[i].hi, 0.5));
         b.items[i] = (uint32_t)i;

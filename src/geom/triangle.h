@@ -60,6 +60,15 @@ int triangle_intersect(const struct triangle *tri, const struct sheared_ray *ray
  * vertex normals, or NULL when it has none (then ns = ng). prim is the caller's. */
 void triangle_shade(const struct triangle *tri, const struct vec3 *normals, struct hit *hit);
 
+/* The same four for a triangle whose vertices are kept elsewhere (mesh.h): corner[i] points
+ * at vertex i's three coordinates. The functions above are these on tri->v. */
+int corners_are_degenerate(const double *const corner[3]);
+struct aabb corners_bounds(const double *const corner[3]);
+int corners_intersect(const double *const corner[3], const struct sheared_ray *ray, double tmax,
+                      struct hit *hit);
+void corners_shade(const double *const corner[3], int material, const struct vec3 *normals,
+                   struct hit *hit);
+
 /* The unit normal along n, computed without overflow or underflow; zero when n is zero. */
 struct vec3 unit_normal(struct vec3 n);
 
