@@ -1,7 +1,7 @@
 /*
- * geom/bvh.c -- stack traversal of the 4-wide BVH (see bvh.h; the build is bvh_build.c).
+ * geom/bvh.c -- stack traversal of the 8-wide BVH (see bvh.h; the build is bvh_build.c).
  *
- * At a node the ray is tested against all four slot boxes at once (enter_slots(): one
+ * At a node the ray is tested against all eight slot boxes at once (enter_slots(): one
  * loop over the slots, which compilers turn into vector instructions); the slots it enters
  * are put on the stack farthest first with the distance at which the ray enters them, and
  * the nearest is taken next. A popped entry that starts beyond the nearest hit found
@@ -16,9 +16,12 @@
  *     near plane, away from zero for the far one: the near distance computed from them is
  *     no larger than the true one before rounding, the far one no smaller;
  *   - the subtraction and the product then round once each (relative error u = 2^-24, or
- *     an absolute 2^-150 where the product underflows), so the computed entry t0 and exit t1
- *     satisfy t0 <= T0 (1 + u)^2 + 2^-150 and t1 >= T1 (1 - u)^2 - 2^-150 for the true T0 <=
- *     T1; a box is entered when t0 <= t1 (1 + 2^-20) + 2^-126 (reach()), which holds then;
+ *     an absolute 2^-150 where the product underflows), so the computed entry t0 and exit
+ *     t1 satisfy t0 <= T0 (1 + u)^2 + 2^-150 and t1 >= T1 (1 - u)^2 - 2^-150 for the true
+ *     entry T0 and exit T1. The far factor is 1/d grown by REACH_GROWTH = 1 + 2^-20, and
+ *     tmax too (reach()), so that t1 >= T1 (1 + 2^-20) (1 - u)^2 - 2^-150 = T1 (1 + 16u)
+ *     (1 - u)^2 - 2^-150; a box is entered when t0 <= t1 + 2^-126, rounded, which holds
+ *     when T0 <= T1, as (1 + 16u) (1 - u)^3 > (1 + u)^2 and 2^-126 (1 - u) > 2 2^-150;
  *   - a zero component of d gives 1/d = +-inf; where the origin lies on a slab's plane
  *     (0 * inf = NaN) the comparisons are false for NaN, so that slab constrains nothing,
  *     which is right for a ray running inside it;
@@ -29,8 +32,8 @@
 #include <assert.h>
 #include <float.h>
 
-/* The slack of reach(): (1 + u)^2 / (1 - u)^2 < 1 + 5u is covered by 1 + 2^-20 = 1 + 16u
- * even after reach()'s own two roundings; 2^-126 covers underflowing products. */
+/* The slack of the exit distances (see the top): 1 + 2^-20 = 1 + 16u covers the relative
+ * rounding, even after reach()'s own two roundings, and 2^-126 the underflowing products. */
 #define REACH_GROWTH (1.0f + 0x1p-20f)
 #define REACH_FLOOR 0x1p-126f
 
@@ -67,10 +70,24 @@ struct box_ray {
                                         first / last along the axis                    */
 };
 
+/* Floats *below <= x <= *above, as float_at_most() and float_at_least() give them, with
+ * one margin for both and without their range tests where x is far inside float's range. */
+static void float_bracket(double x, float *below, float *above)
+{
+    double margin = fabs(x) * 0x1p-22 + 0x1p-149;
+    if (fabs(x) <= 0x1p126) {   /* x -+ margin round to finite floats */
+        *below = (float)(x - margin);
+        *above = (float)(x + margin);
+        return;
+    }
+    *below = float_at_most(x);
+    *above = float_at_least(x);
+}
+
 /* The double 1/d is within half an ulp of double of the exact 1/d, far inside the margin
- * of float_at_least() and float_at_most(), so they bound the exact value too. For d = +-0,
- * 1/d = +-inf, and the near factor becomes +-FLT_MAX, which keeps every sign the slab test
- * reads. Both roundings are made and one kept, so the ray's signs cost no branches. */
+ * of float_bracket(), so it brackets the exact value too. For d = +-0, 1/d = +-inf, and the
+ * near factor becomes +-FLT_MAX, which keeps every sign the slab test reads. Both
+ * roundings are made and one kept, so the ray's signs cost no branches. */
 static void box_ray(struct ray ray, struct box_ray *r)
 {
     double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
@@ -78,10 +95,12 @@ static void box_ray(struct ray ray, struct box_ray *r)
     for (int a = 0; a < 3; a++) {
         double inv = 1.0 / d[a];   /* d = +-0 gives +-inf */
         int positive = inv > 0;
-        float o_up = float_at_least(o[a]), o_down = float_at_most(o[a]);
-        float inv_up = float_at_least(inv), inv_down = float_at_most(inv);
+        float o_down, o_up, inv_down, inv_up, grown_down, grown_up;
+        float_bracket(o[a], &o_down, &o_up);
+        float_bracket(inv, &inv_down, &inv_up);
+        float_bracket(inv * REACH_GROWTH, &grown_down, &grown_up);   /* the far factor */
         float on = positive ? o_up : o_down, of = positive ? o_down : o_up;
-        float in = positive ? inv_down : inv_up, inf_ = positive ? inv_up : inv_down;
+        float in = positive ? inv_down : inv_up, inf_ = positive ? grown_up : grown_down;
         for (int i = 0; i < BVH_WIDTH; i++) {
             r->origin_near[a][i] = on;
             r->origin_far[a][i] = of;
@@ -93,18 +112,20 @@ static void box_ray(struct ray ray, struct box_ray *r)
     }
 }
 
-/* The largest computed entry distance that may still belong to a box entered before tmax. */
+/* tmax grown by the exit distances' slack: the largest computed entry distance that may
+ * still belong to a box entered before tmax. */
 static float reach(float tmax)
 {
     return tmax * REACH_GROWTH + REACH_FLOOR;
 }
 
-/* The slots of node the ray enters before tmax_f (a float above tmax), one bit each, and
+/* The slots of node the ray enters before tmax (tmax_reach = reach() of a float above it),
+ * one bit each, and
  * each slot's entry distance in t_enter[]; the box test of all slots is one loop, which
  * compilers vectorise. Each "a > b ? a : b" keeps b when a is NaN, so a NaN slab
  * constrains nothing. Only used slots count: an origin beyond float's range passes every
  * box test, empty slots' too. */
-static unsigned enter_slots(const struct bvh_node *node, const struct box_ray *r, float tmax_f,
+static unsigned enter_slots(const struct bvh_node *node, const struct box_ray *r, float tmax_reach,
                             float t_enter[BVH_WIDTH])
 {
     static const unsigned bit[BVH_WIDTH] = {1, 2, 4, 8, 16, 32, 64, 128};
@@ -122,11 +143,11 @@ static unsigned enter_slots(const struct bvh_node *node, const struct box_ray *r
         float enter = nx > 0.0f ? nx : 0.0f;
         enter = ny > enter ? ny : enter;
         enter = nz > enter ? nz : enter;
-        float leave = fx < tmax_f ? fx : tmax_f;
+        float leave = fx < tmax_reach ? fx : tmax_reach;
         leave = fy < leave ? fy : leave;
         leave = fz < leave ? fz : leave;
         t0[i] = enter;
-        t1[i] = reach(leave);
+        t1[i] = leave + REACH_FLOOR;
     }
     unsigned entered = 0;
     for (int i = 0; i < BVH_WIDTH; i++) {
@@ -205,7 +226,7 @@ static int traverse(const struct bvh *bvh, struct ray ray, double tmax, int clos
         return 0;
     struct box_ray r;
     box_ray(ray, &r);
-    float tmax_f = float_at_least(tmax), tmax_reach = reach(tmax_f);
+    float tmax_reach = reach(float_at_least(tmax));
     struct pending stack[STACK_SIZE];
     struct pending p = {0, 0.0f};   /* the root, whose box is no slot's */
     int top = 0, found = 0;
@@ -214,7 +235,7 @@ static int traverse(const struct bvh *bvh, struct ray ray, double tmax, int clos
         if (count == 0) {
             float t_enter[BVH_WIDTH];
             const struct bvh_node *node = &bvh->nodes[p.ref];
-            unsigned entered = enter_slots(node, &r, tmax_f, t_enter);
+            unsigned entered = enter_slots(node, &r, tmax_reach, t_enter);
             if (entered != 0) {
                 p = next_slot(node, entered, t_enter, closest, stack, &top);
                 continue;   /* the nearest, entered before tmax just now */
@@ -223,8 +244,7 @@ static int traverse(const struct bvh *bvh, struct ray ray, double tmax, int clos
             if (!closest)
                 return 1;
             found = 1;
-            tmax_f = float_at_least(tmax);
-            tmax_reach = reach(tmax_f);
+            tmax_reach = reach(float_at_least(tmax));
         }
         do {   /* the most recent waiting slot the ray enters before the current tmax */
             if (top == 0)

@@ -123,14 +123,6 @@ struct aabb mesh_bounds(const struct mesh *m, const struct mesh_triangle *tri)
     return corners_bounds(corner);
 }
 
-int mesh_intersect(const struct mesh *m, const struct mesh_triangle *tri,
-                   const struct sheared_ray *ray, double tmax, struct hit *hit)
-{
-    const double *corner[3];
-    corners_of(m, tri, corner);
-    return corners_intersect(corner, ray, tmax, hit);
-}
-
 void mesh_shade(const struct mesh *m, const struct mesh_triangle *tri,
                 const struct vec3 *normals, struct hit *hit)
 {

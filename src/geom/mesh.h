@@ -55,9 +55,15 @@ void mesh_corners(const struct mesh *m, const struct mesh_triangle *tri, struct 
 int mesh_is_degenerate(const struct mesh *m, const struct mesh_triangle *tri);
 struct aabb mesh_bounds(const struct mesh *m, const struct mesh_triangle *tri);
 
-/* triangle_intersect() and triangle_shade() on the triangle's corners. */
-int mesh_intersect(const struct mesh *m, const struct mesh_triangle *tri,
-                   const struct sheared_ray *ray, double tmax, struct hit *hit);
+/* triangle_intersect() and triangle_shade() on the triangle's corners; the test inline, as
+ * every leaf test runs it. */
+static inline int mesh_intersect(const struct mesh *m, const struct mesh_triangle *tri,
+                                 const struct sheared_ray *ray, double tmax, struct hit *hit)
+{
+    const double *const corner[3] = {m->points[tri->corner[0]], m->points[tri->corner[1]],
+                                     m->points[tri->corner[2]]};
+    return corners_intersect(corner, ray, tmax, hit);
+}
 void mesh_shade(const struct mesh *m, const struct mesh_triangle *tri,
                 const struct vec3 *normals, struct hit *hit);
 

@@ -27,8 +27,7 @@ static double product_error(double a, double b, double p)
     return ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo;
 }
 
-/* edge_function() for this file's hot path, where the compiler may inline it. */
-static inline double edge(double px, double py, double qx, double qy)
+double edge_function(double px, double py, double qx, double qy)
 {
     double qx_py = qx * py, qy_px = qy * px;
     double e = qx_py - qy_px;
@@ -36,11 +35,6 @@ static inline double edge(double px, double py, double qx, double qy)
         return e;
     /* The products are equal, so the exact value is the difference of their errors. */
     return product_error(qx, py, qx_py) - product_error(qy, px, qy_px);
-}
-
-double edge_function(double px, double py, double qx, double qy)
-{
-    return edge(px, py, qx, qy);
 }
 
 struct sheared_ray shear_ray(struct ray ray)
@@ -118,37 +112,6 @@ struct aabb corners_bounds(const double *const corner[3])
         box.hi = vec3_max(box.hi, vertex(corner, i));
     }
     return box;
-}
-
-/* Woop et al., Fig. 1 (without back-face culling). Vertex i becomes (x[i], y[i]) in the
- * sheared frame; U, V, W are the edge functions of B -> C, C -> A, A -> B. */
-int corners_intersect(const double *const corner[3], const struct sheared_ray *ray, double tmax,
-                      struct hit *hit)
-{
-    const double *o = ray->origin;
-    int kx = ray->kx, ky = ray->ky, kz = ray->kz;
-    double x[3], y[3], z[3];
-    for (int i = 0; i < 3; i++) {
-        z[i] = corner[i][kz] - o[kz];
-        x[i] = (corner[i][kx] - o[kx]) - ray->sx * z[i];
-        y[i] = (corner[i][ky] - o[ky]) - ray->sy * z[i];
-    }
-    double u = edge(x[1], y[1], x[2], y[2]);
-    double v = edge(x[2], y[2], x[0], y[0]);
-    double w = edge(x[0], y[0], x[1], y[1]);
-    if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0))
-        return 0;   /* the origin is outside an edge */
-    double det = u + v + w;
-    if (det == 0)
-        return 0;   /* all three zero: the triangle is seen edge-on */
-    double inv_det = 1.0 / det;
-    double t = ray->sz * (u * z[0] + v * z[1] + w * z[2]) * inv_det;
-    if (!(t > 0 && t < tmax))
-        return 0;
-    hit->t = t;
-    hit->u = v * inv_det;
-    hit->v = w * inv_det;
-    return 1;
 }
 
 /* ns: the barycentric blend of the vertex normals, normalised, and turned to ng's side
