@@ -92,14 +92,16 @@ static inline int corners_intersect(const double *const corner[3], const struct 
     double u = edge_fast(x[1], y[1], x[2], y[2]);
     double v = edge_fast(x[2], y[2], x[0], y[0]);
     double w = edge_fast(x[0], y[0], x[1], y[1]);
-    if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0))
+    /* | and & in place of || and &&: one branch, where the result of each comparison is as
+     * unpredictable as which side of an edge a ray passes. */
+    if (((u < 0) | (v < 0) | (w < 0)) & ((u > 0) | (v > 0) | (w > 0)))
         return 0;   /* the origin is outside an edge */
     double det = u + v + w;
     if (det == 0)
         return 0;   /* all three zero: the triangle is seen edge-on */
     double inv_det = 1.0 / det;
     double t = ray->sz * (u * z[0] + v * z[1] + w * z[2]) * inv_det;
-    if (!(t > 0 && t < tmax))
+    if (!((t > 0) & (t < tmax)))
         return 0;
     hit->t = t;
     hit->u = v * inv_det;
