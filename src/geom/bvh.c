@@ -72,7 +72,7 @@ struct box_ray {
 
 /* Floats *below <= x <= *above, as float_at_most() and float_at_least() give them, with
  * one margin for both and without their range tests where x is far inside float's range. */
-static void float_bracket(double x, float *below, float *above)
+static inline void float_bracket(double x, float *below, float *above)
 {
     double margin = fabs(x) * 0x1p-22 + 0x1p-149;
     if (fabs(x) <= 0x1p126) {   /* x -+ margin round to finite floats */
