@@ -12,7 +12,8 @@
 #   make bench      benchmark figures (ONLY=rays|knn|...|tiles runs one workload); SPD=DIR
 #                   adds the workloads on SPD files, which are skipped without it
 #   make figures    re-measure the figures README.md states and write them into it (long;
-#                   ONLY=presets|bench for one part; bench is the tte workload's table)
+#                   ONLY=presets|bench for one part; bench is the tte workload's table);
+#                   ONLY=rays SPD=DIR writes bench-embree's table into tests/bench/README.md
 #   make reference  render the converged references of reference/suite.txt and write
 #                   reference/suite.md (hours; says how long first; ONLY=NAME for one)
 #   make bench-embree SPD=DIR

@@ -13,15 +13,13 @@
  *   - the boxes are rounded outward when they are stored (bvh_build.c);
  *   - per axis, the origin is rounded to float upwards for the near plane and downwards for
  *     the far one when d > 0 (the other way round when d < 0), and 1/d towards zero for the
- *     near plane, away from zero for the far one: the near distance computed from them is
- *     no larger than the true one before rounding, the far one no smaller;
- *   - the subtraction and the product then round once each (relative error u = 2^-24, or
- *     an absolute 2^-150 where the product underflows), so the computed entry t0 and exit
- *     t1 satisfy t0 <= T0 (1 + u)^2 + 2^-150 and t1 >= T1 (1 - u)^2 - 2^-150 for the true
- *     entry T0 and exit T1. The far factor is 1/d grown by REACH_GROWTH = 1 + 2^-20, and
- *     tmax too (reach()), so that t1 >= T1 (1 + 2^-20) (1 - u)^2 - 2^-150 = T1 (1 + 16u)
- *     (1 - u)^2 - 2^-150; a box is entered when t0 <= t1 + 2^-126, rounded, which holds
- *     when T0 <= T1, as (1 + 16u) (1 - u)^3 > (1 + u)^2 and 2^-126 (1 - u) > 2 2^-150;
+ *     near plane, away from zero for the far one, each by a relative margin of 3u or more
+ *     (float_bracket(): 2^-22 less a float's rounding), which also covers the rounding of the subtraction and of the
+ *     product that follow (u = 2^-24 relative each): the computed entry t0 and exit t1 of a
+ *     slot satisfy t0 <= T0 + 2^-150 and t1 >= T1 - 2^-150 for the true T0 and T1, the
+ *     2^-150 being what a product that underflows may lose;
+ *   - so a slot is entered when t0 <= t1 + 2^-126 (REACH_FLOOR), computed, which holds
+ *     whenever T0 <= T1, and a waiting slot is skipped when its t0 exceeds tmax + 2^-126;
  *   - a zero component of d gives 1/d = +-inf; where the origin lies on a slab's plane
  *     (0 * inf = NaN) the comparisons are false for NaN, so that slab constrains nothing,
  *     which is right for a ray running inside it;
@@ -32,9 +30,7 @@
 #include <assert.h>
 #include <float.h>
 
-/* The slack of the exit distances (see the top): 1 + 2^-20 = 1 + 16u covers the relative
- * rounding, even after reach()'s own two roundings, and 2^-126 the underflowing products. */
-#define REACH_GROWTH (1.0f + 0x1p-20f)
+/* The slack of the exit distances (see the top): two underflowing products' loss and more. */
 #define REACH_FLOOR 0x1p-126f
 
 /* Each visited node pushes at most BVH_WIDTH entries and pops one. */
@@ -95,12 +91,11 @@ static void box_ray(struct ray ray, struct box_ray *r)
     for (int a = 0; a < 3; a++) {
         double inv = 1.0 / d[a];   /* d = +-0 gives +-inf */
         int positive = inv > 0;
-        float o_down, o_up, inv_down, inv_up, grown_down, grown_up;
+        float o_down, o_up, inv_down, inv_up;
         float_bracket(o[a], &o_down, &o_up);
         float_bracket(inv, &inv_down, &inv_up);
-        float_bracket(inv * REACH_GROWTH, &grown_down, &grown_up);   /* the far factor */
         float on = positive ? o_up : o_down, of = positive ? o_down : o_up;
-        float in = positive ? inv_down : inv_up, inf_ = positive ? grown_up : grown_down;
+        float in = positive ? inv_down : inv_up, inf_ = positive ? inv_up : inv_down;
         for (int i = 0; i < BVH_WIDTH; i++) {
             r->origin_near[a][i] = on;
             r->origin_far[a][i] = of;
@@ -116,7 +111,7 @@ static void box_ray(struct ray ray, struct box_ray *r)
  * still belong to a box entered before tmax. */
 static float reach(float tmax)
 {
-    return tmax * REACH_GROWTH + REACH_FLOOR;
+    return tmax + REACH_FLOOR;
 }
 
 /* The slots of node the ray enters before tmax (tmax_reach = reach() of a float above it),

@@ -33,7 +33,7 @@
  * embree.SCENE.photon_SET_mrays, embree_SET_mrays, embree_robust_SET_mrays, SET_ratio and
  * SET_ratio_robust (photon's rays a second over Embree's: the median over the repetitions),
  * the checksums photon_SET_hits, embree_SET_hits, embree_robust_SET_hits and the same for
- * _tsum, checksums_agree (the robust scene's), and the bytes: photon_bytes
+ * _tsum, checksums_agree (the robust scene's), primitives, and the bytes: photon_bytes
  * (geometry_bytes()) and embree_bytes (what Embree's memory monitor counts after building
  * the default scene: its BVH and its copies of the primitives).
  */
@@ -269,6 +269,7 @@ static void embree_workload(const char *scene_name, struct geometry *(*build)(vo
     int agree = compare_set(scene_name, "primary", g, fast, robust, &primary);
     agree &= compare_set(scene_name, "secondary", g, fast, robust, &secondary);
     printf("embree.%s.checksums_agree=%d\n", scene_name, agree);
+    printf("embree.%s.primitives=%zu\n", scene_name, geometry_primitive_count(g));
     printf("embree.%s.photon_bytes=%zu\n", scene_name, geometry_bytes(g));
     printf("embree.%s.embree_bytes=%lld\n", scene_name, fast_bytes);
     fflush(stdout);
