@@ -98,8 +98,8 @@ rays_table() {
         END {
             for (i = 1; i <= n; i++) {
                 s = order[i]
-                for (k = 0; k < 2; k++) {
-                    set = k == 0 ? "primary" : "secondary"
+                for (k = 0; k < 3; k++) {
+                    set = k == 0 ? "primary" : k == 1 ? "secondary" : "shuffled"
                     mem = k == 0 ? sprintf("%.1f (%.1f)", value[s, "photon_bytes"] / 1e6,
                                            value[s, "photon_bytes"] / value[s, "primitives"]) : ""
                     emem = k == 0 ? sprintf("%.1f", value[s, "embree_bytes"] / 1e6) : ""

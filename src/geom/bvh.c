@@ -127,7 +127,7 @@ static unsigned enter_slots(const struct bvh_node *node, const struct box_ray *r
     const float *near_x = node->box + r->near[0], *far_x = node->box + r->far[0];
     const float *near_y = node->box + r->near[1], *far_y = node->box + r->far[1];
     const float *near_z = node->box + r->near[2], *far_z = node->box + r->far[2];
-    float t0[BVH_WIDTH], t1[BVH_WIDTH];
+    unsigned entered = 0;
     for (int i = 0; i < BVH_WIDTH; i++) {
         float nx = (near_x[i] - r->origin_near[0][i]) * r->inv_near[0][i];
         float ny = (near_y[i] - r->origin_near[1][i]) * r->inv_near[1][i];
@@ -141,13 +141,8 @@ static unsigned enter_slots(const struct bvh_node *node, const struct box_ray *r
         float leave = fx < tmax_reach ? fx : tmax_reach;
         leave = fy < leave ? fy : leave;
         leave = fz < leave ? fz : leave;
-        t0[i] = enter;
-        t1[i] = leave + REACH_FLOOR;
-    }
-    unsigned entered = 0;
-    for (int i = 0; i < BVH_WIDTH; i++) {
-        entered |= t0[i] <= t1[i] ? bit[i] : 0u;
-        t_enter[i] = t0[i];
+        t_enter[i] = enter;
+        entered |= enter <= leave + REACH_FLOOR ? bit[i] : 0u;
     }
     return entered & ((1u << node->n_slots) - 1u);
 }

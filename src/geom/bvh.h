@@ -20,6 +20,8 @@
  *   (4) no path from the root has more than BVH_MAX_DEPTH nodes, which bounds the stack.
  * Owns nodes[] and items[]; the item boxes stay the caller's. geometry.c uses the BVH and
  * does the per-item work in the leaf callbacks. The build is bvh_build.c, the walk bvh.c.
+ * Memory: 256 bytes a node and 4 an item; on a height field of 2 triangles a grid cell,
+ * about one node per ten items (tests/bench/README.md has the workloads' bytes).
  */
 #ifndef PHOTON_BVH_H
 #define PHOTON_BVH_H
@@ -30,7 +32,8 @@
 #include "ray.h"
 
 #define BVH_WIDTH 8
-/* Leaves hold at most 4 items: the SAH decides below that; above it a range always splits. */
+/* Leaves hold at most 4 items: the SAH decides below that, and a range that a full node has
+ * no slot left to split is a leaf at up to 4; above it a range always splits. */
 #define BVH_MAX_LEAF 4
 /* The longest path: SAH splits stop at binary depth 32, then halving the index range
  * reaches a leaf within 28 more levels for MAX_PRIMITIVES = 2^28 items, 61 in all; a
@@ -39,8 +42,11 @@
 
 /* 256 bytes, four cache lines. Bounds in float to keep the node small, rounded outward (lo
  * down, hi up, one ulp of float at most) so that a slot's box contains the double box it
- * stands for and no hit is lost. box[] is laid out bound by bound, so the four slots' values
- * of one bound are adjacent and the box test is a loop over slots that compilers vectorise. */
+ * stands for and no hit is lost. box[] is laid out bound by bound, so the eight slots' values
+ * of one bound are adjacent and the box test is a loop over slots that compilers vectorise.
+ * Interior node and leaf alike are slots of their parent: a leaf has no node of its own. The
+ * walk reads slots below n_slots only, and packs a leaf's first and count into 32 bits
+ * (positions below 2^28, counts up to BVH_MAX_LEAF). */
 struct bvh_node {
     float box[6 * BVH_WIDTH]; /* box[BVH_WIDTH * k + i]: bound k of slot i, k = 0, 1, 2 the
                                  lo x, y, z and k = 3, 4, 5 the hi x, y, z             */

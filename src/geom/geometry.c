@@ -3,15 +3,15 @@
  *
  * Primitives live in one array per kind (spheres, triangles, quads, procedural shapes),
  * each record carrying its id and material (shapes report their own); the triangles share
- * their corners through struct mesh (mesh.h). geometry_build()
- * builds the BVH over every primitive that can be hit (degenerate ones, which have no
- * area, are left out) and then
+ * their corners through struct mesh (mesh.h). geometry_build() builds the BVH over every
+ * primitive that can be hit (degenerate ones, which have no area, are left out) and then
  *   (1) refs[k] names the BVH's k-th item in leaf order as (kind << REF_KIND_SHIFT) | index;
  *   (2) each kind's array is permuted into that leaf order, so a leaf reads consecutive
  *       records, and the records the BVH left out follow at the end of their array;
  *   (3) id_refs[id] names primitive id's record the same way, whether or not the BVH holds
  *       it, at every moment: each add appends its entry, and geometry_build() rewrites them
- *       all once (2) has moved the records (geometry_primitive_bounds() reads it).
+ *       all once (2) has moved the records (geometry_primitive_bounds() reads it), and fits
+ *       id_refs[] and the permuted arrays to their counts.
  * A leaf test dispatches on the kind with a switch: spheres, triangles and quads by direct
  * calls, shapes through their struct shape_ops. During traversal a primitive reports only
  * t and its surface parameters; the shading record of the closest one is completed once,

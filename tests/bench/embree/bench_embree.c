@@ -29,7 +29,12 @@
  *     and on the sums, or the tool exits with status 1; the default scene's checksums are
  *     printed for what they show (its traversal is not watertight and loses a few hits).
  *
- * Prints, with SCENE as in the rays workload and SET primary or secondary:
+ * A third set, shuffled, is the primary rays in a fixed pseudo-random order: the same work
+ * without the coherence of neighbouring pixels, which shows how much of a caster's speed on
+ * primary rays comes from that coherence (secondary rays, one per pixel in a random
+ * direction, have little of it).
+ *
+ * Prints, with SCENE as in the rays workload and SET primary, secondary or shuffled:
  * embree.SCENE.photon_SET_mrays, embree_SET_mrays, embree_robust_SET_mrays, SET_ratio and
  * SET_ratio_robust (photon's rays a second over Embree's: the median over the repetitions),
  * the checksums photon_SET_hits, embree_SET_hits, embree_robust_SET_hits and the same for
@@ -40,7 +45,9 @@
 #include <embree3/rtcore.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "../../../src/base/alloc.h"
 #include "../bench.h"
@@ -206,6 +213,26 @@ static double embree_cast(RTCScene scene, struct ray_set *set)
     return seconds;
 }
 
+/* The primary rays in a fixed pseudo-random order (Fisher-Yates driven by xorshift64): the
+ * same rays and work, without the coherence of neighbouring pixels. The caller frees it. */
+static struct ray_set shuffled(const struct ray_set *set)
+{
+    struct ray_set out = *set;
+    out.rays = xmalloc(set->n_rays, sizeof *out.rays, "shuffled rays");
+    memcpy(out.rays, set->rays, set->n_rays * sizeof *out.rays);
+    uint64_t x = UINT64_C(88172645463325252);
+    for (size_t i = set->n_rays; i > 1; i--) {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        size_t j = (size_t)(x % i);
+        struct ray swap = out.rays[i - 1];
+        out.rays[i - 1] = out.rays[j];
+        out.rays[j] = swap;
+    }
+    return out;
+}
+
 static int agree(const struct ray_set *a, const struct ray_set *b)
 {
     double hits = fmax(1.0, (double)a->n_hits);
@@ -268,6 +295,9 @@ static void embree_workload(const char *scene_name, struct geometry *(*build)(vo
     struct ray_set secondary = bench_secondary_rays(g, &primary);
     int agree = compare_set(scene_name, "primary", g, fast, robust, &primary);
     agree &= compare_set(scene_name, "secondary", g, fast, robust, &secondary);
+    struct ray_set scattered = shuffled(&primary);
+    agree &= compare_set(scene_name, "shuffled", g, fast, robust, &scattered);
+    xfree(scattered.rays);
     printf("embree.%s.checksums_agree=%d\n", scene_name, agree);
     printf("embree.%s.primitives=%zu\n", scene_name, geometry_primitive_count(g));
     printf("embree.%s.photon_bytes=%zu\n", scene_name, geometry_bytes(g));
