@@ -81,12 +81,13 @@ static int sheet_brute(const struct sheet *s, struct ray ray, double tmax, struc
  *   agreement on t).
  * cases: sheets of triangles 1e-3 .. 1 wide at 1e3 .. 1e7 from the origin, where float's
  *   spacing (up to 1) exceeds a triangle, and 1e-42 .. 1e-36 wide at the origin, where the
- *   box test's products underflow into float's subnormals; rays spawned from hit points by offset_origin()
- *   (a hair off the surface, inside boxes a few floats thick), in random directions and
- *   grazing ones; rays from afar aimed at corners and edges.
+ *   box test's products underflow into float's subnormals; rays spawned from hit points by
+ *   offset_origin() (a hair off the surface, inside boxes a few floats thick), in random
+ *   directions and grazing ones; rays from afar aimed at corners and edges.
  * tolerance: none; t must be bitwise the brute force's, and geometry_occluded() must agree.
- * catches: the origin or 1/d rounded to the nearest float (or the wrong way), the exit
- *   distance's slack for underflowing products dropped, boxes rounded to nearest, a stale tmax pruning a slot. */
+ * catches: the origin and 1/d rounded to the nearest float instead of outward (tried: it
+ *   fails), or rounded the wrong way. (Boxes rounded to nearest are bvh_check()'s to find.)
+ */
 static void test_box_test_where_floats_are_coarse(struct check *t)
 {
     static const double offsets[] = {1e3, 1e5, 3e6, 1e7, 0.0};

@@ -14,10 +14,11 @@
  *   - per axis, the origin is rounded to float upwards for the near plane and downwards for
  *     the far one when d > 0 (the other way round when d < 0), and 1/d towards zero for the
  *     near plane, away from zero for the far one, each by a relative margin of 3u or more
- *     (float_bracket(): 2^-22 less a float's rounding), which also covers the rounding of the subtraction and of the
- *     product that follow (u = 2^-24 relative each): the computed entry t0 and exit t1 of a
- *     slot satisfy t0 <= T0 + 2^-150 and t1 >= T1 - 2^-150 for the true T0 and T1, the
- *     2^-150 being what a product that underflows may lose;
+ *     (float_bracket(): 2^-22 less a float's rounding), which also covers the rounding of
+ *     the subtraction and of the product that follow (u = 2^-24 relative each): the
+ *     computed entry t0 and exit t1 of a slot satisfy t0 <= T0 + 2^-150 and
+ *     t1 >= T1 - 2^-150 for the true T0 and T1, 2^-150 being what an underflowing product
+ *     may lose;
  *   - so a slot is entered when t0 <= t1 + 2^-126 (REACH_FLOOR), computed, which holds
  *     whenever T0 <= T1, and a waiting slot is skipped when its t0 exceeds tmax + 2^-126;
  *   - a zero component of d gives 1/d = +-inf; where the origin lies on a slab's plane
