@@ -21,7 +21,8 @@ struct room {
 static const struct room rooms[] = {
     {"base", test_base, 0},       {"image", test_image, 0},         {"compare", test_compare, 0},
     {"png", test_png, 0},
-    {"plot", test_plot, 0},       {"geom", test_geom, 0},           {"scene", test_scene, 0},
+    {"plot", test_plot, 0},       {"geom", test_geom, 0},           {"bvh", test_bvh, 0},
+    {"scene", test_scene, 0},
     {"brdf", test_brdf, 0},       {"shapes", test_shapes, 0},       {"import", test_import, 0},
     {"photon", test_photon, 0},   {"projection", test_projection, 0}, {"trace", test_trace, 0},
     {"ppm", test_ppm, 0},         {"cache", test_cache, 0},         {"render", test_render, 0},

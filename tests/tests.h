@@ -12,6 +12,7 @@ void test_png(struct check *t);    /* test_png.c: PNG files, outside readers    
 void test_compare(struct check *t); /* test_compare.c: per-pixel statistical test */
 void test_plot(struct check *t);   /* test_plot.c: CSV reading, SVG plots         */
 void test_geom(struct check *t);   /* test_geom.c: primitives, BVH, robustness    */
+void test_bvh(struct check *t);    /* test_bvh.c: the float box test, wide nodes, mesh */
 void test_scene(struct check *t);  /* test_scene.c: parser, camera, lights        */
 void test_brdf(struct check *t);   /* test_brdf.c: the material models            */
 void test_shapes(struct check *t); /* test_shapes.c: sphere flake, heightfield    */
