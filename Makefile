@@ -12,9 +12,18 @@
 #   make bench      benchmark figures (ONLY=rays|knn|...|tiles runs one workload); SPD=DIR
 #                   adds the workloads on SPD files, which are skipped without it
 #   make figures    re-measure the figures README.md states and write them into it (long;
-#                   ONLY=presets|bench for one part; bench is the tte workload's table)
+#                   ONLY=presets|bench for one part; bench is the tte workload's table);
+#                   ONLY=rays SPD=DIR writes bench-embree's table into tests/bench/README.md
 #   make reference  render the converged references of reference/suite.txt and write
 #                   reference/suite.md (hours; says how long first; ONLY=NAME for one)
+#   make consistency
+#                   every photon mode on every shipped scene against its reference, the
+#                   table written into reference/suite.md (hours; says how long first;
+#                   ONLY=NAME for some scenes, MODES="1996 2009", QUALITY=reference)
+#   make bench-embree SPD=DIR
+#                   the rays workload cast through Embree 3 beside photon in one run: both
+#                   throughputs, their ratio, both checksums (tests/bench/embree/bench_embree.c;
+#                   needs libembree-dev, which the product never links; development)
 #   make fuzz       libFuzzer targets for every reader (scene, NFF, OBJ, PFM, CSV, tile
 #                   record, work file) and the option parser, built with clang (development)
 #   make crosscheck our pt references against Blender's Cycles, where blender (3.4+) is
@@ -52,8 +61,8 @@ MAIN_OBJ := $(BUILD)/src/main.o
 TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)) tests/bench/tte_fit.c)
 BENCH_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/bench/*.c)))
 
-.PHONY: all run test test-spd check bench figures reference fuzz crosscheck install \
-        uninstall clean
+.PHONY: all run test test-spd check bench bench-embree figures reference consistency fuzz \
+        crosscheck install uninstall clean
 
 # test-spd refuses at once, before building anything, when it has no folder of SPD files.
 ifneq ($(filter test-spd,$(MAKECMDGOALS)),)
@@ -129,6 +138,20 @@ check:
 bench: $(BIN) $(BUILD)/bench
 	PHOTON=./$(BIN) PHOTON_SPD='$(SPD)' BENCH_TMP=$(BUILD)/bench-tiles ./$(BUILD)/bench $(ONLY)
 
+# Embree 3 against photon on the rays workload's rays (a development tool, never part of the
+# product): refused at once, saying what to install, where the compiler finds no Embree.
+EMBREE_LIBS ?= -lembree3
+EMBREE_OBJ := $(BUILD)/tests/bench/bench_common.o $(BUILD)/tests/bench/bench_rays.o
+bench-embree:
+	@printf '#include <embree3/rtcore.h>\n' | $(CC) -E -x c - > /dev/null 2>&1 || { \
+	    echo "make bench-embree needs Embree 3's headers and library, which are not installed" \
+	        "(Debian, Ubuntu: apt-get install libembree-dev)" >&2; exit 2; }
+	@$(MAKE) --no-print-directory $(BUILD)/bench-embree
+	PHOTON_SPD='$(SPD)' ./$(BUILD)/bench-embree
+
+$(BUILD)/bench-embree: tests/bench/embree/bench_embree.c $(EMBREE_OBJ) $(LIB_OBJ) $(HEADERS)
+	$(CC) $(CFLAGS) -o $@ $< $(EMBREE_OBJ) $(LIB_OBJ) $(EMBREE_LIBS) $(LDLIBS)
+
 # The figures README.md states, re-measured and written into it (ONLY=presets or bench).
 figures: $(BIN) $(BUILD)/bench
 	sh scripts/figures.sh $(ONLY)
@@ -137,6 +160,11 @@ figures: $(BIN) $(BUILD)/bench
 # ONLY="NAME NAME") renders only those, keeping the other rows of reference/suite.md.
 reference: $(BIN)
 	PHOTON=./$(BIN) sh scripts/reference.sh $(ONLY)
+
+# Every photon mode on the scenes of reference/consistency.txt (ONLY=NAME ..., MODES=...,
+# QUALITY=preset), the table into reference/suite.md.
+consistency: $(BIN)
+	PHOTON=./$(BIN) MODES='$(MODES)' QUALITY='$(QUALITY)' sh scripts/consistency.sh $(ONLY)
 
 # Fuzz targets (a development tool, not part of the product build): one per reader and
 # the option parser. Run

@@ -1,8 +1,9 @@
 #!/bin/sh
-# scripts/figures.sh [presets] [bench] -- re-measures the figures README.md states and writes
-# them into it, between the lines <!-- figures:NAME --> and <!-- /figures:NAME -->. Run by
-# `make figures` (ONLY=presets or ONLY=bench for one part) from the top of the repository,
-# after ./photon and build/bench are built.
+# scripts/figures.sh [presets] [bench] [rays] -- re-measures the figures README.md (and, for
+# rays, tests/bench/README.md) states and writes them in, between the lines
+# <!-- figures:NAME --> and <!-- /figures:NAME -->. Run by `make figures` (ONLY=presets,
+# bench or rays for one part) from the top of the repository, after ./photon and build/bench
+# are built.
 #
 #   presets  scripts/presets.sh: every mode's presets on both Cornell boxes against the
 #            references (about 15 minutes of CPU; two renders run at once)
@@ -10,6 +11,9 @@
 #            seconds, its relmse, pt's CPU seconds to that relmse and their ratio (about half
 #            an hour of CPU; PHOTON_TTE_TRIAL=1 tries the pipeline in a minute, on figures
 #            that mean nothing, and says so in the table)
+#   rays     `make bench-embree`, photon's ray casting beside Embree 3's on the rays
+#            workload, into tests/bench/README.md (needs Embree and SPD=DIR, the folder of
+#            the SPD files; a few minutes; not part of the default parts)
 #
 # Each part prints how long it took. Nothing in README.md changes unless the part succeeded.
 set -eu
@@ -17,8 +21,10 @@ cd "$(dirname "$0")/.."
 parts=${*:-presets bench}
 mkdir -p build
 
-# Replaces README.md's block NAME by the lines of FILE, stamped with the date of the run.
+# Replaces the block NAME of the file DOC (README.md unless given) by the lines of FILE,
+# stamped with the date of the run.
 splice() {
+    doc=${3:-README.md}
     awk -v name="$1" -v file="$2" -v day="$(date +%Y-%m-%d)" '
         $0 == "<!-- figures:" name " -->" {
             print
@@ -31,8 +37,8 @@ splice() {
             next
         }
         $0 == "<!-- /figures:" name " -->" { skip = 0 }
-        !skip { print }' README.md > README.md.tmp
-    mv README.md.tmp README.md
+        !skip { print }' "$doc" > "$doc.tmp"
+    mv "$doc.tmp" "$doc"
 }
 
 # The tte workload's tte.MODE.SCENE.KEY=VALUE lines (tests/bench/README.md) as a table: one
@@ -79,6 +85,34 @@ phase_table() {
         END { for (i = 1; i <= n; i++) print "| " order[i] " | " text[order[i]] " |" }' "$1"
 }
 
+# bench-embree's embree.SCENE.KEY=VALUE lines as a table: a row a scene and ray set, photon's
+# and Embree's Mrays/s (defaults and robust), the ratios, and the memory of each side.
+rays_table() {
+    echo "| scene | rays | photon Mrays/s | Embree Mrays/s | ratio | robust Embree Mrays/s | ratio to robust | photon MB (bytes a primitive) | Embree MB |"
+    echo "|---|---|---|---|---|---|---|---|---|"
+    awk -F= '/^embree\.[^.]+\.[a-z_]+=/ {
+            split($1, part, ".")
+            if (!(part[2] in seen)) { seen[part[2]] = 1; order[++n] = part[2] }
+            value[part[2], part[3]] = $2
+        }
+        END {
+            for (i = 1; i <= n; i++) {
+                s = order[i]
+                for (k = 0; k < 3; k++) {
+                    set = k == 0 ? "primary" : k == 1 ? "secondary" : "shuffled"
+                    mem = k == 0 ? sprintf("%.1f (%.1f)", value[s, "photon_bytes"] / 1e6,
+                                           value[s, "photon_bytes"] / value[s, "primitives"]) : ""
+                    emem = k == 0 ? sprintf("%.1f", value[s, "embree_bytes"] / 1e6) : ""
+                    print "| " s " | " set " | " value[s, "photon_" set "_mrays"] " | " \
+                        value[s, "embree_" set "_mrays"] " | " value[s, set "_ratio"] " | " \
+                        value[s, "embree_robust_" set "_mrays"] " | " \
+                        value[s, set "_ratio_robust"] " | " mem " | " emem " |"
+                }
+            }
+            exit n == 0
+        }' "$1"
+}
+
 for part in $parts; do
     start=$(date +%s)
     case $part in
@@ -97,10 +131,21 @@ for part in $parts; do
         fi
         splice bench build/figures-bench.md
         ;;
+    rays)
+        make --no-print-directory bench-embree SPD="${SPD:-}" > build/figures-rays.txt
+        rays_table build/figures-rays.txt > build/figures-rays.md
+        agreed=$(grep -c 'checksums_agree=1' build/figures-rays.txt || true)
+        scenes=$(grep -c 'checksums_agree=' build/figures-rays.txt || true)
+        version=$(sed -n 's/^embree\.version=//p' build/figures-rays.txt)
+        echo "" >> build/figures-rays.md
+        echo "Embree $version, one thread, beside photon in the same run; robust Embree's" \
+            "checksums agree with photon's on $agreed of $scenes scenes." >> build/figures-rays.md
+        splice rays build/figures-rays.md tests/bench/README.md
+        ;;
     *)
-        echo "figures: unknown part '$part' (presets, bench)" >&2
+        echo "figures: unknown part '$part' (presets, bench, rays)" >&2
         exit 2
         ;;
     esac
-    echo "figures: $part written into README.md in $(($(date +%s) - start)) s"
+    echo "figures: $part written in $(($(date +%s) - start)) s"
 done

@@ -119,6 +119,11 @@ write_suite() {
         for each in $all; do
             echo "- \`$each.pfm\`: $(field "$(line_of "$each")" 7)."
         done
+        # make consistency's table (scripts/consistency.sh), kept as it was
+        if [ -f "$out" ] && grep -q '^<!-- consistency -->$' "$out"; then
+            echo
+            sed -n '/^<!-- consistency -->$/,/^<!-- \/consistency -->$/p' "$out"
+        fi
     } > "$out.tmp"
     mv "$out.tmp" "$out"
 }
@@ -170,9 +175,9 @@ for name in $names; do
     echo
     echo "[$k/$n] $name: $scene $options, about $(field "$line" 4) CPU s a render"
 
-    # 2008 writes no variance image; every other mode does here.
+    # 2008 and 2009 write no variance image; every other mode does here.
     case " $options " in
-    *" --mode 2008 "*) variance= ;;
+    *" --mode 2008 "* | *" --mode 2009 "*) variance= ;;
     *) variance=yes ;;
     esac
     var1=
@@ -203,6 +208,10 @@ for name in $names; do
         passes=$(stat_of "$log" passes)
         samples="$passes passes of $(($(stat_of "$log" photons_emitted) / passes)) photons,"
         samples="$samples $(stat_of "$log" spp) eye rays a pixel" ;;
+    *" --mode 2009 "*)
+        passes=$(stat_of "$log" passes)
+        samples="$passes passes of $(($(stat_of "$log" photons_emitted) / passes)) photons,"
+        samples="$samples an eye path a pixel each" ;;
     *)
         samples="$(stat_of "$log" spp) a pixel" ;;
     esac

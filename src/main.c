@@ -191,8 +191,8 @@ static void print_photon_stats(const struct photon_stats *ps)
 
 static void print_ppm_stats(const struct ppm_stats *ps)
 {
-    fprintf(stderr, "hit_points=%zu\nbytes_per_hit_point=%zu\npasses=%ld\n", ps->hit_points,
-            ps->bytes_per_hit_point, ps->passes);
+    fprintf(stderr, "hit_points=%zu\nbytes_per_hit_point=%zu\nhit_members=%zu\npasses=%ld\n",
+            ps->hit_points, ps->bytes_per_hit_point, ps->hit_members, ps->passes);
     fprintf(stderr, "photons_emitted=%zu\nphoton_rays=%llu\n", ps->photons_emitted,
             ps->photon_rays);
     fprintf(stderr, "seconds_ray_pass=%.3f\nseconds_photons=%.3f\n", ps->seconds_ray_pass,
@@ -232,8 +232,9 @@ static void print_jensen1994_stats(const struct jensen1994_stats *js)
 {
     fprintf(stderr, "photons_emitted=%zu\nphoton_rays=%llu\n", js->photons_emitted,
             js->photon_rays);
-    fprintf(stderr, "photons_stored=%zu\nphotons_caustic=%zu\nbytes_photon_map=%zu\n",
-            js->photons_stored, js->photons_caustic, js->bytes_photon_map);
+    fprintf(stderr, "photons_stored=%zu\nphotons_caustic=%zu\nphotons_glossy=%zu\n"
+            "bytes_photon_map=%zu\n", js->photons_stored, js->photons_caustic,
+            js->photons_glossy, js->bytes_photon_map);
     fprintf(stderr, "bytes_caustic_photons=%zu\n", js->bytes_caustic_photons);
     fprintf(stderr, "bytes_per_photon=%.1f\n",
             js->photons_stored > 0 ? (double)js->bytes_photon_map / js->photons_stored : 0.0);
@@ -303,8 +304,19 @@ static struct render_result render_mode(struct run *run, struct error *err)
     struct checkpoint snapshot = {write_snapshot, &run->o};
     switch (run->o.mode) {
     case MODE_PT:
+        if (pt_unreachable_light(run->scene) >= 0) {
+            struct vec3 at = run->scene->lights[pt_unreachable_light(run->scene)].position;
+            fprintf(stderr, "photon: warning: pt cannot find the caustics of point lights "
+                    "(the first at %g %g %g): their light through mirrors or glass onto a "
+                    "diffuse surface has probability zero and is missing from the image; "
+                    "the photon modes render it\n", at.x, at.y, at.z);
+        }
         return render_pt(run->scene, &run->rs, want_variance, checkpoint, &run->counters);
     case MODE_PHOTONS:
+        fprintf(stderr, "photon: warning: --mode photons shows the global photon map's "
+                "estimate directly (Jensen 1996, Fig. 4): blurred by its %d nearest photons "
+                "and noisy at any photon count, it is a look at the map, not a converged "
+                "image; use 1996 or 2009 for one\n", run->o.gather);
         ps.n_photons = (size_t)run->o.photons;
         ps.gather = (size_t)run->o.gather;
         ps.max_radius = run->o.max_radius;
@@ -325,6 +337,8 @@ static struct render_result render_mode(struct run *run, struct error *err)
         j94.light_samples = run->o.light_samples;
         j94.both_lobes = run->o.both_lobes;
         j94.bounded_reach = run->o.bounded_reach;
+        j94.glossy_gather = run->o.glossy_gather;
+        j94.glossy_photons = run->o.glossy_photons;
         j94.gradient_limit = run->o.gradient_limit;
         j94.projection_maps = run->o.projection_maps;
         j94.illumination_maps = run->o.illumination_maps;

@@ -21,7 +21,8 @@ struct room {
 static const struct room rooms[] = {
     {"base", test_base, 0},       {"image", test_image, 0},         {"compare", test_compare, 0},
     {"png", test_png, 0},
-    {"plot", test_plot, 0},       {"geom", test_geom, 0},           {"scene", test_scene, 0},
+    {"plot", test_plot, 0},       {"geom", test_geom, 0},           {"bvh", test_bvh, 0},
+    {"scene", test_scene, 0},
     {"brdf", test_brdf, 0},       {"shapes", test_shapes, 0},       {"import", test_import, 0},
     {"photon", test_photon, 0},   {"projection", test_projection, 0}, {"trace", test_trace, 0},
     {"ppm", test_ppm, 0},         {"cache", test_cache, 0},         {"render", test_render, 0},
@@ -33,7 +34,7 @@ static const struct room rooms[] = {
     {"switches", test_switches, 0}, {"ppm_departures", test_ppm_departures, 0},
     {"export", test_export, 0},   {"export_blender", test_export_blender, 0},
     {"sppm", test_sppm, 0},       {"outputs", test_outputs, 0},
-    {"numbers", test_numbers, 0},
+    {"numbers", test_numbers, 0}, {"sky", test_sky, 0},
     {"spd", test_spd, 1},
 };
 

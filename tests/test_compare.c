@@ -388,21 +388,52 @@ static void test_worst_block(struct check *t)
             image_set(a, x, y, vec3(v, v, v));
             image_set(b, x, y, vec3(1, 1, 1));
         }
-    struct block_error w = image_worst_block(a, b, 16);
+    struct block_error w = image_worst_block(a, b, NULL, 16);
     CHECK(t, w.x0 == 32 && w.y0 == 16 && fabs(w.relative_error - 0.1) < 1e-12);
     CHECK(t, w.n_blocks == 6 && w.n_within == 4);
-    CHECK(t, image_worst_block(b, b, 16).relative_error == 0);
-    CHECK(t, image_worst_block(b, b, 16).n_within == 6);
+    CHECK(t, image_worst_block(b, b, NULL, 16).relative_error == 0);
+    CHECK(t, image_worst_block(b, b, NULL, 16).n_within == 6);
     for (int y = 16; y < 20; y++)
         for (int x = 32; x < 40; x++)
             image_set(b, x, y, vec3(0, 0, 0));
-    CHECK(t, isinf(image_worst_block(a, b, 16).relative_error));
+    CHECK(t, isinf(image_worst_block(a, b, NULL, 16).relative_error));
+    image_free(a);
+    image_free(b);
+}
+
+/* truth: the standard error of a block mean of n pixels, each of variance v (all three
+ *   channels alike, so the luminance's is v too), is sqrt(n v) / n: with v = (0.02 * 16)^2
+ *   over a 16 x 16 block of ones it is 2%, over BLOCK_NOISE_FLOOR (1%), and the block is
+ *   left out; at (0.005 * 16)^2, 0.5%, it counts. A 10%-off noisy block so drops out of the
+ *   worst, and its neighbour 5% off becomes the worst.
+ * catches: the standard error of a pixel taken for the block's (16 times too large), the
+ *   variance summed without dividing by n^2, noisy blocks counted as within. */
+static void test_noisy_blocks(struct check *t)
+{
+    struct image *a = image_create(32, 16), *b = image_create(32, 16);
+    struct image *var = image_create(32, 16);
+    for (int y = 0; y < 16; y++)
+        for (int x = 0; x < 32; x++) {
+            double v = x < 16 ? 1.05 : 0.9, s = x < 16 ? 0.005 * 16 : 0.02 * 16;
+            image_set(a, x, y, vec3(v, v, v));
+            image_set(b, x, y, vec3(1, 1, 1));
+            image_set(var, x, y, vec3(s * s, s * s, s * s));
+        }
+    CHECK(t, !block_is_noisy(b, var, 0, 0, 16) && block_is_noisy(b, var, 16, 0, 16));
+    CHECK(t, !block_is_noisy(b, NULL, 16, 0, 16));
+    struct block_error w = image_worst_block(a, b, var, 16);
+    CHECK(t, w.n_noisy == 1 && w.n_blocks == 1 && w.n_within == 0);
+    CHECK(t, w.x0 == 0 && fabs(w.relative_error - 0.05) < 1e-12);
+    w = image_worst_block(a, b, NULL, 16);
+    CHECK(t, w.n_noisy == 0 && w.n_blocks == 2 && w.x0 == 16);
+    image_free(var);
     image_free(a);
     image_free(b);
 }
 
 void test_compare(struct check *t)
 {
+    RUN_TEST(t, test_noisy_blocks);
     RUN_TEST(t, test_critical_values);
     RUN_TEST(t, test_sidak_level);
     RUN_TEST(t, test_consistent_noise);

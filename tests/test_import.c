@@ -466,7 +466,7 @@ static void test_nff_light_power(struct check *t)
         CHECK_CLOSE(t, l->power.y, phi * colour[i][1], 1e-12 * phi);
         CHECK_CLOSE(t, l->power.z, phi * colour[i][2], 1e-12 * phi);
         struct light_sample ls;
-        if (i < 2 && light_sample(l, vec3(0, 0, 0), 0.5, 0.5, &ls))
+        if (i < 2 && light_sample(l, vec3(0, 0, 0), vec3(0, 1, 0), 0.5, 0.5, &ls))
             CHECK_CLOSE(t, ls.li.x, PI * intensity * colour[i][0], 1e-12);
     }
     scene_free(scene);

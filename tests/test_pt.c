@@ -3,10 +3,12 @@
  * tolerances from the standard errors the renderer itself reports (its variance image).
  */
 #include <math.h>
+#include <stdio.h>
 
 #include "../src/image/compare.h"
 #include "../src/modes/direct.h"
 #include "../src/modes/pt.h"
+#include "files.h"
 #include "tests.h"
 #include "truths.h"
 
@@ -182,8 +184,43 @@ static void test_error_against_reference(struct check *t)
     image_free(ref);
 }
 
+/* Whether `--mode mode` warned on stderr, with text, at its start on scene. */
+static int warns(const char *mode, const char *scene, const char *text)
+{
+    char args[1024], log[256], out[256], png[256];
+    temp_name(log, sizeof log, "pt", "warn.log");
+    temp_name(out, sizeof out, "pt", "warn.pfm");
+    temp_name(png, sizeof png, "pt", "warn.png");
+    snprintf(args, sizeof args, "--mode %s --quality preview --width 8 --height 8 "
+             "--no-progress %s -o %s", mode, scene, out);
+    int warned = photon_logged("", args, log) == 0 && file_contains(log, text);
+    remove(log);
+    remove(out);
+    remove(png);
+    return warned;
+}
+
+/* truth: a point light's light through a mirror onto the floor (scenes/mirror-caustic.scene)
+ *   has probability zero in pt; the specular box's light is an area light, whose caustics
+ *   pt finds (slowly), and the Cornell box has nothing specular.
+ *   --mode photons, the photon map seen directly, is never a converged image.
+ * tolerance: none: the warning is there or not.
+ * catches: an image silently missing its caustics, a warning for area lights' caustics, or
+ *   for point lights in a scene with nothing specular; a photon map shown as if it were a
+ *   converged image. */
+static void test_warns_of_what_it_cannot_find(struct check *t)
+{
+    static const char *caustics = "warning: pt cannot find the caustics of point lights";
+    CHECK(t, warns("pt", "scenes/mirror-caustic.scene", caustics));
+    CHECK(t, !warns("pt", "scenes/cornell-specular.scene", caustics));
+    CHECK(t, !warns("pt", "scenes/analytic/point-over-plane.scene", caustics));
+    CHECK(t, warns("photons", "scenes/cornell.scene", "warning: --mode photons shows"));
+    CHECK(t, !warns("1996", "scenes/cornell.scene", "warning:"));
+}
+
 void test_pt(struct check *t)
 {
+    RUN_TEST(t, test_warns_of_what_it_cannot_find);
     RUN_TEST(t, test_furnace);
     RUN_TEST(t, test_area_light_over_floor);
     RUN_TEST(t, test_independent_renders_agree);

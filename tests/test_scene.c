@@ -58,13 +58,14 @@ static void test_shipped_scenes_load(struct check *t)
         {"scenes/ppm-box.scene", 2, 104},      /* 10 walls, 2 lights, 2 lenses, 8 shroud
                                                   quads, 2 balls, 80 facets              */
         {"scenes/analytic/point-in-sphere.scene", 1, 1},
-        {"scenes/sphereflake.scene", 2, 3},   /* floor quad, flake, light sphere  */
-        {"scenes/sphereflake-6.scene", 2, 3},
-        {"scenes/landscape.scene", 1, 2209},  /* heightfield, lens of 2208 facets */
+        {"scenes/sphereflake.scene", 3, 3},   /* floor quad, flake, light sphere; the
+                                                 sky (a background) is a light too   */
+        {"scenes/sphereflake-6.scene", 3, 3},
+        {"scenes/landscape.scene", 2, 2209},  /* heightfield, lens of 2208 facets; sky */
         {"scenes/desk.scene", 2, 10912},      /* 29 quads, flake, 2 light spheres,
                                                  glass 8576 and liquid 2304 triangles */
-        {"scenes/obj-example.scene", 2, 0},   /* counted below                    */
-        {"scenes/every-primitive.nff", 2, 0},
+        {"scenes/obj-example.scene", 3, 0},   /* counted below; the sky            */
+        {"scenes/every-primitive.nff", 3, 0},
     };
     for (size_t i = 0; i < sizeof shipped / sizeof shipped[0]; i++) {
         struct error err;
@@ -133,6 +134,8 @@ static void test_bad_scenes_are_refused(struct check *t)
          "light point 0 2 0 6e29 1 1\n", 3, "total power"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nlight sphere 0 0 5 1e15 1 1 1\n", 2,
          "total power"}, /* 4 pi^2 r^2 Le = 3.9e31 W */
+        {"camera 0 0 0 0 0 1 0 1 0 40\nbackground 1e25 1 1\nmaterial m lambert 1 1 1\n"
+         "sphere 0 0 5 1000 m\n", 2, "the sky's power"}, /* 4 pi^2 (1000 sqrt 3)^2 1e25 */
         {"camera 0 0 0 0 0 1 0 1 0 40\nlight sphere 0 0 5 1e200 0 1 0\n", 2,
          "total power"}, /* the area overflows: 0 x inf in red */
         {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial e lambert 0 0 0 emit 1 1 1\n"
@@ -348,7 +351,7 @@ static double estimated_irradiance(const struct light *l, struct vec3 p, struct 
         struct light_sample s;
         double e = 0;
         double u1 = rng_uniform(&r), u2 = rng_uniform(&r);
-        if (light_sample(l, p, u1, u2, &s))
+        if (light_sample(l, p, n, u1, u2, &s))
             e = s.li.x * fmax(0.0, vec3_dot(n, s.wi)) / s.pdf;
         sum += e;
         sum2 += e * e;
@@ -371,7 +374,7 @@ static void test_light_sampling_irradiance(struct check *t)
     const int n = 40000;
     double se;
     struct light sphere = {LIGHT_SPHERE, {0, 10, 0}, {0, 0, 0}, {0, 0, 0}, 2.0, {0, 0, 0},
-                           {3, 3, 3}, 0};
+                           {3, 3, 3}, 0, 0};
     struct vec3 n_tilted = vec3(sin(0.3), cos(0.3), 0);
     double exact = PI * 3 * (2.0 / 10) * (2.0 / 10) * cos(0.3);
     double e = estimated_irradiance(&sphere, vec3_zero(), n_tilted, n, &se);
@@ -379,7 +382,7 @@ static void test_light_sampling_irradiance(struct check *t)
 
     struct vec3 corners[4] = {{-1, 3, -2}, {2, 3, -2}, {2, 3, 1}, {-1, 3, 1}};
     struct light quad = {LIGHT_QUAD, {-1, 3, -2}, {3, 0, 0}, {0, 0, 3}, 0, {0, 0, 0},
-                         {5, 5, 5}, 0};
+                         {5, 5, 5}, 0, 0};
     struct vec3 p = vec3(0.5, 0, 0.2), n_up = vec3(0.2, 1, 0.1);
     n_up = vec3_normalize(n_up);
     exact = polygon_irradiance(corners, 4, p, n_up, 5);
@@ -387,17 +390,92 @@ static void test_light_sampling_irradiance(struct check *t)
     CHECK(t, fabs(e - exact) <= 0.005 * exact && fabs(e - exact) <= 5 * se);
 
     struct light triangle = {LIGHT_TRIANGLE, {-1, 3, -2}, {3, 0, 0}, {0, 0, 3}, 0, {0, 0, 0},
-                             {5, 5, 5}, 0};
+                             {5, 5, 5}, 0, 0};
     struct vec3 tri[3] = {{-1, 3, -2}, {2, 3, -2}, {-1, 3, 1}};
     exact = polygon_irradiance(tri, 3, p, n_up, 5);
     e = estimated_irradiance(&triangle, p, n_up, n, &se);
     CHECK(t, fabs(e - exact) <= 0.005 * exact && fabs(e - exact) <= 5 * se);
 
     struct light point = {LIGHT_POINT, {0, 4, 3}, {0, 0, 0}, {0, 0, 0}, 0, {100, 100, 100},
-                          {0, 0, 0}, -1};
+                          {0, 0, 0}, -1, 0};
     exact = 100 * (4.0 / 5) / (4 * PI * 25);
     CHECK_CLOSE(t, estimated_irradiance(&point, vec3_zero(), vec3(0, 1, 0), 1, &se), exact,
                 1e-14 * exact);
+}
+
+/* truth: the sky of radiance Le seen from a point with normal n: every sample of the
+ *   cosine about n brings the irradiance pi Le exactly; the mean of n . wi under that
+ *   density is 2/3 (1/2 for a uniform hemisphere); light_pdf() gives the sample's own pdf
+ *   (what MIS reads); the power is Le pi R^2 4 pi.
+ * tolerance: rounding (1e-12) for the exact ones; 5 standard errors for the mean.
+ * catches: samples below the horizon, a uniform instead of a cosine density, a pdf that
+ *   MIS would read differently from the one sampled, the disc or the sphere of
+ *   directions missing from the power. */
+static void test_sky_sampling(struct check *t)
+{
+    struct light sky;
+    memset(&sky, 0, sizeof sky);
+    sky.kind = LIGHT_SKY;
+    sky.radius = 3.0;
+    sky.radiance = vec3(2, 2, 2);
+    sky.prim = -1;
+    struct vec3 n = vec3_normalize(vec3(0.3, 1, -0.2)), p = vec3(0.5, 0.1, 0.2);
+    double sum = 0, sum2 = 0;
+    const int n_samples = 20000;
+    int all_exact = 1;
+    for (int i = 0; i < n_samples; i++) {
+        struct rng r = rng_stream(5, STREAM_TEST, (uint64_t)i, 0);
+        double u1 = rng_uniform(&r), u2 = rng_uniform(&r);
+        struct light_sample s;
+        CHECK(t, light_sample(&sky, p, n, u1, u2, &s) && s.distance == INFINITY);
+        double cos_theta = vec3_dot(n, s.wi), e = s.li.x * cos_theta / s.pdf;
+        all_exact &= cos_theta > 0 && fabs(e - 2 * PI) <= 1e-12 * 2 * PI &&
+                     fabs(light_pdf(&sky, p, n, p, s.wi) - s.pdf) <= 1e-12 * s.pdf;
+        sum += cos_theta;
+        sum2 += cos_theta * cos_theta;
+    }
+    CHECK(t, all_exact);
+    double mean = sum / n_samples, se = sqrt((sum2 / n_samples - mean * mean) / n_samples);
+    CHECK(t, fabs(mean - 2.0 / 3.0) <= 5 * se);
+    CHECK_CLOSE(t, light_power(&sky).y, 2 * PI * 9 * 4 * PI, 1e-12 * light_power(&sky).y);
+}
+
+/* truth: a two-sided light emits from its back too: behind a two-sided quad the irradiance
+ *   is Lambert's polygon formula again; inside a two-sided sphere light of radiance Le
+ *   every direction meets its inner side, so E = pi Le whatever the normal; each side
+ *   emits pi Le A, the power twice the one-sided's. light_pdf() gives each sample's pdf.
+ * tolerance: as test_light_sampling_irradiance (0.5% and 5 standard errors; the inside by
+ *   ten times the samples, uniform by area there having a long tail); 1e-9 for the pdfs.
+ * catches: the back's cosine taken negative (no light), the inside sampled by the cone
+ *   of an outside point (none), a uniform-area pdf without d^2 / cos, the back's power
+ *   left out of photon emission's share. */
+static void test_two_sided_lights(struct check *t)
+{
+    const int n = 40000;
+    double se;
+    struct light quad = {LIGHT_QUAD, {-1, 3, -2}, {3, 0, 0}, {0, 0, 3}, 0, {0, 0, 0},
+                         {5, 5, 5}, 0, 1};
+    struct vec3 corners[4] = {{-1, 3, -2}, {2, 3, -2}, {2, 3, 1}, {-1, 3, 1}};
+    struct vec3 p = vec3(0.5, 6, 0.2), n_down = vec3_normalize(vec3(0.2, -1, 0.1));
+    double exact = polygon_irradiance(corners, 4, p, n_down, 5);
+    double e = estimated_irradiance(&quad, p, n_down, n, &se);
+    CHECK(t, exact > 0 && fabs(e - exact) <= 0.005 * exact && fabs(e - exact) <= 5 * se);
+    struct light one_sided = quad;
+    one_sided.two_sided = 0;
+    CHECK_CLOSE(t, light_power(&quad).x, 2 * light_power(&one_sided).x, 1e-12);
+    struct light sphere = {LIGHT_SPHERE, {0, 10, 0}, {0, 0, 0}, {0, 0, 0}, 2.0, {0, 0, 0},
+                           {3, 3, 3}, 0, 1};
+    struct vec3 inside = vec3(0.5, 10.7, -0.4), n_any = vec3_normalize(vec3(0.3, -0.2, 1));
+    e = estimated_irradiance(&sphere, inside, n_any, 10 * n, &se);
+    CHECK(t, fabs(e - 3 * PI) <= 0.005 * 3 * PI && fabs(e - 3 * PI) <= 5 * se);
+    struct light_sample s;
+    CHECK(t, light_sample(&sphere, inside, n_any, 0.3, 0.6, &s));
+    struct vec3 q = vec3_madd(inside, s.wi, s.distance);
+    CHECK_CLOSE(t, vec3_length(vec3_sub(q, sphere.position)), 2.0, 1e-9);
+    CHECK_CLOSE(t, light_pdf(&sphere, inside, n_any, q, s.wi), s.pdf, 1e-9 * s.pdf);
+    CHECK(t, light_sample(&quad, p, n_down, 0.3, 0.6, &s));
+    q = vec3_madd(p, s.wi, s.distance);
+    CHECK_CLOSE(t, light_pdf(&quad, p, n_down, q, s.wi), s.pdf, 1e-9 * s.pdf);
 }
 
 /* truth: a light cannot illuminate a point behind a one-sided emitter or inside a sphere
@@ -405,14 +483,14 @@ static void test_light_sampling_irradiance(struct check *t)
 static void test_light_sides(struct check *t)
 {
     struct light quad = {LIGHT_QUAD, {-1, 3, -2}, {3, 0, 0}, {0, 0, 3}, 0, {0, 0, 0},
-                         {5, 5, 5}, 0};
+                         {5, 5, 5}, 0, 0};
     struct light sphere = {LIGHT_SPHERE, {0, 10, 0}, {0, 0, 0}, {0, 0, 0}, 2.0, {0, 0, 0},
-                           {3, 3, 3}, 0};
+                           {3, 3, 3}, 0, 0};
     struct light_sample s;
     CHECK(t, vec3_cross(quad.e1, quad.e2).y < 0);       /* it faces down, towards y = 0 */
-    CHECK(t, light_sample(&quad, vec3(0, 0, 0), 0.5, 0.5, &s));
-    CHECK(t, !light_sample(&quad, vec3(0, 5, 0), 0.5, 0.5, &s));
-    CHECK(t, !light_sample(&sphere, vec3(0, 10.5, 0), 0.5, 0.5, &s));
+    CHECK(t, light_sample(&quad, vec3(0, 0, 0), vec3(0, 1, 0), 0.5, 0.5, &s));
+    CHECK(t, !light_sample(&quad, vec3(0, 5, 0), vec3(0, 1, 0), 0.5, 0.5, &s));
+    CHECK(t, !light_sample(&sphere, vec3(0, 10.5, 0), vec3(0, 1, 0), 0.5, 0.5, &s));
 }
 
 /* truth: Fresnel's equations at normal incidence, ((eta - 1) / (eta + 1))^2; at grazing
@@ -496,5 +574,7 @@ void test_scene(struct check *t)
     RUN_TEST(t, test_camera_rays);
     RUN_TEST(t, test_light_sampling_irradiance);
     RUN_TEST(t, test_light_sides);
+    RUN_TEST(t, test_sky_sampling);
+    RUN_TEST(t, test_two_sided_lights);
     RUN_TEST(t, test_fresnel_and_snell);
 }

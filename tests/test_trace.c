@@ -235,28 +235,37 @@ static struct tally flux_into(const struct light *l, const struct emission_targe
 /* truth: directed and undirected emission estimate the same flux into the targets; from
  *   a point light into one sphere of radius r at distance d every directed photon has
  *   weight Omega / (4 pi) = (1 - sqrt(1 - r^2/d^2)) / 2 exactly; a target around the
- *   light makes directed emission the whole emission (flux 1).
+ *   light makes directed emission the whole emission (flux 1); the sky's photons into
+ *   one sphere of radius r inside the sky's of radius R each carry r^2 / R^2 (its share
+ *   of the sky's power Le pi R^2 4 pi), and start outside the sky's sphere.
  * tolerance: 3 combined standard errors of the two estimates (20000 photons each); the
  *   single-sphere weight to 1e-12.
  * catches: the union's density taken as the sum of cone densities without the count of
  *   overlapping cones (overlap counted twice), cones picked uniformly instead of by
  *   solid angle, the area light's cosine missing from the weight, directions behind an
- *   area light given power, a cone half-angle from tan instead of sin. */
+ *   area light given power, a cone half-angle from tan instead of sin; the sky's targets
+ *   picked uniformly instead of by r^2, overlapping discs counted twice. */
 static void test_directed_emission_flux(struct check *t)
 {
     struct bounding_sphere spheres[3] = {{{0.2, 3, 0}, 1}, {{0.9, 3.2, 0.3}, 0.8},
                                          {{0, 0, 0}, 5}};
+    struct bounding_sphere sky_sphere = {{0, 2, 0}, 6};
     struct emission_targets two = {spheres, 2}, around = {spheres + 2, 1};
     struct light l;
     memset(&l, 0, sizeof l);
     l.kind = LIGHT_POINT;
     l.power = vec3(1, 1, 1);
-    for (int kind = 0; kind < 2; kind++) {
+    for (int kind = 0; kind < 3; kind++) {
         if (kind == 1) {
             l.kind = LIGHT_QUAD; /* a 1 x 1 square at y = 0 facing up: e1 x e2 = +y */
             l.position = vec3(-0.5, 0, 0.5);
             l.e1 = vec3(1, 0, 0);
             l.e2 = vec3(0, 0, -1);
+        } else if (kind == 2) { /* the sky around both targets; its own sphere is all of it */
+            l.kind = LIGHT_SKY;
+            l.position = sky_sphere.centre;
+            l.radius = sky_sphere.radius;
+            around.spheres = &sky_sphere;
         }
         struct tally a = flux_into(&l, &two, 0, 20000, 10 + kind);
         struct tally b = flux_into(&l, &two, 1, 20000, 20 + kind);
@@ -275,6 +284,14 @@ static void test_directed_emission_flux(struct check *t)
     CHECK(t, light_emit_towards(&l, &one, u, &e) == 1);
     CHECK_CLOSE(t, e.weight, (1 - sqrt(1 - 1 / d2)) / 2, 1e-12);
     CHECK(t, ray_meets_sphere(e.origin, e.dir, &spheres[0]));
+    /* the sky sends r^2 / R^2 of its power into a sphere of radius r inside its own */
+    l.kind = LIGHT_SKY;
+    l.position = sky_sphere.centre;
+    l.radius = sky_sphere.radius;
+    CHECK(t, light_emit_towards(&l, &one, u, &e) == 1);
+    CHECK_CLOSE(t, e.weight, 1.0 / 36.0, 1e-12);
+    CHECK(t, ray_meets_sphere(e.origin, e.dir, &spheres[0]));
+    CHECK(t, vec3_length(vec3_sub(e.origin, sky_sphere.centre)) >= sky_sphere.radius);
 }
 
 /* A glass ball of radius 0.5 at (0, 1, 0) over a large diffuse floor, lit by a point

@@ -12,6 +12,7 @@ void test_png(struct check *t);    /* test_png.c: PNG files, outside readers    
 void test_compare(struct check *t); /* test_compare.c: per-pixel statistical test */
 void test_plot(struct check *t);   /* test_plot.c: CSV reading, SVG plots         */
 void test_geom(struct check *t);   /* test_geom.c: primitives, BVH, robustness    */
+void test_bvh(struct check *t);    /* test_bvh.c: the float box test, wide nodes, mesh */
 void test_scene(struct check *t);  /* test_scene.c: parser, camera, lights        */
 void test_brdf(struct check *t);   /* test_brdf.c: the material models            */
 void test_shapes(struct check *t); /* test_shapes.c: sphere flake, heightfield    */
@@ -42,5 +43,6 @@ void test_switches(struct check *t); /* test_switches.c: each paper switch of 19
 void test_export_blender(struct check *t); /* test_export_blender.c: the Blender script */
 void test_outputs(struct check *t); /* test_outputs.c: outputs and inputs of a command */
 void test_numbers(struct check *t); /* test_numbers.c: numbers, ranges, messages       */
+void test_sky(struct check *t);     /* test_sky.c: the background as a light, every mode */
 
 #endif

@@ -171,6 +171,17 @@ static const struct option_spec specs[] = {
      "(the default)", FOR_1996},
     {"--no-glossy-corner", OPT_FLAG, FIELD(glossy_corner), 0, 0, "",
      "evaluate them accurately, with a final gather (the paper's)", FOR_1996},
+    {"--glossy-photons", OPT_FLAG, FIELD(glossy_photons), 0, 0, "",
+     "surfaces seen through a glossy lobe read the photon map, as a gather ray's end, with no "
+     "final gather (the default)", FOR_1994},
+    {"--no-glossy-photons", OPT_FLAG, FIELD(glossy_photons), 0, 0, "",
+     "evaluate them in full, with a final gather (the paper's)", FOR_1994},
+    {"--glossy-gather", OPT_FLAG, FIELD(glossy_gather), 0, 0, "",
+     "a diffuse-like part that is not Lambertian (Schlick's model, r >= 1/2) reflects what "
+     "each camera sample gathers through its BRDF (the default)", FOR_1994},
+    {"--no-glossy-gather", OPT_FLAG, FIELD(glossy_gather), 0, 0, "",
+     "albedo / pi times the cache's irradiance, as a Lambertian surface (the paper's)",
+     FOR_1994},
     {"--bounded-reach", OPT_FLAG, FIELD(bounded_reach), 0, 0, "",
      "a cache record's R lies between 1.5 pixel footprints / A, as the camera sees its "
      "point, and a fifth of the scene's diagonal (the default)", FOR_1994 | FOR_1996},

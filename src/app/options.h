@@ -76,6 +76,8 @@ struct options {
     int both_lobes;               /* 1994, 1996: mirrors and glass trace every lobe */
     int glossy_corner;            /* 1996: the corner way behind glossy lobes      */
     int bounded_reach;            /* 1994, 1996: cache records' R from the camera  */
+    int glossy_gather;            /* 1994: non-Lambertian diffuse parts gather      */
+    int glossy_photons;           /* 1994: seen through glossy lobes: photon map    */
     int gradient_limit;           /* 1994, 1996: cache records' R <= E / |grad E|  */
     double adaptive;              /* camera modes: adaptive sampling's relative error;
                                      0 = off                                       */

@@ -88,7 +88,8 @@ static const struct {
 } as_written[] = {
     {MODE_PHOTONS, "--rim-photon"},
     {MODE_JENSEN1994, "--rim-photon --caustic-radius-fraction 1 --no-both-lobes "
-                       "--no-bounded-reach --no-gradient-limit"},
+                       "--no-glossy-gather --no-glossy-photons --no-bounded-reach "
+                       "--no-gradient-limit"},
     {MODE_JENSEN1996, "--rim-photon --shadow-photons --precomputed-irradiance 0 "
                        "--no-disc-coverage --caustic-radius-fraction 1 --no-both-lobes "
                        "--no-glossy-corner --no-bounded-reach --no-gradient-limit"},

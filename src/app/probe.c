@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "../modes/jensen1994.h"
+#include "../modes/jensen1994_maps.h"
 #include "../modes/photons.h"
 #include "../photon/estimate.h"
 #include "../photon/illumination_map.h"
@@ -134,7 +134,7 @@ static double direct_irradiance(const struct scene *scene, struct vec3 p, struct
         struct light_sample ls;
         if (l->kind != LIGHT_POINT)
             return NAN;
-        double cos_theta = light_sample(l, p, 0.5, 0.5, &ls) ? vec3_dot(n, ls.wi) : 0;
+        double cos_theta = light_sample(l, p, n, 0.5, 0.5, &ls) ? vec3_dot(n, ls.wi) : 0;
         if (cos_theta > 0 && !scene_occluded(scene, offset_origin(p, n), ls.wi, ls.distance))
             e += vec3_luminance(ls.li) * cos_theta / ls.pdf; /* pdf 1: a delta */
     }

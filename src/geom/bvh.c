@@ -1,545 +1,273 @@
 /*
- * geom/bvh.c -- binned SAH build and stack traversal of the BVH (see bvh.h).
+ * geom/bvh.c -- stack traversal of the 8-wide BVH (see bvh.h; the build is bvh_build.c).
  *
- * Build (Wald, "On fast construction of SAH-based bounding volume hierarchies", 2007):
- * for a range of items, the centres of their boxes are dropped into BVH_BINS equal bins
- * along each axis; between each pair of neighbouring bins the surface area heuristic
- *   cost = C_trav + C_isect (A_left N_left + A_right N_right) / A_node
- * is evaluated, the cheapest plane wins, and the range is partitioned in place. Ranges of
- * at most BVH_MAX_LEAF items become a leaf when that is no dearer (C_isect N). When every
- * centre coincides (identical or degenerate boxes) or the tree is BVH_SAH_DEPTH deep, the
- * range is split at its middle index instead, which always terminates and bounds the depth.
+ * At a node the ray is tested against all eight slot boxes at once (enter_slots(): one
+ * loop over the slots, which compilers turn into vector instructions); the slots it enters
+ * are put on the stack farthest first with the distance at which the ray enters them, and
+ * the nearest is taken next. A popped entry that starts beyond the nearest hit found
+ * meanwhile is skipped. The any-hit walk does the same without sorting.
  *
- * Traversal: at an interior node both children's boxes are tested (they share a cache
- * line or two); the nearer child by entry distance is visited next and the farther waits on
- * a stack with its entry distance, to be skipped when popped if a closer hit has been found
- * meanwhile. Box test (Williams et al., "An efficient and robust ray-box intersection
- * algorithm", 2005, with the error bound of pbrt-v4's Bounds3::IntersectP): each slab gives
- * an entry and an exit distance from 1/d; a zero component gives 1/d = +-inf, and where the
- * origin lies exactly on the slab's plane (0 * inf = NaN) the comparisons are false for NaN,
- * so that slab constrains nothing, which is right for a ray running inside it. The exit
- * distance is enlarged by BOX_EXIT_GROWTH to cover the rounding of the distances.
+ * The box test is the slab test in float (Williams et al., "An efficient and robust
+ * ray-box intersection algorithm", 2005), made conservative so that no box the ray enters
+ * in exact arithmetic is ever rejected:
+ *   - the boxes are rounded outward when they are stored (bvh_build.c);
+ *   - per axis, the origin is rounded to float upwards for the near plane and downwards for
+ *     the far one when d > 0 (the other way round when d < 0), and 1/d towards zero for the
+ *     near plane, away from zero for the far one, each by a relative margin of 3u or more
+ *     (float_bracket(): 2^-22 less a float's rounding), which also covers the rounding of
+ *     the subtraction and of the product that follow (u = 2^-24 relative each): the
+ *     computed entry t0 and exit t1 of a slot satisfy t0 <= T0 + 2^-150 and
+ *     t1 >= T1 - 2^-150 for the true T0 and T1, 2^-150 being what an underflowing product
+ *     may lose;
+ *   - so a slot is entered when t0 <= t1 + 2^-126 (REACH_FLOOR), computed, which holds
+ *     whenever T0 <= T1, and a waiting slot is skipped when its t0 exceeds tmax + 2^-126;
+ *   - a zero component of d gives 1/d = +-inf; where the origin lies on a slab's plane
+ *     (0 * inf = NaN) the comparisons are false for NaN, so that slab constrains nothing,
+ *     which is right for a ray running inside it;
+ *   - tmax is rounded up to float.
  */
 #include "bvh.h"
 
 #include <assert.h>
 #include <float.h>
-#include <stdlib.h>
 
-#include "../base/alloc.h"
+/* The slack of the exit distances (see the top): two underflowing products' loss and more. */
+#define REACH_FLOOR 0x1p-126f
 
-#define BVH_BINS 16         /* centroid bins per axis: more cost more, gain little (Wald 2007) */
-#define BVH_SAH_DEPTH 32    /* below this depth, ranges split at the middle index             */
-/* C_trav and C_isect, relative costs of a node's box test and a primitive's test. Halving or
- * doubling their ratio, or 32 bins, moved no terrain1m figure beyond the noise (bench_rays). */
-#define SAH_COST_TRAVERSE 1.0
-#define SAH_COST_INTERSECT 1.0
-/* 1 + 2 gamma(3), gamma(n) = n eps / (1 - n eps) (pbrt-v4, Sec. 6.8): the entry and exit
- * distances each carry at most gamma(3) of relative error. */
-#define BOX_EXIT_GROWTH (1.0 + 2.0 * (3.0 * DBL_EPSILON) / (1.0 - 3.0 * DBL_EPSILON))
+/* Each visited node pushes at most BVH_WIDTH entries and pops one. */
+#define STACK_SIZE (BVH_MAX_DEPTH * (BVH_WIDTH - 1) + 1)
 
-/* ---- node boxes in float, rounded outward ---- */
-
-static float round_down(double x)
-{
-    if (x > FLT_MAX)
-        return FLT_MAX;
-    if (x < -FLT_MAX)
-        return -INFINITY;
-    float f = (float)x;
-    return (double)f > x ? nextafterf(f, -INFINITY) : f;
-}
-
-static float round_up(double x)
+/* A float no smaller than x (x not NaN): x moved up by more than the rounding to float
+ * can take back, |x| 2^-22 (four times a float's relative spacing) plus 2^-149 (float's
+ * smallest spacing, for x near 0). Coarser than the next float up by a float ulp or two,
+ * which only makes a test a little more generous, and without libm's calls. */
+static float float_at_least(double x)
 {
     if (x > FLT_MAX)
         return INFINITY;
     if (x < -FLT_MAX)
         return -FLT_MAX;
-    float f = (float)x;
-    return (double)f < x ? nextafterf(f, INFINITY) : f;
+    double y = x + fabs(x) * 0x1p-22 + 0x1p-149;
+    return y >= FLT_MAX ? FLT_MAX : (float)y;   /* x <= FLT_MAX */
 }
 
-static void set_node_box(struct bvh_node *node, struct aabb box)
+static float float_at_most(double x)
 {
-    node->box[0] = round_down(box.lo.x);
-    node->box[1] = round_down(box.lo.y);
-    node->box[2] = round_down(box.lo.z);
-    node->box[3] = round_up(box.hi.x);
-    node->box[4] = round_up(box.hi.y);
-    node->box[5] = round_up(box.hi.z);
+    return -float_at_least(-x);
 }
 
-/* ---- boxes in double ---- */
-
-static struct aabb box_empty(void)
-{
-    struct aabb box;
-    box.lo = vec3(INFINITY, INFINITY, INFINITY);
-    box.hi = vec3(-INFINITY, -INFINITY, -INFINITY);
-    return box;
-}
-
-/* Minimum and maximum of numbers (never NaN here): plain comparisons, which compile to
- * single instructions where libm's fmin and fmax, bound by NaN rules, are calls. */
-static double min_of(double a, double b)
-{
-    return a < b ? a : b;
-}
-
-static double max_of(double a, double b)
-{
-    return a > b ? a : b;
-}
-
-static struct aabb box_union(struct aabb a, struct aabb b)
-{
-    a.lo = vec3(min_of(a.lo.x, b.lo.x), min_of(a.lo.y, b.lo.y), min_of(a.lo.z, b.lo.z));
-    a.hi = vec3(max_of(a.hi.x, b.hi.x), max_of(a.hi.y, b.hi.y), max_of(a.hi.z, b.hi.z));
-    return a;
-}
-
-static struct aabb box_add_point(struct aabb a, struct vec3 p)
-{
-    a.lo = vec3(min_of(a.lo.x, p.x), min_of(a.lo.y, p.y), min_of(a.lo.z, p.z));
-    a.hi = vec3(max_of(a.hi.x, p.x), max_of(a.hi.y, p.y), max_of(a.hi.z, p.z));
-    return a;
-}
-
-/* Half the surface area, which is all the SAH's ratios need; 0 for an empty box. */
-static double box_half_area(struct aabb box)
-{
-    if (!(box.lo.x <= box.hi.x))
-        return 0.0;
-    struct vec3 e = vec3_sub(box.hi, box.lo);
-    return e.x * e.y + e.y * e.z + e.z * e.x;
-}
-
-/* ---- the binned SAH builder ---- */
-
-struct builder {
-    const struct aabb *bounds;  /* borrowed from bvh_build()'s caller: the items' boxes   */
-    struct vec3 *centroids;     /* owned by bvh_build(): the boxes' centres               */
-    uint32_t *items;            /* the bvh's item array, partitioned in place              */
-    struct bvh_node *nodes;     /* the bvh's node array, with room for 2n - 1 nodes       */
-    size_t n_nodes;
+/* The ray as the box test uses it, per axis a, each value repeated for the BVH_WIDTH
+ * slots (so the slot loop reads it as it reads the boxes). */
+struct box_ray {
+    float origin_near[3][BVH_WIDTH]; /* the origin rounded for near planes, and far ones */
+    float origin_far[3][BVH_WIDTH];
+    float inv_near[3][BVH_WIDTH];    /* 1/d rounded towards zero, and away from zero     */
+    float inv_far[3][BVH_WIDTH];
+    int near[3], far[3];             /* BVH_WIDTH * the bound of the plane the ray meets
+                                        first / last along the axis                    */
 };
 
-/* The items items[first .. first + count), the union of their boxes and the box of their
- * centres; a split hands both boxes to the two halves, so each level reads the items
- * twice (binning, partitioning) and no more. */
-struct range {
-    size_t first, count;
-    struct aabb box, centres;
-};
-
-struct bin {
-    struct aabb box;  /* union of the boxes whose centres fall in the bin */
-    size_t count;
-};
-
-/* The binning of a range: scale[axis] = BVH_BINS / centre extent, 0 for an axis without
- * spread (or with one too small to bin). */
-struct binning {
-    double cmin[3], scale[3];
-    struct bin bins[3][BVH_BINS];
-};
-
-/* The plane chosen for a range: after bin `bin` along `axis`; axis -1 when none exists. */
-struct split {
-    int axis;
-    int bin;
-    double cost;      /* A_left N_left + A_right N_right */
-};
-
-static int bin_of(double c, double cmin, double scale)
+/* Floats *below <= x <= *above, as float_at_most() and float_at_least() give them, with
+ * one margin for both and without their range tests where x is far inside float's range. */
+static inline void float_bracket(double x, float *below, float *above)
 {
-    int i = (int)((c - cmin) * scale);   /* c >= cmin, so i >= 0 */
-    return i < BVH_BINS ? i : BVH_BINS - 1;
-}
-
-/* Drops the range's centres into the bins of every axis with spread, in one pass. */
-static void fill_bins(const struct builder *b, const struct range *r, struct binning *bn)
-{
-    double lo[3] = {r->centres.lo.x, r->centres.lo.y, r->centres.lo.z};
-    double hi[3] = {r->centres.hi.x, r->centres.hi.y, r->centres.hi.z};
-    for (int axis = 0; axis < 3; axis++) {
-        double extent = hi[axis] - lo[axis];
-        bn->cmin[axis] = lo[axis];
-        bn->scale[axis] = extent > 0 && BVH_BINS / extent < INFINITY ? BVH_BINS / extent : 0.0;
-        for (int i = 0; i < BVH_BINS; i++) {
-            bn->bins[axis][i].box = box_empty();
-            bn->bins[axis][i].count = 0;
-        }
-    }
-    for (size_t k = r->first; k < r->first + r->count; k++) {
-        uint32_t item = b->items[k];
-        struct vec3 cv = b->centroids[item];
-        double c[3] = {cv.x, cv.y, cv.z};
-        for (int axis = 0; axis < 3; axis++) {
-            if (bn->scale[axis] == 0)
-                continue;
-            struct bin *bin = &bn->bins[axis][bin_of(c[axis], bn->cmin[axis], bn->scale[axis])];
-            bin->box = box_union(bin->box, b->bounds[item]);
-            bin->count++;
-        }
-    }
-}
-
-/* Sweeps one axis's bins from both ends and keeps the cheapest plane in *best. */
-static void sweep_axis(const struct bin bins[BVH_BINS], size_t count, int axis,
-                       struct split *best)
-{
-    double right_area[BVH_BINS];   /* right_area[i]: A N of bins i .. BVH_BINS-1 */
-    struct aabb right = box_empty();
-    size_t n_right = 0;
-    for (int i = BVH_BINS - 1; i > 0; i--) {
-        right = box_union(right, bins[i].box);
-        n_right += bins[i].count;
-        right_area[i] = box_half_area(right) * (double)n_right;
-    }
-    struct aabb left = box_empty();
-    size_t n_left = 0;
-    for (int i = 0; i < BVH_BINS - 1; i++) {
-        left = box_union(left, bins[i].box);
-        n_left += bins[i].count;
-        double cost = box_half_area(left) * (double)n_left + right_area[i + 1];
-        if (n_left > 0 && n_left < count && cost < best->cost) {
-            best->cost = cost;
-            best->axis = axis;
-            best->bin = i;
-        }
-    }
-}
-
-/* Moves the range's items left of the plane to its front and makes the two halves. */
-static void partition(struct builder *b, const struct range *r, const struct binning *bn,
-                      struct split s, struct range *left, struct range *right)
-{
-    size_t i = r->first, j = r->first + r->count;
-    left->box = left->centres = right->box = right->centres = box_empty();
-    while (i < j) {
-        uint32_t item = b->items[i];
-        struct vec3 cv = b->centroids[item];
-        double c[3] = {cv.x, cv.y, cv.z};
-        struct range *side = right;
-        if (bin_of(c[s.axis], bn->cmin[s.axis], bn->scale[s.axis]) <= s.bin) {
-            side = left;
-            i++;
-        } else {
-            b->items[i] = b->items[--j];
-            b->items[j] = item;
-        }
-        side->box = box_union(side->box, b->bounds[item]);
-        side->centres = box_add_point(side->centres, cv);
-    }
-    left->first = r->first;
-    left->count = i - r->first;
-    right->first = i;
-    right->count = r->first + r->count - i;
-}
-
-/* The boxes of items[first .. first + count), for a range made without binning. */
-static struct range make_range(const struct builder *b, size_t first, size_t count)
-{
-    struct range r;
-    r.first = first;
-    r.count = count;
-    r.box = r.centres = box_empty();
-    for (size_t k = first; k < first + count; k++) {
-        r.box = box_union(r.box, b->bounds[b->items[k]]);
-        r.centres = box_add_point(r.centres, b->centroids[b->items[k]]);
-    }
-    return r;
-}
-
-/* Whether the range splits, and if so into *left and *right. */
-static int split_range(struct builder *b, const struct range *r, int depth, struct range *left,
-                       struct range *right)
-{
-    if (r->count == 1)
-        return 0;
-    if (depth < BVH_SAH_DEPTH) {
-        struct binning bn;
-        struct split s = {-1, 0, INFINITY};
-        fill_bins(b, r, &bn);
-        for (int axis = 0; axis < 3; axis++)
-            if (bn.scale[axis] > 0)
-                sweep_axis(bn.bins[axis], r->count, axis, &s);
-        double area = box_half_area(r->box);
-        /* SAH costs multiplied by A_node, so a flat node (area 0) needs no division. */
-        double leaf_cost = SAH_COST_INTERSECT * (double)r->count * area;
-        double split_cost = SAH_COST_TRAVERSE * area + SAH_COST_INTERSECT * s.cost;
-        if (s.axis >= 0 && (r->count > BVH_MAX_LEAF || split_cost < leaf_cost)) {
-            partition(b, r, &bn, s, left, right);
-            return 1;
-        }
-    }
-    if (r->count <= BVH_MAX_LEAF)
-        return 0;
-    /* Coincident centres, or the depth limit: split at the middle index. */
-    *left = make_range(b, r->first, r->count / 2);
-    *right = make_range(b, r->first + r->count / 2, r->count - r->count / 2);
-    return 1;
-}
-
-/* Makes nodes[index] the node over the range; its children, if any, go to the next free
- * pair of slots. */
-static void build_node(struct builder *b, size_t index, const struct range *r, int depth)
-{
-    struct bvh_node *node = &b->nodes[index];   /* nodes[] never moves: sized up front */
-    set_node_box(node, r->box);
-    struct range left, right;
-    if (!split_range(b, r, depth, &left, &right)) {
-        node->offset = (uint32_t)r->first;
-        node->count = (uint32_t)r->count;
+    double margin = fabs(x) * 0x1p-22 + 0x1p-149;
+    if (fabs(x) <= 0x1p126) {   /* x -+ margin round to finite floats */
+        *below = (float)(x - margin);
+        *above = (float)(x + margin);
         return;
     }
-    size_t children = b->n_nodes;
-    b->n_nodes += 2;
-    node->offset = (uint32_t)children;
-    node->count = 0;
-    build_node(b, children, &left, depth + 1);
-    build_node(b, children + 1, &right, depth + 1);
+    *below = float_at_most(x);
+    *above = float_at_least(x);
 }
 
-struct bvh *bvh_build(const struct aabb *bounds, size_t n)
+/* The double 1/d is within half an ulp of double of the exact 1/d, far inside the margin
+ * of float_bracket(), so it brackets the exact value too. For d = +-0, 1/d = +-inf, and the
+ * near factor becomes +-FLT_MAX, which keeps every sign the slab test reads. Both
+ * roundings are made and one kept, so the ray's signs cost no branches. */
+static void box_ray(struct ray ray, struct box_ray *r)
 {
-    assert(n <= ((size_t)1 << 31));
-    struct bvh *bvh = xmalloc(1, sizeof *bvh, "BVH");
-    struct builder b;
-    b.bounds = bounds;
-    b.centroids = xmalloc(n, sizeof *b.centroids, "BVH centroids");
-    b.items = xmalloc(n, sizeof *b.items, "BVH items");
-    b.nodes = xmalloc(n > 0 ? 2 * n - 1 : 0, sizeof *b.nodes, "BVH nodes");
-    b.n_nodes = n > 0 ? 1 : 0;   /* the root */
-    for (size_t i = 0; i < n; i++) {
-        b.centroids[i] = vec3_add(vec3_scale(bounds[i].lo, 0.5), vec3_scale(bounds[i].hi, 0.5));
-        b.items[i] = (uint32_t)i;
-    }
-    if (n > 0) {
-        struct range all = make_range(&b, 0, n);
-        build_node(&b, 0, &all, 0);
-    }
-    xfree(b.centroids);
-    bvh->nodes = xrealloc(b.nodes, b.n_nodes, sizeof *b.nodes, "BVH nodes");
-    bvh->n_nodes = b.n_nodes;
-    bvh->items = b.items;
-    bvh->n_items = n;
-    return bvh;
-}
-
-void bvh_free(struct bvh *bvh)
-{
-    if (bvh == NULL)
-        return;
-    xfree(bvh->nodes);
-    xfree(bvh->items);
-    xfree(bvh);
-}
-
-size_t bvh_bytes(const struct bvh *bvh)
-{
-    return sizeof *bvh + bvh->n_nodes * sizeof *bvh->nodes + bvh->n_items * sizeof *bvh->items;
-}
-
-/* ---- the structural checker ---- */
-
-struct checker {
-    const struct bvh *bvh;
-    const struct aabb *bounds;
-    size_t n;
-    unsigned char *seen;    /* seen[item]: the item was found in a leaf     */
-    size_t next_item;       /* leaves must cover items[] in order, no gaps  */
-    size_t n_nodes_seen;
-};
-
-static int box_inside(const struct bvh_node *inner, const struct bvh_node *outer)
-{
-    for (int a = 0; a < 3; a++)
-        if (!(inner->box[a] >= outer->box[a] && inner->box[3 + a] <= outer->box[3 + a]))
-            return 0;
-    return 1;
-}
-
-static int item_inside(struct aabb box, const struct bvh_node *node)
-{
-    const float *b = node->box;
-    return box.lo.x >= b[0] && box.lo.y >= b[1] && box.lo.z >= b[2]
-           && box.hi.x <= b[3] && box.hi.y <= b[4] && box.hi.z <= b[5];
-}
-
-static int check_leaf(struct checker *c, const struct bvh_node *node)
-{
-    if (node->count > BVH_MAX_LEAF || node->offset != c->next_item
-        || node->count > c->n - c->next_item)
-        return 0;
-    for (size_t k = node->offset; k < (size_t)node->offset + node->count; k++) {
-        uint32_t item = c->bvh->items[k];
-        if (item >= c->n || c->seen[item] || !item_inside(c->bounds[item], node))
-            return 0;
-        c->seen[item] = 1;
-    }
-    c->next_item += node->count;
-    return 1;
-}
-
-static int check_node(struct checker *c, size_t index, int depth)
-{
-    if (index >= c->bvh->n_nodes || depth >= BVH_MAX_DEPTH)
-        return 0;
-    const struct bvh_node *node = &c->bvh->nodes[index];
-    c->n_nodes_seen++;
-    if (node->count > 0)
-        return check_leaf(c, node);
-    size_t first = node->offset;   /* children: first and first + 1 */
-    if (first <= index || first + 1 >= c->bvh->n_nodes)
-        return 0;
-    if (!box_inside(&c->bvh->nodes[first], node) || !box_inside(&c->bvh->nodes[first + 1], node))
-        return 0;
-    return check_node(c, first, depth + 1) && check_node(c, first + 1, depth + 1);
-}
-
-int bvh_check(const struct bvh *bvh, const struct aabb *bounds, size_t n)
-{
-    if (bvh->n_items != n)
-        return 0;
-    if (n == 0)
-        return bvh->n_nodes == 0;
-    struct checker c;
-    c.bvh = bvh;
-    c.bounds = bounds;
-    c.n = n;
-    c.seen = xcalloc(n, 1, "BVH check");
-    c.next_item = 0;
-    c.n_nodes_seen = 0;
-    int ok = check_node(&c, 0, 0) && c.next_item == n && c.n_nodes_seen == bvh->n_nodes;
-    xfree(c.seen);
-    return ok;
-}
-
-/* ---- traversal ---- */
-
-/* The ray as the slab test uses it. */
-struct slab_ray {
-    double origin[3];
-    double inv_dir[3];  /* 1 / d, +-inf for a zero component (IEEE division)            */
-    int near[3];        /* near[a]: index in node.box of the side the ray meets first
-                           along axis a (a for lo, 3 + a for hi when d[a] < 0)           */
-    int far[3];         /* the other side's index                                        */
-};
-
-static struct slab_ray slab_ray(struct ray ray)
-{
-    struct slab_ray s;
+    double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
     double d[3] = {ray.dir.x, ray.dir.y, ray.dir.z};
-    s.origin[0] = ray.origin.x;
-    s.origin[1] = ray.origin.y;
-    s.origin[2] = ray.origin.z;
     for (int a = 0; a < 3; a++) {
-        s.inv_dir[a] = 1.0 / d[a];   /* d = +-0 gives +-inf, which the slab test expects */
-        s.near[a] = s.inv_dir[a] < 0 ? 3 + a : a;
-        s.far[a] = s.inv_dir[a] < 0 ? a : 3 + a;
+        double inv = 1.0 / d[a];   /* d = +-0 gives +-inf */
+        int positive = inv > 0;
+        float o_down, o_up, inv_down, inv_up;
+        float_bracket(o[a], &o_down, &o_up);
+        float_bracket(inv, &inv_down, &inv_up);
+        float on = positive ? o_up : o_down, of = positive ? o_down : o_up;
+        float in = positive ? inv_down : inv_up, inf_ = positive ? inv_up : inv_down;
+        for (int i = 0; i < BVH_WIDTH; i++) {
+            r->origin_near[a][i] = on;
+            r->origin_far[a][i] = of;
+            r->inv_near[a][i] = in;
+            r->inv_far[a][i] = inf_;
+        }
+        r->near[a] = BVH_WIDTH * (positive ? a : 3 + a);
+        r->far[a] = BVH_WIDTH * (positive ? 3 + a : a);
     }
-    return s;
 }
 
-/* Whether the ray meets the node's box at some t in [0, tmax]; *t_enter is where. Each
- * "a > b ? a : b" keeps b when a is NaN (the ray runs in that slab's plane), so such a slab
- * constrains nothing; tmax may grow by BOX_EXIT_GROWTH too, which only visits more. */
-static inline int enters_box(const struct bvh_node *node, const struct slab_ray *r, double tmax,
-                             double *t_enter)
+/* tmax grown by the exit distances' slack: the largest computed entry distance that may
+ * still belong to a box entered before tmax. */
+static float reach(float tmax)
 {
-    const float *box = node->box;
-    double near_x = (box[r->near[0]] - r->origin[0]) * r->inv_dir[0];
-    double near_y = (box[r->near[1]] - r->origin[1]) * r->inv_dir[1];
-    double near_z = (box[r->near[2]] - r->origin[2]) * r->inv_dir[2];
-    double far_x = (box[r->far[0]] - r->origin[0]) * r->inv_dir[0];
-    double far_y = (box[r->far[1]] - r->origin[1]) * r->inv_dir[1];
-    double far_z = (box[r->far[2]] - r->origin[2]) * r->inv_dir[2];
-    double t0 = near_x > 0.0 ? near_x : 0.0;
-    t0 = near_y > t0 ? near_y : t0;
-    t0 = near_z > t0 ? near_z : t0;
-    double t1 = far_x < tmax ? far_x : tmax;
-    t1 = far_y < t1 ? far_y : t1;
-    t1 = far_z < t1 ? far_z : t1;
-    *t_enter = t0;
-    return t0 <= t1 * BOX_EXIT_GROWTH;
+    return tmax + REACH_FLOOR;
 }
 
-/* A node waiting on the traversal stack, with the distance at which the ray enters it. */
+/* The slots of node the ray enters before tmax (tmax_reach = reach() of a float above it),
+ * one bit each, and
+ * each slot's entry distance in t_enter[]; the box test of all slots is one loop, which
+ * compilers vectorise. Each "a > b ? a : b" keeps b when a is NaN, so a NaN slab
+ * constrains nothing. Only used slots count: an origin beyond float's range passes every
+ * box test, empty slots' too. */
+static unsigned enter_slots(const struct bvh_node *node, const struct box_ray *r, float tmax_reach,
+                            float t_enter[BVH_WIDTH])
+{
+    static const unsigned bit[BVH_WIDTH] = {1, 2, 4, 8, 16, 32, 64, 128};
+    const float *near_x = node->box + r->near[0], *far_x = node->box + r->far[0];
+    const float *near_y = node->box + r->near[1], *far_y = node->box + r->far[1];
+    const float *near_z = node->box + r->near[2], *far_z = node->box + r->far[2];
+    unsigned entered = 0;
+    for (int i = 0; i < BVH_WIDTH; i++) {
+        float nx = (near_x[i] - r->origin_near[0][i]) * r->inv_near[0][i];
+        float ny = (near_y[i] - r->origin_near[1][i]) * r->inv_near[1][i];
+        float nz = (near_z[i] - r->origin_near[2][i]) * r->inv_near[2][i];
+        float fx = (far_x[i] - r->origin_far[0][i]) * r->inv_far[0][i];
+        float fy = (far_y[i] - r->origin_far[1][i]) * r->inv_far[1][i];
+        float fz = (far_z[i] - r->origin_far[2][i]) * r->inv_far[2][i];
+        float enter = nx > 0.0f ? nx : 0.0f;
+        enter = ny > enter ? ny : enter;
+        enter = nz > enter ? nz : enter;
+        float leave = fx < tmax_reach ? fx : tmax_reach;
+        leave = fy < leave ? fy : leave;
+        leave = fz < leave ? fz : leave;
+        t_enter[i] = enter;
+        entered |= enter <= leave + REACH_FLOOR ? bit[i] : 0u;
+    }
+    return entered & ((1u << node->n_slots) - 1u);
+}
+
+/* A slot waiting on the traversal stack, or the one visited next. */
 struct pending {
-    uint32_t index;
-    double t_enter;
+    uint32_t ref;     /* a node: its index; a leaf: its first position in items[] plus
+                         (its count << LEAF_SHIFT)                                        */
+    float t_enter;    /* where the ray enters the slot's box                            */
 };
 
-/* The children of an interior node that the ray enters before tmax: returns how many (0, 1
- * or 2), the nearer in *next and, with 2, the farther in *later. */
-static int children_entered(const struct bvh *bvh, const struct bvh_node *node,
-                            const struct slab_ray *r, double tmax, struct pending *next,
-                            struct pending *later)
+/* Positions in items[] are below 2^28 (bvh_build() asserts it), leaving room for the count. */
+#define LEAF_SHIFT 28
+
+static uint32_t slot_ref(const struct bvh_node *node, int i)
 {
-    struct pending a = {node->offset, 0.0}, b = {node->offset + 1, 0.0};
-    int in_a = enters_box(&bvh->nodes[a.index], r, tmax, &a.t_enter);
-    int in_b = enters_box(&bvh->nodes[b.index], r, tmax, &b.t_enter);
-    if (in_a && in_b) {
-        *next = a.t_enter <= b.t_enter ? a : b;
-        *later = a.t_enter <= b.t_enter ? b : a;
-        return 2;
+    uint32_t child = node->offset + (uint32_t)i;
+    uint32_t items = node->first[i] | (uint32_t)node->count[i] << LEAF_SHIFT;
+    return i < node->n_nodes ? child : items;   /* both made: a select, not a branch */
+}
+
+/* The index of the lowest set bit of mask (mask > 0). A loop, whose branches the
+ * processor predicts, beat a de Bruijn multiply and table, whose result every following
+ * load waits for. */
+static int lowest_slot(unsigned mask)
+{
+    int i = 0;
+    while (!(mask >> i & 1u))
+        i++;
+    return i;
+}
+
+/* Of the entered slots (entered > 0), returns the nearest and pushes the others onto
+ * stack[*top ...], farthest deepest, when sorted (ties keep the slots' order); else in
+ * slot order. Most nodes have one entered slot, which needs neither. */
+static struct pending next_slot(const struct bvh_node *node, unsigned entered,
+                                const float t_enter[BVH_WIDTH], int sorted,
+                                struct pending *stack, int *top)
+{
+    struct pending e[BVH_WIDTH];
+    int i = lowest_slot(entered);
+    e[0].ref = slot_ref(node, i);
+    e[0].t_enter = t_enter[i];
+    entered &= entered - 1;
+    if (entered == 0)
+        return e[0];
+    int n = 1;
+    for (; entered != 0; entered &= entered - 1) {
+        i = lowest_slot(entered);
+        struct pending p;
+        p.ref = slot_ref(node, i);
+        p.t_enter = t_enter[i];
+        int k = n++;
+        if (sorted)   /* insertion: e[] ascending by distance */
+            for (; k > 0 && e[k - 1].t_enter > p.t_enter; k--)
+                e[k] = e[k - 1];
+        e[k] = p;
     }
-    *next = in_a ? a : b;
-    return in_a + in_b;
+    assert(*top + n - 1 <= STACK_SIZE);   /* invariant (4) bounds the depth */
+    for (int k = n - 1; k > 0; k--)
+        stack[(*top)++] = e[k];
+    return e[0];
+}
+
+/* The walk shared by both queries: closest (1) visits in order and lowers tmax at each hit;
+ * otherwise the walk stops at the first leaf that reports a hit. */
+static int traverse(const struct bvh *bvh, struct ray ray, double tmax, int closest,
+                    int (*leaf)(void *ctx, size_t first, size_t count, double *tmax), void *ctx)
+{
+    if (bvh->n_nodes == 0)
+        return 0;
+    struct box_ray r;
+    box_ray(ray, &r);
+    float tmax_reach = reach(float_at_least(tmax));
+    struct pending stack[STACK_SIZE];
+    struct pending p = {0, 0.0f};   /* the root, whose box is no slot's */
+    int top = 0, found = 0;
+    for (;;) {
+        uint32_t count = p.ref >> LEAF_SHIFT;
+        if (count == 0) {
+            float t_enter[BVH_WIDTH];
+            const struct bvh_node *node = &bvh->nodes[p.ref];
+            unsigned entered = enter_slots(node, &r, tmax_reach, t_enter);
+            if (entered != 0) {
+                p = next_slot(node, entered, t_enter, closest, stack, &top);
+                continue;   /* the nearest, entered before tmax just now */
+            }
+        } else if (leaf(ctx, p.ref & ((UINT32_C(1) << LEAF_SHIFT) - 1), count, &tmax)) {
+            if (!closest)
+                return 1;
+            found = 1;
+            tmax_reach = reach(float_at_least(tmax));
+        }
+        do {   /* the most recent waiting slot the ray enters before the current tmax */
+            if (top == 0)
+                return found;
+            p = stack[--top];
+        } while (p.t_enter > tmax_reach);
+    }
 }
 
 int bvh_intersect(const struct bvh *bvh, struct ray ray, double tmax,
                   int (*leaf)(void *ctx, size_t first, size_t count, double *tmax), void *ctx)
 {
-    struct slab_ray r = slab_ray(ray);
-    struct pending next = {0, 0.0}, stack[BVH_MAX_DEPTH];
-    int top = 0, found = 0;
-    if (bvh->n_nodes == 0 || !enters_box(&bvh->nodes[0], &r, tmax, &next.t_enter))
-        return 0;
-    for (;;) {
-        const struct bvh_node *node = &bvh->nodes[next.index];
-        if (node->count > 0) {
-            found |= leaf(ctx, node->offset, node->count, &tmax);
-        } else {
-            assert(top < BVH_MAX_DEPTH);   /* one entry per level: invariant (4) */
-            int n = children_entered(bvh, node, &r, tmax, &next, &stack[top]);
-            top += n == 2;   /* the farther child waits */
-            if (n > 0)
-                continue;
-        }
-        do {   /* the most recent waiting node the ray reaches before the current tmax */
-            if (top == 0)
-                return found;
-            next = stack[--top];
-        } while (next.t_enter > tmax);
-    }
+    return traverse(bvh, ray, tmax, 1, leaf, ctx);
+}
+
+/* The any-hit callback behind the shared walk's signature. */
+struct any_hit {
+    int (*leaf)(void *ctx, size_t first, size_t count, double tmax);
+    void *ctx;
+};
+
+static int any_hit_leaf(void *ctx, size_t first, size_t count, double *tmax)
+{
+    const struct any_hit *a = ctx;
+    return a->leaf(a->ctx, first, count, *tmax);
 }
 
 int bvh_occluded(const struct bvh *bvh, struct ray ray, double tmax,
                  int (*leaf)(void *ctx, size_t first, size_t count, double tmax), void *ctx)
 {
-    struct slab_ray r = slab_ray(ray);
-    struct pending next = {0, 0.0}, stack[BVH_MAX_DEPTH];
-    int top = 0;
-    if (bvh->n_nodes == 0 || !enters_box(&bvh->nodes[0], &r, tmax, &next.t_enter))
-        return 0;
-    for (;;) {
-        const struct bvh_node *node = &bvh->nodes[next.index];
-        if (node->count > 0) {
-            if (leaf(ctx, node->offset, node->count, tmax))
-                return 1;
-        } else {
-            assert(top < BVH_MAX_DEPTH);
-            int n = children_entered(bvh, node, &r, tmax, &next, &stack[top]);
-            top += n == 2;
-            if (n > 0)
-                continue;
-        }
-        if (top == 0)
-            return 0;
-        next = stack[--top];
-    }
+    struct any_hit a;
+    a.leaf = leaf;
+    a.ctx = ctx;
+    return traverse(bvh, ray, tmax, 0, any_hit_leaf, &a);
 }

@@ -2,15 +2,16 @@
  * geom/geometry.c -- the scene's primitives and the BVH over them (see geometry.h).
  *
  * Primitives live in one array per kind (spheres, triangles, quads, procedural shapes),
- * each record carrying its id and material (shapes report their own). geometry_build()
- * builds the BVH over every primitive that can be hit (degenerate ones, which have no
- * area, are left out) and then
+ * each record carrying its id and material (shapes report their own); the triangles share
+ * their corners through struct mesh (mesh.h). geometry_build() builds the BVH over every
+ * primitive that can be hit (degenerate ones, which have no area, are left out) and then
  *   (1) refs[k] names the BVH's k-th item in leaf order as (kind << REF_KIND_SHIFT) | index;
  *   (2) each kind's array is permuted into that leaf order, so a leaf reads consecutive
  *       records, and the records the BVH left out follow at the end of their array;
  *   (3) id_refs[id] names primitive id's record the same way, whether or not the BVH holds
  *       it, at every moment: each add appends its entry, and geometry_build() rewrites them
- *       all once (2) has moved the records (geometry_primitive_bounds() reads it).
+ *       all once (2) has moved the records (geometry_primitive_bounds() reads it), and fits
+ *       id_refs[] and the permuted arrays to their counts.
  * A leaf test dispatches on the kind with a switch: spheres, triangles and quads by direct
  * calls, shapes through their struct shape_ops. During traversal a primitive reports only
  * t and its surface parameters; the shading record of the closest one is completed once,
@@ -29,6 +30,7 @@
 
 #include "../base/alloc.h"
 #include "bvh.h"
+#include "mesh.h"
 #include "quad.h"
 #include "sphere.h"
 #include "triangle.h"
@@ -48,8 +50,7 @@ struct shape {
 struct geometry {
     struct sphere *spheres;       /* owned; n_spheres used of cap_spheres           */
     size_t n_spheres, cap_spheres;
-    struct triangle *triangles;   /* owned; likewise                                 */
-    size_t n_triangles, cap_triangles;
+    struct mesh mesh;             /* owned: the triangles and their shared points     */
     struct quad *quads;           /* owned; likewise                                 */
     size_t n_quads, cap_quads;
     struct shape *shapes;         /* owned; likewise                                 */
@@ -76,7 +77,7 @@ struct geometry *geometry_create(void)
 {
     struct geometry *g = xcalloc(1, sizeof *g, "geometry");
     g->spheres = NULL;   /* calloc's zero bits need not be null pointers */
-    g->triangles = NULL;
+    mesh_init(&g->mesh);
     g->quads = NULL;
     g->shapes = NULL;
     g->normals = NULL;
@@ -93,7 +94,7 @@ void geometry_free(struct geometry *g)
     for (size_t i = 0; i < g->n_shapes; i++)
         g->shapes[i].ops->free(g->shapes[i].data);
     xfree(g->spheres);
-    xfree(g->triangles);
+    mesh_free(&g->mesh);
     xfree(g->quads);
     xfree(g->shapes);
     xfree(g->normals);
@@ -151,10 +152,8 @@ int geometry_add_triangle(struct geometry *g, const struct vec3 v[3], const stru
         first_normal = (int)g->n_normals;   /* < 3 MAX_PRIMITIVES < INT_MAX */
         g->n_normals += 3;
     }
-    g->triangles = reserve(g->triangles, &g->cap_triangles, g->n_triangles + 1,
-                           sizeof *g->triangles, "triangles");
-    g->triangles[g->n_triangles++] = triangle_make(v, first_normal, material, (int)g->n_prims);
-    return next_id(g, KIND_TRIANGLE, g->n_triangles - 1);
+    size_t index = mesh_add(&g->mesh, v, first_normal, material, (int)g->n_prims);
+    return next_id(g, KIND_TRIANGLE, index);
 }
 
 int geometry_add_quad(struct geometry *g, struct vec3 p0, struct vec3 e1, struct vec3 e2,
@@ -196,9 +195,9 @@ static size_t collect_kind(const struct geometry *g, enum kind kind, struct aabb
             }
         break;
     case KIND_TRIANGLE:
-        for (i = 0; i < g->n_triangles; i++)
-            if (!triangle_is_degenerate(&g->triangles[i])) {
-                bounds[n] = triangle_bounds(&g->triangles[i]);
+        for (i = 0; i < g->mesh.n_triangles; i++)
+            if (!mesh_is_degenerate(&g->mesh, &g->mesh.triangles[i])) {
+                bounds[n] = mesh_bounds(&g->mesh, &g->mesh.triangles[i]);
                 refs[n++] = make_ref(kind, i);
             }
         break;
@@ -239,7 +238,8 @@ static struct record_array records_of(struct geometry *g, enum kind kind)
     case KIND_SPHERE:
         return make_record_array(g->spheres, sizeof *g->spheres, g->n_spheres);
     case KIND_TRIANGLE:
-        return make_record_array(g->triangles, sizeof *g->triangles, g->n_triangles);
+        return make_record_array(g->mesh.triangles, sizeof *g->mesh.triangles,
+                                 g->mesh.n_triangles);
     case KIND_QUAD:
         return make_record_array(g->quads, sizeof *g->quads, g->n_quads);
     default:
@@ -279,8 +279,8 @@ static void index_ids(struct geometry *g)
 {
     for (size_t i = 0; i < g->n_spheres; i++)
         g->id_refs[g->spheres[i].id] = make_ref(KIND_SPHERE, i);
-    for (size_t i = 0; i < g->n_triangles; i++)
-        g->id_refs[g->triangles[i].id] = make_ref(KIND_TRIANGLE, i);
+    for (size_t i = 0; i < g->mesh.n_triangles; i++)
+        g->id_refs[g->mesh.triangles[i].id] = make_ref(KIND_TRIANGLE, i);
     for (size_t i = 0; i < g->n_quads; i++)
         g->id_refs[g->quads[i].id] = make_ref(KIND_QUAD, i);
     for (size_t i = 0; i < g->n_shapes; i++)
@@ -306,13 +306,16 @@ void geometry_build(struct geometry *g)
     /* The permuted arrays are exactly full: later adds grow them again. */
     g->spheres = permute_kind(g, KIND_SPHERE, g->refs, n);
     g->cap_spheres = g->n_spheres;
-    g->triangles = permute_kind(g, KIND_TRIANGLE, g->refs, n);
-    g->cap_triangles = g->n_triangles;
+    g->mesh.triangles = permute_kind(g, KIND_TRIANGLE, g->refs, n);
+    g->mesh.cap_triangles = g->mesh.n_triangles;
+    mesh_finish(&g->mesh);
     g->quads = permute_kind(g, KIND_QUAD, g->refs, n);
     g->cap_quads = g->n_quads;
     g->shapes = permute_kind(g, KIND_SHAPE, g->refs, n);
     g->cap_shapes = g->n_shapes;
     index_ids(g);
+    g->id_refs = xrealloc(g->id_refs, g->n_prims, sizeof *g->id_refs, "primitive ids");
+    g->cap_id_refs = g->n_prims;
 }
 
 /* ---- queries ---- */
@@ -325,7 +328,7 @@ static int intersect_ref(const struct query *q, uint32_t ref, double tmax, struc
     case KIND_SPHERE:
         return sphere_intersect(&g->spheres[index], q->ray, tmax, hit);
     case KIND_TRIANGLE:
-        return triangle_intersect(&g->triangles[index], &q->sheared, tmax, hit);
+        return mesh_intersect(&g->mesh, &g->mesh.triangles[index], &q->sheared, tmax, hit);
     case KIND_QUAD:
         return quad_intersect(&g->quads[index], &q->sheared, tmax, hit);
     default:
@@ -377,8 +380,8 @@ static void complete_hit(const struct query *q, struct hit *hit)
         hit->prim = g->spheres[index].id;
         break;
     case KIND_TRIANGLE: {
-        const struct triangle *tri = &g->triangles[index];
-        triangle_shade(tri, tri->normals >= 0 ? &g->normals[tri->normals] : NULL, hit);
+        const struct mesh_triangle *tri = &g->mesh.triangles[index];
+        mesh_shade(&g->mesh, tri, tri->normals >= 0 ? &g->normals[tri->normals] : NULL, hit);
         hit->prim = tri->id;
         break;
     }
@@ -438,7 +441,7 @@ size_t geometry_bvh_nodes(const struct geometry *g)
 size_t geometry_bytes(const struct geometry *g)
 {
     size_t bytes = sizeof *g + g->cap_spheres * sizeof *g->spheres
-                   + g->cap_triangles * sizeof *g->triangles + g->cap_quads * sizeof *g->quads
+                   + mesh_bytes(&g->mesh) + g->cap_quads * sizeof *g->quads
                    + g->cap_shapes * sizeof *g->shapes + g->cap_normals * sizeof *g->normals
                    + g->cap_id_refs * sizeof *g->id_refs;
     if (g->bvh != NULL)
@@ -459,9 +462,9 @@ struct aabb geometry_material_bounds(const struct geometry *g, int material)
     for (size_t i = 0; i < g->n_spheres; i++)
         if (material < 0 || g->spheres[i].material == material)
             box = aabb_union(box, sphere_bounds(&g->spheres[i]));
-    for (size_t i = 0; i < g->n_triangles; i++)
-        if (material < 0 || g->triangles[i].material == material)
-            box = aabb_union(box, triangle_bounds(&g->triangles[i]));
+    for (size_t i = 0; i < g->mesh.n_triangles; i++)
+        if (material < 0 || g->mesh.triangles[i].material == material)
+            box = aabb_union(box, mesh_bounds(&g->mesh, &g->mesh.triangles[i]));
     for (size_t i = 0; i < g->n_quads; i++)
         if (material < 0 || g->quads[i].material == material)
             box = aabb_union(box, quad_bounds(&g->quads[i]));
@@ -485,7 +488,7 @@ struct aabb geometry_primitive_bounds(const struct geometry *g, int prim)
     case KIND_SPHERE:
         return sphere_bounds(&g->spheres[index]);
     case KIND_TRIANGLE:
-        return triangle_bounds(&g->triangles[index]);
+        return mesh_bounds(&g->mesh, &g->mesh.triangles[index]);
     case KIND_QUAD:
         return quad_bounds(&g->quads[index]);
     default:
@@ -502,7 +505,7 @@ int geometry_primitive_material(const struct geometry *g, int prim)
     case KIND_SPHERE:
         return g->spheres[index].material;
     case KIND_TRIANGLE:
-        return g->triangles[index].material;
+        return g->mesh.triangles[index].material;
     case KIND_QUAD:
         return g->quads[index].material;
     default:
@@ -519,12 +522,10 @@ int geometry_primitive_plane(const struct geometry *g, int prim, struct vec3 *po
     struct vec3 n = vec3_zero();
     switch ((enum kind)(ref >> REF_KIND_SHIFT)) {
     case KIND_TRIANGLE: {
-        const struct triangle *t = &g->triangles[index];
-        struct vec3 v0 = vec3(t->v[0][0], t->v[0][1], t->v[0][2]);
-        struct vec3 v1 = vec3(t->v[1][0], t->v[1][1], t->v[1][2]);
-        struct vec3 v2 = vec3(t->v[2][0], t->v[2][1], t->v[2][2]);
-        *point = v0;
-        n = vec3_cross(vec3_sub(v1, v0), vec3_sub(v2, v0));
+        struct vec3 v[3];
+        mesh_corners(&g->mesh, &g->mesh.triangles[index], v);
+        *point = v[0];
+        n = vec3_cross(vec3_sub(v[1], v[0]), vec3_sub(v[2], v[0]));
         break;
     }
     case KIND_QUAD:
@@ -581,12 +582,11 @@ int geometry_uv_extent(const struct geometry *g, int prim, double *length_u, dou
 
 /* ---- the primitives as such ---- */
 
-static void visit_triangle(const struct geometry *g, const struct triangle *tri,
+static void visit_triangle(const struct geometry *g, const struct mesh_triangle *tri,
                            const struct primitive_visitor *v)
 {
     struct vec3 corner[3];
-    for (int i = 0; i < 3; i++)
-        corner[i] = vec3(tri->v[i][0], tri->v[i][1], tri->v[i][2]);
+    mesh_corners(&g->mesh, tri, corner);
     v->triangle(v->context, corner, tri->normals >= 0 ? &g->normals[tri->normals] : NULL,
                 tri->material);
 }
@@ -604,8 +604,8 @@ void geometry_visit(const struct geometry *g, const struct primitive_visitor *v)
             break;
         }
         case KIND_TRIANGLE:
-            if (!triangle_is_degenerate(&g->triangles[index]))
-                visit_triangle(g, &g->triangles[index], v);
+            if (!mesh_is_degenerate(&g->mesh, &g->mesh.triangles[index]))
+                visit_triangle(g, &g->mesh.triangles[index], v);
             break;
         case KIND_QUAD: {
             const struct quad *q = &g->quads[index];

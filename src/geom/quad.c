@@ -61,13 +61,13 @@ int quad_intersect(const struct quad *q, const struct sheared_ray *ray, double t
         x[i] = (q->corner[i][kx] - o[kx]) - ray->sx * z[i];
         y[i] = (q->corner[i][ky] - o[ky]) - ray->sy * z[i];
     }
-    double e_ab = edge_function(x[0], y[0], x[1], y[1]);
-    double e_bc = edge_function(x[1], y[1], x[2], y[2]);
-    double e_cd = edge_function(x[2], y[2], x[3], y[3]);
-    double e_da = edge_function(x[3], y[3], x[0], y[0]);
-    if ((e_ab < 0 || e_bc < 0 || e_cd < 0 || e_da < 0)
-        && (e_ab > 0 || e_bc > 0 || e_cd > 0 || e_da > 0))
-        return 0;   /* the origin is outside an edge */
+    double e_ab = edge_fast(x[0], y[0], x[1], y[1]);
+    double e_bc = edge_fast(x[1], y[1], x[2], y[2]);
+    double e_cd = edge_fast(x[2], y[2], x[3], y[3]);
+    double e_da = edge_fast(x[3], y[3], x[0], y[0]);
+    if (((e_ab < 0) | (e_bc < 0) | (e_cd < 0) | (e_da < 0))
+        & ((e_ab > 0) | (e_bc > 0) | (e_cd > 0) | (e_da > 0)))
+        return 0;   /* the origin is outside an edge (one branch, as in triangle.h) */
     double sum_s = e_da + e_bc, sum_t = e_ab + e_cd;
     if (sum_s == 0 || sum_t == 0)
         return 0;   /* both terms of a sum are zero: the quad is seen edge-on */
@@ -77,7 +77,7 @@ int quad_intersect(const struct quad *q, const struct sheared_ray *ray, double t
     double depth = (1 - s) * (1 - t) * z[0] + s * (1 - t) * z[1] + s * t * z[2]
                    + (1 - s) * t * z[3];
     double t_ray = ray->sz * depth;
-    if (!(t_ray > 0 && t_ray < tmax))
+    if (!((t_ray > 0) & (t_ray < tmax)))
         return 0;
     hit->t = t_ray;
     hit->u = s;

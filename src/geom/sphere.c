@@ -45,6 +45,9 @@ int sphere_intersect(const struct sphere *s, struct ray ray, double tmax, struct
     struct vec3 f = vec3_sub(ray.origin, s->centre);
     double b = vec3_dot(f, ray.dir);
     double r2 = s->radius * s->radius;
+    double c = vec3_dot(f, f) - r2;
+    if (b > 0 && c > 0)
+        return 0;   /* outside and moving away: both roots q / a and c / q below 0 (q < 0) */
     struct vec3 l = vec3_madd(f, ray.dir, -b / a);     /* a > 0, tested above */
     double disc = r2 - vec3_length2(l);                  /* (b^2 - a c) / a, step (1) */
     if (disc < 0)
@@ -52,7 +55,7 @@ int sphere_intersect(const struct sphere *s, struct ray ray, double tmax, struct
     double q = -b - copysign(sqrt(a * disc), b);        /* step (2) */
     if (q == 0)
         return 0;   /* b = 0 and disc = 0: the line touches the sphere at t = 0 only */
-    double t0 = (vec3_dot(f, f) - r2) / q;              /* c / q, q != 0 tested above */
+    double t0 = c / q;                                  /* q != 0 tested above */
     double t1 = q / a;
     if (t0 > t1) {
         double swap = t0;

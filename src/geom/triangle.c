@@ -27,8 +27,7 @@ static double product_error(double a, double b, double p)
     return ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo;
 }
 
-/* edge_function() for this file's hot path, where the compiler may inline it. */
-static inline double edge(double px, double py, double qx, double qy)
+double edge_function(double px, double py, double qx, double qy)
 {
     double qx_py = qx * py, qy_px = qy * px;
     double e = qx_py - qy_px;
@@ -36,11 +35,6 @@ static inline double edge(double px, double py, double qx, double qy)
         return e;
     /* The products are equal, so the exact value is the difference of their errors. */
     return product_error(qx, py, qx_py) - product_error(qy, px, qy_px);
-}
-
-double edge_function(double px, double py, double qx, double qy)
-{
-    return edge(px, py, qx, qy);
 }
 
 struct sheared_ray shear_ray(struct ray ray)
@@ -91,77 +85,47 @@ struct triangle triangle_make(const struct vec3 v[3], int normals, int material,
     return tri;
 }
 
-static struct vec3 vertex(const struct triangle *tri, int i)
+static struct vec3 vertex(const double *const corner[3], int i)
 {
-    return vec3(tri->v[i][0], tri->v[i][1], tri->v[i][2]);
+    return vec3(corner[i][0], corner[i][1], corner[i][2]);
 }
 
 /* ng before normalisation: (v1 - v0) x (v2 - v0), on the counter-clockwise side. */
-static struct vec3 area_normal(const struct triangle *tri)
+static struct vec3 area_normal(const double *const corner[3])
 {
-    struct vec3 v0 = vertex(tri, 0);
-    return vec3_cross(vec3_sub(vertex(tri, 1), v0), vec3_sub(vertex(tri, 2), v0));
+    struct vec3 v0 = vertex(corner, 0);
+    return vec3_cross(vec3_sub(vertex(corner, 1), v0), vec3_sub(vertex(corner, 2), v0));
 }
 
-int triangle_is_degenerate(const struct triangle *tri)
+int corners_are_degenerate(const double *const corner[3])
 {
-    return vec3_length2(unit_normal(area_normal(tri))) == 0;
+    return vec3_length2(unit_normal(area_normal(corner))) == 0;
 }
 
-struct aabb triangle_bounds(const struct triangle *tri)
+struct aabb corners_bounds(const double *const corner[3])
 {
     struct aabb box;
-    box.lo = vertex(tri, 0);
+    box.lo = vertex(corner, 0);
     box.hi = box.lo;
     for (int i = 1; i < 3; i++) {
-        box.lo = vec3_min(box.lo, vertex(tri, i));
-        box.hi = vec3_max(box.hi, vertex(tri, i));
+        box.lo = vec3_min(box.lo, vertex(corner, i));
+        box.hi = vec3_max(box.hi, vertex(corner, i));
     }
     return box;
 }
 
-/* Woop et al., Fig. 1 (without back-face culling). Vertex i becomes (x[i], y[i]) in the
- * sheared frame; U, V, W are the edge functions of B -> C, C -> A, A -> B. */
-int triangle_intersect(const struct triangle *tri, const struct sheared_ray *ray, double tmax,
-                       struct hit *hit)
-{
-    const double *o = ray->origin;
-    int kx = ray->kx, ky = ray->ky, kz = ray->kz;
-    double x[3], y[3], z[3];
-    for (int i = 0; i < 3; i++) {
-        z[i] = tri->v[i][kz] - o[kz];
-        x[i] = (tri->v[i][kx] - o[kx]) - ray->sx * z[i];
-        y[i] = (tri->v[i][ky] - o[ky]) - ray->sy * z[i];
-    }
-    double u = edge(x[1], y[1], x[2], y[2]);
-    double v = edge(x[2], y[2], x[0], y[0]);
-    double w = edge(x[0], y[0], x[1], y[1]);
-    if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0))
-        return 0;   /* the origin is outside an edge */
-    double det = u + v + w;
-    if (det == 0)
-        return 0;   /* all three zero: the triangle is seen edge-on */
-    double inv_det = 1.0 / det;
-    double t = ray->sz * (u * z[0] + v * z[1] + w * z[2]) * inv_det;
-    if (!(t > 0 && t < tmax))
-        return 0;
-    hit->t = t;
-    hit->u = v * inv_det;
-    hit->v = w * inv_det;
-    return 1;
-}
-
 /* ns: the barycentric blend of the vertex normals, normalised, and turned to ng's side
  * when it points the other way (the renderer then sees ng and ns on one side). */
-void triangle_shade(const struct triangle *tri, const struct vec3 *normals, struct hit *hit)
+void corners_shade(const double *const corner[3], int material, const struct vec3 *normals,
+                   struct hit *hit)
 {
     double b0 = 1.0 - hit->u - hit->v, b1 = hit->u, b2 = hit->v;
-    struct vec3 p = vec3_scale(vertex(tri, 0), b0);
-    p = vec3_madd(p, vertex(tri, 1), b1);
-    hit->p = vec3_madd(p, vertex(tri, 2), b2);
-    hit->ng = unit_normal(area_normal(tri));
+    struct vec3 p = vec3_scale(vertex(corner, 0), b0);
+    p = vec3_madd(p, vertex(corner, 1), b1);
+    hit->p = vec3_madd(p, vertex(corner, 2), b2);
+    hit->ng = unit_normal(area_normal(corner));
     hit->ns = hit->ng;
-    hit->material = tri->material;
+    hit->material = material;
     if (normals == NULL)
         return;
     struct vec3 n = vec3_scale(normals[0], b0);
@@ -170,4 +134,31 @@ void triangle_shade(const struct triangle *tri, const struct vec3 *normals, stru
     if (vec3_length2(n) == 0)
         return;   /* the vertex normals cancel here: fall back to ng */
     hit->ns = vec3_dot(n, hit->ng) < 0 ? vec3_neg(n) : n;
+}
+
+/* ---- the triangle that holds its own vertices ---- */
+
+int triangle_is_degenerate(const struct triangle *tri)
+{
+    const double *const corner[3] = {tri->v[0], tri->v[1], tri->v[2]};
+    return corners_are_degenerate(corner);
+}
+
+struct aabb triangle_bounds(const struct triangle *tri)
+{
+    const double *const corner[3] = {tri->v[0], tri->v[1], tri->v[2]};
+    return corners_bounds(corner);
+}
+
+int triangle_intersect(const struct triangle *tri, const struct sheared_ray *ray, double tmax,
+                       struct hit *hit)
+{
+    const double *const corner[3] = {tri->v[0], tri->v[1], tri->v[2]};
+    return corners_intersect(corner, ray, tmax, hit);
+}
+
+void triangle_shade(const struct triangle *tri, const struct vec3 *normals, struct hit *hit)
+{
+    const double *const corner[3] = {tri->v[0], tri->v[1], tri->v[2]};
+    corners_shade(corner, tri->material, normals, hit);
 }

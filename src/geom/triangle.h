@@ -60,6 +60,55 @@ int triangle_intersect(const struct triangle *tri, const struct sheared_ray *ray
  * vertex normals, or NULL when it has none (then ns = ng). prim is the caller's. */
 void triangle_shade(const struct triangle *tri, const struct vec3 *normals, struct hit *hit);
 
+/* The same four for a triangle whose vertices are kept elsewhere (mesh.h): corner[i] points
+ * at vertex i's three coordinates. The functions above are these on tri->v. */
+int corners_are_degenerate(const double *const corner[3]);
+struct aabb corners_bounds(const double *const corner[3]);
+void corners_shade(const double *const corner[3], int material, const struct vec3 *normals,
+                   struct hit *hit);
+
+/* edge_function() where the compiler can inline it: the rounded difference when it is not
+ * zero (its sign is then exact, triangle.c), else the exact tie from edge_function(). */
+static inline double edge_fast(double px, double py, double qx, double qy)
+{
+    double e = qx * py - qy * px;
+    return e != 0 ? e : edge_function(px, py, qx, qy);
+}
+
+/* triangle_intersect() on corners (Woop et al., Fig. 1, without back-face culling), inline
+ * because every leaf test runs it. Vertex i becomes (x[i], y[i]) in the sheared frame; U, V,
+ * W are the edge functions of B -> C, C -> A, A -> B. */
+static inline int corners_intersect(const double *const corner[3], const struct sheared_ray *ray,
+                                    double tmax, struct hit *hit)
+{
+    const double *o = ray->origin;
+    int kx = ray->kx, ky = ray->ky, kz = ray->kz;
+    double x[3], y[3], z[3];
+    for (int i = 0; i < 3; i++) {
+        z[i] = corner[i][kz] - o[kz];
+        x[i] = (corner[i][kx] - o[kx]) - ray->sx * z[i];
+        y[i] = (corner[i][ky] - o[ky]) - ray->sy * z[i];
+    }
+    double u = edge_fast(x[1], y[1], x[2], y[2]);
+    double v = edge_fast(x[2], y[2], x[0], y[0]);
+    double w = edge_fast(x[0], y[0], x[1], y[1]);
+    /* | and & in place of || and &&: one branch, where the result of each comparison is as
+     * unpredictable as which side of an edge a ray passes. */
+    if (((u < 0) | (v < 0) | (w < 0)) & ((u > 0) | (v > 0) | (w > 0)))
+        return 0;   /* the origin is outside an edge */
+    double det = u + v + w;
+    if (det == 0)
+        return 0;   /* all three zero: the triangle is seen edge-on */
+    double inv_det = 1.0 / det;
+    double t = ray->sz * (u * z[0] + v * z[1] + w * z[2]) * inv_det;
+    if (!((t > 0) & (t < tmax)))
+        return 0;
+    hit->t = t;
+    hit->u = v * inv_det;
+    hit->v = w * inv_det;
+    return 1;
+}
+
 /* The unit normal along n, computed without overflow or underflow; zero when n is zero. */
 struct vec3 unit_normal(struct vec3 n);
 

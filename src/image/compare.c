@@ -222,11 +222,34 @@ static double block_mean(const struct image *image, int x0, int y0, int x1, int 
     return sum / ((double)(x1 - x0) * (double)(y1 - y0));
 }
 
-struct block_error image_worst_block(const struct image *a, const struct image *b, int size)
+int block_is_noisy(const struct image *b, const struct image *var_b, int x0, int y0,
+                   int size)
 {
-    struct block_error worst = {0, 0, 0.0, 0, 0};
+    if (var_b == NULL)
+        return 0;
+    int x1 = x0 + size < b->width ? x0 + size : b->width;
+    int y1 = y0 + size < b->height ? y0 + size : b->height;
+    double variance = 0.0;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            struct vec3 v = image_get(var_b, x, y);
+            double sd = vec3_luminance(vec3(sqrt(v.x), sqrt(v.y), sqrt(v.z)));
+            variance += sd * sd;
+        }
+    double n = (double)(x1 - x0) * (double)(y1 - y0);
+    return sqrt(variance) / n > BLOCK_NOISE_FLOOR * fabs(block_mean(b, x0, y0, x1, y1));
+}
+
+struct block_error image_worst_block(const struct image *a, const struct image *b,
+                                     const struct image *var_b, int size)
+{
+    struct block_error worst = {0, 0, 0.0, 0, 0, 0};
     for (int y0 = 0; y0 < a->height; y0 += size)
         for (int x0 = 0; x0 < a->width; x0 += size) {
+            if (block_is_noisy(b, var_b, x0, y0, size)) {
+                worst.n_noisy++;
+                continue;
+            }
             int x1 = x0 + size < a->width ? x0 + size : a->width;
             int y1 = y0 + size < a->height ? y0 + size : a->height;
             double mean_a = block_mean(a, x0, y0, x1, y1), mean_b = block_mean(b, x0, y0, x1, y1);
@@ -397,15 +420,34 @@ static int read_inputs(const struct compare_args *args, struct compare_inputs *i
     return 0;
 }
 
+/* blocks_noisy=N and noisy_blocks=X,Y;X,Y;... (or "none"): the blocks of reference b
+ * below its noise floor, which the block figures leave out. */
+static void print_noisy_blocks(const struct image *b, const struct image *var_b, int size,
+                               int n_noisy)
+{
+    printf(" blocks_noisy=%d noisy_blocks=", n_noisy);
+    const char *separator = "";
+    for (int y0 = 0; y0 < b->height; y0 += size)
+        for (int x0 = 0; x0 < b->width; x0 += size)
+            if (block_is_noisy(b, var_b, x0, y0, size)) {
+                printf("%s%d,%d", separator, x0, y0);
+                separator = ";";
+            }
+    if (n_noisy == 0)
+        printf("none");
+}
+
 /* One line on stdout: the metrics and, given a variance image, the test's fields. */
 static void print_results(const struct image_error *e, const struct compare_inputs *in,
                           const struct compare_args *args)
 {
     print_metrics(e);
     if (args->block > 0) {
-        struct block_error w = image_worst_block(in->a, in->b, args->block);
+        struct block_error w = image_worst_block(in->a, in->b, in->var_b, args->block);
         printf(" worst_block=%.6g worst_block_at=%d,%d blocks=%d blocks_within_3pct=%d",
                w.relative_error, w.x0, w.y0, w.n_blocks, w.n_within);
+        if (in->var_b != NULL)
+            print_noisy_blocks(in->b, in->var_b, args->block, w.n_noisy);
         /* the whole image as one block: a's mean luminance over b's (inf when b's is 0) */
         double mean_a = block_mean(in->a, 0, 0, in->a->width, in->a->height);
         double mean_b = block_mean(in->b, 0, 0, in->b->width, in->b->height);

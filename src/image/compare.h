@@ -25,20 +25,38 @@ struct image_error image_compare(const struct image *a, const struct image *b);
  * within 3% of the reference"). */
 #define BLOCK_TOLERANCE 0.03
 
+/* A block of reference b is below its noise floor when the standard error of its mean
+ * luminance, from b's variance image, exceeds this share of the mean: a third of
+ * BLOCK_TOLERANCE, so that a block counted as within the tolerance is so by more than
+ * the reference's own noise at three standard errors. */
+#define BLOCK_NOISE_FLOOR (BLOCK_TOLERANCE / 3.0)
+
 /* The block of image_worst_block(): where it is and how far off its mean is, and how many
  * blocks there are and how many of them are within BLOCK_TOLERANCE. */
 struct block_error {
     int x0, y0;            /* its top-left pixel                                          */
     double relative_error; /* |mean_a - mean_b| / mean_b of the block's luminance           */
-    int n_blocks;          /* blocks in the image                                          */
-    int n_within;          /* blocks whose relative error is at most BLOCK_TOLERANCE       */
+    int n_blocks;          /* blocks in the image, the noisy ones left out                 */
+    int n_within;          /* of them, those whose relative error is at most
+                              BLOCK_TOLERANCE                                              */
+    int n_noisy;           /* blocks below b's noise floor (block_is_noisy()), left out    */
 };
+
+/* Whether the size x size block at (x0, y0) of reference b is below its noise floor
+ * (BLOCK_NOISE_FLOOR) by var_b, b's variance of each pixel's mean: the block mean's
+ * standard error is sqrt(sum of the pixels' luminance variances) / n, each pixel's taken
+ * at its largest for its channels' variances, (sum_c w_c sqrt(var_c))^2 (the channels of
+ * one estimate are correlated), pixels independent. Never without var_b (NULL). */
+int block_is_noisy(const struct image *b, const struct image *var_b, int x0, int y0,
+                   int size);
 
 /* Splits the images (same size) into size x size blocks from the top left (those at the
  * right and bottom edges may be smaller) and returns the block whose mean luminance in a
- * differs most, relatively, from its mean in b, with the counts. Blocks whose mean in b is
+ * differs most, relatively, from its mean in b, with the counts; blocks below b's noise
+ * floor by var_b (NULL: none) are counted apart and left out. Blocks whose mean in b is
  * zero count when a's is not (relative error +Inf). size >= 1. */
-struct block_error image_worst_block(const struct image *a, const struct image *b, int size);
+struct block_error image_worst_block(const struct image *a, const struct image *b,
+                                     const struct image *var_b, int size);
 
 /* The per-pixel test of image_consistency(); definitions in compare.c. */
 struct consistency {

@@ -32,6 +32,8 @@
  * Counting every path once: the eye's rays and the rays of f_r,s add the emission they
  * reach, since direct light is sampled through f_r,d alone; gather rays add none, at
  * their first surface (direct light) or through specular ones (caustics, held by CP).
+ * The sky is a light like the others (scene/light.h): sampled in L_r,d,l, its photons in
+ * the map, and what a ray that leaves the scene sees counts as emission does.
  * The diffuse-like part reflects irradiance as its directional albedo over pi: exact
  * for a Lambertian part, the paper's only diffuse-like kind.
  *
@@ -44,7 +46,7 @@
  * every crop repeats; --load-photons reads them from a file instead (photon/
  * global_work.h).
  */
-#include "jensen1994.h"
+#include "jensen1994_maps.h"
 
 #include <string.h>
 #include <time.h>
@@ -72,6 +74,8 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;
     js.caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     js.both_lobes = 1;
+    js.glossy_gather = 1;
+    js.glossy_photons = 1;
     js.bounded_reach = 1;
     js.gradient_limit = 1;
     js.projection_maps = 1;
@@ -80,206 +84,16 @@ struct jensen1994_settings jensen1994_settings_default(void)
     return js;
 }
 
-/* ---- Sec. 3, pass 1: light path tracing into the photon map ---- */
-
-/* Where pass 1 deposits: the illumination maps for photons on a surface that has one,
- * the photon map for the rest. */
-struct deposits {
-    struct photon_trace photons;
-    struct illumination_maps *illumination; /* borrowed; NULL: photon maps everywhere */
-};
-
-/* Sec. 3.3: "with every photon we store the intersection point, the normal, the energy
- * and a bit saying whether it is a caustic photon". The 20-byte record (photon.h) keeps
- * the normal where 1996 keeps the direction, and the caustic bit among its flags. Sec.
- * 3.2: on a surface with an illumination map, the energy goes to the map instead. */
-static int deposit_photon(void *context, const struct photon_event *e)
-{
-    struct deposits *d = context;
-    if (d->illumination != NULL && illumination_covers(d->illumination, e->prim)) {
-        illumination_deposit(d->illumination, e->prim, e->u, e->v, e->power,
-                             e->kind == PHOTON_CAUSTIC);
-        return 0;
-    }
-    struct photon_event stored = *e;
-    stored.wi = e->normal;
-    return photon_trace_store(&d->photons, MAX_PHOTONS, &stored);
-}
-
-/* Light rays through projection maps (when on) into d; fills the projection stats. */
-static int trace_light_paths(const struct scene *scene, const struct trace_settings *base,
-                             const struct jensen1994_settings *js, struct deposits *d,
-                             struct jensen1994_stats *stats)
-{
-    struct trace_settings ts = *base;
-    struct projection_settings ps = {PROJECTION_N_THETA_DEFAULT, PROJECTION_N_PHI_DEFAULT,
-                                     PROJECTION_BOOST_DEFAULT};
-    struct projection_maps *maps = js->projection_maps ? projection_maps_build(scene, &ps) : NULL;
-    ts.projection = maps;
-    struct photon_sink sink = {deposit_photon, d};
-    int status = trace_photons_into(scene, &ts, &sink, &stats->photon_rays);
-    if (maps != NULL) {
-        struct projection_stats pst = projection_maps_stats(maps);
-        stats->projection_maps = pst.n_maps;
-        stats->projection_marked = pst.marked_fraction;
-        stats->bytes_projection_maps = pst.bytes;
-    }
-    projection_maps_free(maps);
-    return status;
-}
-
-/* Sec. 3.2's pretrace: "the distance between rays going through adjacent pixels and
- * striking the same object". One ray through the centre of every pixel of the whole
- * image; footprint[prim] (n_prims entries, owned by the caller) becomes the smallest
- * distance between the hits of horizontally or vertically adjacent pixels on prim, 0
- * where no two adjacent pixels hit prim. Row by row, two rows kept. */
-static double *pretrace_footprints(const struct scene *scene)
-{
-    size_t n_prims = geometry_primitive_count(scene->geometry);
-    double *footprint = xcalloc(n_prims > 0 ? n_prims : 1, sizeof *footprint, "footprints");
-    size_t width = (size_t)scene->width;
-    int *prim = xmalloc(2 * width, sizeof *prim, "pretrace");
-    struct vec3 *p = xmalloc(2 * width, sizeof *p, "pretrace");
-    for (int y = 0; y < scene->height; y++) {
-        size_t row = (size_t)(y % 2) * width, above = (size_t)((y + 1) % 2) * width;
-        for (size_t x = 0; x < width; x++) {
-            struct hit hit;
-            struct ray ray = camera_ray(&scene->camera, x + 0.5, y + 0.5);
-            prim[row + x] = scene_intersect(scene, ray, INFINITY, &hit) ? hit.prim : -1;
-            p[row + x] = hit.p;
-            for (int k = 0; k < 2; k++) { /* the left neighbour, the one above */
-                size_t other = k == 0 ? row + x - 1 : above + x;
-                if ((k == 0 ? x == 0 : y == 0) || prim[row + x] < 0 ||
-                    prim[other] != prim[row + x])
-                    continue;
-                double d = vec3_length(vec3_sub(p[row + x], p[other]));
-                double *f = &footprint[prim[row + x]];
-                *f = *f == 0 || d < *f ? d : *f;
-            }
-        }
-    }
-    xfree(p);
-    xfree(prim);
-    return footprint;
-}
-
-/* Per primitive, whether photons can be stored on it (a non-specular part): mirrors and
- * glass get no illumination map, since no photon would ever reach one. Owned by the
- * caller. */
-static unsigned char *receiving_primitives(const struct scene *scene)
-{
-    size_t n_prims = geometry_primitive_count(scene->geometry);
-    unsigned char *receives = xmalloc(n_prims > 0 ? n_prims : 1, sizeof *receives,
-                                      "receiving primitives");
-    for (size_t i = 0; i < n_prims; i++) {
-        int material = geometry_primitive_material(scene->geometry, (int)i);
-        receives[i] = (unsigned char)brdf_has_diffuse(&scene->materials[material]);
-    }
-    return receives;
-}
-
-/* A kd-tree of copies of the CP photons among traced's (departs from Sec. 3.3, which
- * keeps one map and tells CP photons by their bit: searched for CP photons alone, that
- * map must visit every photon within the radius wherever caustics are sparse or absent,
- * which made the Cornell box's final pass grow with the photons, 85 s at 200,000 and
- * 190 s at 500,000. The copies cost 20 bytes per CP photon.) */
-static struct kdtree *caustic_photons_of(const struct photon_trace *traced)
-{
-    struct photon *cp = xmalloc(traced->n_caustic > 0 ? traced->n_caustic : 1, sizeof *cp,
-                                "caustic photons");
-    size_t n = 0;
-    for (size_t i = 0; i < traced->n_photons; i++)
-        if (traced->photons[i].flags & PHOTON_CAUSTIC)
-            cp[n++] = traced->photons[i];
-    return balance_kdtree(cp, n); /* takes them */
-}
-
-/* The illumination maps' figures for --stats. */
-static void count_illumination(const struct illumination_maps *maps,
-                               struct jensen1994_stats *stats)
-{
-    struct illumination_stats st = illumination_maps_stats(maps);
-    stats->illumination_maps = st.n_maps;
-    stats->illumination_di_elements = st.di_elements;
-    stats->illumination_ci_maps = st.ci_maps;
-    stats->bytes_illumination_maps = st.bytes;
-}
-
-int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
-                     const struct jensen1994_settings *js, struct irradiance_stores *out,
-                     struct jensen1994_stats *stats, struct error *err)
-{
-    struct trace_settings ts;
-    memset(&ts, 0, sizeof ts);
-    ts.seed = seed;
-    ts.n_emit = js->n_photons;
-    ts.max_stored = MAX_PHOTONS;
-    ts.store = PHOTON_MAP_GLOBAL; /* every deposit: direct, caustic and indirect */
-    ts.max_depth = max_depth;
-    ts.targets = NULL;
-    ts.projection = NULL;
-    struct deposits d;
-    memset(&d, 0, sizeof d);
-    d.photons.photons = NULL;
-    d.illumination = NULL;
-    if (js->illumination_maps) {
-        double *footprint = pretrace_footprints(scene);
-        unsigned char *receives = receiving_primitives(scene);
-        d.illumination = illumination_maps_create(scene->geometry, scene_diagonal(scene),
-                                                  footprint, receives);
-        xfree(receives);
-        xfree(footprint);
-    }
-    if (trace_light_paths(scene, &ts, js, &d, stats) < 0) {
-        photon_trace_free(&d.photons);
-        illumination_maps_free(d.illumination);
-        return error_set(err, "", 0,
-                         "photon map: more than %d photons would be stored; emit fewer "
-                         "photons or follow fewer bounces (--max-depth)", MAX_PHOTONS);
-    }
-    stats->photons_emitted = ts.n_emit;
-    stats->photons_caustic = d.photons.n_caustic;
-    out->caustics = caustic_photons_of(&d.photons);
-    out->photons = balance_kdtree(d.photons.photons, d.photons.n_photons); /* takes them */
-    stats->photons_stored = out->photons->n_photons;
-    stats->bytes_photon_map = kdtree_bytes(out->photons);
-    stats->bytes_caustic_photons = kdtree_bytes(out->caustics);
-    out->illumination = d.illumination;
-    if (out->illumination != NULL) {
-        illumination_maps_finish(out->illumination, scene->geometry);
-        count_illumination(out->illumination, stats);
-    }
-    return 0;
-}
-
-void irradiance_stores_free(struct irradiance_stores *stores)
-{
-    kdtree_free(stores->photons);
-    kdtree_free(stores->caustics);
-    illumination_maps_free(stores->illumination);
-    stores->photons = NULL;
-    stores->caustics = NULL;
-    stores->illumination = NULL;
-}
-
-struct vec3 stored_irradiance(const struct irradiance_stores *stores,
-                              const struct store_query *q, struct nearest *nn)
-{
-    if (stores->illumination != NULL && illumination_covers(stores->illumination, q->prim))
-        return illumination_irradiance(stores->illumination, q->prim, q->u, q->v,
-                                       q->estimate->kinds == PHOTON_CAUSTIC);
-    if (q->estimate->kinds == PHOTON_CAUSTIC) /* all of them are: no filter to apply */
-        return irradiance_estimate(stores->caustics, q->x, q->n, q->estimate, nn);
-    return irradiance_estimate(stores->photons, q->x, q->n, q->estimate, nn);
-}
-
 /* ---- Sec. 4, pass 2: Monte Carlo ray tracing ---- */
 
 /* A path from the eye, or from a gather (whose surfaces read the irradiance stores). */
 struct path {
     struct vec3 beta; /* throughput since the eye or the gathering point                */
     int depth;        /* bounces so far                                                  */
-    int secondary;    /* 1 on a gather ray: read the photon map, add no emission         */
+    int secondary;    /* 1: surfaces read the photon map (a gather ray, or with
+                         glossy_photons a path through a glossy lobe) instead of gathering */
+    int emission;     /* 1: it adds the emission it reaches (the eye's rays, and any ray
+                         after a glossy bounce: no caustic photon holds that light)       */
 };
 
 struct j94 {
@@ -290,6 +104,8 @@ struct j94 {
     struct irradiance_cache *cache;
     int filling_cache;               /* the pre-pass: records where none is usable      */
     int strata_theta, strata_phi;    /* a record's m x n strata, one ray each            */
+    int sample_theta, sample_phi;    /* a camera sample's share of them, for a glossy
+                                        part's gather (glossy_interreflection())         */
     int light_strata;                /* each light sampled on light_strata^2 strata      */
     double diagonal;                 /* of the scene's box                               */
     int max_depth;                   /* longest chain of bounces followed                */
@@ -312,22 +128,25 @@ static struct vec3 diffuse_reflection(const struct surface *s, const struct mate
 
 /* -- 4.0.1 L_r,d,l: direct light -- */
 
-/* Each light sampled on a k x k grid of jittered strata of its sample space, through the
- * diffuse-like part, with a shadow ray per sample; a point light, whose every sample is
- * the same, once. */
+/* Each light sampled on a k x k grid of jittered strata of its sample space, through
+ * `part` (the diffuse-like part), with a shadow ray per sample; a point light, whose every
+ * sample is the same, once. With points_only, the point lights alone (see
+ * specular_light()). */
 static struct vec3 direct_light(const struct j94 *m, const struct surface *s,
-                                const struct material *diffuse,
-                                const struct shading_frame *frame, struct rng *rng,
-                                struct render_counters *counters)
+                                const struct material *part,
+                                const struct shading_frame *frame, int points_only,
+                                struct rng *rng, struct render_counters *counters)
 {
     struct vec3 sum = vec3_zero();
     for (size_t i = 0; i < m->scene->n_lights; i++) {
+        if (points_only && m->scene->lights[i].kind != LIGHT_POINT)
+            continue;
         int k = m->scene->lights[i].kind == LIGHT_POINT ? 1 : m->light_strata;
         for (int j = 0; j < k * k; j++) {
             double u1 = (j % k + rng_uniform(rng)) / k, u2 = (j / k + rng_uniform(rng)) / k;
             struct light_sample ls;
             struct vec3 contribution;
-            if (!light_contribution(&m->scene->lights[i], s, diffuse, frame, u1, u2, &ls,
+            if (!light_contribution(&m->scene->lights[i], s, part, frame, u1, u2, &ls,
                                     &contribution))
                 continue;
             m->stats->shadow_rays++;
@@ -339,17 +158,55 @@ static struct vec3 direct_light(const struct j94 *m, const struct surface *s,
     return sum;
 }
 
+/* The radiance the diffuse-like part reflects from the photons of estimate `is`: albedo
+ * / pi times their irradiance (Sec. 4.0.2-4.0.3: the paper's diffuse-like surfaces are
+ * Lambertian). Departs from them where the photons kept their direction (glossy_gather,
+ * keeps_direction()): through a part that is not Lambertian, the reflected light depends
+ * on where it came from, so it is Jensen 1996's Eq. 3 through f_r,d (no differential
+ * checking). */
+static struct vec3 stored_reflection(const struct j94 *m, const struct surface *s,
+                                     const struct material *diffuse,
+                                     const struct shading_frame *frame,
+                                     const struct irradiance_settings *is)
+{
+    if (keeps_direction(m->js, m->stores.illumination, s->material, s->prim)) {
+        struct estimate_point at = {s->p, s->ng, s->wo, diffuse, frame};
+        struct estimate_settings es = {is->n, is->max_r2, 0.0, is->kinds, is->count_rim};
+        return radiance_estimate(m->stores.glossy, &at, &es, m->nn);
+    }
+    struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, is};
+    return diffuse_reflection(s, diffuse, frame, stored_irradiance(&m->stores, &q, m->nn));
+}
+
 /* -- 4.0.2 L_r,d,s: caustics, from the CP photons alone -- */
 
 static struct vec3 caustic_light(const struct j94 *m, const struct surface *s,
                                  const struct material *diffuse,
                                  const struct shading_frame *frame)
 {
-    struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, &m->caustic_photons};
-    return diffuse_reflection(s, diffuse, frame, stored_irradiance(&m->stores, &q, m->nn));
+    return stored_reflection(m, s, diffuse, frame, &m->caustic_photons);
 }
 
 /* -- L_r,s: the specular-like part by recursive Monte Carlo ray tracing -- */
+
+/* The path after a bounce off lobe bs of f_r,s. A glossy lobe is not a specular one: the
+ * light it brings is no caustic (CP photons follow delta bounces only), so the path adds
+ * the emission it reaches from here on. Departs from Sec. 4's recursion there
+ * (glossy_photons; off, the paper's: every surface seen from the eye is evaluated in
+ * full): a surface seen through a glossy lobe, whose blur hides the photon map's, reads
+ * the photon map as a gather ray's end does, instead of a final gather for every ray of
+ * every glossy bounce (on the sphere flake, whose Phong spheres see each other, half the
+ * camera samples fell outside the cache's records and gathered on the spot). */
+static struct path after_bounce(const struct j94 *m, const struct brdf_sample *bs,
+                                struct path path)
+{
+    path.depth++;
+    if (!bs->delta) {
+        path.emission = 1;
+        path.secondary = path.secondary || m->js->glossy_photons;
+    }
+    return path;
+}
 
 /* The radiance arriving along lobe bs of f_r,s times its weight, with Russian roulette
  * after ROULETTE_DEPTH bounces. */
@@ -362,7 +219,7 @@ static struct vec3 follow_lobe(const struct j94 *m, const struct surface *s,
     if (q < 1 && !(rng_uniform(rng) < q))
         return vec3_zero(); /* absorbed (always when q = 0) */
     path.beta = vec3_scale(path.beta, 1.0 / q);
-    path.depth++;
+    path = after_bounce(m, bs, path);
     struct vec3 li = trace(m, surface_ray(s, bs->wi, bs->transmitted), path, rng, counters);
     return vec3_mul(vec3_scale(bs->weight, 1.0 / q), li);
 }
@@ -397,38 +254,47 @@ static struct vec3 specular_light(const struct j94 *m, const struct surface *s,
 
 /* -- 4.0.3 L_r,d,d: multiple diffuse reflections by irradiance gradients -- */
 
-/* Ward and Heckbert's gather at s: one cosine-distributed ray per stratum, each bringing
- * the radiance a secondary path finds (the irradiance stores where it lands). Fills
+/* The ray of stratum (j, k) of an n_theta x n_phi gather at s (cosine-distributed within
+ * it): the radiance the secondary path finds (the irradiance stores where it lands) and
+ * the distance to its first surface, or zero and infinity when it leaves the scene (the
+ * sky is direct light, which direct_light() samples) or starts below the surface. */
+static struct stratum_sample gather_stratum(const struct j94 *m, const struct surface *s,
+                                            const struct shading_frame *frame, int n_theta,
+                                            int n_phi, int j, int k, struct path gather,
+                                            struct vec3 *wi, struct rng *rng,
+                                            struct render_counters *counters)
+{
+    struct stratum_sample sample = {{0.0, 0.0, 0.0}, INFINITY};
+    double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
+    struct vec3 local = stratum_direction(n_theta, n_phi, j, k, u1, u2);
+    *wi = vec3_add(vec3_add(vec3_scale(frame->t, local.x), vec3_scale(frame->b, local.y)),
+                   vec3_scale(frame->n, local.z));
+    if (!(vec3_dot(*wi, s->ng) > 0))
+        return sample; /* below the geometric surface: no light arrives */
+    struct surface at;
+    double t;
+    m->stats->gradient_rays++;
+    if (!ray_surface(m->scene, surface_ray(s, *wi, 0), counters, &at, &t))
+        return sample;
+    sample.radiance = trace_from(m, &at, gather, rng, counters);
+    sample.distance = t;
+    return sample;
+}
+
+/* Ward and Heckbert's gather at s: one cosine-distributed ray per stratum. Fills
  * m->strata; returns the record with its radius bounded as cache_pass.h says. */
 static struct irradiance_record gather_record(const struct j94 *m, const struct surface *s,
                                               const struct shading_frame *frame,
                                               struct path path, struct rng *rng,
                                               struct render_counters *counters)
 {
-    struct path gather = {vec3(1, 1, 1), path.depth + 1, 1};
-    for (int j = 0; j < m->strata_theta; j++) {
+    struct path gather = {vec3(1, 1, 1), path.depth + 1, 1, 0};
+    for (int j = 0; j < m->strata_theta; j++)
         for (int k = 0; k < m->strata_phi; k++) {
-            double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
-            struct vec3 local = stratum_direction(m->strata_theta, m->strata_phi, j, k, u1, u2);
-            struct vec3 wi = vec3_add(vec3_add(vec3_scale(frame->t, local.x),
-                                               vec3_scale(frame->b, local.y)),
-                                      vec3_scale(frame->n, local.z));
-            struct stratum_sample *sample = &m->strata[j * m->strata_phi + k];
-            sample->radiance = vec3_zero();
-            sample->distance = INFINITY;
-            if (!(vec3_dot(wi, s->ng) > 0))
-                continue; /* below the geometric surface: no light arrives */
-            struct surface at;
-            double t;
-            m->stats->gradient_rays++;
-            if (!ray_surface(m->scene, surface_ray(s, wi, 0), counters, &at, &t)) {
-                sample->radiance = m->scene->background;
-                continue;
-            }
-            sample->radiance = trace_from(m, &at, gather, rng, counters);
-            sample->distance = t;
+            struct vec3 wi;
+            m->strata[j * m->strata_phi + k] = gather_stratum(
+                m, s, frame, m->strata_theta, m->strata_phi, j, k, gather, &wi, rng, counters);
         }
-    }
     struct record_reach reach =
         record_reach_at(&m->scene->camera, s->p, frame->n, m->js->cache_accuracy, m->diagonal,
                         m->js->bounded_reach, m->js->gradient_limit);
@@ -436,8 +302,33 @@ static struct irradiance_record gather_record(const struct j94 *m, const struct 
                                 m->strata_phi, m->strata, reach);
 }
 
+/* A camera sample's share of a record's gather at s, sample_theta x sample_phi strata of
+ * one ray each: pi / (m n) times the sum over them of w L, w = f_r,d(wi, wo) through
+ * `through` (the reflected radiance), or 1 for NULL (the irradiance). Its mean over a
+ * pixel's samples is the pixel's, with the cost of one record per pixel. */
+static struct vec3 sample_gather(const struct j94 *m, const struct surface *s,
+                                 const struct material *through,
+                                 const struct shading_frame *frame, struct path path,
+                                 struct rng *rng, struct render_counters *counters)
+{
+    struct path gather = {vec3(1, 1, 1), path.depth + 1, 1, 0};
+    struct vec3 sum = vec3_zero();
+    for (int j = 0; j < m->sample_theta; j++)
+        for (int k = 0; k < m->sample_phi; k++) {
+            struct vec3 wi;
+            struct stratum_sample sample = gather_stratum(
+                m, s, frame, m->sample_theta, m->sample_phi, j, k, gather, &wi, rng, counters);
+            struct vec3 w = through != NULL ? brdf_eval(through, frame, s->wo, wi)
+                                            : vec3(1.0, 1.0, 1.0);
+            sum = vec3_add(sum, vec3_mul(w, sample.radiance));
+        }
+    return vec3_scale(sum, PI / (m->sample_theta * m->sample_phi));
+}
+
 /* The irradiance of multiple diffuse reflections at s: interpolated from the cache where
- * a record is usable (Ward 1988); else gathered, and in the pre-pass kept as a record. */
+ * a record is usable (Ward 1988); else gathered, in the pre-pass into a new record, in the
+ * final pass (a point no record covers) with the camera sample's share of a record's rays,
+ * kept nowhere. */
 static struct vec3 diffuse_interreflection(const struct j94 *m, const struct surface *s,
                                            const struct shading_frame *frame, struct path path,
                                            struct rng *rng, struct render_counters *counters)
@@ -446,11 +337,12 @@ static struct vec3 diffuse_interreflection(const struct j94 *m, const struct sur
     double a = m->js->cache_accuracy * (m->filling_cache ? CACHE_FILL_STRICTNESS : 1.0);
     if (irradiance_cache_lookup(m->cache, s->p, frame->n, a, &e))
         return e;
-    struct irradiance_record record = gather_record(m, s, frame, path, rng, counters);
-    if (m->filling_cache)
-        irradiance_cache_add(m->cache, &record);
-    else
+    if (!m->filling_cache) {
         m->stats->gather_fallbacks++;
+        return sample_gather(m, s, NULL, frame, path, rng, counters);
+    }
+    struct irradiance_record record = gather_record(m, s, frame, path, rng, counters);
+    irradiance_cache_add(m->cache, &record);
     return record.e;
 }
 
@@ -464,30 +356,43 @@ static struct vec3 eye_radiance(const struct j94 *m, const struct surface *s, st
     struct brdf_split split = brdf_split(s->material);
     struct vec3 l = surface_emission(s);
     if (split.has_diffuse) {
-        l = vec3_add(l, direct_light(m, s, &split.diffuse, &frame, rng, counters));
+        l = vec3_add(l, direct_light(m, s, &split.diffuse, &frame, 0, rng, counters));
         l = vec3_add(l, caustic_light(m, s, &split.diffuse, &frame));
-        struct vec3 e = diffuse_interreflection(m, s, &frame, path, rng, counters);
-        l = vec3_add(l, diffuse_reflection(s, &split.diffuse, &frame, e));
+        if (!split.lambertian && m->js->glossy_gather) {
+            /* Departs from Sec. 4.0.3, whose diffuse-like surfaces are Lambertian and
+             * reflect the cache's irradiance as albedo / pi: a part that is not (a broad
+             * lobe: Schlick's model with r >= 1/2) reflects int f_r,d L cos, which depends
+             * on where the light comes from, so each camera sample gathers its share
+             * through f_r,d itself, no cache (glossy_gather; off, the paper's). */
+            l = vec3_add(l, sample_gather(m, s, &split.diffuse, &frame, path, rng, counters));
+        } else {
+            struct vec3 e = diffuse_interreflection(m, s, &frame, path, rng, counters);
+            l = vec3_add(l, diffuse_reflection(s, &split.diffuse, &frame, e));
+        }
     }
-    if (split.has_specular)
+    if (split.has_specular) {
         l = vec3_add(l, specular_light(m, s, &split.specular, &frame, path, rng, counters));
+        /* L_r,s is traced, and a traced ray never meets a point light, a delta: a glossy
+         * lobe's highlight of one would be lost (the sphere flake's Phong spheres were
+         * 20-35% dark), so the point lights are sampled through a glossy lobe too. */
+        if (brdf_has_diffuse(&split.specular))
+            l = vec3_add(l, direct_light(m, s, &split.specular, &frame, 1, rng, counters));
+    }
     return l;
 }
 
 /* Radiance leaving s towards s->wo on a gather ray (Sec. 4.0.3): the diffuse-like part
  * reflects the irradiance of all photons, read from the photon map; the specular-like
- * part is followed on; no emission. */
+ * part is followed on; emission only on a path that has taken a glossy bounce. */
 static struct vec3 secondary_radiance(const struct j94 *m, const struct surface *s,
                                       struct path path, struct rng *rng,
                                       struct render_counters *counters)
 {
     struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
     struct brdf_split split = brdf_split(s->material);
-    struct vec3 l = vec3_zero();
-    if (split.has_diffuse) {
-        struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, &m->all_photons};
-        l = diffuse_reflection(s, &split.diffuse, &frame, stored_irradiance(&m->stores, &q, m->nn));
-    }
+    struct vec3 l = path.emission ? surface_emission(s) : vec3_zero();
+    if (split.has_diffuse)
+        l = vec3_add(l, stored_reflection(m, s, &split.diffuse, &frame, &m->all_photons));
     if (split.has_specular)
         l = vec3_add(l, specular_light(m, s, &split.specular, &frame, path, rng, counters));
     return l;
@@ -505,15 +410,15 @@ static struct vec3 trace(const struct j94 *m, struct ray ray, struct path path, 
 {
     struct surface s;
     double t;
-    if (!ray_surface(m->scene, ray, counters, &s, &t))
-        return m->scene->background;
+    if (!ray_surface(m->scene, ray, counters, &s, &t)) /* the sky, emission as any other */
+        return path.emission ? m->scene->background : vec3_zero();
     return trace_from(m, &s, path, rng, counters);
 }
 
 static struct vec3 j94_radiance(const void *mode, struct ray ray, struct rng *rng,
                                 struct render_counters *counters)
 {
-    struct path eye = {vec3(1, 1, 1), 0, 0};
+    struct path eye = {vec3(1, 1, 1), 0, 0, 1};
     return trace(mode, ray, eye, rng, counters);
 }
 
@@ -540,6 +445,10 @@ static void set_up(struct j94 *m, const struct scene *scene, const struct render
     m->strata_theta = (int)floor(sqrt(js->gather_rays / PI) + 0.5);
     m->strata_theta = m->strata_theta < 1 ? 1 : m->strata_theta;
     m->strata_phi = js->gather_rays / m->strata_theta;
+    int share = js->gather_rays / rs->spp; /* spp >= 1 */
+    m->sample_theta = (int)floor(sqrt(share / PI) + 0.5);
+    m->sample_theta = m->sample_theta < 1 ? 1 : m->sample_theta;
+    m->sample_phi = share / m->sample_theta > 0 ? share / m->sample_theta : 1;
     m->light_strata = (int)floor(sqrt((double)js->light_samples));
     m->filling_cache = 0;
     m->cache = irradiance_cache_create(isfinite(box.lo.x) ? box : (struct aabb){vec3_zero(),
@@ -558,7 +467,7 @@ static void tear_down(struct j94 *m)
 }
 
 /* Pass 1 into work when it is empty (maps[0] the photon map, maps[1] the CP photons'
- * tree, and the illumination maps when js asks for them), else the stores work holds
+ * tree, maps[2] the glossy photons' (keeps_direction()), and the illumination maps when js asks for them), else the stores work holds
  * (loaded from a file). m->stores borrows them from work. */
 static int photon_stores(struct j94 *m, const struct scene *scene,
                          const struct render_settings *rs, struct global_work *work,
@@ -568,25 +477,29 @@ static int photon_stores(struct j94 *m, const struct scene *scene,
         if (jensen1994_trace(scene, rs->seed, rs->max_depth, m->js, &m->stores, m->stats,
                              err) < 0)
             return -1;
-        global_work_add_maps(work, 2);
+        global_work_add_maps(work, 3);
         work->maps[0] = m->stores.photons;
         work->maps[1] = m->stores.caustics;
+        work->maps[2] = m->stores.glossy;
         work->illumination = m->stores.illumination;
         return 0;
     }
-    if (work->n_maps != 2 || work->maps[0] == NULL || work->maps[1] == NULL ||
+    if (work->n_maps != 3 || work->maps[0] == NULL || work->maps[1] == NULL ||
+        work->maps[2] == NULL ||
         (work->illumination != NULL) != (m->js->illumination_maps != 0))
-        return error_set(err, "", 0, "--load-photons: the file does not hold the two photon "
-                                     "maps (and, with --irradiance-store illumination, the "
-                                     "illumination maps) mode 1994 saves");
+        return error_set(err, "", 0, "--load-photons: the file does not hold the three "
+                                     "photon trees (and, with --irradiance-store "
+                                     "illumination, the illumination maps) mode 1994 saves");
     m->stores.photons = work->maps[0];
     m->stores.caustics = work->maps[1];
+    m->stores.glossy = work->maps[2];
     m->stores.illumination = work->illumination;
     if (work->illumination != NULL)
         count_illumination(work->illumination, m->stats);
-    m->stats->photons_stored = work->maps[0]->n_photons;
+    m->stats->photons_stored = work->maps[0]->n_photons + work->maps[2]->n_photons;
     m->stats->photons_caustic = work->maps[1]->n_photons;
-    m->stats->bytes_photon_map = kdtree_bytes(work->maps[0]);
+    m->stats->photons_glossy = work->maps[2]->n_photons;
+    m->stats->bytes_photon_map = kdtree_bytes(work->maps[0]) + kdtree_bytes(work->maps[2]);
     m->stats->bytes_caustic_photons = kdtree_bytes(work->maps[1]);
     return 0;
 }

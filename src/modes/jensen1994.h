@@ -49,6 +49,11 @@ struct jensen1994_settings {
     int both_lobes;        /* 1: L_r,s follows both lobes of glass (Whitted's way, a
                               departure); 0: one lobe sampled by the BRDF, the paper's
                               "recursive Monte Carlo ray tracing"                       */
+    int glossy_photons;    /* 1: surfaces seen through a glossy lobe read the photon map
+                              (a departure); 0: evaluated in full, the paper's            */
+    int glossy_gather;     /* 1: a diffuse-like part that is not Lambertian reflects the
+                              light each camera sample gathers through it (a departure);
+                              0: albedo / pi times the cache's irradiance, the paper's   */
     int bounded_reach;     /* 1: cache records' R bounded from the camera's view
                            (record_radius_bounds(), a departure); 0: Ward's R alone     */
     int gradient_limit;    /* 1: a record's R at most E / |grad E| (a departure); 0: not */
@@ -59,8 +64,8 @@ struct jensen1994_settings {
                               maps everywhere (Fig. 5)                                     */
     struct global_work *work; /* NULL: pass 1 and the cache's pre-pass run and are released
                                  here; else, empty, it receives their work (maps[0] the
-                                 photon map, maps[1] the CP photons' tree, the illumination
-                                 maps, the cache's records), or, full, holds it to use
+                                 photon map, maps[1] the CP photons' tree, maps[2] the
+                                 glossy photons', the illumination maps, the cache's records), or, full, holds it to use
                                  instead (photon/global_work.h)                          */
 };
 
@@ -69,7 +74,8 @@ struct jensen1994_stats {
     size_t photons_emitted;          /* light rays of pass 1                             */
     unsigned long long photon_rays;  /* rays cast tracing them                           */
     size_t photons_stored;           /* in the photon map: CP + DP                       */
-    size_t photons_caustic;          /* CP                                               */
+    size_t photons_caustic;          /* CP, but for the glossy tree's                    */
+    size_t photons_glossy;           /* those that keep their direction (their own tree) */
     size_t bytes_photon_map;
     size_t bytes_caustic_photons;    /* the copies of the CP photons in their own tree    */
     size_t projection_maps;          /* emission positions over all lights (0: maps off)  */
@@ -91,47 +97,6 @@ struct jensen1994_stats {
 };
 
 struct jensen1994_settings jensen1994_settings_default(void);
-
-struct kdtree;
-struct illumination_maps;
-struct nearest;
-struct irradiance_settings;
-
-/* The irradiance stores pass 1 fills (Sec. 3.2-3.3): the photon map, and with
- * js->illumination_maps the illumination maps of the surfaces that have parameters
- * (quads and spheres), which then hold those surfaces' photons instead. */
-struct irradiance_stores {
-    struct kdtree *photons;                 /* owned: photons holding their surface normal
-                                               and the caustic bit (CP: PHOTON_CAUSTIC)  */
-    struct kdtree *caustics;                /* owned: copies of the CP photons alone, so
-                                               that caustic estimates search only them   */
-    struct illumination_maps *illumination; /* owned, finished; NULL: photon maps only   */
-};
-
-/* Pass 1 alone (Sec. 3): js->n_photons light rays from the scene's lights (finished) with
- * seed, followed for at most max_depth bounces, deposited into *out (which the caller
- * releases with irradiance_stores_free()); fills the photon fields of *stats. Returns 0,
- * or -1 with *err filled and nothing left allocated when more than MAX_PHOTONS would be
- * stored. The render's first step, and `photon probe`'s (app/probe.h). */
-int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
-                     const struct jensen1994_settings *js, struct irradiance_stores *out,
-                     struct jensen1994_stats *stats, struct error *err);
-void irradiance_stores_free(struct irradiance_stores *stores);
-
-/* A point of a surface where irradiance is read. */
-struct store_query {
-    struct vec3 x, n;  /* the point and its unit normal, on the side of the light wanted */
-    int prim;          /* the primitive, and where on it (struct hit's u, v)              */
-    double u, v;
-    const struct irradiance_settings *estimate; /* the photon map's estimate; its kinds
-                                                   PHOTON_CAUSTIC asks for caustics only */
-};
-
-/* Irradiance at q: from the illumination map of q->prim where it has one (its CI alone
- * for caustics, DI + CI otherwise), else the photon map's estimate (estimate.h). nn: the
- * caller's scratch. */
-struct vec3 stored_irradiance(const struct irradiance_stores *stores,
-                              const struct store_query *q, struct nearest *nn);
 
 /* Renders the settings' window of the scene (finished) in two passes: the photon map,
  * then Monte Carlo ray tracing with an irradiance cache filled by a pre-pass over the

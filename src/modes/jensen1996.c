@@ -36,7 +36,9 @@
  * so a gather ray must not add emission reached through delta bounces either; and the
  * global estimate holds all light reflected by the diffuse part, so after an approximate
  * point only the specular part's rays continue, and what they hit counts in full. The
- * rule each ray carries (enum emission_rule) says which emission it may add.
+ * rule each ray carries (enum emission_rule) says which emission it may add. The sky is
+ * a light like the others (scene/light.h), so a ray that leaves the scene follows the
+ * same rule.
  *
  * Determinism. Every random number comes from the camera sample's stream (or, in the
  * cache's pre-pass, from rng_stream(seed, STREAM_CACHE, pixel, 0)). The irradiance cache
@@ -362,7 +364,7 @@ static void final_gather(const struct j96 *m, const struct gather_plan *plan,
                 struct hit hit;
                 counters->rays++;
                 sc->stats->gather_rays++;
-                struct vec3 li = m->scene->background;
+                struct vec3 li = vec3_zero(); /* the sky: direct light, sampled */
                 if (scene_intersect(m->scene, surface_ray(s, wi, 0), INFINITY, &hit)) {
                     struct surface at = surface_at(m->scene, &hit, vec3_neg(wi));
                     li = gathered_radiance(m, &at, hit.t, gather, rng, counters);
@@ -512,8 +514,8 @@ static struct vec3 trace(const struct j96 *m, struct ray ray, struct path path, 
 {
     struct surface s;
     double t;
-    if (!ray_surface(m->scene, ray, counters, &s, &t))
-        return m->scene->background;
+    if (!ray_surface(m->scene, ray, counters, &s, &t)) /* the sky, emission as any other */
+        return path.rule == EMISSION_COUNTED ? m->scene->background : vec3_zero();
     return surface_radiance(m, &s, path, rng, counters);
 }
 

@@ -75,6 +75,8 @@ struct ppm_settings {
 struct ppm_stats {
     size_t hit_points;               /* stored by the ray tracing pass                  */
     size_t bytes_per_hit_point;      /* the hit point and its share of the tree         */
+    size_t hit_members;              /* eye rays merged hit points keep for their caustic
+                                        estimates (struct hit_member each)              */
     long passes;                     /* photon passes done                               */
     size_t photons_emitted;          /* N_emitted of Eq. 13                             */
     double seconds_ray_pass;         /* CPU seconds of the ray tracing pass and tree     */

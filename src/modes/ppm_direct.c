@@ -28,9 +28,11 @@ void ppm_direct_create(struct ppm_direct *d, const struct scene *scene,
     d->passes = 0;
 }
 
-void ppm_direct_sample(struct ppm_direct *d, size_t pixel, uint64_t k, long pass,
-                       const struct surface *s, const struct shading_frame *frame,
-                       struct vec3 beta, struct render_counters *counters)
+/* ppm_direct_sample() and ppm_direct_point_lights(): the lights sampled are every light,
+ * or with points_only the point lights alone. */
+static void sample_lights(struct ppm_direct *d, size_t pixel, uint64_t k, long pass,
+                          const struct surface *s, const struct shading_frame *frame,
+                          struct vec3 beta, int points_only, struct render_counters *counters)
 {
     const struct scene *scene = d->scene;
     struct rng shifts =
@@ -42,6 +44,8 @@ void ppm_direct_sample(struct ppm_direct *d, size_t pixel, uint64_t k, long pass
         double u1, u2;
         sequence02_point(sequence02_shuffled((uint32_t)pass, order), (uint32_t)shift,
                          (uint32_t)(shift >> 32), &u1, &u2);
+        if (points_only && scene->lights[i].kind != LIGHT_POINT)
+            continue;
         struct light_sample ls;
         struct vec3 contribution;
         if (!light_contribution(&scene->lights[i], s, s->material, frame, u1, u2, &ls,
@@ -52,6 +56,20 @@ void ppm_direct_sample(struct ppm_direct *d, size_t pixel, uint64_t k, long pass
             sum = vec3_add(sum, contribution);
     }
     d->sum[pixel] = vec3_add(d->sum[pixel], vec3_mul(beta, sum));
+}
+
+void ppm_direct_sample(struct ppm_direct *d, size_t pixel, uint64_t k, long pass,
+                       const struct surface *s, const struct shading_frame *frame,
+                       struct vec3 beta, struct render_counters *counters)
+{
+    sample_lights(d, pixel, k, pass, s, frame, beta, 0, counters);
+}
+
+void ppm_direct_point_lights(struct ppm_direct *d, size_t pixel, uint64_t k, long pass,
+                             const struct surface *s, const struct shading_frame *frame,
+                             struct vec3 beta, struct render_counters *counters)
+{
+    sample_lights(d, pixel, k, pass, s, frame, beta, 1, counters);
 }
 
 void ppm_direct_end_pass(struct ppm_direct *d)

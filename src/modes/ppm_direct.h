@@ -36,6 +36,13 @@ void ppm_direct_sample(struct ppm_direct *d, size_t pixel, uint64_t k, long pass
                        const struct surface *s, const struct shading_frame *frame,
                        struct vec3 beta, struct render_counters *counters);
 
+/* As ppm_direct_sample(), the point lights alone, through s->material: at a glossy lobe an
+ * eye path follows by sampling it, whose sampled directions find every other light
+ * (their emission, counted along the path) but never a point light, a delta. */
+void ppm_direct_point_lights(struct ppm_direct *d, size_t pixel, uint64_t k, long pass,
+                             const struct surface *s, const struct shading_frame *frame,
+                             struct vec3 beta, struct render_counters *counters);
+
 /* Ends a pass: each pixel's sum now holds one more pass. */
 void ppm_direct_end_pass(struct ppm_direct *d);
 

@@ -8,7 +8,9 @@
  * power heuristic (multiple importance sampling, Veach 1997, Sec. 9.2): each weight is
  * pdf_a^2 / (pdf_a^2 + pdf_b^2) for the two strategies' solid-angle densities of the
  * same direction, and the weights of the two sum to one. Point lights and delta lobes
- * have one strategy only and weight 1. After ROULETTE_DEPTH bounces Russian roulette ends
+ * have one strategy only and weight 1. The sky is a light like the others: sampled
+ * about the normal, and found by a BRDF-sampled ray that leaves the scene, the two
+ * weighted alike. After ROULETTE_DEPTH bounces Russian roulette ends
  * a path with probability 1 - q, q = min(1, max channel of the throughput), and divides
  * survivors by q: unbiased, and no path is cut short by a depth limit it could exceed in
  * practice (--max-depth defaults to the limit, 1000). Nothing is clamped.
@@ -27,6 +29,7 @@ struct pt_mode {
 /* Where a path has been, for weighting the emission its next ray finds. */
 struct path_vertex {
     struct vec3 p;  /* the last scattering point                                   */
+    struct vec3 n;  /* its shading normal on the side the path left it by          */
     double pdf;     /* solid-angle pdf of the direction sampled there              */
     int delta;      /* whether it was a delta lobe (or the camera): no MIS         */
 };
@@ -47,7 +50,7 @@ static struct vec3 sample_one_light(const struct scene *scene, const struct surf
     int index = scene_pick_light(scene, rng_uniform(rng), &pick);
     double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
     struct light_sample ls;
-    if (index < 0 || !light_sample(&scene->lights[index], s->p, u1, u2, &ls))
+    if (index < 0 || !light_sample(&scene->lights[index], s->p, s->ns, u1, u2, &ls))
         return vec3_zero();
     double cos_theta = vec3_dot(s->ns, ls.wi);
     if (cos_theta <= 0 || vec3_dot(s->ng, ls.wi) <= 0)
@@ -65,18 +68,26 @@ static struct vec3 sample_one_light(const struct scene *scene, const struct surf
     return vec3_scale(vec3_mul(fr, ls.li), cos_theta * weight / pdf_light);
 }
 
-/* Emitted radiance that a BRDF-sampled ray found at s, MIS-weighted against having
- * sampled the same light from the previous vertex. */
-static struct vec3 emission_found(const struct scene *scene, const struct surface *s,
-                                  const struct path_vertex *previous)
+/* Radiance le of light `light` that a BRDF-sampled ray from the previous vertex found
+ * along unit wi, at q on the light (unused for the sky), MIS-weighted against having
+ * sampled the same light there. */
+static struct vec3 light_found(const struct scene *scene, int light, struct vec3 le,
+                               struct vec3 q, struct vec3 wi,
+                               const struct path_vertex *previous)
 {
-    struct vec3 le = surface_emission(s);
-    int light = scene->light_of_prim[s->prim];
     if (previous->delta || light < 0 || vec3_max_component(le) <= 0)
         return le;
     double pdf_light = scene_light_probability(scene, light) *
-                       light_pdf(&scene->lights[light], previous->p, s->p, vec3_neg(s->wo));
+                       light_pdf(&scene->lights[light], previous->p, previous->n, q, wi);
     return vec3_scale(le, power_heuristic(previous->pdf, pdf_light));
+}
+
+/* Emitted radiance that a BRDF-sampled ray found at s. */
+static struct vec3 emission_found(const struct scene *scene, const struct surface *s,
+                                  const struct path_vertex *previous)
+{
+    return light_found(scene, scene->light_of_prim[s->prim], surface_emission(s), s->p,
+                       vec3_neg(s->wo), previous);
 }
 
 static struct vec3 trace_path(const struct pt_mode *pt, struct ray ray, struct rng *rng,
@@ -84,12 +95,13 @@ static struct vec3 trace_path(const struct pt_mode *pt, struct ray ray, struct r
 {
     const struct scene *scene = pt->scene;
     struct vec3 l = vec3_zero(), beta = vec3(1, 1, 1);
-    struct path_vertex previous = {{0, 0, 0}, 0.0, 1}; /* the camera: a delta "lobe" */
+    struct path_vertex previous = {{0, 0, 0}, {0, 0, 0}, 0.0, 1}; /* the camera: a delta */
     for (int depth = 0;; depth++) {
         struct hit hit;
         counters->rays++;
         if (!scene_intersect(scene, ray, INFINITY, &hit))
-            return vec3_add(l, vec3_mul(beta, scene->background));
+            return vec3_add(l, vec3_mul(beta, light_found(scene, scene->sky, scene->background,
+                                                          ray.origin, ray.dir, &previous)));
         struct surface s = surface_at(scene, &hit, vec3_neg(ray.dir));
         l = vec3_add(l, vec3_mul(beta, emission_found(scene, &s, &previous)));
         if (depth >= pt->max_depth)
@@ -106,6 +118,7 @@ static struct vec3 trace_path(const struct pt_mode *pt, struct ray ray, struct r
             return l;
         beta = vec3_mul(beta, bs.weight);
         previous.p = s.p;
+        previous.n = s.ns;
         previous.pdf = bs.pdf;
         previous.delta = bs.delta;
         ray = surface_ray(&s, bs.wi, bs.transmitted);
@@ -118,6 +131,17 @@ static struct vec3 pt_radiance(const void *mode, struct ray ray, struct rng *rng
                                struct render_counters *counters)
 {
     return trace_path(mode, ray, rng, counters);
+}
+
+int pt_unreachable_light(const struct scene *scene)
+{
+    int specular = 0;
+    for (size_t i = 0; i < scene->n_materials; i++)
+        specular = specular || brdf_has_delta(&scene->materials[i]);
+    for (size_t i = 0; specular && i < scene->n_lights; i++)
+        if (scene->lights[i].kind == LIGHT_POINT)
+            return (int)i;
+    return -1;
 }
 
 struct render_result render_pt(const struct scene *scene, const struct render_settings *rs,

@@ -6,6 +6,14 @@
 
 #include "render.h"
 
+/* The first point light whose caustics pt cannot find, or -1: with something specular in
+ * the scene (a material with a delta lobe), light from a point light that reaches a
+ * diffuse surface only by way of mirrors or glass is found neither by a light sample
+ * (the shadow ray stops at the glass) nor by a sampled direction (a point has no area):
+ * probability zero, so those caustics are missing from pt's image, however long it runs
+ * (the photon modes find them). */
+int pt_unreachable_light(const struct scene *scene);
+
 struct render_result render_pt(const struct scene *scene, const struct render_settings *rs,
                                int want_variance, const struct checkpoint *checkpoint,
                                struct render_counters *counters);

@@ -100,7 +100,7 @@ static inline int light_contribution(const struct light *l, const struct surface
                                      const struct shading_frame *frame, double u1, double u2,
                                      struct light_sample *ls, struct vec3 *contribution)
 {
-    if (!light_sample(l, s->p, u1, u2, ls))
+    if (!light_sample(l, s->p, s->ns, u1, u2, ls))
         return 0;
     double cos_theta = vec3_dot(s->ns, ls->wi);
     if (cos_theta <= 0 || vec3_dot(s->ng, ls->wi) <= 0)
@@ -112,7 +112,8 @@ static inline int light_contribution(const struct light *l, const struct surface
     return 1;
 }
 
-/* Whether the shadow ray of light sample ls from s is blocked. */
+/* Whether the shadow ray of light sample ls from s is blocked (the sky's, of infinite
+ * length, by anything). */
 static inline int light_blocked(const struct scene *scene, const struct surface *s,
                                 const struct light_sample *ls)
 {

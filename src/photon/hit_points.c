@@ -208,6 +208,19 @@ void hit_point_tree_free(struct hit_point_tree *tree)
     tree->n = 0;
 }
 
+/* The share of hp's members whose disc of radius r about their own hit holds p. */
+static double members_holding(const struct hit_point *hp, struct vec3 p, double r)
+{
+    struct vec3 from_x = vec3_sub(p, hp->x);
+    double share = 0.0;
+    for (uint32_t j = 0; j < hp->n_members; j++) {
+        const struct hit_member *m = &hp->members[j];
+        if (vec3_length2(vec3_sub(from_x, vec3(m->dx, m->dy, m->dz))) <= r * r)
+            share += m->share;
+    }
+    return share;
+}
+
 void hit_point_add_photon(struct hit_point *hp, const struct photon_event *photon,
                           double unnormalise, int facing_test, int caustic_apart)
 {
@@ -215,9 +228,12 @@ void hit_point_add_photon(struct hit_point *hp, const struct photon_event *photo
         return;
     struct progressive_estimate *e =
         photon->kind == PHOTON_CAUSTIC && caustic_apart ? &hp->caustic : &hp->global;
-    if (vec3_length2(vec3_sub(photon->position, hp->x)) > e->radius * e->radius)
+    double share = e == &hp->caustic && hp->n_members > 0
+                       ? members_holding(hp, photon->position, e->radius)
+                       : vec3_length2(vec3_sub(photon->position, hp->x)) <= e->radius * e->radius;
+    if (!(share > 0))
         return; /* within the hit point's reach, not within this estimate's disc */
     struct vec3 f = brdf_eval(hp->material, &hp->frame, hp->wo, photon->wi);
-    e->tau = vec3_add(e->tau, vec3_mul(f, vec3_scale(photon->power, unnormalise)));
-    e->m_photons++;
+    e->tau = vec3_add(e->tau, vec3_mul(f, vec3_scale(photon->power, unnormalise * share)));
+    e->m_photons += share;
 }

@@ -36,8 +36,18 @@ struct progressive_estimate {
     double n_photons;  /* N(x), photons accumulated                                      */
     struct vec3 tau;   /* tau(x, w): flux times BRDF, unnormalised; during a pass it also
                           gathers the pass's tau_M                                       */
-    uint32_t m_photons; /* M(x): photons found in the current pass, at most the photons a
-                           pass traces (MAX_PHOTONS < 2^32)                              */
+    double m_photons;  /* M(x): photons found in the current pass (a caustic estimate of
+                          a merged hit point counts a photon by the share of its members
+                          whose discs hold it, so it may be a fraction)                  */
+};
+
+/* One of the eye rays a merged hit point stands for (ppm2008.c's --merge-hit-points): its
+ * hit position, for the caustic estimate, which is the mean over the members' discs. */
+struct hit_member {
+    float dx, dy, dz; /* its hit position less the hit point's x (within the hit point's
+                         disc, so a float keeps it to a ten-millionth of the radius)     */
+    float share;      /* its part of the hit point's weight (by luminance); the members'
+                         shares sum to 1                                                 */
 };
 
 struct hit_point {
@@ -51,17 +61,26 @@ struct hit_point {
     struct progressive_estimate global;  /* from every photon the caustic one leaves    */
     struct progressive_estimate caustic; /* from caustic photons (L S+ D) alone, at a
                                             radius of their own; radius 0 when unused   */
+    const struct hit_member *members;    /* borrowed: n_members eye rays merged into it,
+                                            whose caustic discs are centred on their own
+                                            hits; NULL (0): its caustic disc is x's     */
+    uint32_t n_members;
+    double spread;                       /* the farthest member from x (0 without)      */
 };
 
-/* How far from x a photon can count for hp: the larger of its estimates' radii. */
+/* How far from x a photon can count for hp: the larger of its estimates' radii, the
+ * caustic one about the farthest member. */
 static inline double hit_point_reach(const struct hit_point *hp)
 {
-    return hp->global.radius > hp->caustic.radius ? hp->global.radius : hp->caustic.radius;
+    double caustic = hp->caustic.radius + hp->spread;
+    return hp->global.radius > caustic ? hp->global.radius : caustic;
 }
 
 struct photon_event;
 
 /* A photon within hp's reach: tau_M += f_r(x, w, w_p) Phi'_p and M += 1 (2008, Eq. 11),
+ * or for the caustic estimate of a hit point with members, both times the share of its
+ * members whose caustic discs hold the photon,
  * Phi' being the photon's power times unnormalise (the tracer's Phi / N turned back into
  * the paper's unnormalised flux), for the estimate it belongs to: hp's caustic one for a
  * caustic photon when caustic_apart, else the global one. Nothing when it lies outside

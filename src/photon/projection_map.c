@@ -15,6 +15,14 @@
  * scene's box, at most MAX_PATCH_SIDE: 1 to 64 patches for a planar light, the paper's
  * "more positions for larger lights". A sphere's normal turns with its surface, so it is
  * cut into at least SPHERE_MIN_BANDS bands whatever its size (32 to 128 patches).
+ *   sky and       one patch whose map is one cell, the whole sphere of directions,
+ *   two-sided     marked with specularity 0 (no raise): the sky's photons start on the
+ *   lights        disc that faces their direction, outside the scene (emit.c), so every
+ *                  direction reaches every object from some point of the disc; a
+ *                  two-sided light emits from its back too, which the front's hemisphere
+ *                  does not cover. Departs from Sec. 3.1, which has neither: their
+ *                  photons leave as light_emit()'s, only stratified with the other
+ *                  lights' cells.
  *
  * Each patch has a centre o, a unit normal n at o (the map's axis), the radius rho
  * (every point of the patch lies within rho of o) and the angle beta (every normal of the
@@ -78,7 +86,9 @@
  * in the others; 8 bands of 16, at 21 and 13. */
 #define SPHERE_MIN_BANDS 4
 
-enum patch_shape { PATCH_POINT, PATCH_PARALLELOGRAM, PATCH_TRIANGLE, PATCH_SPHERE_ZONE };
+enum patch_shape {
+    PATCH_POINT, PATCH_PARALLELOGRAM, PATCH_TRIANGLE, PATCH_SPHERE_ZONE, PATCH_WHOLE
+};
 
 /* One emission position and its map. */
 struct patch {
@@ -150,15 +160,24 @@ struct cell_table {
 static struct grid grid_of(const struct projection_settings *ps, enum patch_shape shape)
 {
     struct grid g;
-    g.cosine = shape != PATCH_POINT;
+    g.cosine = shape != PATCH_POINT && shape != PATCH_WHOLE;
     g.n_rows = g.cosine ? ps->n_theta : 2 * ps->n_theta;
     g.n_phi = ps->n_phi;
+    if (shape == PATCH_WHOLE)
+        g.n_rows = g.n_phi = 1;
     g.d_theta = (g.cosine ? 0.5 * PI : PI) / g.n_rows;
     g.d_phi = 2.0 * PI / g.n_phi;
     return g;
 }
 
 /* ---- emission positions ---- */
+
+/* Whether light l's one patch is the whole sphere of directions: the sky, and a two-sided
+ * light (see the top of the file). */
+static int emitted_whole(const struct light *l)
+{
+    return l->kind == LIGHT_SKY || (l->two_sided && l->kind != LIGHT_POINT);
+}
 
 /* The pieces a side of this length is cut into (see the top of the file). */
 static int side_pieces(double length, double diagonal)
@@ -174,6 +193,8 @@ static int side_pieces(double length, double diagonal)
 static void patch_grid(const struct light *l, double diagonal, int *n1, int *n2)
 {
     *n1 = *n2 = 1;
+    if (emitted_whole(l))
+        return;
     if (l->kind == LIGHT_QUAD) {
         *n1 = side_pieces(vec3_length(l->e1), diagonal);
         *n2 = side_pieces(vec3_length(l->e2), diagonal);
@@ -290,9 +311,10 @@ static void sphere_patch(struct patch *p, const struct light *l, int n_bands, in
 static void make_patch(struct patch *p, const struct light *l, int n1, int n2, int k)
 {
     p->area_fraction = 1.0 / ((double)n1 * n2);
-    switch (l->kind) {
+    switch (emitted_whole(l) ? LIGHT_SKY : l->kind) {
     case LIGHT_POINT:
-        p->shape = PATCH_POINT;
+    case LIGHT_SKY:
+        p->shape = emitted_whole(l) ? PATCH_WHOLE : PATCH_POINT;
         p->centre = l->position;
         p->t = vec3(1, 0, 0);
         p->bt = vec3(0, 1, 0);
@@ -552,7 +574,9 @@ struct projection_maps *projection_maps_build(const struct scene *scene,
         struct grid g = grid_of(ps, p->shape);
         for (size_t c = 0; c < (size_t)g.n_rows * g.n_phi; c++)
             specularity[c] = -1.0;
-        for (size_t i = 0; i < n_objects; i++)
+        if (p->shape == PATCH_WHOLE && n_objects > 0)
+            specularity[0] = 0.0; /* the sky's one cell (see the top of the file) */
+        for (size_t i = 0; p->shape != PATCH_WHOLE && i < n_objects; i++)
             if ((int)i != l->prim) /* the light's own surface: flat or convex */
                 mark_object(&g, &cells, p, &objects[i], specularity);
         collect_marked(pm, k, vec3_luminance(light_power(l)), specularity);
@@ -621,6 +645,7 @@ void projection_origin(const struct projection_maps *pm, const struct scene *sce
     const struct light *l = &scene->lights[p->light];
     switch (p->shape) {
     case PATCH_POINT:
+    case PATCH_WHOLE: /* emitted as light_emit() does: the light's position stands for it */
         e->origin = p->centre;
         e->normal = vec3_zero();
         return;
@@ -673,6 +698,16 @@ int projection_emit(const struct projection_maps *pm, const struct scene *scene,
     const struct marked_cell *c = pick_cell(pm, u[0]);
     const struct patch *p = &pm->patches[c->map];
     const struct light *l = &scene->lights[p->light];
+    /* Phi_l a_k F_c / (P_c N) with P_c = lum(Phi_l) a_k F_c (1 + boost s_c) / total:
+     * lum(Phi_l) > 0 (invariant (c)), 1 + boost s_c >= 1 */
+    double weight =
+        pm->total / (vec3_luminance(light_power(l)) * (1.0 + pm->settings.boost * c->specularity));
+    if (p->shape == PATCH_WHOLE) { /* its one cell is the whole sphere: the light's own emission */
+        if (!light_emit(l, u + 1, e))
+            return -1;
+        e->weight = weight;
+        return p->light;
+    }
     projection_origin(pm, scene, c->map, u + 1, e);
     struct grid g = grid_of(&pm->settings, p->shape);
     struct vec3 w = cell_direction(&g, c->cell, u[3], u[4]);
@@ -680,10 +715,7 @@ int projection_emit(const struct projection_maps *pm, const struct scene *scene,
                       vec3_scale(p->n, w.z));
     if (p->shape == PATCH_SPHERE_ZONE) /* (2) at the top of the file */
         e->dir = turn_between(e->dir, p->n, e->normal);
-    /* Phi_l a_k F_c / (P_c N) with P_c = lum(Phi_l) a_k F_c (1 + boost s_c) / total:
-     * lum(Phi_l) > 0 (invariant (c)), 1 + boost s_c >= 1 */
-    e->weight = pm->total /
-                (vec3_luminance(light_power(l)) * (1.0 + pm->settings.boost * c->specularity));
+    e->weight = weight;
     return p->light;
 }
 

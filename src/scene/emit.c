@@ -17,6 +17,23 @@
  * (cos / pi) / pdf = cos Omega / (pi m) for an area light (0 behind its front), so
  * E[weight] is the fraction of Phi_l that leaves towards the targets, and the sum of
  * the photons' powers through any direction of the cones is unbiased.
+ *
+ * The sky (light.h) sends radiance Le from every direction into its sphere, of centre c
+ * and radius R around the scene. A photon comes from a direction w uniform over the
+ * sphere of directions and starts at a point uniform on the disc of radius R about
+ * c + R w facing it, travelling along -w: the sky's power reaches the sphere as Le
+ * (pi R^2) dw from each dw, so the density 1 / (4 pi pi R^2) of the pair gives each of
+ * N photons (Le pi R^2 4 pi) / N = Phi / N (pbrt-v4 emits its infinite lights alike).
+ * The plane of the disc lies outside the sphere, so nothing of the scene stands between
+ * a photon's origin and the sphere.
+ *
+ * Directed emission from the sky aims at a target's disc instead: w uniform again, and a
+ * point uniform on the disc of radius r_t about the target's centre projected onto that
+ * plane, the target picked with probability r_t^2 / sum_s r_s^2. Discs may overlap, so the
+ * density of a point x of the plane is sum_t [x in disc_t] (r_t^2 / sum r^2) / (pi r_t^2)
+ * = m(x) / (pi sum r^2), and the weight, the sky's own density over it, is
+ * sum r^2 / (R^2 m(x)) inside the sky's disc and 0 outside it (no light of the sky starts
+ * there; a target's sphere may reach past the sky's, its primitives never do).
  */
 #include "emit.h"
 
@@ -69,6 +86,10 @@ static int light_point(const struct light *l, double u1, double u2, struct vec3 
         *y = l->position;
         *n = vec3_zero();
         return 1;
+    case LIGHT_SKY: /* no surface: its photons start on a disc (sky_emit()) */
+        *y = l->position;
+        *n = vec3_zero();
+        return 0;
     case LIGHT_SPHERE:
         *n = uniform_sphere(u1, u2);
         *y = vec3_madd(l->position, *n, l->radius);
@@ -87,9 +108,51 @@ static int light_point(const struct light *l, double u1, double u2, struct vec3 
     return vec3_length2(*n) > 0;
 }
 
+/* A point uniform on the disc of radius r about centre, perpendicular to unit w (the
+ * disc's area is sampled by the square root of u1). */
+static struct vec3 disc_point(struct vec3 centre, struct vec3 w, double r, double u1,
+                              double u2)
+{
+    struct vec3 t, b;
+    vec3_frame(w, &t, &b);
+    double rho = r * sqrt(u1), phi = 2.0 * PI * u2;
+    return vec3_add(centre, vec3_add(vec3_scale(t, rho * cos(phi)),
+                                     vec3_scale(b, rho * sin(phi))));
+}
+
+/* The sky's photon (see the top of the file): u[0], u[1] the point of the disc, u[2], u[3]
+ * the direction w the light comes from. */
+static int sky_emit(const struct light *l, const double u[4], struct emission *e)
+{
+    struct vec3 w = uniform_sphere(u[2], u[3]);
+    e->origin = disc_point(vec3_madd(l->position, w, l->radius), w, l->radius, u[0], u[1]);
+    e->dir = vec3_neg(w);
+    e->normal = vec3_zero(); /* it starts on no surface */
+    e->weight = 1.0;
+    return l->radius > 0;
+}
+
+/* A point of area light l with light_point() from u1, u2, and the side it emits from: the
+ * front's normal, or for a two-sided light the back's as often, u2 telling which (the
+ * half it falls in, stretched back over [0, 1) for the point). */
+static int emitting_point(const struct light *l, double u1, double u2, struct vec3 *y,
+                          struct vec3 *n)
+{
+    int back = l->two_sided && u2 >= 0.5;
+    if (l->two_sided)
+        u2 = back ? 2.0 * u2 - 1.0 : 2.0 * u2;
+    if (!light_point(l, u1, u2, y, n))
+        return 0;
+    if (back)
+        *n = vec3_neg(*n);
+    return 1;
+}
+
 int light_emit(const struct light *l, const double u[4], struct emission *e)
 {
-    if (!light_point(l, u[0], u[1], &e->origin, &e->normal))
+    if (l->kind == LIGHT_SKY)
+        return sky_emit(l, u, e);
+    if (!emitting_point(l, u[0], u[1], &e->origin, &e->normal))
         return 0;
     e->weight = 1.0;
     if (l->kind == LIGHT_POINT)
@@ -160,10 +223,50 @@ static size_t cones_containing(const struct emission_targets *targets, struct ve
     return m;
 }
 
+/* Directed emission from the sky (see the top of the file): u[4] picks a target by r^2,
+ * u[0], u[1] the point of its disc, u[2], u[3] the direction w. */
+static int sky_emit_towards(const struct light *l, const struct emission_targets *targets,
+                            const double u[5], struct emission *e)
+{
+    double total = 0.0; /* sum_t r_t^2 */
+    for (size_t t = 0; t < targets->n_spheres; t++)
+        total += targets->spheres[t].radius * targets->spheres[t].radius;
+    double below = u[4] * total, cumulative = 0.0;
+    size_t picked = 0; /* the last when rounding left u total at or above the sum */
+    for (; picked + 1 < targets->n_spheres; picked++) {
+        cumulative += targets->spheres[picked].radius * targets->spheres[picked].radius;
+        if (below < cumulative)
+            break;
+    }
+    struct vec3 w = uniform_sphere(u[2], u[3]);
+    struct vec3 plane = vec3_madd(l->position, w, l->radius); /* the sky disc's centre */
+    const struct bounding_sphere *target = &targets->spheres[picked];
+    struct vec3 across = vec3_sub(target->centre, l->position);
+    struct vec3 centre = vec3_add(plane, vec3_madd(across, w, -vec3_dot(across, w)));
+    e->origin = disc_point(centre, w, target->radius, u[0], u[1]);
+    e->dir = vec3_neg(w);
+    e->normal = vec3_zero();
+    struct vec3 offset = vec3_sub(e->origin, plane);
+    if (!(l->radius > 0) || vec3_length2(offset) > l->radius * l->radius)
+        return 0; /* outside the sky's disc: no light of the sky starts there */
+    double m = 1.0; /* m(x): the picked disc counts without a test, as cones_containing() */
+    for (size_t t = 0; t < targets->n_spheres; t++) {
+        struct vec3 c = vec3_sub(targets->spheres[t].centre, l->position);
+        struct vec3 from_axis = vec3_sub(offset, vec3_madd(c, w, -vec3_dot(c, w)));
+        double r = targets->spheres[t].radius;
+        if (t != picked && vec3_length2(from_axis) <= r * r)
+            m++;
+    }
+    e->weight = total / (l->radius * l->radius * m);
+    return 1;
+}
+
 int light_emit_towards(const struct light *l, const struct emission_targets *targets,
                        const double u[5], struct emission *e)
 {
-    if (!light_point(l, u[0], u[1], &e->origin, &e->normal))
+    if (l->kind == LIGHT_SKY)
+        return sky_emit_towards(l, targets, u, e);
+    if (!emitting_point(l, u[0], u[1], &e->origin, &e->normal))
         return 0;
     double total = 0.0; /* Omega / (2 pi) */
     for (size_t t = 0; t < targets->n_spheres; t++) {

@@ -3,12 +3,46 @@
  */
 #include "light.h"
 
+#include "brdf_models.h"
+
+static struct vec3 light_front_power(const struct light *l);
+
 /* Whether a point at squared distance d2 from a sphere light's centre sees its outside.
  * Points on the sphere itself (within rounding, 1e-9 relative) do not: they see its
  * surface edge-on, and a point on its inside sees no front side at all. */
 static int outside_sphere(double d2, double r2)
 {
     return d2 > r2 * (1.0 + 1e-9);
+}
+
+/* The solid-angle pdf of sample_inside() for the direction from p towards q on the sphere:
+ * d^2 / (A cos_l), the inner normal at q facing p. 0 where it does not (rounding). */
+static double inside_pdf(const struct light *l, struct vec3 p, struct vec3 q)
+{
+    struct vec3 to_q = vec3_sub(q, p);
+    double d2 = vec3_length2(to_q);
+    struct vec3 outward = vec3_normalize(vec3_sub(q, l->position));
+    double cos_light = d2 > 0 ? vec3_dot(to_q, outward) / sqrt(d2) : 0.0;
+    double area = 4.0 * PI * l->radius * l->radius;
+    return cos_light > 0 && area > 0 ? d2 / (area * cos_light) : 0.0;
+}
+
+/* Inside a two-sided sphere light: a point q uniform by area over the sphere, every one of
+ * which faces p (its inner side), its pdf in solid angle d^2 / (A cos_l). */
+static int sample_inside(const struct light *l, struct vec3 p, double u1, double u2,
+                         struct light_sample *s)
+{
+    double z = 1.0 - 2.0 * u1, radius = 2.0 * sqrt(u1 * (1.0 - u1)), phi = 2.0 * PI * u2;
+    struct vec3 q = vec3_madd(l->position, vec3(radius * cos(phi), radius * sin(phi), z),
+                              l->radius);
+    struct vec3 to_q = vec3_sub(q, p);
+    s->distance = vec3_length(to_q);
+    if (!(s->distance > 0))
+        return 0;
+    s->wi = vec3_scale(to_q, 1.0 / s->distance);
+    s->li = l->radiance;
+    s->pdf = inside_pdf(l, p, q);
+    return s->pdf > 0;
 }
 
 /* A sphere of radius r seen from distance d > r subtends a cone of half-angle theta_max,
@@ -22,7 +56,7 @@ static int sample_sphere(const struct light *l, struct vec3 p, double u1, double
     double d2 = vec3_length2(to_centre);
     double r2 = l->radius * l->radius;
     if (!outside_sphere(d2, r2))
-        return 0;
+        return l->two_sided ? sample_inside(l, p, u1, u2, s) : 0;
     double d = sqrt(d2);
     double sin2_max = r2 / d2;
     double cos_max = sqrt(fmax(0.0, 1.0 - sin2_max));
@@ -67,6 +101,8 @@ static int sample_planar(const struct light *l, struct vec3 p, struct vec3 q, do
     double d = sqrt(d2);
     s->wi = vec3_scale(to_light, 1.0 / d);
     double cos_light = -vec3_dot(s->wi, n);
+    if (l->two_sided)
+        cos_light = fabs(cos_light); /* its back emits too */
     if (!(cos_light > 0))
         return 0; /* p is behind the one-sided emitter or in its plane */
     s->distance = d;
@@ -75,7 +111,22 @@ static int sample_planar(const struct light *l, struct vec3 p, struct vec3 q, do
     return 1;
 }
 
-int light_sample(const struct light *l, struct vec3 p, double u1, double u2,
+/* The sky seen from a point with unit normal n: a direction cosine-distributed about n
+ * (pdf cos / pi), along which the sky's radiance arrives unless something is in the way. */
+static int sample_sky(const struct light *l, struct vec3 n, double u1, double u2,
+                      struct light_sample *s)
+{
+    struct vec3 local = sample_cosine_local(u1, u2), t, b;
+    vec3_frame(n, &t, &b);
+    s->wi = vec3_add(vec3_add(vec3_scale(t, local.x), vec3_scale(b, local.y)),
+                     vec3_scale(n, local.z));
+    s->distance = INFINITY;
+    s->li = l->radiance;
+    s->pdf = local.z / PI; /* > 0: sample_cosine_local() keeps z above 0 */
+    return 1;
+}
+
+int light_sample(const struct light *l, struct vec3 p, struct vec3 n, double u1, double u2,
                  struct light_sample *s)
 {
     switch (l->kind) {
@@ -104,25 +155,33 @@ int light_sample(const struct light *l, struct vec3 p, double u1, double u2,
                                                        vec3_scale(l->e2, u2 * su)));
         return sample_planar(l, p, q, planar_area(l), s);
     }
+    case LIGHT_SKY:
+        return sample_sky(l, n, u1, u2, s);
     }
     return 0;
 }
 
-double light_pdf(const struct light *l, struct vec3 p, struct vec3 q, struct vec3 wi)
+double light_pdf(const struct light *l, struct vec3 p, struct vec3 n, struct vec3 q,
+                 struct vec3 wi)
 {
     if (l->kind == LIGHT_POINT)
         return 0.0;
+    if (l->kind == LIGHT_SKY)
+        return fmax(0.0, vec3_dot(n, wi)) / PI;
     if (l->kind == LIGHT_SPHERE) {
         double d2 = vec3_length2(vec3_sub(l->position, p));
         double r2 = l->radius * l->radius;
+        if (!outside_sphere(d2, r2) && l->two_sided)
+            return inside_pdf(l, p, q);
         if (!outside_sphere(d2, r2))
             return 0.0;
         double sin2_max = r2 / d2;
         double one_minus_cos_max = sin2_max / (1.0 + sqrt(fmax(0.0, 1.0 - sin2_max)));
         return one_minus_cos_max > 0 ? 1.0 / (2.0 * PI * one_minus_cos_max) : 0.0;
     }
-    struct vec3 n = vec3_normalize(vec3_cross(l->e1, l->e2));
-    double cos_light = -vec3_dot(wi, n);
+    struct vec3 front = vec3_normalize(vec3_cross(l->e1, l->e2));
+    double cos_light = -vec3_dot(wi, front);
+    cos_light = l->two_sided ? fabs(cos_light) : cos_light;
     double area = planar_area(l);
     if (!(cos_light > 0) || !(area > 0))
         return 0.0; /* the back of a one-sided emitter is never sampled */
@@ -130,6 +189,14 @@ double light_pdf(const struct light *l, struct vec3 p, struct vec3 q, struct vec
 }
 
 struct vec3 light_power(const struct light *l)
+{
+    if (l->two_sided && l->kind != LIGHT_POINT && l->kind != LIGHT_SKY)
+        return vec3_scale(light_front_power(l), 2.0);
+    return light_front_power(l);
+}
+
+/* light_power() of the front side alone. */
+static struct vec3 light_front_power(const struct light *l)
 {
     switch (l->kind) {
     case LIGHT_POINT:
@@ -139,6 +206,8 @@ struct vec3 light_power(const struct light *l)
     case LIGHT_QUAD:
     case LIGHT_TRIANGLE:
         return vec3_scale(l->radiance, PI * planar_area(l));
+    case LIGHT_SKY:
+        return vec3_scale(l->radiance, PI * l->radius * l->radius * 4.0 * PI);
     }
     return vec3_zero();
 }

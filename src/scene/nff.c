@@ -302,7 +302,7 @@ static int read_background(struct nff_reader *rd, struct error *err)
         return -1;
     if (!(v[0] >= 0 && v[1] >= 0 && v[2] >= 0))
         return nff_error(rd, err, "the colour must not be negative");
-    rd->scene->background = vec3_at(v);
+    scene_set_background(rd->scene, vec3_at(v), rd->file, rd->line);
     return 0;
 }
 

@@ -138,7 +138,7 @@ static int parse_background(struct parser *ps, struct error *err)
         return -1;
     if (!is_colour_in(v, 0, HUGE_VAL))
         return parse_error(ps, err, "radiance must not be negative");
-    ps->scene->background = vec3_at(v);
+    scene_set_background(ps->scene, vec3_at(v), ps->file, ps->line);
     return expect_end(ps, err);
 }
 
@@ -269,18 +269,41 @@ static int parse_file(struct scene *scene, const char *path, int depth, struct e
     return status;
 }
 
+/* The sky, once the last primitive is in (scene_add_sky()): its power limit is the
+ * background line's error. */
+static int add_sky(struct scene *scene, struct error *err)
+{
+    int light = scene_add_sky(scene);
+    if (light == SCENE_TOO_BRIGHT)
+        return error_set(err, scene->background_file, scene->background_line,
+                         "background: the sky's power, radiance x pi R^2 x 4 pi for the "
+                         "radius R of the sphere around the scene, would take the lights' "
+                         "total past %g W in a channel", MAX_LIGHT_POWER);
+    return scene_add_error(light == -1 ? 0 : light, scene->background_file,
+                           scene->background_line, "background", err);
+}
+
 struct scene *scene_load(const char *path, struct error *err)
 {
     size_t length = strlen(path);
-    if (length > 4 && strcmp(path + length - 4, ".nff") == 0)
-        return nff_load(path, err);
-    struct scene *scene = scene_create();
-    if (parse_file(scene, path, 0, err) < 0) {
-        scene_free(scene);
-        return NULL;
+    struct scene *scene;
+    if (length > 4 && strcmp(path + length - 4, ".nff") == 0) {
+        scene = nff_load(path, err);
+        if (scene == NULL)
+            return NULL;
+    } else {
+        scene = scene_create();
+        if (parse_file(scene, path, 0, err) < 0) {
+            scene_free(scene);
+            return NULL;
+        }
+        if (!scene->has_camera) {
+            error_set(err, path, 0, "no camera: a scene needs a 'camera' line");
+            scene_free(scene);
+            return NULL;
+        }
     }
-    if (!scene->has_camera) {
-        error_set(err, path, 0, "no camera: a scene needs a 'camera' line");
+    if (add_sky(scene, err) < 0) {
         scene_free(scene);
         return NULL;
     }

@@ -7,6 +7,7 @@
 #include "scene.h"
 
 #include <assert.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "../base/alloc.h"
@@ -24,6 +25,7 @@ struct scene *scene_create(void)
     scene->width = 256;
     scene->height = 256;
     scene->background = vec3_zero();
+    scene->sky = -1;
     scene->light_power = vec3_zero();
     scene->geometry = geometry_create();
     scene->source_hash = FNV1A_OFFSET_BASIS;
@@ -100,6 +102,7 @@ static int register_prim(struct scene *scene, int id, int material, struct light
     if (l == NULL || !material_emits(m))
         return id;
     l->radiance = m->emission;
+    l->two_sided = m->two_sided;
     l->prim = id;
     int light = add_light(scene, l);
     if (light < 0)
@@ -161,6 +164,39 @@ int scene_add_point_light(struct scene *scene, struct vec3 position, struct vec3
     l.power = power;
     l.prim = -1;
     return add_light(scene, &l);
+}
+
+void scene_set_background(struct scene *scene, struct vec3 le, const char *file, int line)
+{
+    scene->background = le;
+    snprintf(scene->background_file, sizeof scene->background_file, "%s", file);
+    scene->background_line = line;
+}
+
+/* The sky's sphere is the box's circumscribed sphere, widened by a millionth so that
+ * rounding leaves every primitive strictly inside it: every photon the sky emits starts
+ * outside the scene (emit.c). A scene with no primitive gets a point-sized sphere at the
+ * origin, whose sky lights nothing but is still seen and sampled. */
+int scene_add_sky(struct scene *scene)
+{
+    assert(scene->sky < 0);
+    if (!(vec3_max_component(scene->background) > 0))
+        return -1;
+    struct light l;
+    memset(&l, 0, sizeof l);
+    l.kind = LIGHT_SKY;
+    l.radiance = scene->background;
+    l.prim = -1;
+    struct aabb box = geometry_bounds(scene->geometry);
+    if (box.lo.x <= box.hi.x) {
+        l.position = vec3_scale(vec3_add(box.lo, box.hi), 0.5);
+        l.radius = 0.5 * vec3_length(vec3_sub(box.hi, box.lo)) * (1.0 + 1e-6) +
+                   1e-9 * fmax(1.0, vec3_max_abs(l.position));
+    }
+    int light = add_light(scene, &l);
+    if (light >= 0)
+        scene->sky = light;
+    return light;
 }
 
 int scene_add_error(int id, const char *file, int line, const char *keyword,

@@ -8,7 +8,9 @@
  *
  * Every primitive whose material emits becomes an area light too (spheres, triangles and
  * quads; emitters on other shapes are refused by the parser), so that a ray that hits an
- * emitter can find its light through light_of_prim.
+ * emitter can find its light through light_of_prim. A background that is not black becomes
+ * the sky, the last light (light.h), once the geometry is complete (scene_add_sky()): one
+ * scene keyword, one light, in every mode.
  */
 #ifndef PHOTON_SCENE_H
 #define PHOTON_SCENE_H
@@ -40,7 +42,11 @@ struct scene {
     int width, height;           /* image size given by the file (options may override) */
     struct camera camera;        /* set up for width x height by scene_finish()         */
     int has_camera;              /* whether the file gave a camera                      */
-    struct vec3 background;      /* radiance of rays that leave the scene               */
+    struct vec3 background;      /* radiance of rays that leave the scene: the sky's Le */
+    char background_file[ERROR_FILE_MAX]; /* where the background was given, for the   */
+    int background_line;                  /* sky's power limit (scene_add_sky())       */
+    int sky;                     /* index of the sky among the lights, or -1: a black
+                                    background lights nothing and is no light           */
     struct material *materials;  /* owned; n_materials of them                          */
     size_t n_materials;
     struct light *lights;        /* owned; n_lights of them                             */
@@ -86,6 +92,17 @@ int scene_add_shape(struct scene *scene, const struct shape_ops *ops, void *shap
 /* A point light of power Phi (W per channel); returns its light index, or SCENE_FULL or
  * SCENE_TOO_BRIGHT as above. */
 int scene_add_point_light(struct scene *scene, struct vec3 position, struct vec3 power);
+
+/* The background's radiance le (finite, >= 0), given at file:line (kept for the sky's
+ * errors); the last one given wins. */
+void scene_set_background(struct scene *scene, struct vec3 le, const char *file, int line);
+
+/* Makes a background that is not black the sky: a light of radiance Le whose sphere is
+ * the one around the box of every primitive (light.h). Call once, after the last
+ * primitive. Returns the sky's light index, -1 for a black background (no sky), or
+ * SCENE_FULL or SCENE_TOO_BRIGHT as above (the sky's power Le pi R^2 4 pi grows with the
+ * scene's size). */
+int scene_add_sky(struct scene *scene);
 
 /* The readers' report of a scene_add_*() result: 0 when id >= 0, else -1 with *err filled
  * as "file:line: keyword: " and what limit id < 0 ran into. */

@@ -6,38 +6,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-
-#include "../../src/scene/scene.h"
-
-double bench_seconds(void)
-{
-    return (double)clock() / CLOCKS_PER_SEC;
-}
-
-static int compare_doubles(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-double bench_median(double *values, int count)
-{
-    qsort(values, (size_t)count, sizeof *values, compare_doubles);
-    return values[count / 2];
-}
-
-struct scene *bench_scene(const char *path)
-{
-    struct error err;
-    struct scene *scene = scene_load(path, &err);
-    if (scene == NULL) {
-        error_print(&err);
-        return NULL;
-    }
-    scene_finish(scene, scene->width, scene->height);
-    return scene;
-}
 
 struct workload {
     const char *name;

@@ -2,11 +2,12 @@
  * tests/bench/bench_rays.c -- ray casting, bench/README.md, rays: build seconds, BVH bytes,
  * primary and secondary Mrays/s, and the checksums that show the work was the same.
  *
- * bench_ray_workload() runs the workload on any scene; bench_rays() runs it on the SPD
- * scenes balls-s4 and mount-s6 read by our NFF importer (from the folder PHOTON_SPD, make
- * bench SPD=DIR; skipped, saying so, without it), on our generated scene terrain1m
- * (a 725 x 725 grid of quads over a sum of sines, two triangles each: 1,051,250 triangles),
- * and on the default Cornell box. For files, build_s includes reading the file.
+ * bench_ray_workload() runs the workload on any scene; bench_ray_scenes() hands a workload
+ * the SPD scenes balls-s4 and mount-s6 read by our NFF importer (from the folder PHOTON_SPD,
+ * make bench SPD=DIR; skipped, saying so, without it), our generated scene terrain1m (a
+ * 725 x 725 grid of quads over a sum of sines, two triangles each: 1,051,250 triangles) and
+ * the default Cornell box; bench_rays() runs bench_ray_workload() on them, and the Embree
+ * comparison (embree/bench_embree.c) its own. For files, build_s includes reading the file.
  */
 #include "bench_rays.h"
 
@@ -24,18 +25,10 @@
 #define BENCH_SEED 1             /* keys the secondary directions' stream                  */
 #define TERRAIN_QUADS 725        /* per side: 2 * 725^2 = 1,051,250 triangles             */
 
-/* One ray set and what casting it found. */
-struct ray_set {
-    struct ray *rays;   /* owned */
-    size_t n_rays;
-    size_t n_hits;
-    double t_sum;       /* sum of the hit distances */
-};
-
 /* bench/README.md, rays camera: w = normalize(at - from), u = normalize(w x up), v = u x w, and
  * pixel (i, j), j = 0 at the top, looks along w + (2(i+1/2)/W - 1) t (W/H) u +
  * (1 - 2(j+1/2)/H) t v with t = tan(angle / 2) (here W = H). */
-static struct ray_set primary_rays(const struct bench_camera *camera)
+struct ray_set bench_primary_rays(const struct bench_camera *camera)
 {
     struct vec3 w = vec3_normalize(vec3_sub(camera->at, camera->from));
     struct vec3 u = vec3_normalize(vec3_cross(w, camera->up));
@@ -67,7 +60,7 @@ static struct vec3 cosine_direction(struct vec3 n, struct rng *rng)
 
 /* One secondary ray per primary hit (bench/README.md): about ng turned towards the incoming ray,
  * from the hit point nudged along it; stream (BENCH_SEED, STREAM_TEST, pixel, 0). */
-static struct ray_set secondary_rays(const struct geometry *g, const struct ray_set *primary)
+struct ray_set bench_secondary_rays(const struct geometry *g, const struct ray_set *primary)
 {
     struct ray_set set = {NULL, 0, 0, 0.0};
     set.rays = xmalloc(primary->n_rays, sizeof *set.rays, "secondary rays");
@@ -84,8 +77,7 @@ static struct ray_set secondary_rays(const struct geometry *g, const struct ray_
     return set;
 }
 
-/* Casts every ray of the set for its closest hit; returns the CPU seconds it took. */
-static double cast_rays(const struct geometry *g, struct ray_set *set)
+double bench_cast_rays(const struct geometry *g, struct ray_set *set)
 {
     size_t n_hits = 0;
     double t_sum = 0.0;
@@ -108,7 +100,7 @@ static double mrays_per_second(const struct geometry *g, struct ray_set *set)
 {
     double seconds[BENCH_REPEATS];
     for (int r = 0; r < BENCH_REPEATS; r++)
-        seconds[r] = cast_rays(g, set);
+        seconds[r] = bench_cast_rays(g, set);
     double median = bench_median(seconds, BENCH_REPEATS);
     return median > 0 ? (double)set->n_rays / median * 1e-6 : INFINITY;
 }
@@ -124,8 +116,8 @@ void bench_ray_workload(const char *scene_name, struct geometry *(*build)(void *
         g = build(ctx);
         build_s[r] = bench_seconds() - start;
     }
-    struct ray_set primary = primary_rays(camera);
-    struct ray_set secondary = secondary_rays(g, &primary);
+    struct ray_set primary = bench_primary_rays(camera);
+    struct ray_set secondary = bench_secondary_rays(g, &primary);
     double primary_mrays = mrays_per_second(g, &primary);
     double secondary_mrays = mrays_per_second(g, &secondary);
     printf("rays.%s.build_s=%.4f\n", scene_name, bench_median(build_s, BENCH_REPEATS));
@@ -206,7 +198,7 @@ static struct geometry *build_scene_file(void *ctx)
 
 /* The workload through the file's own camera, named by the file name without directory
  * and extension (bench/README.md: balls-s4, mount-s6). */
-static void bench_scene_file(const char *path)
+static void bench_scene_file(const char *path, bench_ray_scene_fn *workload)
 {
     struct scene *scene = load_scene_file(path);
     struct bench_camera camera = {scene->camera.from, scene->camera.at, scene->camera.up,
@@ -216,12 +208,12 @@ static void bench_scene_file(const char *path)
     base = base != NULL ? base + 1 : path;
     char name[64];
     snprintf(name, sizeof name, "%.*s", (int)strcspn(base, "."), base);
-    bench_ray_workload(name, build_scene_file, (void *)path, &camera);
+    workload(name, build_scene_file, (void *)path, &camera);
 }
 
 /* The SPD files are not in the repository: they are read from the folder PHOTON_SPD
  * (make bench SPD=DIR), and without it their workloads are skipped, saying so. */
-static void bench_spd_files(void)
+static void bench_spd_files(bench_ray_scene_fn *workload)
 {
     static const char *const files[] = {"balls-s4", "mount-s6"};
     const char *folder = getenv("PHOTON_SPD");
@@ -239,13 +231,13 @@ static void bench_spd_files(void)
             fprintf(stderr, "bench: PHOTON_SPD is too long a path\n");
             exit(2);
         }
-        bench_scene_file(path);
+        bench_scene_file(path, workload);
     }
 }
 
-void bench_rays(void)
+void bench_ray_scenes(bench_ray_scene_fn *workload)
 {
-    bench_spd_files();
+    bench_spd_files(workload);
     struct terrain terrain;
     terrain.side = TERRAIN_QUADS + 1;
     terrain.vertices = xmalloc((size_t)terrain.side * terrain.side, sizeof *terrain.vertices,
@@ -258,7 +250,12 @@ void bench_rays(void)
     }
     /* Looking down over the ridges: about 77% of the primary rays hit, the rest see sky. */
     struct bench_camera camera = {{0.1, 0.8, 1.3}, {0.0, -0.1, -0.1}, {0.0, 1.0, 0.0}, 50.0};
-    bench_ray_workload("terrain1m", build_terrain, &terrain, &camera);
+    workload("terrain1m", build_terrain, &terrain, &camera);
     xfree(terrain.vertices);
-    bench_scene_file("scenes/cornell.scene");
+    bench_scene_file("scenes/cornell.scene", workload);
+}
+
+void bench_rays(void)
+{
+    bench_ray_scenes(bench_ray_workload);
 }

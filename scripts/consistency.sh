@@ -1,0 +1,141 @@
+#!/bin/sh
+# scripts/consistency.sh [NAME ...] -- renders every shipped scene of
+# reference/consistency.txt with every photon mode at its defaults and compares each image
+# with the scene's reference, then writes the table of what it found into
+# reference/suite.md (between its <!-- consistency --> markers). Run by `make consistency`
+# (ONLY=NAME, or ONLY="NAME NAME ...", for some scenes; MODES="1996 2009" for some modes;
+# QUALITY=reference for the reference preset) from the top of the repository after
+# ./photon is built; PHOTON=PATH runs another binary.
+#
+# A cell passes when the image mean is within 1% of the reference's and every 16 x 16
+# block's mean within 3% (photon compare --block 16). Blocks below the reference's noise
+# floor -- the standard error of the block's mean, from the reference's variance image,
+# above 1% of it (photon compare's rule, BLOCK_NOISE_FLOOR) -- are left out and named; a
+# reference made by a photon mode has no variance image, and its blocks' agreement between
+# two seeds is in the suite's table above. A mode that says at its start that it cannot
+# render the scene (a warning on stderr) is marked so. Every cell's image, log and compare
+# line stay in build/consistency/, and the table is written again from them after each
+# scene, so that an interrupted run keeps what it measured.
+set -eu
+cd "$(dirname "$0")/.."
+photon=${PHOTON:-./photon}
+table=reference/consistency.txt
+out=reference/suite.md
+work=build/consistency
+modes=${MODES:-photons 1994 1996 2008 2009}
+quality=${QUALITY:-default}
+mkdir -p "$work"
+
+rows() { sed -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' "$table"; }
+field() {
+    printf '%s\n' "$1" | awk -F'|' -v i="$2" '{ f = $i; gsub(/^[ \t]+|[ \t]+$/, "", f); print f }'
+}
+stat_of() { sed -n "s/^$2=//p" "$1" | tail -n 1; }
+key() { printf '%s\n' "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
+
+all=$(rows | awk -F'|' '{ gsub(/[ \t]/, "", $1); print $1 }')
+names=${*:-$all}
+for name in $names; do
+    printf '%s\n' "$all" | grep -qx "$name" || {
+        echo "consistency: no scene named '$name' in $table; the names are:" \
+            "$(printf '%s\n' "$all" | tr '\n' ' ')" >&2
+        exit 2
+    }
+done
+line_of() { rows | awk -F'|' -v n="$1" '{ f = $1; gsub(/[ \t]/, "", f) } f == n'; }
+
+# The plan: the table's estimate of each scene's CPU seconds for all five modes.
+total=0
+echo "consistency: expected CPU seconds (the modes $modes at --quality $quality):"
+for name in $names; do
+    s=$(field "$(line_of "$name")" 5)
+    total=$((total + s))
+    printf '  %-22s %6d s\n' "$name" "$s"
+done
+printf '  %-22s %6d s, about %d h %02d min (five modes at their defaults)\n' "total" "$total" \
+    $((total / 3600)) $((total % 3600 / 60))
+
+# cell NAME MODE: the table's cell from what build/consistency/NAME-MODE.* holds.
+cell() {
+    c=$work/$1-$2.compare
+    [ -f "$c" ] || { echo "not run"; return; }
+    line=$(cat "$c")
+    log=$work/$1-$2.log
+    seconds=$(awk -v s="$(stat_of "$log" seconds_total)" 'BEGIN { printf "%.0f", s }')
+    within=$(key "$line" blocks_within_3pct)
+    blocks=$(key "$line" blocks)
+    worst=$(key "$line" worst_block)
+    ratio=$(key "$line" mean_ratio)
+    verdict=$(awk -v w="$worst" -v r="$ratio" \
+        'BEGIN { print (w <= 0.03 && r >= 0.99 && r <= 1.01) ? "pass" : "**fail**" }')
+    grep -q '^photon: warning:' "$log" && verdict="$verdict, warns"
+    noisy=$(key "$line" blocks_noisy)
+    excluded=
+    [ -z "$noisy" ] || [ "$noisy" = 0 ] ||
+        excluded=", $noisy noisy left out ($(key "$line" noisy_blocks | sed 's/;/; /g'))"
+    printf '%s: %s/%s, worst %s at (%s), mean %s, %s s%s' "$verdict" "$within" "$blocks" \
+        "$(awk -v w="$worst" 'BEGIN { printf "%.1f%%", 100 * w }')" \
+        "$(key "$line" worst_block_at | sed 's/,/, /')" \
+        "$(awk -v r="$ratio" 'BEGIN { printf "%.4f", r }')" "$seconds" "$excluded"
+}
+
+# write_table: the consistency section of reference/suite.md, in place of the old one.
+write_table() {
+    section=$work/section.md
+    {
+        echo "<!-- consistency -->"
+        echo "## Consistency: every photon mode on every shipped scene"
+        echo
+        echo "Written by \`make consistency\` (\`scripts/consistency.sh\`, the scenes of"
+        echo "\`reference/consistency.txt\`): each mode at its defaults against the scene's"
+        echo "reference. A cell passes when the image mean is within 1% of the reference's and"
+        echo "every 16 × 16 block's mean within 3%; it gives the blocks within 3%, the worst block"
+        echo "(its top-left pixel), the mean's ratio and the mode's CPU seconds. Blocks whose"
+        echo "reference mean has a standard error above 1% (its variance image) are left out and"
+        echo "named; \"warns\" marks a mode that says at its start what it cannot find there."
+        echo
+        printf '| scene |'
+        for mode in photons 1994 1996 2008 2009; do printf ' %s |' "$mode"; done
+        echo
+        echo "|---|---|---|---|---|---|"
+        for name in $all; do
+            printf '| `%s` |' "$name"
+            for mode in photons 1994 1996 2008 2009; do printf ' %s |' "$(cell "$name" "$mode")"; done
+            echo
+        done
+        echo "<!-- /consistency -->"
+    } > "$section"
+    {
+        if [ -f "$out" ]; then
+            sed '/^<!-- consistency -->$/,$d' "$out" | sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
+            echo
+        fi
+        cat "$section"
+    } > "$out.tmp"
+    mv "$out.tmp" "$out"
+}
+
+for name in $names; do
+    line=$(line_of "$name")
+    scene=$(field "$line" 2)
+    reference=reference/$(field "$line" 3).pfm
+    options=$(field "$line" 4)
+    variance=reference/$(field "$line" 3)-var.pfm
+    noise=
+    [ ! -f "$variance" ] || noise="--ref-variance $variance"
+    for mode in $modes; do
+        base=$work/$name-$mode
+        echo "consistency: $name, --mode $mode $options"
+        # shellcheck disable=SC2086 # the options are words
+        "$photon" --mode "$mode" --quality "$quality" $options --seed 1 --stats --no-progress \
+            "$scene" -o "$base.pfm" 2> "$base.log" || {
+            echo "consistency: --mode $mode failed on $scene: $(tail -n 1 "$base.log")" >&2
+            exit 1
+        }
+        # shellcheck disable=SC2086
+        "$photon" compare "$base.pfm" "$reference" --block 16 $noise > "$base.compare"
+        echo "consistency: $name, $mode: $(cell "$name" "$mode")"
+    done
+    write_table
+done
+echo "consistency: the table is in $out"
