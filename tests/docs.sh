@@ -11,10 +11,10 @@
 #     reference/, and must exit 0. Renders get `--quality preview` appended (an explicit
 #     option still wins over it), so the whole README runs in well under a minute.
 #  4. The reference suite's table (reference/suite.txt) and its files agree: every line has
-#     reference/NAME.pfm, NAME.png and, but for 2008, NAME-var.pfm, and a measured row in
-#     reference/suite.md; every PFM in reference/ has its line; every scene the table names
-#     exists, every scenes/analytic/ scene has a reference, and every option the table
-#     gives is one photon's --help lists. Nothing is rendered.
+#     reference/NAME.pfm, NAME.png and, but for 2008 and 2009, NAME-var.pfm, and a
+#     measured row in reference/suite.md; every PFM in reference/ has its line; every
+#     scene the table names exists, every scenes/analytic/ scene has a reference, and
+#     every option the table gives is one photon's --help lists. Nothing is rendered.
 # Prints one line per problem and "docs: N problems"; exits 1 when there is any.
 set -u
 photon=$1
@@ -84,7 +84,7 @@ sed -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' "$suite" |
             [ -f "reference/$file" ] || echo "$suite: $name has no reference/$file"
         done
         case " $options " in
-        *" --mode 2008 "*) ;; # 2008 writes no variance image
+        *" --mode 2008 "* | *" --mode 2009 "*) ;; # 2008 and 2009 write no variance image
         *) [ -f "reference/$name-var.pfm" ] || echo "$suite: $name has no reference/$name-var.pfm" ;;
         esac
         grep "^| \`$name.pfm\` |" reference/suite.md | grep -qv 'not rendered yet' ||
