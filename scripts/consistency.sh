@@ -5,7 +5,9 @@
 # reference/suite.md (between its <!-- consistency --> markers). Run by `make consistency`
 # (ONLY=NAME, or ONLY="NAME NAME ...", for some scenes; MODES="1996 2009" for some modes;
 # QUALITY=reference for the reference preset) from the top of the repository after
-# ./photon is built; PHOTON=PATH runs another binary.
+# ./photon is built; PHOTON=PATH runs another binary. `scripts/consistency.sh --rewrite`
+# renders nothing and writes the table again from what build/consistency/ holds (cells
+# rendered elsewhere can be copied there first).
 #
 # A cell passes when the image mean is within 1% of the reference's and every 16 x 16
 # block's mean within 3% (photon compare --block 16). Blocks below the reference's noise
@@ -34,6 +36,11 @@ stat_of() { sed -n "s/^$2=//p" "$1" | tail -n 1; }
 key() { printf '%s\n' "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
 
 all=$(rows | awk -F'|' '{ gsub(/[ \t]/, "", $1); print $1 }')
+rewrite=
+if [ "${1:-}" = --rewrite ]; then
+    rewrite=yes
+    shift
+fi
 names=${*:-$all}
 for name in $names; do
     printf '%s\n' "$all" | grep -qx "$name" || {
@@ -45,15 +52,17 @@ done
 line_of() { rows | awk -F'|' -v n="$1" '{ f = $1; gsub(/[ \t]/, "", f) } f == n'; }
 
 # The plan: the table's estimate of each scene's CPU seconds for all five modes.
-total=0
-echo "consistency: expected CPU seconds (the modes $modes at --quality $quality):"
-for name in $names; do
-    s=$(field "$(line_of "$name")" 5)
-    total=$((total + s))
-    printf '  %-22s %6d s\n' "$name" "$s"
-done
-printf '  %-22s %6d s, about %d h %02d min (five modes at their defaults)\n' "total" "$total" \
-    $((total / 3600)) $((total % 3600 / 60))
+if [ -z "$rewrite" ]; then
+    total=0
+    echo "consistency: expected CPU seconds (the modes $modes at --quality $quality):"
+    for name in $names; do
+        s=$(field "$(line_of "$name")" 5)
+        total=$((total + s))
+        printf '  %-22s %6d s\n' "$name" "$s"
+    done
+    printf '  %-22s %6d s, about %d h %02d min (five modes at their defaults)\n' "total" "$total" \
+        $((total / 3600)) $((total % 3600 / 60))
+fi
 
 # cell NAME MODE: the table's cell from what build/consistency/NAME-MODE.* holds.
 cell() {
@@ -114,6 +123,12 @@ write_table() {
     } > "$out.tmp"
     mv "$out.tmp" "$out"
 }
+
+if [ -n "$rewrite" ]; then
+    write_table
+    echo "consistency: the table is in $out, written again from $work"
+    exit 0
+fi
 
 for name in $names; do
     line=$(line_of "$name")
