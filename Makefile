@@ -24,10 +24,15 @@
 #                   the rays workload cast through Embree 3 beside photon in one run: both
 #                   throughputs, their ratio, both checksums (tests/bench/embree/bench_embree.c;
 #                   needs libembree-dev, which the product never links; development)
-#   make fuzz       libFuzzer targets for the four readers, built with clang (development)
+#   make fuzz       libFuzzer targets for every reader (scene, NFF, OBJ, PFM, CSV, tile
+#                   record, work file) and the option parser, built with clang (development)
 #   make crosscheck our pt references against Blender's Cycles, where blender (3.4+) is
 #                   installed: each scene exported, rendered, compared (CROSSCHECK_SPP,
 #                   default 4096: about 35 minutes; scripts/crosscheck.sh; development)
+#   make install    photon in $(DESTDIR)$(PREFIX)/bin, its manual page photon.1 (written by
+#                   photon --manual from --help's text) in share/man/man1, the shipped scenes
+#                   in share/photon; PREFIX defaults to /usr/local. make uninstall removes
+#                   exactly those files (and the share/photon folders, once empty)
 #   make clean
 #
 # BUILD names the object directory, so several compilers can build side by side.
@@ -56,7 +61,8 @@ MAIN_OBJ := $(BUILD)/src/main.o
 TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)) tests/bench/tte_fit.c)
 BENCH_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/bench/*.c)))
 
-.PHONY: all run test test-spd check bench bench-embree figures reference consistency fuzz crosscheck clean
+.PHONY: all run test test-spd check bench bench-embree figures reference consistency fuzz \
+        crosscheck install uninstall clean
 
 # test-spd refuses at once, before building anything, when it has no folder of SPD files.
 ifneq ($(filter test-spd,$(MAKECMDGOALS)),)
@@ -160,7 +166,8 @@ reference: $(BIN)
 consistency: $(BIN)
 	PHOTON=./$(BIN) MODES='$(MODES)' QUALITY='$(QUALITY)' sh scripts/consistency.sh $(ONLY)
 
-# Fuzz targets (a development tool, not part of the product build): one per reader. Run
+# Fuzz targets (a development tool, not part of the product build): one per reader and
+# the option parser. Run
 # e.g. build/fuzz/fuzz_nff -max_len=8192 -max_total_time=600 CORPUS_DIR < /dev/null
 FUZZ_CC ?= clang
 FUZZ_FLAGS = -std=c99 -g -O1 -ffp-contract=off -fsanitize=fuzzer,address,undefined $(WARN)
@@ -175,6 +182,32 @@ build/fuzz/%: tests/fuzz/%.c tests/fuzz/input.c tests/fuzz/input.h $(SRC) $(HEAD
 # Cycles against the pt references (scripts/crosscheck.sh): a development check, not a test.
 crosscheck: $(BIN)
 	sh scripts/crosscheck.sh
+
+PREFIX ?= /usr/local
+DESTDIR ?=
+SCENE_FILES := $(sort $(wildcard scenes/*.* scenes/*/*.*))
+SCENE_DIRS := $(sort $(dir $(SCENE_FILES)))
+
+$(BUILD)/photon.1: $(BIN)
+	./$(BIN) --manual > $@.tmp && mv $@.tmp $@
+
+install: $(BIN) $(BUILD)/photon.1
+	mkdir -p '$(DESTDIR)$(PREFIX)/bin' '$(DESTDIR)$(PREFIX)/share/man/man1'
+	cp $(BIN) '$(DESTDIR)$(PREFIX)/bin/photon'
+	chmod 755 '$(DESTDIR)$(PREFIX)/bin/photon'
+	cp $(BUILD)/photon.1 '$(DESTDIR)$(PREFIX)/share/man/man1/photon.1'
+	chmod 644 '$(DESTDIR)$(PREFIX)/share/man/man1/photon.1'
+	for d in $(SCENE_DIRS:scenes/%=%); do \
+	    mkdir -p '$(DESTDIR)$(PREFIX)/share/photon/'"$$d" || exit 1; done
+	for f in $(SCENE_FILES:scenes/%=%); do \
+	    cp "scenes/$$f" '$(DESTDIR)$(PREFIX)/share/photon/'"$$f" && \
+	    chmod 644 '$(DESTDIR)$(PREFIX)/share/photon/'"$$f" || exit 1; done
+
+uninstall:
+	rm -f '$(DESTDIR)$(PREFIX)/bin/photon' '$(DESTDIR)$(PREFIX)/share/man/man1/photon.1'
+	for f in $(SCENE_FILES:scenes/%=%); do rm -f '$(DESTDIR)$(PREFIX)/share/photon/'"$$f"; done
+	for d in $(sort $(SCENE_DIRS:scenes/%=%)) ''; do \
+	    rmdir '$(DESTDIR)$(PREFIX)/share/photon/'"$$d" 2>/dev/null || true; done
 
 clean:
 	rm -rf build out $(BIN)

@@ -3,8 +3,9 @@
  *
  * Exit status: 0 on success, 2 for bad input (options, scene files, image files; the
  * message names file:line), 1 for a machine failure (out of memory, a failed write).
- * An output whose directory is missing or not writable is bad input, found before any
- * work (output_check); a write that fails later (a full disk) is a machine failure.
+ * Every output is declared and checked before any work (check_outputs, base/output.h):
+ * one that cannot be written there, or is another output or an input, is bad input; a
+ * write that fails later (a full disk) is a machine failure, and no output is left.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -111,8 +112,9 @@ static int prepare_run(struct run *run, struct error *err)
                          eye_rays, PPM_MAX_EYE_RAYS);
     if (o->reference != NULL) {
         run->reference = pfm_read(o->reference, err);
-        if (run->reference == NULL ||
-            report_open(&run->report, o->report, run->reference, width, height, &run->rs,
+        if (run->reference == NULL)
+            return error_set(err, err->file, err->line, "%s (--reference)", err->message);
+        if (report_open(&run->report, o->report, run->reference, width, height, &run->rs,
                         err) < 0)
             return -1;
     }
@@ -143,8 +145,8 @@ static int write_tile_record(const struct run *run, struct error *err)
 }
 
 /* -o's PFM (the name ends in .pfm: parse_options) and the display image beside it, the
- * variance and, for a crop, its record. A whole render writes no record, so its files stay
- * as before, and removes one an earlier crop left under its name (tile.h). */
+ * variance and, for a crop, its record; put in place together by render_command(). A
+ * whole render writes no record, and removes one an earlier crop left (tile.h). */
 static int write_outputs(struct run *run, struct error *err)
 {
     const struct options *o = &run->o;
@@ -152,8 +154,7 @@ static int write_outputs(struct run *run, struct error *err)
         return -1;
     if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
         return -1;
-    if (o->has_crop ? write_tile_record(run, err) < 0
-                        : tile_record_remove(o->output, err) < 0)
+    if (o->has_crop && write_tile_record(run, err) < 0)
         return -1;
     clock_t start = clock();
     if (o->save_photons != NULL &&
@@ -173,7 +174,8 @@ static double write_snapshot(void *context, const struct image *image, long long
     clock_t start = clock();
     const struct options *o = context;
     struct error err;
-    if (image_write_pair(o->output, o->display, image, o->exposure, &err) < 0)
+    if (image_write_pair(o->output, o->display, image, o->exposure, &err) < 0 ||
+        outputs_publish(&err) < 0)
         error_print(&err);
     return seconds_since(start);
 }
@@ -266,14 +268,16 @@ static void print_stats(const struct run *run)
     /* the most payload the x-allocators held at once, up to this line (base/alloc.h) */
     fprintf(stderr, "bytes_peak=%zu\n", alloc_bytes_peak());
     /* spp: the samples of a pixel (the passes that ran, at most --spp); pixels that see a
-     * light through mirrors or glass take specular_spp (render.h), shown apart */
+     * light through mirrors or glass take specular_spp (render.h), shown apart: the
+     * samples taken, at most the passes that ran (fewer after a --time-limit stop) */
     int spp = c->passes < run->rs.spp ? c->passes : run->rs.spp;
     fprintf(stderr, "width=%d\nheight=%d\nspp=%d\nseed=%llu\n", scene->width, scene->height,
             spp, (unsigned long long)run->o.seed);
     int progressive = run->o.mode == MODE_PPM2008 || run->o.mode == MODE_SPPM2009;
     if (!progressive)
         fprintf(stderr, "specular_spp=%d\nspecular_pixels=%zu\n",
-                c->specular_pixels > 0 ? c->passes : run->rs.specular_spp, c->specular_pixels);
+                c->passes < run->rs.specular_spp ? c->passes : run->rs.specular_spp,
+                c->specular_pixels);
     double pixels = (double)(run->rs.x1 - run->rs.x0) * (double)(run->rs.y1 - run->rs.y0);
     if (!progressive)
         fprintf(stderr, "samples_per_pixel=%.3f\n", (double)c->samples / pixels);
@@ -393,14 +397,20 @@ static struct render_result render_mode(struct run *run, struct error *err)
     return render_direct(run->scene, &run->rs, want_variance, checkpoint, &run->counters);
 }
 
-/* Every file the render will write can be created where it is to go (error.h). */
+/* Every file the render will write, declared and checked before any work (output.h). */
 static int check_outputs(const struct options *o, struct error *err)
 {
-    const char *outputs[] = {o->output, o->variance, o->report, o->save_photons};
-    for (size_t i = 0; i < sizeof outputs / sizeof outputs[0]; i++)
-        if (outputs[i] != NULL && output_check(outputs[i], err) < 0)
-            return -1;
-    return 0;
+    image_declare_pair(o->output, o->display, "-o",
+                       o->display == DISPLAY_PPM ? "the PPM beside -o" : "the PNG beside -o");
+    if (o->variance != NULL)
+        output_declare(o->variance, "--variance");
+    if (o->report != NULL)
+        output_declare(o->report, "--report");
+    if (o->save_photons != NULL)
+        output_declare(o->save_photons, "--save-photons");
+    if (o->has_crop)
+        tile_record_declare(o->output);
+    return outputs_check(err);
 }
 
 static int render_command(struct run *run, struct error *err)
@@ -416,7 +426,9 @@ static int render_command(struct run *run, struct error *err)
     if (run->result.image == NULL)
         return 2;
     if (write_outputs(run, err) < 0 ||
-        (run->reference != NULL && report_close(&run->report, err) < 0))
+        (run->reference != NULL && report_close(&run->report, err) < 0) ||
+        outputs_publish(err) < 0 || (!run->o.has_crop && tile_record_remove(run->o.output,
+                                                                             err) < 0))
         return 1; /* every output could be created before the render: a failed write */
     if (run->o.stats)
         print_stats(run);

@@ -33,7 +33,8 @@ static const struct room rooms[] = {
     {"hit_points", test_hit_points, 0}, {"tte_fit", test_tte_fit, 0},
     {"switches", test_switches, 0}, {"ppm_departures", test_ppm_departures, 0},
     {"export", test_export, 0},   {"export_blender", test_export_blender, 0},
-    {"sppm", test_sppm, 0},       {"sky", test_sky, 0},
+    {"sppm", test_sppm, 0},       {"outputs", test_outputs, 0},
+    {"numbers", test_numbers, 0}, {"sky", test_sky, 0},
     {"spd", test_spd, 1},
 };
 

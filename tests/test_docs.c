@@ -4,9 +4,14 @@
  * photon takes, and runs the README's commands as shown.
  */
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "check.h"
+#include "files.h"
 #include "tests.h"
+
+#define LINE_MAX_BYTES 2048 /* longer than any line of --help */
 
 /* truth: the files in the tree, photon's own --help, and the exit status of each README
  *   command run as a user would (with --quality preview appended to renders).
@@ -20,7 +25,93 @@ static void test_documented_commands_work(struct check *t)
     CHECK(t, run_command(command) == 0);
 }
 
+/* The next line of *text (advanced past it) into line[LINE_MAX_BYTES], runs of spaces
+ * made one and the ends trimmed; 0 at the end of the text. */
+static int next_line(const char **text, char *line)
+{
+    if (**text == '\0')
+        return 0;
+    size_t n = 0;
+    for (; **text != '\0' && **text != '\n'; (*text)++)
+        if (n + 1 < LINE_MAX_BYTES && !(**text == ' ' && (n == 0 || line[n - 1] == ' ')))
+            line[n++] = **text;
+    *text += **text == '\n';
+    while (n > 0 && line[n - 1] == ' ')
+        n--;
+    line[n] = '\0';
+    return 1;
+}
+
+/* man's text back from roff as help.c writes it: "\-" "-", "\e" "\", "\&" nothing;
+ * a tagged paragraph's tag and text joined on one line; other requests dropped. */
+static char *unroff(const char *roff)
+{
+    char *text = malloc(strlen(roff) + 1), *out = text;
+    int tag = 0;
+    for (const char *c = roff; text != NULL && *c != '\0'; c++) {
+        if ((c == roff || c[-1] == '\n') && *c == '.') {
+            tag = strncmp(c, ".B ", 3) == 0;
+            c += tag ? 2 : strcspn(c, "\n");
+            continue;
+        }
+        if (*c == '\\' && (c[1] == '-' || c[1] == 'e' || c[1] == '&')) {
+            c++;
+            if (*c != '&')
+                *out++ = *c == 'e' ? '\\' : '-';
+        } else if (*c == '\n' && tag) {
+            *out++ = ' ';
+            tag = 0;
+        } else {
+            *out++ = *c;
+        }
+    }
+    if (text != NULL)
+        *out = '\0';
+    return text;
+}
+
+/* truth: help.h: photon.1 (--manual) is written from --help's own text: every line of
+ *   --help but the headings (the lines from an empty line to one ending in ':') is a line
+ *   of the manual page read back from its roff, the same words in the same order.
+ * catches: a page written by hand or from another list of options, drifting from
+ *   --help; an option's text escaped so that man shows something else. */
+static void test_manual_is_the_help(struct check *t)
+{
+    char help_log[256], manual_log[256], line[LINE_MAX_BYTES], *manual = NULL;
+    temp_name(help_log, sizeof help_log, "docs", "help.txt");
+    temp_name(manual_log, sizeof manual_log, "docs", "photon.1");
+    REQUIRE(t, photon_logged("--help", "", help_log) == 0);
+    REQUIRE(t, photon_logged("--manual", "", manual_log) == 0);
+    char *help = read_text_file(help_log), *roff = read_text_file(manual_log);
+    manual = roff != NULL ? unroff(roff) : NULL;
+    int heading = 0, lines = 0;
+    for (const char *h = help; h != NULL && manual != NULL && next_line(&h, line);) {
+        if (line[0] == '\0') {
+            heading = 1;
+            continue;
+        }
+        if (!heading) {
+            int found = 0;
+            char other[LINE_MAX_BYTES];
+            for (const char *m = manual; !found && next_line(&m, other);)
+                found = strcmp(line, other) == 0;
+            CHECK(t, found);
+            if (!found)
+                fprintf(stderr, "test_docs: not in photon.1: %s\n", line);
+            lines++;
+        }
+        heading = heading && line[strlen(line) - 1] != ':';
+    }
+    CHECK(t, lines > 100 && roff != NULL && strncmp(roff, ".TH PHOTON 1", 12) == 0);
+    free(manual);
+    free(roff);
+    free(help);
+    remove(help_log);
+    remove(manual_log);
+}
+
 void test_docs(struct check *t)
 {
     RUN_TEST(t, test_documented_commands_work);
+    RUN_TEST(t, test_manual_is_the_help);
 }

@@ -280,7 +280,8 @@ static void test_failures(struct check *t)
         {"--format pbrt scenes/cornell.scene -o /nonexistent-dir/x.pbrt", "nonexistent-dir"},
         {"--format pbrt scenes/no-such.scene -o OUT", "no-such.scene"},
         {"--format pbrt scenes/cornell.scene -o OUT --channel Y", "--channel 'Y'"},
-        {"--format pbrt scenes/cornell.scene -o OUT --spp 0", "--spp '0'"},
+        {"--format pbrt scenes/cornell.scene -o OUT --spp 0",
+         "--spp: expected a whole number from 1 to 16777216, got '0'"},
         {"--format pbrt scenes/cornell.scene", "needs --format, a scene and -o"},
         {"--format mitsuba BAD -o OUT", ":2: "},
     };
@@ -299,6 +300,43 @@ static void test_failures(struct check *t)
     remove(log);
 }
 
+/* truth: export.h: names reach the exported files only where the target can read them: a
+ *   scene's path in a comment with every byte a comment could not hold as '_' (a newline
+ *   would end a comment line and start a directive, "--" would end an XML comment, '<'
+ *   would start an XML tag); an -o name that must go into the target's data (pbrt's film
+ *   in a quoted string, Mitsuba's mesh files in attributes) with '"', '\\', '&', '<'
+ *   or '>' is refused, status 2, nothing written.
+ * catches: a scene named "a\n#--<b>" that puts a directive, a broken comment or a tag
+ *   into the file; -o 'a"b.pbrt' breaking pbrt's quoting. */
+static void test_names_escaped(struct check *t)
+{
+    static const char *const formats[][2] = {{"pbrt", "pbrt"}, {"mitsuba", "xml"},
+                                             {"blender", "py"}};
+    char scene[NAME_BYTES], out[NAME_BYTES], log[NAME_BYTES], args[ARGS_BYTES];
+    temp_name(scene, sizeof scene, "export", "a\n#--<b>.scene");
+    temp_name(log, sizeof log, "export", "names.log");
+    char command[ARGS_BYTES];
+    snprintf(command, sizeof command, "cp scenes/cornell.scene '%s'", scene);
+    CHECK(t, run_command(command) == 0);
+    for (int i = 0; i < 3; i++) {
+        char ending[16];
+        snprintf(ending, sizeof ending, "names.%s", formats[i][1]);
+        temp_name(out, sizeof out, "export", ending);
+        snprintf(args, sizeof args, "--format %s '%s' -o %s", formats[i][0], scene, out);
+        CHECK(t, photon_logged("export", args, log) == 0);
+        CHECK(t, !file_contains(out, "\n#--<b>") && !file_contains(out, "#--") &&
+                 file_contains(out, "a_#-__b_.scene"));
+        remove(out);
+        snprintf(args, sizeof args, "--format %s scenes/cornell.scene -o '%s\"x.%s'",
+                 formats[i][0], out, formats[i][1]);
+        CHECK(t, photon_logged("export", args, log) == 2 &&
+                 file_contains(log, "must be printable ASCII without"));
+    }
+    run_command("rm -f /tmp/photon_test_export_*names*");
+    remove(scene);
+    remove(log);
+}
+
 void test_export(struct check *t)
 {
     RUN_TEST(t, test_pbrt_camera_and_film);
@@ -308,4 +346,5 @@ void test_export(struct check *t)
     RUN_TEST(t, test_mitsuba);
     RUN_TEST(t, test_shipped_scenes);
     RUN_TEST(t, test_failures);
+    RUN_TEST(t, test_names_escaped);
 }

@@ -78,8 +78,8 @@ static void check_round_trip(struct check *t, int width, int height, uint64_t in
     if (width * height >= 3) { /* boundaries of the float range, and one past it */
         img->pixels[0] = vec3(1e30, FLT_MAX, ldexp(1.0, -149));
         expected->pixels[0] = vec3(float_rounded(1e30), FLT_MAX, ldexp(1.0, -149));
-        img->pixels[1] = vec3(1e39, -1e39, 0.1);
-        expected->pixels[1] = vec3(FLT_MAX, -FLT_MAX, float_rounded(0.1));
+        img->pixels[1] = vec3(-FLT_MAX, 1e-46, 0.1);
+        expected->pixels[1] = vec3(-FLT_MAX, 0.0, float_rounded(0.1));
         img->pixels[2] = vec3(-0.0, -1e-46, -ldexp(1.0, -149)); /* signed zeros */
         expected->pixels[2] = vec3(-0.0, -0.0, -ldexp(1.0, -149));
     }
@@ -94,19 +94,24 @@ static void check_round_trip(struct check *t, int width, int height, uint64_t in
             CHECK(t, memcmp(&back->pixels[i], &expected->pixels[i], sizeof(struct vec3)) == 0);
     }
     remove(name);
+    if (width * height >= 3) { /* past the float range: refused, nothing written */
+        img->pixels[1] = vec3(0.1, -1e39, 0.1);
+        CHECK(t, pfm_write(name, img, &err) < 0 && err.failed_write && !file_exists(name) &&
+                 no_temporary(name) && strstr(err.message, "float range") != NULL);
+    }
     image_free(back);
     image_free(expected);
     image_free(img);
 }
 
 /* truth: round trip; pfm_read(pfm_write(x)) is x rounded to the nearest float, which C's
- *   own (float) conversion computes apart from the file code; beyond the float range
- *   the writer saturates to +-FLT_MAX (pfm.c).
+ *   own (float) conversion computes apart from the file code; an image with a value
+ *   beyond the float range is refused, a failed write, and nothing is written (image.h).
  * tolerance: none, compared bit for bit (memcmp, so -0.0 keeps its sign): a float is a
  *   double exactly and the file holds its 32 bits.
  * catches: a lost or swapped channel, a byte-order slip only large exponents or sign bits
  *   show, truncation for rounding, subnormals flushed to zero, -0 losing its sign, Inf
- *   written for 1e39, odd sizes (7x5, 1x1, 1x9) indexing past a row, a NAME.tmp left. */
+ *   or a clamped FLT_MAX written for 1e39, odd sizes (7x5, 1x1, 1x9) indexing past a row, a NAME.tmp left. */
 static void test_pfm_round_trip(struct check *t)
 {
     check_round_trip(t, 7, 5, 0);
@@ -361,13 +366,13 @@ static void test_ppm_matches_its_pfm(struct check *t)
 /* truth: the definitions in compare.h, worked by hand. a = {(1,0,0), (0,0,0)} against
  *   b = {(0,0,0), (0,0,2)}: differences 1 and -2 among six channels, so mse = 5/6,
  *   relmse = (1/0.01 + 4/4.01) / 6, peak = 2, psnr = 10 log10(4 / (5/6)) = 10 log10(4.8),
- *   maxerr = 2. An all-black reference uses peak 1e-30: a = (1,0,0) against black gives
- *   psnr = 10 log10(1e-60 * 3); identical images give mse 0 and psnr +Inf.
+ *   maxerr = 2. An all-black reference has no peak: a = (1,0,0) against black has no
+ *   psnr; identical images give mse 0 and psnr +Inf, black ones too.
  * tolerance: 1e-12 relative; the code sums and divides in another order than the closed
  *   forms, a few ulps apart.
  * catches: the test and reference swapped in relmse's denominator, a missing epsilon,
  *   mean over pixels instead of channels, peak from a instead of b, |d| lost in maxerr,
- *   a peak of 0 giving -Inf, a NaN psnr for identical images. */
+ *   a peak of 0 giving -Inf or a floor's -594 dB, a NaN psnr for identical images. */
 static void test_compare_metrics(struct check *t)
 {
     struct image *a = image_create(2, 1), *b = image_create(2, 1);
@@ -387,7 +392,8 @@ static void test_compare_metrics(struct check *t)
     a = image_create(1, 1);
     image_set(a, 0, 0, vec3(1, 0, 0));
     e = image_compare(a, b);
-    CHECK_CLOSE(t, e.psnr, 10.0 * log10(1e-60 * 3.0), 1e-12 * 600);
+    CHECK(t, !e.has_psnr);
+    CHECK(t, image_compare(b, b).has_psnr && isinf(image_compare(b, b).psnr));
     CHECK_CLOSE(t, e.relmse, 100.0 / 3.0, 1e-12 * 34);
     image_free(b);
     image_free(a);

@@ -129,7 +129,8 @@ static int every_option_classified(void)
          line = strtok(NULL, "\n")) {
         char option[64];
         if (strncmp(line, "  -", 3) != 0 || sscanf(line, "%63s", option) != 1 ||
-            strcmp(option, "--help") == 0 || strcmp(option, "--version") == 0)
+            strcmp(option, "--help") == 0 || strcmp(option, "--version") == 0 ||
+            strcmp(option, "--manual") == 0)
             continue;
         if (!listed(option, same_pixels_options, N_SAME) &&
             !listed(option, other_pixels_options, N_OTHER)) {

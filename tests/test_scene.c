@@ -9,6 +9,7 @@
 
 #include "../src/base/hash.h"
 #include "../src/base/rng.h"
+#include "../src/image/image.h"
 #include "../src/scene/optics.h"
 #include "../src/scene/scene.h"
 #include "files.h"
@@ -174,6 +175,15 @@ static void test_bad_scenes_are_refused(struct check *t)
          "alpha"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m schlick 0.5 0.5 0.5 0.1 0\n", 2,
          "isotropy"},
+        /* reach.h: beyond what double precision resolves at the camera's scale */
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\nquad -1e20 -1 -1e20 "
+         "-1e20 -1 1e20 1e20 -1 1e20 1e20 -1 -1e20 m\nlight point 0 0 0 1 1 1\n", 3,
+         "reaches 1e+20 from the origin, more than 2^40 times"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\nsphere 0 -1e20 0 1e20 m\n", 3,
+         "reaches 2e+20"},
+        {"camera 0 0 0 0 0 1 0 1 0 40\nlight point 2e12 0 0 1 1 1\n", 2, "reaches 2e+12"},
+        {"camera 1e13 0 0 1e13 0 1 0 1 0 40\n", 1, "reaches 1e+13"},
+        {"camera 0 0 0 0 0 1e-7 0 1 0 40\n", 1, "camera: 1e-07 from its look-at point"},
     };
     const char *path = "build/test_scene_bad.scene";
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
@@ -507,8 +517,53 @@ static void test_fresnel_and_snell(struct check *t)
     }
 }
 
+/* Renders a 1-pixel view straight down from height 2 at a white floor of +-extent with a
+ * 1 W point light at (1, 1, 0) and a blocker of the light at (-1, 1, 0) half way, and
+ * returns the pixel's red value; -1 when it does not render. */
+static double floor_pixel(const char *extent)
+{
+    char text[512];
+    const char *s = extent;
+    snprintf(text, sizeof text, "image 1 1\ncamera 0 2 0 0 0 0 0 0 1 1\n"
+             "material w lambert 1 1 1\nquad -%s 0 -%s -%s 0 %s %s 0 %s %s 0 -%s w\n"
+             "quad -0.6 0.5 -0.1 -0.4 0.5 -0.1 -0.4 0.5 0.1 -0.6 0.5 0.1 w\n"
+             "light point 1 1 0 1 1 1\nlight point -1 1 0 1 1 1\n", s, s, s, s, s, s, s, s);
+    write_text_file("build/test_scene_reach.scene", text);
+    if (photon_logged("", "--no-progress --mode direct -o build/test_scene_reach.pfm "
+                      "build/test_scene_reach.scene", "build/test_scene_reach.log") != 0)
+        return -1;
+    struct error err;
+    struct image *img = pfm_read("build/test_scene_reach.pfm", &err);
+    double v = img != NULL ? image_get(img, 0, 0).x : -1;
+    image_free(img);
+    return v;
+}
+
+/* truth: reach.h's measured range: the same view of a floor lit by one light (the other
+ *   blocked) renders alike whatever the floor's extent, up to the limit of 2^40 times the
+ *   camera's distance (2): a floor of +-1e12 gives the pixel of a floor of +-1e3, and
+ *   the closed form Phi cos / (4 pi d^2) / pi = 1 / (8 sqrt(2) pi^2) = 0.0089556 to the
+ *   pixel's footprint (0.2%); a floor of +-1e13 is refused.
+ * tolerance: 1e-4 relative between the two floors (1e13 moved the pixel by 1.3e-4).
+ * catches: a limit set past what the tracer resolves, or so tight it refuses a scene
+ *   that renders right; the shadow lost (the pixel would double). */
+static void test_reach_renders_alike(struct check *t)
+{
+    double near = floor_pixel("1e3"), far = floor_pixel("1e12");
+    CHECK(t, near > 0 && fabs(far - near) <= 1e-4 * near);
+    CHECK_CLOSE(t, near, 1.0 / (8.0 * sqrt(2.0) * PI * PI), 2e-3 * near);
+    CHECK(t, floor_pixel("1e13") < 0 && file_contains("build/test_scene_reach.log",
+                                                      "build/test_scene_reach.scene:4: "
+                                                      "reaches 1e+13"));
+    remove("build/test_scene_reach.scene");
+    remove("build/test_scene_reach.pfm");
+    remove("build/test_scene_reach.png");
+    remove("build/test_scene_reach.log");
+}
+
 void test_scene(struct check *t)
 {
+    RUN_TEST(t, test_reach_renders_alike);
     RUN_TEST(t, test_cornell_scene_loads);
     RUN_TEST(t, test_shipped_scenes_load);
     RUN_TEST(t, test_bad_scenes_are_refused);

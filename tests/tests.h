@@ -41,6 +41,8 @@ void test_sppm(struct check *t);    /* test_sppm.c: --mode 2009, stochastic PPM 
 void test_export(struct check *t);  /* test_export.c: photon export to pbrt-v4, Mitsuba 3 */
 void test_switches(struct check *t); /* test_switches.c: each paper switch of 1994, 1996 */
 void test_export_blender(struct check *t); /* test_export_blender.c: the Blender script */
+void test_outputs(struct check *t); /* test_outputs.c: outputs and inputs of a command */
+void test_numbers(struct check *t); /* test_numbers.c: numbers, ranges, messages       */
 void test_sky(struct check *t);     /* test_sky.c: the background as a light, every mode */
 
 #endif

@@ -10,15 +10,11 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "options.h"
 
 #define EXPORT_USAGE                                                                      \
     "usage: photon export --format pbrt|mitsuba|blender SCENE -o OUT [--spp N] "         \
     "[--channel R|G|B]"
-
-/* Companion files open beside the output, committed or abandoned with it. */
-#define MAX_COMPANIONS 4096
-static FILE *companions[MAX_COMPANIONS];
-static size_t n_companions;
 
 /* ---- flattening the geometry ---- */
 
@@ -212,20 +208,6 @@ void export_note(const char *format, ...)
     va_end(ap);
 }
 
-FILE *export_companion(const char *name, struct error *err)
-{
-    if (n_companions == MAX_COMPANIONS) {
-        error_set(err, "", 0, "export: more than %d companion files", MAX_COMPANIONS);
-        return NULL;
-    }
-    if (output_check(name, err) < 0)
-        return NULL;
-    FILE *f = output_open(name, err);
-    if (f != NULL)
-        companions[n_companions++] = f;
-    return f;
-}
-
 struct glossy_blend export_glossy_blend(const struct material *m)
 {
     struct glossy_blend g;
@@ -265,12 +247,12 @@ const char *export_model_name(const struct material *m)
 
 void export_name(FILE *f, const char *name)
 {
-    for (const char *c = name; *c != '\0'; c++)
-        fputc((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9') ||
-                      strchr(" _.#+", *c) != NULL
-                  ? *c
-                  : '_',
-              f);
+    for (const char *c = name; *c != '\0'; c++) {
+        int plain = (*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') ||
+                    (*c >= '0' && *c <= '9') || strchr(" _.#+/,:=()", *c) != NULL ||
+                    (*c == '-' && (c == name || c[-1] != '-'));
+        fputc(plain ? *c : '_', f);
+    }
 }
 
 void export_rgb(FILE *f, const char *separator, struct vec3 c)
@@ -313,11 +295,9 @@ static int parse_channel(const char *word, int *channel, struct error *err)
 
 static int parse_spp(const char *word, int *spp, struct error *err)
 {
-    char *end;
-    long v = strtol(word, &end, 10);
-    if (end == word || *end != '\0' || v < 1 || v > 1 << 24)
-        return error_set(err, "", 0, "export: --spp '%s': expected a whole number in 1..%d",
-                         word, 1 << 24);
+    double v;
+    if (read_number("export: --spp", word, 1, 1 << 24, NUMBER_WHOLE, &v, err) < 0)
+        return -1;
     *spp = (int)v;
     return 0;
 }
@@ -360,43 +340,59 @@ static int parse_export_args(int argc, char **argv, struct export_args *a, struc
     return 0;
 }
 
-static void abandon_companions(void)
+/* Mitsuba's meshes go in files beside the output: each declared, and all of them checked
+ * with the output, before anything is written. */
+static int check_companions(const struct export_args *a, const struct export_scene *es,
+                            struct error *err)
 {
-    for (size_t i = 0; i < n_companions; i++)
-        output_abandon(companions[i]);
-    n_companions = 0;
+    for (size_t k = 0; a->format == EXPORT_MITSUBA && k < es->n_meshes; k++) {
+        char path[1024];
+        const char *base;
+        export_mitsuba_mesh_name(a->output, k, path, sizeof path, &base);
+        output_declare(path, "a mesh file beside -o");
+    }
+    return outputs_check(err);
 }
 
-/* Writes the scene with the chosen writer, then commits the output and its companions. */
+/* Writes the scene with the chosen writer, then puts the output and its companions in
+ * place together. */
 static int write_export(const struct export_args *a, struct export_scene *es,
                         struct error *err)
 {
     static int (*const writers[])(FILE *, const struct export_scene *, struct error *) = {
         export_pbrt, export_mitsuba, export_blender};
+    if (check_companions(a, es, err) < 0)
+        return -1;
     FILE *f = output_open(a->output, err);
     if (f == NULL)
         return -1;
     if (writers[a->format](f, es, err) < 0) {
         output_abandon(f);
-        abandon_companions();
-        return -1;
+        return -1; /* the companions' temporaries go at exit (output.h) */
     }
-    for (size_t i = 0; i < n_companions; i++)
-        if (output_commit(companions[i], err) < 0) {
-            companions[i] = companions[--n_companions];
-            output_abandon(f);
-            abandon_companions();
-            return -1;
-        }
-    n_companions = 0;
-    return output_commit(f, err);
+    if (output_commit(f, err) < 0)
+        return -1;
+    return outputs_publish(err);
+}
+
+/* -o's name goes into what the targets read as data (pbrt's film in a quoted string,
+ * Mitsuba's mesh files in attributes): a name those cannot hold is refused. */
+static int check_output_name(const char *output, struct error *err)
+{
+    for (const unsigned char *c = (const unsigned char *)output; *c != '\0'; c++)
+        if (*c < 0x20 || *c >= 0x7F || *c == '"' || *c == '\\' || *c == '&' || *c == '<' ||
+            *c == '>')
+            return error_set(err, "", 0, "export: -o '%s': the files written name it, so it "
+                             "must be printable ASCII without \" \\ & < >", output);
+    return 0;
 }
 
 int export_command(int argc, char **argv)
 {
     struct export_args a;
     struct error err;
-    if (parse_export_args(argc, argv, &a, &err) < 0 || output_check(a.output, &err) < 0) {
+    if (parse_export_args(argc, argv, &a, &err) < 0 || check_output_name(a.output, &err) < 0 ||
+        output_check_one(a.output, "-o", &err) < 0) {
         error_print(&err);
         return 2;
     }

@@ -70,10 +70,12 @@ void export_scene_free(struct export_scene *es);
 /* "photon: export: " and a line on stderr: what the target renders differently. */
 void export_note(const char *format, ...);
 
-/* Opens a companion file NAME beside the output (Mitsuba's meshes): written to NAME.tmp and
- * renamed with the output, or removed with it when the export fails. NULL with *err
- * filled when it cannot be created. */
-FILE *export_companion(const char *name, struct error *err);
+/* Mitsuba's mesh k, NAME-meshK.obj beside the output NAME.xml: into path[size] (with the
+ * output's directory) and *base (without it, for the XML, which Mitsuba reads relative to
+ * its own folder). export_command() declares each as an output before anything is
+ * written (base/output.h). */
+void export_mitsuba_mesh_name(const char *output, size_t k, char *path, size_t size,
+                              const char **base);
 
 /* The writers: the whole scene to f. 0, or -1 with *err filled. */
 int export_pbrt(FILE *f, const struct export_scene *es, struct error *err);
@@ -105,8 +107,9 @@ struct glossy_blend {
 struct glossy_blend export_glossy_blend(const struct material *m);
 const char *export_model_name(const struct material *m); /* "Phong", "Ward", ... */
 
-/* Our material name in a comment: letters, digits and " _.#+" as they are, any other
- * byte as '_' (an XML comment must not hold "--"). */
+/* A name (a material's, a file's) in a comment: letters, digits, " _.#+/,:=()" and a '-'
+ * not after another as they are, any other byte as '_': a newline cannot end the comment
+ * and start a directive, and an XML comment never holds "--". */
 void export_name(FILE *f, const char *name);
 
 /* A colour as the target reads it, with %.9g: enough digits to give back our doubles'

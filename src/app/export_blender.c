@@ -569,8 +569,7 @@ static void write_mesh(FILE *f, size_t i, const struct export_mesh *m)
 int export_blender(FILE *f, const struct export_scene *es, struct error *err)
 {
     fprintf(f, "# ");
-    for (const char *s = es->scene_path != NULL ? es->scene_path : "scene"; *s; s++)
-        fputc(*s >= 32 && *s < 127 ? *s : '?', f);
+    export_name(f, es->scene_path != NULL ? es->scene_path : "scene");
     fprintf(f, " for Blender 3.4+ (Cycles), written by photon export%s\n",
             es->channel >= 0 ? " (one channel: every colour grey)" : "");
     fprintf(f, "# render: blender -b --factory-startup -P THIS.py -- IMAGE.exr (or .pfm)\n\n");

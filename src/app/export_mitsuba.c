@@ -143,10 +143,8 @@ static void write_sphere(FILE *f, const struct export_scene *es, const struct ex
     fprintf(f, "    </shape>\n");
 }
 
-/* NAME-meshK.obj beside the output: into path (with the output's directory) and *base
- * (without it, for the XML, which Mitsuba reads relative to its own folder). */
-static void mesh_name(const char *output, size_t k, char *path, size_t size,
-                      const char **base)
+void export_mitsuba_mesh_name(const char *output, size_t k, char *path, size_t size,
+                              const char **base)
 {
     const char *slash = strrchr(output, '/');
     size_t dir = slash != NULL ? (size_t)(slash + 1 - output) : 0;
@@ -158,7 +156,7 @@ static void mesh_name(const char *output, size_t k, char *path, size_t size,
 
 static int write_obj(const char *name, const struct export_mesh *m, struct error *err)
 {
-    FILE *f = export_companion(name, err);
+    FILE *f = output_open(name, err); /* declared by export_command() */
     if (f == NULL)
         return -1;
     size_t n = 3 * m->n_triangles;
@@ -176,7 +174,7 @@ static int write_obj(const char *name, const struct export_mesh *m, struct error
         else
             fprintf(f, "f %zu %zu %zu\n", a, a + 1, a + 2);
     }
-    return 0;
+    return output_commit(f, err);
 }
 
 static int write_mesh(FILE *f, const struct export_scene *es, size_t k, struct error *err)
@@ -184,7 +182,7 @@ static int write_mesh(FILE *f, const struct export_scene *es, size_t k, struct e
     const struct export_mesh *m = &es->meshes[k];
     char path[1024];
     const char *base;
-    mesh_name(es->output, k, path, sizeof path, &base);
+    export_mitsuba_mesh_name(es->output, k, path, sizeof path, &base);
     if (write_obj(path, m, err) < 0)
         return -1;
     fprintf(f, "    <shape type=\"obj\">\n");
@@ -201,9 +199,12 @@ static int write_mesh(FILE *f, const struct export_scene *es, size_t k, struct e
 static void write_header(FILE *f, const struct export_scene *es)
 {
     const struct camera *c = &es->camera;
-    fprintf(f, "<!-- %s for Mitsuba 3, written by photon export%s.\n", es->scene_path,
-            es->channel >= 0 ? " (one channel: every colour grey)" : "");
-    fprintf(f, "     render: mitsuba -m scalar_rgb %s -->\n", es->output);
+    fprintf(f, "<!-- ");
+    export_name(f, es->scene_path);
+    fprintf(f, " for Mitsuba 3, written by photon export%s.\n     render: mitsuba -m "
+            "scalar_rgb ", es->channel >= 0 ? " (one channel: every colour grey)" : "");
+    export_name(f, es->output);
+    fprintf(f, " -->\n");
     fprintf(f, "<scene version=\"3.0.0\">\n");
     fprintf(f, "    <integrator type=\"path\">\n");
     fprintf(f, "        <integer name=\"max_depth\" value=\"-1\"/>\n");

@@ -54,9 +54,14 @@ static void write_header(FILE *f, const struct export_scene *es)
     const struct camera *c = &es->camera;
     char film[512];
     film_name(es->output, film, sizeof film);
-    fprintf(f, "# %s for pbrt-v4, written by photon export%s\n", es->scene_path,
+    fprintf(f, "# ");
+    export_name(f, es->scene_path);
+    fprintf(f, " for pbrt-v4, written by photon export%s\n# render: pbrt ",
             es->channel >= 0 ? " (one channel: every colour grey)" : "");
-    fprintf(f, "# render: pbrt %s   (writes %s)\n\n", es->output, film);
+    export_name(f, es->output);
+    fprintf(f, "   (writes ");
+    export_name(f, film);
+    fprintf(f, ")\n\n");
     fprintf(f, "# pbrt's LookAt would mirror the image: turn camera x round\n");
     fprintf(f, "Scale -1 1 1\n");
     fprintf(f, "LookAt %.15g %.15g %.15g  %.15g %.15g %.15g  %.15g %.15g %.15g\n", c->from.x,

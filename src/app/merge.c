@@ -53,7 +53,7 @@ static int parse_merge_args(int argc, char **argv, struct merge_args *args, stru
             read_output(value, args->output, &args->display, err) < 0)
             return -1;
         if (strcmp(argv[i], "--exposure") == 0 &&
-            read_number("--exposure", value, 0, 1e30, 0, &args->exposure, err) < 0)
+            read_number("--exposure", value, 0, 1e30, NUMBER_REAL, &args->exposure, err) < 0)
             return -1;
         if (strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--exposure") == 0)
             i++;
@@ -77,8 +77,9 @@ static int read_record(const struct merge_args *args, int i, struct tile_record 
         return -1;
     if (r->time_limit > 0)
         return error_set(err, name, 0, "rendered with --time-limit %g, so its pixels depend "
-                         "on the speed of the machine that made it; render tiles with a "
-                         "fixed --spp (and --passes for 2008) instead", r->time_limit);
+                         "on the speed of the machine that made it; render tiles without "
+                         "--time-limit (their work fixed by --spp, or --passes in 2008 and "
+                         "2009)", r->time_limit);
     if (r->width != records[0].width || r->height != records[0].height)
         return error_set(err, name, 0, "a window of a %dx%d image, but %s is of a %dx%d one",
                          r->width, r->height, args->tiles[0], records[0].width,
@@ -195,7 +196,7 @@ static int paste_tiles(const struct merge_args *args, const struct tile_record *
         const struct tile_record *r = &records[i];
         struct image *tile = pfm_read(args->tiles[i], err);
         if (tile == NULL)
-            return -1;
+            return error_set(err, err->file, err->line, "%s (tile %d)", err->message, i + 1);
         if (tile->width != r->x1 - r->x0 || tile->height != r->y1 - r->y0) {
             error_set(err, args->tiles[i], 0, "%dx%d pixels, but its record's window %d %d "
                       "%d %d is %dx%d", tile->width, tile->height, r->x0, r->y0, r->x1, r->y1,
@@ -232,11 +233,17 @@ int merge_command(int argc, char **argv)
     struct merge_args args;
     struct error err;
     int parsed = parse_merge_args(argc, argv, &args, &err);
-    int status = parsed == 0 ? output_check(args.output, &err) : parsed;
+    if (parsed == 0)
+        image_declare_pair(args.output, args.display, "-o", args.display == DISPLAY_PPM
+                                                                ? "the PPM beside -o"
+                                                                : "the PNG beside -o");
+    int status = parsed == 0 ? outputs_check(&err) : parsed;
     if (status == 0) {
         struct tile_record *records = xmalloc((size_t)args.n_tiles, sizeof *records,
                                               "tile records");
         status = merge_tiles(&args, records, &err);
+        if (status == 0)
+            status = outputs_publish(&err);
         xfree(records);
     }
     if (status < 0)

@@ -11,22 +11,36 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../base/number.h"
 #include "../modes/jensen1994.h"
 #include "../modes/jensen1996.h"
 #include "../modes/photons.h"
 #include "../modes/sppm2009.h"
 
-int read_number(const char *name, const char *text, double min, double max, int integer,
-                double *value, struct error *err)
+void number_range(enum number_kind kind, double min, double max, char *text, size_t size)
 {
-    char *end = NULL;
-    *value = text != NULL ? strtod(text, &end) : 0;
-    int ok = text != NULL && end != text && *end == '\0' && *value >= min && *value <= max &&
-             (!integer || *value == floor(*value));
-    if (!ok)
-        return error_set(err, "", 0, "%s: expected %s from %g to %g, got '%s'", name,
-                         integer ? "a whole number" : "a number", min, max,
+    if (kind == NUMBER_WHOLE)
+        snprintf(text, size, "a whole number from %.0f to %.0f", min, max);
+    else if (kind == NUMBER_REAL)
+        snprintf(text, size, "a number from %g to %g", min, max);
+    else if (kind == NUMBER_ABOVE)
+        snprintf(text, size, "a number above %g, at most %g", min, max);
+    else
+        snprintf(text, size, "a number strictly between %g and %g", min, max);
+}
+
+int read_number(const char *name, const char *text, double min, double max,
+                enum number_kind kind, double *value, struct error *err)
+{
+    int ok = number_parse(text, kind == NUMBER_WHOLE, value) && *value <= max &&
+             (kind == NUMBER_WHOLE || kind == NUMBER_REAL ? *value >= min : *value > min) &&
+             (kind != NUMBER_BETWEEN || *value < max);
+    if (!ok) {
+        char range[96];
+        number_range(kind, min, max, range, sizeof range);
+        return error_set(err, "", 0, "%s: expected %s, got '%s'", name, range,
                          text != NULL ? text : "nothing");
+    }
     return 0;
 }
 
@@ -81,6 +95,54 @@ void default_output(const char *scene_path, char *output)
     if (n > OUTPUT_PATH_MAX - 5)
         n = OUTPUT_PATH_MAX - 5;
     sprintf(output, "%.*s.pfm", n, base);
+}
+
+void option_defaults(struct options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->mode = MODE_DIRECT;
+    o->quality = QUALITY_DEFAULT;
+    o->seed = 1;
+    o->spp = 0;
+    o->max_depth = -1;
+    o->progress = -1;
+    o->exposure = 1.0;
+    o->display = DISPLAY_PNG;
+    o->photons = 0; /* the mode's default, set after parsing */
+    o->gather = 0; /* the mode's default, set after parsing */
+    o->passes = 0;           /* the mode's default, set after parsing */
+    o->photons_per_pass = 0; /* the mode's default, set after parsing */
+    o->alpha = PPM_DEFAULT_ALPHA;
+    struct ppm_settings pp = ppm_settings_default();
+    o->footprints = pp.footprints;
+    o->fit_radius = pp.fit_radius;
+    o->caustic_footprints = pp.caustic_footprints;
+    o->merge_hit_points = pp.merge_hit_points;
+    o->resample_emission = pp.resample_emission;
+    o->facing_test = pp.facing_test;
+    o->cone = -1;
+    o->caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
+    struct jensen1996_settings js = jensen1996_settings_default();
+    o->caustic_photons = (int)js.caustic_photons;
+    o->caustic_gather = (int)js.caustic_gather;
+    o->gather_rays = js.gather_rays;
+    o->glossy_rays = js.glossy_rays;
+    o->cache_accuracy = js.cache_accuracy;
+    o->accurate_distance = js.accurate_distance;
+    o->accurate_weight = js.accurate_weight;
+    o->shadow_photons = js.shadow_photons;
+    o->precomputed_irradiance = js.precomputed_irradiance;
+    o->disc_coverage = js.disc_coverage;
+    o->both_lobes = js.both_lobes;
+    o->glossy_corner = js.glossy_corner;
+    o->bounded_reach = js.bounded_reach;
+    o->gradient_limit = js.gradient_limit;
+    struct jensen1994_settings j94 = jensen1994_settings_default();
+    o->differential_run = j94.differential_run;
+    o->light_samples = j94.light_samples;
+    o->projection_maps = j94.projection_maps;
+    o->glossy_gather = j94.glossy_gather;
+    o->glossy_photons = j94.glossy_photons;
 }
 
 void mode_defaults(struct options *o)

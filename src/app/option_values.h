@@ -16,6 +16,10 @@ int read_store(const char *text, int *illumination, struct error *err);
  * into output[OUTPUT_PATH_MAX]. */
 void default_output(const char *scene_path, char *output);
 
+/* Every option's default before the mode is known (mode_defaults() then fills the
+ * options left unset for the mode). */
+void option_defaults(struct options *o);
+
 /* The defaults that depend on --mode, for the options the command line left unset (0, or
  * -1 for --cone): photons, gather, cone, passes, photons a pass and spp. */
 void mode_defaults(struct options *o);

@@ -20,19 +20,21 @@
 #include "../modes/sppm2009.h"
 #include "../modes/render.h"
 #include "../photon/trace.h"
+#include "help.h"
 #include "option_values.h"
 #include "presets.h"
 
 enum option_kind {
-    OPT_FLAG, OPT_INT, OPT_SEED, OPT_REAL, OPT_MODE, OPT_QUALITY, OPT_OUTPUT, OPT_FILE, OPT_CROP,
-    OPT_STORE
+    OPT_FLAG, OPT_INT, OPT_SEED, OPT_REAL, OPT_REAL_ABOVE, OPT_REAL_BETWEEN, OPT_MODE,
+    OPT_QUALITY, OPT_OUTPUT, OPT_FILE, OPT_CROP, OPT_STORE
 };
 
 struct option_spec {
     const char *name;
     enum option_kind kind;
     size_t offset;    /* of the field in struct options */
-    double min, max;  /* limits for numbers             */
+    double min, max;  /* limits for numbers: [min, max]; OPT_REAL_ABOVE (min, max],
+                         OPT_REAL_BETWEEN (min, max); --help prints them        */
     const char *args; /* what follows the name in --help */
     const char *help;
     unsigned modes;   /* the modes it means something for: bit 1 << m for enum mode m;
@@ -88,8 +90,11 @@ static const struct option_spec specs[] = {
      FOR_SAMPLES},
     {"--max-depth", OPT_INT, FIELD(max_depth), 0, MAX_DEPTH_LIMIT, "N",
      "longest chain of bounces followed (default: direct 16, others 1000)", FOR_ALL},
-    {"--time-limit", OPT_REAL, FIELD(time_limit), 0, 1e9, "SECONDS",
-     "stop after the sample pass that crosses this many CPU seconds (default: none)", FOR_ALL},
+    {"--time-limit", OPT_REAL_ABOVE, FIELD(time_limit), 0, 1e9, "SECONDS",
+     "start no sample pass (photon pass in 2008, 2009) once this process has used this many "
+     "CPU seconds (C's clock()): the pass running then finishes, so the render takes a "
+     "pass longer; the mode's set-up (photon maps, the cache) is not cut (default: none)",
+     FOR_ALL},
     {"--reference", OPT_FILE, FIELD(reference), 0, 0, "REF.pfm",
      "with --report: the converged image to measure error against (whole-image size)", FOR_ALL},
     {"--report", OPT_FILE, FIELD(report), 0, 0, "FILE.csv",
@@ -108,7 +113,7 @@ static const struct option_spec specs[] = {
     {"--gather", OPT_INT, FIELD(gather), 1, MAX_GATHER, "K",
      "photons in each radiance or irradiance estimate (default 100; 1994: 50; 1996: 40)",
      FOR_PHOTON_MAPS},
-    {"--max-radius", OPT_REAL, FIELD(max_radius), 0, 1e30, "R",
+    {"--max-radius", OPT_REAL_ABOVE, FIELD(max_radius), 0, 1e30, "R",
      "largest gathering radius (default: 1/10 of the scene's diagonal)",
      FOR_PHOTON_MAPS},
     {"--cone", OPT_REAL, FIELD(cone), 0, 1e6, "K",
@@ -204,12 +209,12 @@ static const struct option_spec specs[] = {
      "--time-limit may stop sooner)", FOR_PROGRESSIVE},
     {"--photons-per-pass", OPT_INT, FIELD(photons_per_pass), 1, MAX_PHOTONS, "N",
      "photons traced in each pass (default 100000)", FOR_PROGRESSIVE},
-    {"--alpha", OPT_REAL, FIELD(alpha), 0, 1, "A",
-     "fraction of new photons kept, 0 < A < 1 (Eq. 7; default 0.7)", FOR_PROGRESSIVE},
-    {"--radius", OPT_REAL, FIELD(radius), 0, 1e30, "R",
+    {"--alpha", OPT_REAL_BETWEEN, FIELD(alpha), 0, 1, "A",
+     "fraction of new photons kept (Eq. 7; default 0.7)", FOR_PROGRESSIVE},
+    {"--radius", OPT_REAL_ABOVE, FIELD(radius), 0, 1e30, "R",
      "initial radius in scene units (default: --footprints pixel footprints at each hit "
      "point)", FOR_PROGRESSIVE},
-    {"--footprints", OPT_REAL, FIELD(footprints), 0, 1e6, "K",
+    {"--footprints", OPT_REAL_ABOVE, FIELD(footprints), 0, 1e6, "K",
      "initial radius in pixel footprints at each hit point (default 4; the paper's: 1)",
      FOR_PROGRESSIVE},
     {"--caustic-footprints", OPT_REAL, FIELD(caustic_footprints), 0, 1e6, "K",
@@ -308,11 +313,37 @@ static void mode_note(unsigned set, char *text, size_t size)
     snprintf(text, size, "%s%s: ", most ? "not with " : "", modes);
 }
 
-static void print_help(void)
+/* The number read_number() reads for a numeric option. */
+static enum number_kind number_kind_of(const struct option_spec *spec)
 {
-    printf("usage: photon [options] SCENE       render SCENE: a scene file, or an NFF file by its\n"
+    return spec->kind == OPT_INT || spec->kind == OPT_CROP ? NUMBER_WHOLE
+           : spec->kind == OPT_REAL_ABOVE                  ? NUMBER_ABOVE
+           : spec->kind == OPT_REAL_BETWEEN                ? NUMBER_BETWEEN
+                                                           : NUMBER_REAL;
+}
+
+/* What --help says of spec's value after its text: its range, for a number. */
+static void value_note(const struct option_spec *spec, char *text, size_t size)
+{
+    char range[96];
+    int numeric = spec->kind == OPT_INT || spec->kind == OPT_REAL ||
+                  spec->kind == OPT_REAL_ABOVE || spec->kind == OPT_REAL_BETWEEN ||
+                  spec->kind == OPT_CROP;
+    text[0] = '\0';
+    if (!numeric)
+        return;
+    number_range(number_kind_of(spec), spec->min, spec->max, range, sizeof range);
+    snprintf(text, size, " (%s: %s)", spec->kind == OPT_CROP ? "each" : spec->args, range);
+}
+
+static void print_help(enum help_format format)
+{
+    help_begin(format, PHOTON_VERSION);
+    if (format == HELP_ROFF)
+        help_section(format, "synopsis");
+    help_lines(format, "usage: photon [options] SCENE       render SCENE: a scene file, or an NFF file by its\n"
            "                                    .nff name (see README: Scene files)\n"
-           "       photon compare A.pfm B.pfm [--diff OUT.ppm] [--ref-variance VB.pfm]\n"
+           "       photon compare A.pfm B.pfm [--diff OUT.png|.ppm] [--ref-variance VB.pfm]\n"
            "                      [--test-variance VA.pfm] [--alpha ALPHA] [--block N]\n"
            "       photon plot A.csv [B.csv ...] -o PLOT.svg      (relmse against seconds)\n"
            "       photon plot --linear --x COL --y COL [--y COL]... [--x-title T]\n"
@@ -323,65 +354,21 @@ static void print_help(void)
            "       photon merge -o FULL.pfm TILE.pfm [TILE.pfm ...] [--exposure E]\n"
            "       photon export --format pbrt|mitsuba|blender SCENE -o OUT [--spp N]\n"
            "                    [--channel R|G|B]   (the scene for pbrt-v4, Mitsuba 3 or\n"
-           "                    Blender; see README: Rendering our scenes elsewhere)\n"
-           "\noptions:\n");
+           "                    Blender; see README: Rendering our scenes elsewhere)\n");
+    help_section(format, "options");
     for (size_t i = 0; i < N_SPECS; i++) {
-        char left[40], note[80];
+        char left[40], note[80], range[128], text[1024];
         snprintf(left, sizeof left, "%s %s", specs[i].name, specs[i].args);
         mode_note(specs[i].modes, note, sizeof note);
-        printf("  %-26s %s%s\n", left, note, specs[i].help);
+        value_note(&specs[i], range, sizeof range);
+        snprintf(text, sizeof text, "%s%s%s", note, specs[i].help, range);
+        help_option(format, left, text);
     }
-    printf("  %-26s %s\n  %-26s %s\n", "--help", "print this and exit", "--version",
-           "print the version and exit");
-    print_presets();
-}
-
-static void set_defaults(struct options *o)
-{
-    memset(o, 0, sizeof *o);
-    o->mode = MODE_DIRECT;
-    o->quality = QUALITY_DEFAULT;
-    o->seed = 1;
-    o->spp = 0;
-    o->max_depth = -1;
-    o->progress = -1;
-    o->exposure = 1.0;
-    o->display = DISPLAY_PNG;
-    o->photons = 0; /* the mode's default, set after parsing */
-    o->gather = 0; /* the mode's default, set after parsing */
-    o->passes = 0;           /* the mode's default, set after parsing */
-    o->photons_per_pass = 0; /* the mode's default, set after parsing */
-    o->alpha = PPM_DEFAULT_ALPHA;
-    struct ppm_settings pp = ppm_settings_default();
-    o->footprints = pp.footprints;
-    o->fit_radius = pp.fit_radius;
-    o->caustic_footprints = pp.caustic_footprints;
-    o->merge_hit_points = pp.merge_hit_points;
-    o->resample_emission = pp.resample_emission;
-    o->facing_test = pp.facing_test;
-    o->cone = -1;
-    o->caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
-    struct jensen1996_settings js = jensen1996_settings_default();
-    o->caustic_photons = (int)js.caustic_photons;
-    o->caustic_gather = (int)js.caustic_gather;
-    o->gather_rays = js.gather_rays;
-    o->glossy_rays = js.glossy_rays;
-    o->cache_accuracy = js.cache_accuracy;
-    o->accurate_distance = js.accurate_distance;
-    o->accurate_weight = js.accurate_weight;
-    o->shadow_photons = js.shadow_photons;
-    o->precomputed_irradiance = js.precomputed_irradiance;
-    o->disc_coverage = js.disc_coverage;
-    o->both_lobes = js.both_lobes;
-    o->glossy_corner = js.glossy_corner;
-    o->bounded_reach = js.bounded_reach;
-    o->gradient_limit = js.gradient_limit;
-    struct jensen1994_settings j94 = jensen1994_settings_default();
-    o->differential_run = j94.differential_run;
-    o->light_samples = j94.light_samples;
-    o->projection_maps = j94.projection_maps;
-    o->glossy_gather = j94.glossy_gather;
-    o->glossy_photons = j94.glossy_photons;
+    help_option(format, "--help", "print this and exit");
+    help_option(format, "--version", "print the version and exit");
+    help_option(format, "--manual", "print this as a manual page (roff; make install writes "
+                                    "photon.1 from it) and exit");
+    print_presets(format);
 }
 
 static int read_mode(const char *text, enum mode *mode, struct error *err)
@@ -410,8 +397,10 @@ static int apply_option(const struct option_spec *spec, char **argv, int argc, i
         return 0;
     case OPT_INT:
     case OPT_REAL:
+    case OPT_REAL_ABOVE:
+    case OPT_REAL_BETWEEN:
         (*i)++;
-        if (read_number(spec->name, value, spec->min, spec->max, spec->kind == OPT_INT, &v,
+        if (read_number(spec->name, value, spec->min, spec->max, number_kind_of(spec), &v,
                         err) < 0)
             return -1;
         if (spec->kind == OPT_INT)
@@ -444,7 +433,7 @@ static int apply_option(const struct option_spec *spec, char **argv, int argc, i
         for (int k = 0; k < 4; k++) {
             (*i)++;
             value = *i < argc ? argv[*i] : NULL;
-            if (read_number(spec->name, value, spec->min, spec->max, 1, &v, err) < 0)
+            if (read_number(spec->name, value, spec->min, spec->max, NUMBER_WHOLE, &v, err) < 0)
                 return -1;
             ((int *)field)[k] = (int)v;
         }
@@ -515,8 +504,9 @@ static int apply_words(const struct words *w, struct options *o, int given[N_SPE
     char **argv = w->word;
     int argc = w->n;
     for (int i = w->first; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            print_help();
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0 ||
+            strcmp(argv[i], "--manual") == 0) {
+            print_help(strcmp(argv[i], "--manual") == 0 ? HELP_ROFF : HELP_TEXT);
             return 1;
         }
         if (strcmp(argv[i], "--version") == 0) {
@@ -562,7 +552,7 @@ static int apply_preset_and_words(int argc, char **argv, struct options *o,
                                   int given[N_SPECS], struct error *err)
 {
     struct words user = {argv, 1, argc};
-    set_defaults(o);
+    option_defaults(o);
     int status = apply_words(&user, o, given, err);
     if (status != 0)
         return status;
@@ -571,7 +561,7 @@ static int apply_preset_and_words(int argc, char **argv, struct options *o,
     struct preset_words preset, as_written;
     preset_words(o->mode, quality, &preset);
     paper_words(o->mode, paper, &as_written);
-    set_defaults(o);
+    option_defaults(o);
     char name[32];
     snprintf(name, sizeof name, "--quality %s", quality_name(quality));
     if (apply_layer(&preset, name, o, err) < 0 || apply_layer(&as_written, "--paper", o, err) < 0)
@@ -582,6 +572,23 @@ static int apply_preset_and_words(int argc, char **argv, struct options *o,
     if (user_specular_spp == 0 && o->specular_spp > 0 && o->specular_spp < o->spp)
         o->specular_spp = o->spp;
     return status;
+}
+
+/* Where o->spp came from when the command line did not give it, for a message: ", from
+ * --quality NAME" when the preset has --spp, else ", the mode's default". */
+static const char *spp_origin(const struct options *o, const int given[N_SPECS])
+{
+    static char origin[64];
+    if (given[find_spec("--spp") - specs] > 0)
+        return "";
+    struct preset_words preset;
+    preset_words(o->mode, o->quality, &preset);
+    for (int i = 0; i < preset.n_words; i++)
+        if (strcmp(preset.word[i], "--spp") == 0) {
+            snprintf(origin, sizeof origin, ", from --quality %s", quality_name(o->quality));
+            return origin;
+        }
+    return ", the mode's default";
 }
 
 int parse_options(int argc, char **argv, struct options *o, struct error *err)
@@ -607,8 +614,6 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
     if (o->mode == MODE_JENSEN1994 && o->cache_accuracy == 0)
         return error_set(err, "", 0, "--cache-accuracy: mode 1994 needs its irradiance "
                                      "cache, a > 0");
-    if (!(o->alpha > 0 && o->alpha < 1))
-        return error_set(err, "", 0, "--alpha: expected a number strictly between 0 and 1");
     if (progressive && o->specular_spp > 0)
         return error_set(err, "", 0, "--specular-spp: not available with --mode %s, whose "
                                      "pixels all take the same eye rays", mode_name(o->mode));
@@ -618,8 +623,8 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
                               ? (int)fmin(SPECULAR_SPP_FACTOR * o->spp, MAX_SPP)
                               : o->spp;
     if (o->specular_spp < o->spp)
-        return error_set(err, "", 0, "--specular-spp %d: expected at least --spp (%d)",
-                         o->specular_spp, o->spp);
+        return error_set(err, "", 0, "--specular-spp %d: expected at least --spp (%d%s)",
+                         o->specular_spp, o->spp, spp_origin(o, given));
     if (check_global_work_options(o, err) < 0)
         return -1;
     if (progressive && o->variance != NULL)
@@ -659,6 +664,8 @@ static void option_text(const struct option_spec *spec, const struct options *o,
     const char *field = (const char *)o + spec->offset;
     switch (spec->kind) {
     case OPT_REAL:
+    case OPT_REAL_ABOVE:
+    case OPT_REAL_BETWEEN:
         snprintf(text, size, "%s=%.17g\n", spec->name, *(const double *)field);
         return;
     case OPT_SEED:

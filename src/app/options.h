@@ -7,6 +7,7 @@
 #ifndef PHOTON_OPTIONS_H
 #define PHOTON_OPTIONS_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "../base/error.h"
@@ -107,10 +108,18 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err);
 
 const char *mode_name(enum mode mode);
 
-/* A number from text: whole (integer != 0) or real, within [min, max]; -1 with *err
- * naming the option (name) otherwise. Also for the subcommands' options. */
-int read_number(const char *name, const char *text, double min, double max, int integer,
-                double *value, struct error *err);
+/* What a number must be: whole in [min, max], real in [min, max], real in (min, max], or
+ * real in (min, max). */
+enum number_kind { NUMBER_WHOLE, NUMBER_REAL, NUMBER_ABOVE, NUMBER_BETWEEN };
+
+/* A number from text in base/number.h's syntax and within kind's range; -1 with *err
+ * naming the option (name) and the range otherwise. Also for the subcommands' options. */
+int read_number(const char *name, const char *text, double min, double max,
+                enum number_kind kind, double *value, struct error *err);
+
+/* The range of kind, min and max in words ("a whole number from 1 to 1048576"), as
+ * read_number()'s message and --help say it, into text[size]. */
+void number_range(enum number_kind kind, double min, double max, char *text, size_t size);
 
 /* A --seed value: a whole number from 0 to 2^64 - 1; -1 with *err filled otherwise. */
 int read_seed(const char *text, uint64_t *seed, struct error *err);

@@ -11,6 +11,7 @@
 #define PHOTON_PRESETS_H
 
 #include "../base/error.h"
+#include "help.h"
 #include "options.h"
 
 #define PRESET_MAX_WORDS 24  /* longest word list in the table, with room to spare */
@@ -36,6 +37,6 @@ void preset_words(enum mode mode, enum quality quality, struct preset_words *out
 void paper_words(enum mode mode, int paper, struct preset_words *out);
 
 /* Prints the table for --help: one line for each mode's preview and reference presets. */
-void print_presets(void);
+void print_presets(enum help_format format);
 
 #endif

@@ -40,7 +40,8 @@ static int read_numbers(int argc, char **argv, int *i, int count, double *values
     const char *name = argv[*i];
     for (int k = 0; k < count; k++) {
         (*i)++;
-        if (read_number(name, *i < argc ? argv[*i] : NULL, -1e30, 1e30, 0, &values[k], err) < 0)
+        if (read_number(name, *i < argc ? argv[*i] : NULL, -1e30, 1e30, NUMBER_REAL,
+                        &values[k], err) < 0)
             return -1;
     }
     return 0;
@@ -64,16 +65,17 @@ static int read_probe_option(int argc, char **argv, int *i, struct probe_args *a
     else if (strcmp(name, "--seed") == 0)
         return read_seed(value, &args->seed, err);
     else if (strcmp(name, "--samples") == 0 &&
-             (status = read_number(name, value, 2, PROBE_MAX_SAMPLES, 1, &v, err)) == 0)
+             (status = read_number(name, value, 2, PROBE_MAX_SAMPLES, NUMBER_WHOLE, &v,
+                                   err)) == 0)
         args->samples = (int)v;
     else if (strcmp(name, "--photons") == 0 &&
-             (status = read_number(name, value, 1, MAX_PHOTONS, 1, &v, err)) == 0)
+             (status = read_number(name, value, 1, MAX_PHOTONS, NUMBER_WHOLE, &v, err)) == 0)
         args->js.n_photons = (size_t)v;
     else if (strcmp(name, "--gather") == 0 &&
-             (status = read_number(name, value, 1, 100000, 1, &v, err)) == 0)
+             (status = read_number(name, value, 1, 100000, NUMBER_WHOLE, &v, err)) == 0)
         args->js.gather = (size_t)v;
     else if (strcmp(name, "--differential") == 0 &&
-             (status = read_number(name, value, 0, 100000, 1, &v, err)) == 0)
+             (status = read_number(name, value, 0, 100000, NUMBER_WHOLE, &v, err)) == 0)
         args->js.differential_run = (int)v;
     else if (status == 0)
         return error_set(err, "", 0, "probe: unknown option '%s'; " PROBE_USAGE, name);
@@ -268,7 +270,7 @@ int probe_command(int argc, char **argv)
             error_print(&err);
         return parsed < 0 ? 2 : 0;
     }
-    struct scene *scene = output_check(args.output, &err) == 0
+    struct scene *scene = output_check_one(args.output, "-o", &err) == 0
                               ? scene_load(args.scene_path, &err)
                               : NULL;
     if (scene == NULL) {
@@ -286,7 +288,8 @@ int probe_command(int argc, char **argv)
                                   &stats, &err) == 0 &&
                          jensen1994_trace(scene, args.seed, MAX_DEPTH_LIMIT, &with_maps,
                                           &st.illumination, &stats, &err) == 0 &&
-                         write_probe(scene, &st, &args, &err) == 0
+                         write_probe(scene, &st, &args, &err) == 0 &&
+                         outputs_publish(&err) == 0
                      ? 0
                      : error_exit_status(&err);
     if (status != 0)

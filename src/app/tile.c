@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../base/input.h"
 #include "../image/image.h"
 
 #define RECORD_LINE_MAX 128 /* the longest valid line, "window" with four 5-digit numbers,
@@ -21,7 +22,7 @@
 #define RECORD_WORDS_MAX 5  /* "window X0 Y0 X1 Y1" */
 
 struct record_reader {
-    FILE *f;
+    struct input in;
     const char *file;             /* the record's name, for messages       */
     int line;                     /* 1-based number of the line in text    */
     char text[RECORD_LINE_MAX];   /* the current line, cut into words      */
@@ -36,6 +37,13 @@ static int record_name(const char *pfm_name, char *name, struct error *err)
         return error_set(err, pfm_name, 0, "the file name is too long");
     sprintf(name, "%s%s", pfm_name, TILE_RECORD_SUFFIX);
     return 0;
+}
+
+void tile_record_declare(const char *pfm_name)
+{
+    char name[FILENAME_MAX];
+    if (record_name(pfm_name, name, NULL) == 0)
+        output_declare(name, "the --crop record beside -o");
 }
 
 int tile_record_write(const char *pfm_name, const struct tile_record *r, struct error *err)
@@ -90,18 +98,18 @@ static int split_words(struct record_reader *rd)
  * after it as form has; form spells the line for the message ("image WIDTH HEIGHT"). */
 static int read_line(struct record_reader *rd, const char *form, struct error *err)
 {
-    rd->line++;
-    if (fgets(rd->text, sizeof rd->text, rd->f) == NULL)
-        return ferror(rd->f) ? error_set(err, rd->file, 0, "cannot read the file (is it a "
-                                         "directory?)")
-                             : error_set(err, rd->file, rd->line, "expected '%s', found "
-                                         "the end of the file", form);
+    int status = input_line(&rd->in, rd->text, sizeof rd->text, err);
+    rd->line = rd->in.line + (status == 0);
+    if (status < 0)
+        return -1;
+    if (status == 0)
+        return error_set(err, rd->file, rd->line, "expected '%s', found the end of the file",
+                         form);
     size_t keyword_length = strcspn(form, " ");
     int n_form_words = 1;
     for (const char *c = form; *c != '\0'; c++)
         n_form_words += *c == ' ';
-    int complete = strchr(rd->text, '\n') != NULL || feof(rd->f);
-    if (!complete || split_words(rd) < 0 || rd->n_words != n_form_words ||
+    if (split_words(rd) < 0 || rd->n_words != n_form_words ||
         strlen(rd->words[0]) != keyword_length ||
         strncmp(rd->words[0], form, keyword_length) != 0)
         return error_set(err, rd->file, rd->line, "expected '%s'", form);
@@ -180,9 +188,10 @@ static int read_fields(struct record_reader *rd, struct tile_record *r, struct e
     r->y0 = w[1];
     r->x1 = w[2];
     r->y1 = w[3];
-    if (fgets(rd->text, sizeof rd->text, rd->f) != NULL)
+    int more = input_line(&rd->in, rd->text, sizeof rd->text, err);
+    if (more > 0)
         return error_set(err, rd->file, rd->line + 1, "unexpected text after the record");
-    return 0;
+    return more;
 }
 
 int tile_record_read(const char *pfm_name, struct tile_record *r, struct error *err)
@@ -191,13 +200,11 @@ int tile_record_read(const char *pfm_name, struct tile_record *r, struct error *
     if (record_name(pfm_name, name, err) < 0)
         return -1;
     struct record_reader rd;
-    rd.f = fopen(name, "r");
-    if (rd.f == NULL)
-        return error_set(err, name, 0, "cannot open: %s (is %s a --crop render?)",
-                         strerror(errno), pfm_name);
+    if (input_open(&rd.in, name, err) < 0)
+        return error_set(err, name, 0, "%s (is %s a --crop render?)", err->message, pfm_name);
     rd.file = name;
     rd.line = 0;
     int status = read_fields(&rd, r, err);
-    fclose(rd.f);
+    input_close(&rd.in);
     return status;
 }

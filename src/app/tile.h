@@ -39,6 +39,9 @@ struct tile_record {
     double time_limit;  /* the render's --time-limit in CPU seconds, 0 = none            */
 };
 
+/* Declares pfm_name + TILE_RECORD_SUFFIX as an output of the command (base/output.h). */
+void tile_record_declare(const char *pfm_name);
+
 /* Writes pfm_name + TILE_RECORD_SUFFIX, whole or not at all (output_open). -1 with *err
  * filled when it cannot be written. */
 int tile_record_write(const char *pfm_name, const struct tile_record *r, struct error *err);

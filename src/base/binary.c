@@ -3,11 +3,11 @@
  */
 #include "binary.h"
 
-#include <errno.h>
 #include <math.h>
 #include <string.h>
 
 #include "hash.h"
+#include "input.h"
 
 extern char double_is_8_bytes[sizeof(double) == BINARY_DOUBLE_BYTES ? 1 : -1];
 
@@ -43,17 +43,13 @@ void binary_put_checksum(struct binary_writer *w)
 
 int binary_open(const char *name, struct binary_reader *r, struct error *err)
 {
+    struct input in;
     r->name = name;
-    r->size = 0;
     r->checksum = FNV1A_OFFSET_BASIS;
-    r->f = fopen(name, "rb");
-    if (r->f == NULL)
-        return error_set(err, name, 0, "cannot open: %s", strerror(errno));
-    if (fseek(r->f, 0, SEEK_END) != 0 || (r->size = ftell(r->f)) < 0 ||
-        fseek(r->f, 0, SEEK_SET) != 0) {
-        fclose(r->f);
-        return error_set(err, name, 0, "cannot tell its size (is it a regular file?)");
-    }
+    if (input_open(&in, name, err) < 0)
+        return -1;
+    r->f = in.f; /* the caller closes it */
+    r->size = in.size;
     return 0;
 }
 

@@ -9,11 +9,8 @@
  * through fatal(), which removes every temporary output still open and prints
  * "photon: message"; a failed write is reported like bad input, with failed_write set,
  * so that the command finishes cleanly and exits 1 (error_exit_status). An output
- * whose directory is missing or not writable is bad input, found by output_check()
- * before any work.
- *
- * Outputs are written to NAME.tmp (output_open) and renamed to NAME once complete
- * (output_commit), so an interrupted or failed run never leaves a partial file.
+ * that cannot be written where it is to go is bad input, found by outputs_check()
+ * before any work (output.h, where outputs are written whole or not at all).
  */
 #ifndef PHOTON_ERROR_H
 #define PHOTON_ERROR_H
@@ -44,21 +41,6 @@ int error_exit_status(const struct error *err);
 /* Removes temporary outputs, prints "photon: message" and exits with status 1. */
 void fatal(const char *format, ...);
 
-/* Opens NAME.tmp for binary writing and remembers it for fatal(). Returns NULL with *err
- * filled (a failed write) when the file cannot be created. */
-FILE *output_open(const char *name, struct error *err);
-
-/* Whether NAME can be written, asked before any work: creates NAME.tmp, the temporary
- * output_open() will use, and removes it. -1 with *err filled (bad input: the directory
- * is missing or not writable, or the name too long) when it cannot be created. */
-int output_check(const char *name, struct error *err);
-
-/* Closes the stream returned by output_open() and renames NAME.tmp to NAME; a failed
- * write or close removes the temporary and returns -1 with *err filled (a failed
- * write). */
-int output_commit(FILE *f, struct error *err);
-
-/* Closes and removes a temporary output that will not be completed. */
-void output_abandon(FILE *f);
+#include "output.h" /* output_open() and the rest, once here */
 
 #endif

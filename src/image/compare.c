@@ -6,9 +6,10 @@
  *   mse    = (1/n) sum (a - b)^2                 rmse = sqrt(mse)
  *   relmse = (1/n) sum (a - b)^2 / (b^2 + 1e-2)  (the 1e-2 keeps black reference pixels
  *                                                 from dominating, and divisions safe)
- *   psnr   = 10 log10(peak^2 / mse) dB, peak = max(largest channel of b, 1e-30);
- *            +Inf when mse = 0, which the command prints as "psnr=inf" (printf's own
- *            spelling of infinity is implementation-defined)
+ *   psnr   = 10 log10(peak^2 / mse) dB, peak = the largest channel of b; +Inf when
+ *            mse = 0, which the command prints as "psnr=inf" (printf's own spelling of
+ *            infinity is implementation-defined); none (has_psnr 0, printed
+ *            "psnr=none") when b has no positive value and mse > 0: there is no peak
  *   maxerr = max |a - b|
  * Images read from PFM files (floats) always give finite values, except psnr = +Inf.
  *
@@ -27,7 +28,7 @@
  * per cent at the far levels Sidak reaches for a megapixel (1e-6: 5.013 against 4.892),
  * where z is the less conservative.
  *
- * `photon compare A.pfm B.pfm [--diff OUT.ppm]` prints one line
+ * `photon compare A.pfm B.pfm [--diff OUT.png|.ppm]` prints one line
  *   rmse=%.6g relmse=%.6g psnr=%.4f maxerr=%.6g
  * on stdout, or on bad input a message on stderr, nothing on stdout, and status 2. With
  * --ref-variance VB.pfm (b's variance) and/or --test-variance VA.pfm (a's; 0 without),
@@ -40,13 +41,15 @@
  */
 #include "compare.h"
 
+#include "../base/number.h"
+#include "png.h"
+
 #include <assert.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define RELMSE_EPSILON 1e-2 /* compare.h's definition of relmse */
-#define PSNR_MIN_PEAK 1e-30 /* compare.h: keeps peak^2 > 0 for an all-black reference */
-#define COMPARE_USAGE "usage: photon compare A.pfm B.pfm [--diff OUT.ppm] " \
+#define COMPARE_USAGE "usage: photon compare A.pfm B.pfm [--diff OUT.png|.ppm] " \
                       "[--ref-variance VB.pfm] [--test-variance VA.pfm] [--alpha ALPHA] " \
                       "[--block N]"
 #define DEFAULT_ALPHA 0.01 /* family-wise level of the test when --alpha is not given */
@@ -64,7 +67,7 @@ struct image_error image_compare(const struct image *a, const struct image *b)
 {
     assert(a->width == b->width && a->height == b->height);
     size_t n_pixels = (size_t)a->width * (size_t)a->height;
-    double sum2 = 0, sum_rel = 0, peak = PSNR_MIN_PEAK, maxerr = 0;
+    double sum2 = 0, sum_rel = 0, peak = 0, maxerr = 0;
     for (size_t i = 0; i < n_pixels; i++) {
         for (int c = 0; c < 3; c++) {
             double bc = vec3_get(b->pixels[i], c);
@@ -80,7 +83,8 @@ struct image_error image_compare(const struct image *a, const struct image *b)
     struct image_error e;
     e.rmse = sqrt(mse);
     e.relmse = sum_rel / n;
-    e.psnr = mse > 0 ? 10.0 * log10(peak * peak / mse) : HUGE_VAL;
+    e.has_psnr = mse == 0 || peak > 0;
+    e.psnr = mse == 0 ? HUGE_VAL : peak > 0 ? 10.0 * log10(peak * peak / mse) : 0;
     e.maxerr = maxerr;
     return e;
 }
@@ -199,7 +203,7 @@ struct image *variance_read(const char *name, const struct image *like, struct e
 struct compare_args {
     const char *test;          /* A.pfm, the image judged                     */
     const char *reference;     /* B.pfm, the reference it is judged by          */
-    const char *diff;          /* --diff OUT.ppm, or NULL                       */
+    const char *diff;          /* --diff OUT.png or .ppm, or NULL                     */
     const char *ref_variance;  /* --ref-variance VB.pfm (b's variance), or NULL */
     const char *test_variance; /* --test-variance VA.pfm (a's variance), or NULL */
     const char *alpha_text;    /* --alpha as given, or NULL                     */
@@ -288,9 +292,7 @@ static int parse_alpha(struct compare_args *args, struct error *err)
     if (args->ref_variance == NULL && args->test_variance == NULL)
         return error_set(err, "", 0, "compare: --alpha needs --ref-variance or "
                                      "--test-variance; " COMPARE_USAGE);
-    char *end;
-    args->alpha = strtod(args->alpha_text, &end);
-    if (end == args->alpha_text || *end != '\0' ||
+    if (!number_parse(args->alpha_text, 0, &args->alpha) ||
         !(args->alpha >= ALPHA_MIN && args->alpha < 1))
         return error_set(err, "", 0, "compare: --alpha '%s' must be a number from %g up to "
                                      "1 (exclusive), such as 0.01", args->alpha_text,
@@ -304,9 +306,8 @@ static int parse_block(struct compare_args *args, struct error *err)
     args->block = 0;
     if (args->block_text == NULL)
         return 0;
-    char *end;
-    long size = strtol(args->block_text, &end, 10);
-    if (end == args->block_text || *end != '\0' || size < 1 || size > 65536)
+    double size;
+    if (!number_parse(args->block_text, 1, &size) || size < 1 || size > 65536)
         return error_set(err, "", 0, "compare: --block '%s' must be a whole number of pixels "
                                      "from 1 to 65536; " COMPARE_USAGE, args->block_text);
     args->block = (int)size;
@@ -343,11 +344,17 @@ static int parse_compare_args(int argc, char **argv, struct compare_args *args,
         return error_set(err, "", 0, "compare: expected two images; " COMPARE_USAGE);
     args->test = files[0];
     args->reference = files[1];
+    size_t n = args->diff != NULL ? strlen(args->diff) : 0;
+    if (args->diff != NULL && (n < 5 || (strcmp(args->diff + n - 4, ".png") != 0 &&
+                                         strcmp(args->diff + n - 4, ".ppm") != 0)))
+        return error_set(err, "", 0, "compare: --diff '%s': expected a file name ending in "
+                         ".png or .ppm", args->diff);
     return parse_alpha(args, err) < 0 ? -1 : parse_block(args, err);
 }
 
 /* --diff: |a - b| per channel divided by maxerr, so the largest error shows as full white
- * and identical images as black; sRGB-encoded like any PPM we write. */
+ * and identical images as black; sRGB-encoded like any display image we write, a PNG or
+ * a PPM by the name's ending (parse_compare_args refused any other). */
 static int write_diff(const char *name, const struct image *a, const struct image *b,
                       double maxerr, struct error *err)
 {
@@ -358,7 +365,10 @@ static int write_diff(const char *name, const struct image *a, const struct imag
         struct vec3 d = vec3_sub(a->pixels[i], b->pixels[i]);
         diff->pixels[i] = vec3_scale(vec3(fabs(d.x), fabs(d.y), fabs(d.z)), inv_maxerr);
     }
-    int status = ppm_write(name, diff, 1.0, err);
+    size_t n = strlen(name);
+    int status = strcmp(name + n - 4, display_suffix(DISPLAY_PPM)) == 0
+                     ? ppm_write(name, diff, 1.0, err)
+                     : png_write(name, diff, 1.0, err);
     image_free(diff);
     return status;
 }
@@ -367,7 +377,9 @@ static int write_diff(const char *name, const struct image *a, const struct imag
 static void print_metrics(const struct image_error *e)
 {
     printf("rmse=%.6g relmse=%.6g ", e->rmse, e->relmse);
-    if (isinf(e->psnr))
+    if (!e->has_psnr)
+        printf("psnr=none");
+    else if (isinf(e->psnr))
         printf("psnr=inf");
     else
         printf("psnr=%.4f", e->psnr);
@@ -387,10 +399,10 @@ static int read_inputs(const struct compare_args *args, struct compare_inputs *i
 {
     in->a = pfm_read(args->test, err);
     if (in->a == NULL)
-        return -1;
+        return error_set(err, err->file, err->line, "%s (A, the image tested)", err->message);
     in->b = pfm_read(args->reference, err);
     if (in->b == NULL)
-        return -1;
+        return error_set(err, err->file, err->line, "%s (B, the reference)", err->message);
     if (in->a->width != in->b->width || in->a->height != in->b->height)
         return error_set(err, args->test, 0, "size %dx%d differs from %s: %dx%d",
                          in->a->width, in->a->height, args->reference, in->b->width,
@@ -461,6 +473,8 @@ static int compare_files(const struct compare_args *args, struct error *err)
         if (args->diff != NULL)
             status = write_diff(args->diff, in.a, in.b, e.maxerr, err);
         if (status == 0)
+            status = outputs_publish(err);
+        if (status == 0)
             print_results(&e, &in, args);
     }
     image_free(in.var_b);
@@ -476,7 +490,7 @@ int compare_command(int argc, char **argv)
     struct error err;
     struct compare_args args;
     if (parse_compare_args(argc, argv, &args, &err) != 0 ||
-        (args.diff != NULL && output_check(args.diff, &err) < 0) ||
+        (args.diff != NULL && output_check_one(args.diff, "--diff", &err) < 0) ||
         compare_files(&args, &err) != 0) {
         error_print(&err);
         return error_exit_status(&err); /* 1: the diff's write failed */

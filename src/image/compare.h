@@ -12,7 +12,9 @@
 struct image_error {
     double rmse;   /* sqrt(mean over pixels and channels of (a - b)^2)                 */
     double relmse; /* mean over pixels and channels of (a - b)^2 / (b^2 + 1e-2)       */
-    double psnr;   /* 10 log10(peak^2 / mse), peak = max over b's channels (>= 1e-30) */
+    double psnr;   /* 10 log10(peak^2 / mse), peak = max over b's channels; +Inf for
+                      mse = 0; 0 when has_psnr is 0                                    */
+    int has_psnr;  /* 0 when b has no positive value and mse > 0: no peak to speak of  */
     double maxerr; /* max over pixels and channels of |a - b|                          */
 };
 

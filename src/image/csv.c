@@ -6,7 +6,6 @@
  */
 #include "csv.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,13 +20,10 @@ static int is_blank(int c)
 static int read_line(struct csv *csv, struct error *err)
 {
     do {
-        if (fgets(csv->text, sizeof csv->text, csv->f) == NULL) {
-            if (ferror(csv->f))
-                return error_set(err, csv->name, 0, "cannot read the file (is it a "
-                                                    "directory?)");
-            return 0;
-        }
-        csv->line++;
+        int status = input_line(&csv->in, csv->text, sizeof csv->text, err);
+        if (status <= 0)
+            return status;
+        csv->line = csv->in.line;
         size_t n = strcspn(csv->text, "\r\n");
         if (n > CSV_LINE_MAX) /* text has room for CSV_LINE_MAX bytes and the line end */
             return error_set(err, csv->name, csv->line, "line longer than %d bytes",
@@ -78,9 +74,8 @@ int csv_open(struct csv *csv, const char *name, struct error *err)
 {
     csv->name = name;
     csv->line = 0;
-    csv->f = fopen(name, "rb");
-    if (csv->f == NULL)
-        return error_set(err, name, 0, "cannot open for reading: %s", strerror(errno));
+    if (input_open(&csv->in, name, err) < 0)
+        return -1;
     if (read_header(csv, err) != 0) {
         csv_close(csv);
         return -1;
@@ -120,7 +115,5 @@ int csv_next_row(struct csv *csv, double *value, struct error *err)
 
 void csv_close(struct csv *csv)
 {
-    if (csv->f != NULL)
-        fclose(csv->f);
-    csv->f = NULL;
+    input_close(&csv->in);
 }

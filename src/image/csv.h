@@ -13,16 +13,17 @@
 #include <stdio.h>
 
 #include "../base/error.h"
+#include "../base/input.h"
 
 #define CSV_LINE_MAX 1024 /* longest line read; a report row is under 100 bytes */
 #define CSV_FIELDS_MAX 16 /* columns in a header; a probe writes 9 */
 
 /* A CSV file being read, one line at a time; csv_open() fills it, csv_close() ends it. */
 struct csv {
-    FILE *f;                     /* owned: opened by csv_open(), closed by csv_close()  */
+    struct input in;             /* owned: opened by csv_open(), closed by csv_close()  */
     const char *name;            /* borrowed: the file's name, for messages             */
     int line;                    /* 1-based number of the line in text                  */
-    char text[CSV_LINE_MAX + 2]; /* the line, without its end; fields point into it     */
+    char text[CSV_LINE_MAX + 3]; /* the line, without its end; fields point into it     */
     char *field[CSV_FIELDS_MAX]; /* the line's comma-separated fields, trimmed          */
     int n_fields;
     int n_columns;               /* the header's fields: every row must have as many   */

@@ -42,17 +42,34 @@ const char *display_suffix(enum display_format format)
     return format == DISPLAY_PPM ? ".ppm" : ".png";
 }
 
-int image_write_pair(const char *pfm_name, enum display_format display,
-                     const struct image *img, double exposure, struct error *err)
+/* pfm_name, which ends in ".pfm", with the ending of display in its place: owned by the
+ * caller (xfree). */
+static char *display_name(const char *pfm_name, enum display_format display)
 {
     size_t n = strlen(pfm_name);
     assert(n >= 4 && strcmp(pfm_name + n - 4, ".pfm") == 0);
-    char *display_name = xstrdup(pfm_name);
-    strcpy(display_name + n - 4, display_suffix(display)); /* as long as ".pfm" */
+    char *name = xstrdup(pfm_name);
+    strcpy(name + n - 4, display_suffix(display)); /* as long as ".pfm" */
+    return name;
+}
+
+void image_declare_pair(const char *pfm_name, enum display_format display, const char *role,
+                        const char *display_role)
+{
+    char *name = display_name(pfm_name, display);
+    output_declare(pfm_name, role);
+    output_declare(name, display_role);
+    xfree(name);
+}
+
+int image_write_pair(const char *pfm_name, enum display_format display,
+                     const struct image *img, double exposure, struct error *err)
+{
+    char *name = display_name(pfm_name, display);
     int status = pfm_write(pfm_name, img, err);
     if (status == 0)
-        status = display == DISPLAY_PPM ? ppm_write(display_name, img, exposure, err)
-                                        : png_write(display_name, img, exposure, err);
-    xfree(display_name);
+        status = display == DISPLAY_PPM ? ppm_write(name, img, exposure, err)
+                                        : png_write(name, img, exposure, err);
+    xfree(name);
     return status;
 }

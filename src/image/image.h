@@ -34,7 +34,8 @@ static inline void image_set(struct image *img, int x, int y, struct vec3 value)
 }
 
 /* PFM ("PF", little-endian, negative scale, rows bottom to top), written atomically
- * through output_open()/output_commit(). Each double is rounded to the nearest float. */
+ * through output_open()/output_commit(). Each double is rounded to the nearest float; an
+ * image with a value beyond the float range is refused (-1, *err a failed write). */
 int pfm_write(const char *name, const struct image *img, struct error *err);
 /* Reads a colour PFM of either byte order. NULL with *err filled for anything malformed. */
 struct image *pfm_read(const char *name, struct error *err);
@@ -61,6 +62,12 @@ const char *display_suffix(enum display_format format);
 /* Binary PPM (P6) of the bytes display_encode_row() makes, written atomically through
  * output_open()/output_commit(). -1 with *err filled when the file cannot be written. */
 int ppm_write(const char *name, const struct image *img, double exposure, struct error *err);
+
+/* Declares the pair image_write_pair() writes as outputs of the command (base/output.h):
+ * pfm_name, ending in ".pfm", under role ("-o"), and the display image beside it under
+ * display_role ("the PNG beside -o"). */
+void image_declare_pair(const char *pfm_name, enum display_format display, const char *role,
+                        const char *display_role);
 
 /* The pair every image-making command writes: the PFM pfm_name, which ends in ".pfm" (the
  * caller checked), then the display image of the same name ending in display_suffix()

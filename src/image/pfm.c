@@ -22,8 +22,9 @@
  */
 #include "image.h"
 
+#include "../base/input.h"
+
 #include <assert.h>
-#include <errno.h>
 #include <float.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -41,7 +42,8 @@ struct pfm_header {
 
 /* The one place a double becomes a file float: rounded to nearest (C99 6.3.1.5, default
  * rounding mode). A finite double beyond the float range would be undefined to convert
- * (and Inf under IEEE), so it saturates to +-FLT_MAX: a written file is always finite. */
+ * (and Inf under IEEE), so it saturates to +-FLT_MAX; pfm_write() refuses such an image
+ * first (check_float_range), so only the display image, clamped anyway, sees it. */
 static uint32_t float_bits(double value)
 {
     assert(isfinite(value)); /* the renderer lets no NaN or Inf reach an image */
@@ -70,8 +72,31 @@ static void put_little_endian(uint32_t bits, FILE *f)
         putc((int)((bits >> (8 * i)) & 0xFF), f);
 }
 
+/* Refuses an image with a value beyond the float range before a byte is written: a PFM
+ * holds floats, and a clamp to FLT_MAX would be a silently wrong image. */
+static int check_float_range(const char *name, const struct image *img, struct error *err)
+{
+    for (int y = 0; y < img->height; y++)
+        for (int x = 0; x < img->width; x++) {
+            struct vec3 v = image_get(img, x, y);
+            double m = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
+            if (m > FLT_MAX) {
+                error_set(err, name, 0, "pixel (%d, %d) from the top left holds %g, beyond "
+                          "a PFM's float range (%g): the scene's units give more radiance "
+                          "than a float holds (scale the scene up or its lights down)", x, y,
+                          m, FLT_MAX);
+                if (err != NULL)
+                    err->failed_write = 1;
+                return -1;
+            }
+        }
+    return 0;
+}
+
 int pfm_write(const char *name, const struct image *img, struct error *err)
 {
+    if (check_float_range(name, img, err) < 0)
+        return -1;
     FILE *f = output_open(name, err);
     if (f == NULL)
         return -1;
@@ -226,7 +251,7 @@ static int read_pixels(FILE *f, const char *name, const struct pfm_header *h,
                                             decode_float(b + 8, little_endian)), magnitude);
             if (!vec3_is_finite(v))
                 return error_set(err, name, 0, "pixel (%d, %d) from the top left is NaN or "
-                                               "infinite; a reference must be finite", x, y);
+                                               "infinite: photon reads only finite images", x, y);
             image_set(img, x, y, v);
         }
     }
@@ -237,20 +262,18 @@ struct image *pfm_read(const char *name, struct error *err)
 {
     struct pfm_header h;
     struct image *img = NULL;
-    FILE *f = fopen(name, "rb");
-    if (f == NULL) {
-        error_set(err, name, 0, "cannot open for reading: %s", strerror(errno));
+    struct input in;
+    if (input_open(&in, name, err) < 0)
         return NULL;
-    }
-    if (read_header(f, name, &h, err) != 0 || check_data_size(f, name, &h, err) != 0)
+    if (read_header(in.f, name, &h, err) != 0 || check_data_size(in.f, name, &h, err) != 0)
         goto fail;
     img = image_create(h.width, h.height);
-    if (read_pixels(f, name, &h, img, err) != 0)
+    if (read_pixels(in.f, name, &h, img, err) != 0)
         goto fail;
-    fclose(f);
+    input_close(&in);
     return img;
 fail:
     image_free(img);
-    fclose(f);
+    input_close(&in);
     return NULL;
 }

@@ -721,9 +721,11 @@ int plot_command(int argc, char **argv)
     args.csv = xmalloc((size_t)argc, sizeof *args.csv, "plot arguments");
     int status = parse_plot_args(argc, argv, &args, &err);
     if (status == 0)
-        status = output_check(args.svg, &err);
+        status = output_check_one(args.svg, "-o", &err);
     if (status == 0)
         status = plot_files(args.csv, args.n_csv, &args.spec, args.svg, &err);
+    if (status == 0)
+        status = outputs_publish(&err);
     if (status < 0)
         error_print(&err);
     xfree(args.csv);

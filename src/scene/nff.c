@@ -62,6 +62,7 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/input.h"
 #include "../geom/cone.h"
 #include "../geom/polygon.h"
 #include "../geom/triangle.h"
@@ -87,7 +88,7 @@ struct f_entry {
 struct nff_reader {
     struct scene *scene;              /* borrowed: where everything goes                  */
     const char *file;                 /* as named by the caller                           */
-    FILE *stream;                     /* owned by nff_import()                            */
+    struct input *in;                 /* borrowed from nff_import(): the file being read  */
     int line;                         /* 1-based number of the line in text               */
     char text[NFF_MAX_LINE];          /* the current line, cut into tokens in place       */
     char *tokens[NFF_MAX_TOKENS];
@@ -143,12 +144,10 @@ static int split_tokens(struct nff_reader *rd, struct error *err)
  * the file, -1 with *err filled. */
 static int next_line(struct nff_reader *rd, struct error *err)
 {
-    while (fgets(rd->text, sizeof rd->text, rd->stream) != NULL) {
-        rd->line++;
-        size_t length = strlen(rd->text);
-        if (length == sizeof rd->text - 1 && rd->text[length - 1] != '\n' && !feof(rd->stream))
-            return error_set(err, rd->file, rd->line, "line longer than %d bytes",
-                             NFF_MAX_LINE - 2);
+    int status;
+    reach_note(rd->scene, rd->file, rd->line); /* what the entity read last added */
+    while ((status = input_line(rd->in, rd->text, sizeof rd->text, err)) > 0) {
+        rd->line = rd->in->line;
         scene_hash_line(rd->scene, rd->text);
         if (split_tokens(rd, err) < 0)
             return -1;
@@ -156,9 +155,7 @@ static int next_line(struct nff_reader *rd, struct error *err)
         if (rd->n_tokens > 0)
             return 1;
     }
-    if (ferror(rd->stream))
-        return error_set(err, rd->file, 0, "cannot read the file (is it a directory?)");
-    return 0;
+    return status;
 }
 
 /* Like next_line(), but the end of the file is an error: the entity needs `what` next. */
@@ -605,12 +602,13 @@ static int read_entities(struct nff_reader *rd, struct error *err)
     return add_lights(rd, err);
 }
 
-static struct nff_reader *reader_create(struct scene *scene, const char *path, FILE *stream)
+static struct nff_reader *reader_create(struct scene *scene, const char *path,
+                                        struct input *in)
 {
     struct nff_reader *rd = xcalloc(1, sizeof *rd, "NFF reader"); /* large: the heap */
     rd->scene = scene;
     rd->file = path;
-    rd->stream = stream;
+    rd->in = in;
     rd->lights = NULL;
     rd->material = -1;
     rd->table = NULL;
@@ -633,20 +631,21 @@ static void reader_free(struct nff_reader *rd)
 
 int nff_import(struct scene *scene, const char *path, struct error *err)
 {
-    FILE *stream = fopen(path, "r");
-    if (stream == NULL)
-        return error_set(err, path, 0, "cannot open the file");
-    struct nff_reader *rd = reader_create(scene, path, stream);
+    struct input in;
+    if (input_open(&in, path, err) < 0)
+        return -1;
+    struct nff_reader *rd = reader_create(scene, path, &in);
     int status = read_entities(rd, err);
     reader_free(rd);
-    fclose(stream);
+    input_close(&in);
     return status;
 }
 
 struct scene *nff_load(const char *path, struct error *err)
 {
     struct scene *scene = scene_create();
-    if (nff_import(scene, path, err) < 0) {
+    if (nff_import(scene, path, err) < 0 || (reach_note(scene, path, 0), 0) ||
+        reach_check(scene, err) < 0) {
         scene_free(scene);
         return NULL;
     }

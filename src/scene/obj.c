@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/input.h"
 #include "../geom/polygon.h"
 #include "../geom/triangle.h"
 
@@ -44,7 +45,7 @@ struct obj_reader {
     struct scene *scene;               /* borrowed                                      */
     const struct obj_placement *place; /* borrowed                                      */
     const char *file;
-    FILE *stream;                      /* borrowed from obj_import()                    */
+    struct input *in;                  /* borrowed from obj_import(): the file read     */
     int line;                          /* 1-based number of the line in text            */
     char *text;                        /* owned: OBJ_MAX_LINE bytes, the current line   */
     char *cursor;                      /* the first byte of text not yet read           */
@@ -92,14 +93,10 @@ static char *next_word(struct obj_reader *rd)
 /* Reads the next line into rd->text: 1, 0 at the end of the file, -1 with *err filled. */
 static int read_line(struct obj_reader *rd, struct error *err)
 {
-    if (fgets(rd->text, OBJ_MAX_LINE, rd->stream) == NULL)
-        return ferror(rd->stream) ? error_set(err, rd->file, 0, "cannot read the file (is it "
-                                                                "a directory?)")
-                                  : 0;
-    rd->line++;
-    size_t length = strlen(rd->text);
-    if (length == OBJ_MAX_LINE - 1 && rd->text[length - 1] != '\n' && !feof(rd->stream))
-        return error_set(err, rd->file, rd->line, "line longer than %d bytes", OBJ_MAX_LINE - 2);
+    int status = input_line(rd->in, rd->text, OBJ_MAX_LINE, err);
+    if (status <= 0)
+        return status;
+    rd->line = rd->in->line;
     scene_hash_line(rd->scene, rd->text);
     rd->cursor = rd->text;
     return 1;
@@ -322,14 +319,14 @@ static int read_statements(struct obj_reader *rd, struct error *err)
 int obj_import(struct scene *scene, const char *path, const struct obj_placement *place,
                struct error *err)
 {
-    FILE *stream = fopen(path, "r");
-    if (stream == NULL)
-        return error_set(err, path, 0, "cannot open the file");
+    struct input in;
+    if (input_open(&in, path, err) < 0)
+        return -1;
     struct obj_reader *rd = xcalloc(1, sizeof *rd, "OBJ reader");
     rd->scene = scene;
     rd->place = place;
     rd->file = path;
-    rd->stream = stream;
+    rd->in = &in;
     rd->positions = NULL;
     rd->normals = NULL;
     rd->text = xmalloc(OBJ_MAX_LINE, 1, "OBJ line");
@@ -344,6 +341,6 @@ int obj_import(struct scene *scene, const char *path, const struct obj_placement
     xfree(rd->normals);
     xfree(rd->positions);
     xfree(rd);
-    fclose(stream);
+    input_close(&in);
     return status;
 }

@@ -10,12 +10,12 @@
  * caller frees the partial scene (scene_load), and nothing has been written anywhere.
  */
 #include <ctype.h>
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/input.h"
 #include "../image/image.h"
 #include "nff.h"
 #include "parser.h"
@@ -165,14 +165,17 @@ int read_path(struct parser *ps, char *path, struct error *err)
 
 int check_named_file(struct parser *ps, const char *path, struct error *err)
 {
-    errno = 0;
-    FILE *f = fopen(path, "r");
-    if (f != NULL) {
-        fclose(f);
+    struct input in;
+    struct error inner;
+    int status = input_open(&in, path, &inner);
+    input_close(&in);
+    if (status == 0)
         return 0;
-    }
-    return error_set(err, ps->file, ps->line, "%s: cannot open '%s'%s%s", ps->tokens[0], path,
-                     errno != 0 ? ": " : "", errno != 0 ? strerror(errno) : "");
+    const char *reason = inner.message;
+    if (strncmp(reason, "cannot open: ", 13) == 0)
+        reason += 13;
+    return error_set(err, ps->file, ps->line, "%s: cannot open '%s': %s", ps->tokens[0], path,
+                     reason);
 }
 
 /* "include FILE": FILE is relative to the directory of the including file. */
@@ -237,35 +240,32 @@ static int parse_line(struct parser *ps, struct error *err)
 }
 
 /* Reads every line of one file; stops at the first error. */
-static int parse_lines(struct parser *ps, FILE *f, struct error *err)
+static int parse_lines(struct parser *ps, struct input *in, struct error *err)
 {
-    while (fgets(ps->text, sizeof ps->text, f) != NULL) {
-        ps->line++;
-        size_t length = strlen(ps->text);
-        if (length == sizeof ps->text - 1 && ps->text[length - 1] != '\n' && !feof(f))
-            return error_set(err, ps->file, ps->line, "line longer than %d bytes", MAX_LINE - 2);
+    int status;
+    while ((status = input_line(in, ps->text, sizeof ps->text, err)) > 0) {
+        ps->line = in->line;
         scene_hash_line(ps->scene, ps->text);
         if (parse_line(ps, err) < 0)
             return -1;
+        reach_note(ps->scene, ps->file, ps->line);
     }
-    if (ferror(f))
-        return error_set(err, ps->file, 0, "cannot read the file (is it a directory?)");
-    return 0;
+    return status;
 }
 
 static int parse_file(struct scene *scene, const char *path, int depth, struct error *err)
 {
-    FILE *f = fopen(path, "r");
-    if (f == NULL)
-        return error_set(err, path, 0, "cannot open the file");
+    struct input in;
+    if (input_open(&in, path, err) < 0)
+        return -1;
     /* The parser is large (a line buffer), so it lives on the heap, not the stack. */
     struct parser *ps = xcalloc(1, sizeof *ps, "parser");
     ps->scene = scene;
     ps->file = path;
     ps->depth = depth;
-    int status = parse_lines(ps, f, err);
+    int status = parse_lines(ps, &in, err);
     xfree(ps);
-    fclose(f);
+    input_close(&in);
     return status;
 }
 
@@ -304,6 +304,10 @@ struct scene *scene_load(const char *path, struct error *err)
         }
     }
     if (add_sky(scene, err) < 0) {
+        scene_free(scene);
+        return NULL;
+    }
+    if (reach_check(scene, err) < 0) {
         scene_free(scene);
         return NULL;
     }

@@ -47,7 +47,8 @@ int check_added(struct parser *ps, int id, struct error *err);
 /* Reads a file name into path[MAX_PATH_LENGTH], relative to the directory of the file
  * being read unless it starts with '/'. */
 int read_path(struct parser *ps, char *path, struct error *err);
-/* Whether the file at path, which this line names (include, obj, nff), can be opened; -1
+/* Whether the file at path, which this line names (include, obj, nff), opens as an input
+ * (base/input.h: a regular file, not an output of the command); -1
  * with *err naming this file and line otherwise ("x.scene:3: obj: cannot open 'mesh.obj':
  * No such file or directory"), so that a missing file is reported where it is named. */
 int check_named_file(struct parser *ps, const char *path, struct error *err);

@@ -23,6 +23,7 @@
 #include "camera.h"
 #include "light.h"
 #include "material.h"
+#include "reach.h"
 
 #define MAX_MATERIALS 65536 /* documented limit: far beyond any real scene, bounds memory */
 #define MAX_LIGHTS 65536    /* likewise; direct lighting samples every light at each hit */
@@ -58,6 +59,7 @@ struct scene {
     int *light_of_prim;          /* owned; for each primitive id, its light or -1       */
     size_t n_prims;              /* primitives added so far (= entries of light_of_prim) */
     struct geometry *geometry;   /* owned                                               */
+    struct scene_reach reach;    /* how far the readers' lines reach (reach.h)          */
     uint64_t source_hash;        /* FNV-1a (base/hash.h) of every line the readers took
                                     from the scene's files, in reading order, each with
                                     its '\0' (scene_hash_line): with the options, what a

@@ -15,5 +15,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     struct error err;
     image_free(pfm_read(input_file(data, size), &err));
+    outputs_abandon(); /* forgets the inputs, so the registry does not grow */
     return 0;
 }

@@ -1,0 +1,23 @@
+/*
+ * app/help.h -- photon's help, printed as text (--help) or as the manual page photon.1
+ * (--manual, what `make install` puts in share/man/man1): one text, two layouts, so the
+ * page and --help cannot say different things (tests/test_docs.c checks that they don't).
+ */
+#ifndef PHOTON_HELP_H
+#define PHOTON_HELP_H
+
+enum help_format { HELP_TEXT, HELP_ROFF };
+
+/* The page's head: nothing as text; roff's title line and NAME section. */
+void help_begin(enum help_format format, const char *version);
+
+/* A heading: as text "\nTITLE:\n" (title as given); roff a section .SH in capitals. */
+void help_section(enum help_format format, const char *title);
+
+/* Lines to keep as they stand (usage, tables); text may hold several '\n'-ended lines. */
+void help_lines(enum help_format format, const char *text);
+
+/* One option: as text "  LEFT (padded to 26) TEXT"; roff a tagged paragraph. */
+void help_option(enum help_format format, const char *left, const char *text);
+
+#endif

@@ -1,0 +1,105 @@
+/*
+ * base/input.c -- files photon reads: regular files only, read to their size (input.h).
+ *
+ * C99 cannot ask what kind of file a name is, so input_open() asks by behaviour:
+ * "NAME/." opens only for a directory; a pipe cannot seek to its end; and a regular file
+ * has nothing past its end, where a device such as /dev/zero (which says its size is 0)
+ * goes on giving bytes. A file that passes all three is read to the size it had.
+ */
+#include "input.h"
+
+#include <errno.h>
+#include <string.h>
+
+#include "alloc.h"
+#include "output.h"
+
+int input_is_directory(const char *name)
+{
+    if (name[0] == '\0')
+        return 0;
+    size_t n = strlen(name);
+    char *dot = xmalloc(n + 3, 1, "file name");
+    memcpy(dot, name, n);
+    memcpy(dot + n, "/.", 3);
+    FILE *f = fopen(dot, "rb");
+    xfree(dot);
+    if (f != NULL)
+        fclose(f);
+    return f != NULL;
+}
+
+/* Measures in->f's size and makes sure nothing follows it; leaves it at its start. */
+static int measure(struct input *in, struct error *err)
+{
+    if (fseek(in->f, 0, SEEK_END) != 0 || (in->size = ftell(in->f)) < 0)
+        return error_set(err, in->name, 0, "not a regular file (it cannot tell its size: "
+                         "a pipe or a terminal?)");
+    int c = getc(in->f);
+    if (ferror(in->f))
+        return error_set(err, in->name, 0, "cannot be read (is it a directory?)");
+    if (c != EOF)
+        return error_set(err, in->name, 0, "not a regular file (it gives bytes past its "
+                         "size of %ld: a device such as /dev/zero?)", in->size);
+    if (fseek(in->f, 0, SEEK_SET) != 0)
+        return error_set(err, in->name, 0, "not a regular file (it cannot go back to its "
+                         "start)");
+    return 0;
+}
+
+int input_open(struct input *in, const char *name, struct error *err)
+{
+    in->name = name;
+    in->size = 0;
+    in->offset = 0;
+    in->line = 0;
+    in->f = NULL;
+    if (name[0] == '\0')
+        return error_set(err, "", 0, "an empty file name");
+    if (input_is_directory(name))
+        return error_set(err, name, 0, "is a directory");
+    errno = 0;
+    in->f = fopen(name, "rb");
+    if (in->f == NULL)
+        return error_set(err, name, 0, "cannot open: %s",
+                         errno != 0 ? strerror(errno) : "unknown reason");
+    if (measure(in, err) < 0 || output_refuse_input(name, in->size, err) < 0) {
+        input_close(in);
+        return -1;
+    }
+    return 0;
+}
+
+int input_line(struct input *in, char *text, size_t size, struct error *err)
+{
+    size_t n = 0;
+    int c = EOF;
+    while (n + 1 < size && (c = getc(in->f)) != EOF) {
+        if (c == '\0')
+            return error_set(err, in->name, in->line + 1, "a NUL byte in the line (is it a "
+                             "binary file?)");
+        text[n++] = (char)c;
+        if (c == '\n')
+            break;
+    }
+    text[n] = '\0';
+    if (ferror(in->f))
+        return error_set(err, in->name, 0, "cannot read the file (is it a directory?)");
+    if (n == 0)
+        return 0;
+    in->line++;
+    in->offset += (long)n;
+    if (in->offset > in->size)
+        return error_set(err, in->name, in->line, "the file goes on past the %ld bytes it "
+                         "had when opened (not a regular file?)", in->size);
+    if (c != '\n' && n + 1 == size && getc(in->f) != EOF)
+        return error_set(err, in->name, in->line, "line longer than %zu bytes", size - 2);
+    return 1;
+}
+
+void input_close(struct input *in)
+{
+    if (in->f != NULL)
+        fclose(in->f);
+    in->f = NULL;
+}

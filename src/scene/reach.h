@@ -1,0 +1,49 @@
+/*
+ * scene/reach.h -- how far a scene reaches from the origin, against the range that double
+ * precision and the tracer resolve; scenes outside it are refused where they are read.
+ *
+ * What was measured (a 1 W point light over a white floor, a blocker between them; README:
+ * Scene files): a hit point is resolved to about 2^-52 of its distance from the origin (a
+ * sphere's to 2^-52 of its radius), and a spawned ray starts RAY_OFFSET_REL x max(1, |p|)
+ * = 1e-9 x max(1, |p|) off its surface. So:
+ *   - a scene may reach at most REACH_MAX_RATIO = 2^40 (1.1e12) times the camera's distance
+ *     to its look-at point from the origin: there a point is resolved to 2^-12 of that
+ *     distance. A floor of +-1e13 at a camera distance of 2 moved the picture by 1e-4,
+ *     +-1e15 snapped every hit point to one, a sphere of radius 1e18 rendered black;
+ *   - the camera's distance to its look-at point must be at least REACH_MIN_CAMERA = 1e-6:
+ *     a blocker 0.5e-8 above a floor (camera distance 2e-8) cast no shadow, at 2e-7 it did.
+ * The reach counts every primitive's box, every point light and the camera.
+ */
+#ifndef PHOTON_REACH_H
+#define PHOTON_REACH_H
+
+#include <stddef.h>
+
+#include "../base/error.h"
+
+#define REACH_MAX_RATIO 1099511627776.0 /* 2^40: measured above */
+#define REACH_MIN_CAMERA 1e-6           /* 1000 x the smallest ray offset, 1e-9       */
+
+/* What the readers have seen of the scene's reach so far. */
+struct scene_reach {
+    double reach;                /* the largest |coordinate| seen (primitive, light, camera) */
+    char file[ERROR_FILE_MAX];   /* the line that reached it, for the message                */
+    int line;
+    size_t n_prims, n_lights;    /* primitives and lights counted so far                     */
+    int camera_counted;
+    char camera_file[ERROR_FILE_MAX]; /* the camera's line                                   */
+    int camera_line;
+};
+
+struct scene;
+
+/* Counts what file:line added to the scene since the last call; readers call it after
+ * each line. */
+void reach_note(struct scene *scene, const char *file, int line);
+
+/* -1 with *err ("file:line: ...", the line that reached furthest, or the camera's) when
+ * the scene reaches beyond REACH_MAX_RATIO times the camera's distance, or that distance
+ * is below REACH_MIN_CAMERA. The scene has a camera. */
+int reach_check(const struct scene *scene, struct error *err);
+
+#endif
