@@ -1,16 +1,16 @@
 /*
  * modes/ppm2008.c -- `--mode 2008`: progressive photon mapping (Hachisuka, Ogaki and
- * Jensen 2008), read top to bottom as the paper's Sec. 4:
+ * Jensen 2008), read top to bottom as the paper's Sec. 3.1 and 4:
  *
- *   4.1 the ray tracing pass stores a hit point wherever an eye path, followed through
+ *   3.1 the ray tracing pass stores a hit point wherever an eye path, followed through
  *       every mirror and glass bounce (both of glass's lobes, as standard ray tracing
  *       does), meets a surface with a non-specular part;
- *   4.2 each photon tracing pass shoots photons with the shared tracer; every photon that
+ *   3.1 each photon tracing pass shoots photons with the shared tracer; every photon that
  *       lands on a non-specular surface adds f_r Phi' to each hit point whose disc holds it
  *       and whose surface faces the photon's; no photon is kept after its pass;
- *   4.3 after each pass every hit point shrinks its radius (Eq. 9) and corrects its flux
- *       (Eq. 12), keeping alpha of the new photons (Eq. 7);
- *   4.4 the image at any time: each hit point's radiance (Eq. 13) times its pixel weight,
+ *   4.1 after each pass every hit point shrinks its radius (Eq. 9), keeping alpha of the
+ *       new photons (Eq. 7); 4.2 corrects its flux (Eq. 12);
+ *   4.3 the image at any time: each hit point's radiance (Eq. 13) times its pixel weight,
  *       plus the emission the eye paths saw directly.
  *
  * Each departure from the paper below has a switch; --paper turns them all off
@@ -54,7 +54,7 @@
  * estimate for caustic photons alone, R0 one footprint, reduced by Eq. 7-12 on its own.
  *
  * The facing test (--facing-test): a photon counts only at hit points whose surface faces
- * its own (add_flux()); Sec. 4.2 takes every photon within R, and the sphere of radius R
+ * its own (add_flux()); Sec. 3.1 takes every photon within R, and the sphere of radius R
  * also reaches through thin walls and onto the back of the hit point's own surface.
  *
  * Determinism: photon i of pass p draws from rng_stream(seed, STREAM_PHOTON, p, i) and eye
@@ -105,7 +105,7 @@ struct ppm {
     size_t n_points, cap_points;
     struct hit_point_tree tree;         /* over points                                    */
     double footprint_per_distance;      /* a pixel's width at distance 1: 2 tan(fov/2) / H */
-    const struct photon_event *photon;  /* the photon being added (Sec. 4.2)              */
+    const struct photon_event *photon;  /* the photon being added (Sec. 3.1)              */
     double unnormalise;                 /* photons per pass: turns the tracer's Phi / N
                                            back into the paper's unnormalised Phi'        */
     size_t photons_emitted;             /* N_emitted of Eq. 13, so far                    */
@@ -145,7 +145,7 @@ struct ppm_settings ppm_settings_default(void)
     return ps;
 }
 
-/* ---- 4.1 The ray tracing pass ------------------------------------------------------- */
+/* ---- 3.1 The ray tracing pass ------------------------------------------------------- */
 
 /* An eye path so far: whose it is, what it carries and how far it has come. */
 struct eye_path {
@@ -428,7 +428,7 @@ static void ray_tracing_pass(struct ppm *ppm)
     hit_point_tree_build(&ppm->tree, ppm->points, ppm->n_points);
 }
 
-/* ---- 4.2 Photon tracing passes ------------------------------------------------------ */
+/* ---- 3.1 Photon tracing passes ------------------------------------------------------ */
 
 /* A photon within reach of hit point i: Eq. 11 for the estimate it belongs to
  * (hit_point_add_photon()): the caustic one for a caustic photon, if the hit points
@@ -467,8 +467,8 @@ size_t ppm_photon_pass(const struct scene *scene, const struct render_settings *
 }
 
 /* Pass p: photons_per_pass photons, each handed to the hit points at every non-specular
- * hit (Sec. 4.2: direct, caustic and indirect alike) with --direct-photons; by default
- * except the first hit straight from the light. Departs from Sec. 4.2 there: the light
+ * hit (Sec. 3.1: direct, caustic and indirect alike) with --direct-photons; by default
+ * except the first hit straight from the light. Departs from Sec. 3.1 there: the light
  * samples of ppm_direct.c bring that light (the departure at the top). */
 static void photon_tracing_pass(struct ppm *ppm, long pass, struct ppm_stats *stats)
 {
@@ -491,7 +491,7 @@ static void eye_ray_pass(struct ppm *ppm, long pass)
         ppm_direct_end_pass(&ppm->direct);
 }
 
-/* ---- 4.3 The progressive radiance estimate ------------------------------------------ */
+/* ---- 4.1, 4.2 Radius reduction and flux correction ---------------------------------- */
 
 double ppm_accumulated_photons(double n, double m, double alpha)
 {
@@ -533,7 +533,7 @@ static void progressive_update(struct ppm *ppm)
     hit_point_tree_refit(&ppm->tree); /* the discs shrank: tighten the boxes */
 }
 
-/* ---- 4.4 Radiance evaluation --------------------------------------------------------- */
+/* ---- 4.3 Radiance evaluation --------------------------------------------------------- */
 
 struct vec3 ppm_radiance(struct vec3 tau, double r, double n_emitted)
 {

@@ -91,7 +91,7 @@ struct ppm_stats {
  * observer. */
 struct ppm_settings ppm_settings_default(void);
 
-/* Eq. 7-8: N <- N + alpha M, the photons a hit point keeps after a pass. */
+/* Eq. 7: N <- N + alpha M, the photons a hit point keeps after a pass. */
 double ppm_accumulated_photons(double n, double m, double alpha);
 
 /* Eq. 9: R <- R sqrt((N + alpha M) / (N + M)); R itself when M = 0. */

@@ -1,6 +1,6 @@
 /*
  * photon/hit_points.h -- the hit points of progressive photon mapping (Hachisuka, Ogaki and
- * Jensen 2008, Sec. 4.1) and the tree that finds, for a photon, every hit point whose disc
+ * Jensen 2008, Sec. 3.1) and the tree that finds, for a photon, every hit point whose disc
  * holds it.
  *
  * The paper's struct hitpoint, field for field: position x, normal n, ray direction w, the
@@ -30,7 +30,7 @@
 #include "../geom/ray.h"
 #include "../scene/brdf.h"
 
-/* One progressive estimate (Sec. 4.3) of a hit point. */
+/* One progressive estimate (Sec. 4) of a hit point. */
 struct progressive_estimate {
     double radius;     /* R(x)                                                           */
     double n_photons;  /* N(x), photons accumulated                                      */
