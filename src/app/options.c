@@ -239,7 +239,8 @@ static const struct option_spec specs[] = {
      "a photon counts only at hit points whose surface faces its own (the default)",
      FOR_PROGRESSIVE},
     {"--no-facing-test", OPT_FLAG, FIELD(facing_test), 0, 0, "",
-     "every photon within R counts, the paper's", FOR_PROGRESSIVE},
+     "every photon within R counts (the papers store a hit point's normal but leave "
+     "open whether photons are tested against it)", FOR_PROGRESSIVE},
     {"--direct-photons", OPT_FLAG, FIELD(direct_photons), 0, 0, "",
      "direct light from photons too, the paper's way (default: a light sample at each "
      "hit point each pass, photons only after their first bounce)", FOR_PROGRESSIVE},
