@@ -81,7 +81,9 @@ cell() {
     noisy=$(key "$line" blocks_noisy)
     excluded=
     [ -z "$noisy" ] || [ "$noisy" = 0 ] ||
-        excluded=", $noisy noisy left out ($(key "$line" noisy_blocks | sed 's/;/; /g'))"
+        excluded=", $noisy noisy left out ($(key "$line" noisy_blocks | tr ';' '\n' |
+            head -n 4 | sed -e ':a' -e 'N' -e '$!ba' -e 's/\n/; /g')$([ "$noisy" -le 4 ] ||
+            printf '; ...'))"
     printf '%s: %s/%s, worst %s at (%s), mean %s, %s s%s' "$verdict" "$within" "$blocks" \
         "$(awk -v w="$worst" 'BEGIN { printf "%.1f%%", 100 * w }')" \
         "$(key "$line" worst_block_at | sed 's/,/, /')" \
