@@ -4,21 +4,15 @@
 #include "options.h"
 
 #include <assert.h>
-#include <errno.h>
-#include <math.h>
 #include <stddef.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../base/hash.h"
-#include "../image/image.h"
 #include "../modes/jensen1994.h"
 #include "../modes/jensen1996.h"
 #include "../modes/photons.h"
 #include "../modes/ppm2008.h"
-#include "../modes/sppm2009.h"
-#include "../modes/render.h"
 #include "../photon/trace.h"
 #include "help.h"
 #include "option_values.h"
@@ -239,8 +233,7 @@ static const struct option_spec specs[] = {
      "a photon counts only at hit points whose surface faces its own (the default)",
      FOR_PROGRESSIVE},
     {"--no-facing-test", OPT_FLAG, FIELD(facing_test), 0, 0, "",
-     "every photon within R counts (the papers store a hit point's normal but leave "
-     "open whether photons are tested against it)", FOR_PROGRESSIVE},
+     "every photon within R counts (the papers leave the test open)", FOR_PROGRESSIVE},
     {"--direct-photons", OPT_FLAG, FIELD(direct_photons), 0, 0, "",
      "direct light from photons too, the paper's way (default: a light sample at each "
      "hit point each pass, photons only after their first bounce)", FOR_PROGRESSIVE},
