@@ -10,6 +10,7 @@
  */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "../src/base/rng.h"
 #include "../src/modes/cache_pass.h"
@@ -672,6 +673,7 @@ static void test_cache_over_unbounded_box(struct check *t)
 static void test_record_radius_bounds(struct check *t)
 {
     struct camera c;
+    memset(&c, 0, sizeof c); /* a pinhole: no lens */
     c.from = vec3(0, 0, 0);
     c.at = vec3(0, 0, 1);
     c.up = vec3(0, 1, 0);

@@ -120,6 +120,12 @@ static void test_bad_scenes_are_refused(struct check *t)
         {"camera 0 0 0 0 0 0 0 1 0 40\n", 1, "look-at point equals"},
         {"camera 0 0 0 0 1 0 0 1 0 40\n", 1, "parallel"},
         {"camera 0 0 0 0 0 1 0 1 0 180\n", 1, "field of view"},
+        {"camera 0 0 0 0 0 1 0 1 0 40 aperture -1 focus 2\n", 1, "at least 0"},
+        {"camera 0 0 0 0 0 1 0 1 0 40 aperture 0.1 focus 0\n", 1, "above 0"},
+        {"camera 0 0 0 0 0 1 0 1 0 40 aperture 0.1\n", 1, "expected 'focus DISTANCE'"},
+        {"camera 0 0 0 0 0 1 0 1 0 40 lens 0.1 focus 2\n", 1, "unexpected 'lens'"},
+        {"camera 0 0 0 0 0 1 0 1 0 40 aperture 0.1 focus 2 3\n", 1, "unexpected '3'"},
+        {"camera 0 0 0 0 0 1 0 1 0 40 aperture 1e13 focus 2\n", 1, "2^40"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\n"
          "quad 0 0 0 1 0 0 1 1 0 0 2 0 m\n", 3, "not a parallelogram"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\n"
@@ -326,6 +332,7 @@ static void test_source_hash_covers_every_file(struct check *t)
 static void test_camera_rays(struct check *t)
 {
     struct camera c;
+    memset(&c, 0, sizeof c); /* a pinhole: no lens */
     c.from = vec3(1, 2, 3);
     c.at = vec3(1, 2, 13);
     c.up = vec3(0, 5, 0);

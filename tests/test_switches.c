@@ -214,6 +214,7 @@ static void test_record_reach(struct check *t)
         samples[i].radiance = vec3(1, 1, 1); /* no gradient: the limit does not act */
     CHECK(t, irradiance_record_of(p, tx, ty, n, M, N_PHI, samples, limited).r == 2);
     struct camera c;
+    memset(&c, 0, sizeof c); /* a pinhole: no lens */
     c.from = vec3(0, 0, 0);
     c.at = vec3(0, 0, 1);
     c.up = vec3(0, 1, 0);

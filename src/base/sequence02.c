@@ -24,6 +24,38 @@ static uint32_t sobol_second(uint32_t i)
     return result;
 }
 
+/* Sobol's dimension with primitive polynomial x^degree + ... + 1, whose middle
+ * coefficients are the bits of a (highest first), and initial direction numbers m[0..degree-1]:
+ * column k (k = 1, 2, ...) of its generator matrix is m_k / 2^k, where for k > degree
+ * m_k = m_(k-degree) XOR 2^degree m_(k-degree) XOR (XOR over j < degree of a_j 2^j m_(k-j)),
+ * a_j the coefficient of x^(degree-j). */
+static uint32_t sobol_dimension(uint32_t i, int degree, uint32_t a, const uint32_t *m_initial)
+{
+    uint32_t m[32], result = 0;
+    for (int k = 0; k < 32 && i != 0; k++, i >>= 1) {
+        if (k < degree)
+            m[k] = m_initial[k];
+        else {
+            m[k] = m[k - degree] ^ (m[k - degree] << degree);
+            for (int j = 1; j < degree; j++)
+                if ((a >> (degree - 1 - j)) & 1u)
+                    m[k] ^= m[k - j] << j;
+        }
+        if (i & 1u)
+            result ^= m[k] << (31 - k);
+    }
+    return result;
+}
+
+void sequence02_lens_point(uint32_t i, uint32_t shift_x, uint32_t shift_y, double *x,
+                           double *y)
+{
+    static const uint32_t third[2] = {1, 3}, fourth[3] = {1, 3, 1};
+    const double two_to_minus_32 = 1.0 / 4294967296.0;
+    *x = (double)(sobol_dimension(i, 2, 1, third) ^ shift_x) * two_to_minus_32;
+    *y = (double)(sobol_dimension(i, 3, 1, fourth) ^ shift_y) * two_to_minus_32;
+}
+
 void sequence02_point(uint32_t i, uint32_t shift_x, uint32_t shift_y, double *x, double *y)
 {
     const double two_to_minus_32 = 1.0 / 4294967296.0;

@@ -20,6 +20,17 @@
 /* Point i of the sequence shifted by (shift_x, shift_y), in [0, 1)^2. */
 void sequence02_point(uint32_t i, uint32_t shift_x, uint32_t shift_y, double *x, double *y);
 
+/* Sobol's third and fourth dimensions of point i (Joe & Kuo's direction numbers: the
+ * primitive polynomials x^2 + x + 1 and x^3 + x + 1), shifted by (shift_x, shift_y), in
+ * [0, 1)^2. With sequence02_point(i) as the first two, they are the first four dimensions
+ * of Sobol's sequence, a (3,4)-sequence in base 2: its first 2^k points are a
+ * (3,k,4)-net, each elementary box of volume 2^(3-k) in [0, 1)^4 holding exactly 8 of
+ * them. A camera sample's lens point drawn from them is stratified jointly with its point
+ * in the pixel; a second (0,2)-sequence with the same index would pair the two point for
+ * point, and the lens point would follow the pixel point. */
+void sequence02_lens_point(uint32_t i, uint32_t shift_x, uint32_t shift_y, double *x,
+                           double *y);
+
 /* The place in the sequence of the i-th point of its order shuffled by seed: a nested
  * uniform scramble of i's bits from the lowest up (Burley 2020, "Practical hash-based
  * Owen scrambling", Sec. 6, with the Laine-Karras hash). The first 2^k shuffled points

@@ -62,11 +62,14 @@ struct ray camera_sample(const struct scene *scene, uint64_t seed, int x, int y,
 {
     uint64_t pixel = (uint64_t)y * (uint64_t)scene->width + (uint64_t)x;
     struct rng pixel_shift = rng_stream(seed, STREAM_PIXEL, pixel, 0);
-    uint64_t shift = rng_next(&pixel_shift);
-    double u, v;
+    uint64_t shift = rng_next(&pixel_shift), lens_shift = rng_next(&pixel_shift);
+    double u, v, lens_u = 0, lens_v = 0;
     sequence02_point((uint32_t)s, (uint32_t)shift, (uint32_t)(shift >> 32), &u, &v);
+    if (scene->camera.lens_radius > 0)
+        sequence02_lens_point((uint32_t)s, (uint32_t)lens_shift, (uint32_t)(lens_shift >> 32),
+                              &lens_u, &lens_v);
     *rng = rng_stream(seed, STREAM_CAMERA, pixel, (uint64_t)s);
-    return camera_ray(&scene->camera, x + u, y + v);
+    return camera_lens_ray(&scene->camera, x + u, y + v, lens_u, lens_v);
 }
 
 /* The adaptive rule of render.h for pixel i at its n = n[i] samples: whether it stops. It

@@ -159,7 +159,10 @@ struct render_settings render_settings_whole(const struct scene *scene, uint64_t
  * (0,2)-sequence in the pixel's square, digitally shifted by the pixel's own random word
  * from rng_stream(seed, STREAM_PIXEL, y * width + x, 0) (sequence02.h): each point is
  * uniform, and the first 1, 2, 4, ... samples of a pixel are stratified, which keeps the
- * light's outline and other edges from aliasing at low sample counts. *rng becomes the
+ * light's outline and other edges from aliasing at low sample counts. Through a thin lens
+ * (camera.h) the ray leaves the lens point given by Sobol's third and fourth dimensions
+ * of point s, shifted by the stream's next word: stratified over the lens, and jointly
+ * with the point in the pixel (sequence02_lens_point()). *rng becomes the
  * sample's stream, rng_stream(seed, STREAM_CAMERA, y * width + x, s), all the sample's
  * to use. */
 struct ray camera_sample(const struct scene *scene, uint64_t seed, int x, int y, int s,

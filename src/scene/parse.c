@@ -110,7 +110,34 @@ static int parse_image(struct parser *ps, struct error *err)
     return expect_end(ps, err);
 }
 
-/* "camera FROM_X FROM_Y FROM_Z  AT_X AT_Y AT_Z  UP_X UP_Y UP_Z  FOV_DEGREES" */
+/* The optional end of a camera line, "aperture RADIUS focus DISTANCE": a thin lens. */
+static int parse_lens(struct parser *ps, struct camera *c, struct error *err)
+{
+    double v[1];
+    const char *word = read_word(ps);
+    if (word == NULL)
+        return 0;
+    if (strcmp(word, "aperture") != 0)
+        return error_set(err, ps->file, ps->line, "camera: unexpected '%s' after the field "
+                         "of view (expected 'aperture RADIUS focus DISTANCE')", word);
+    if (read_numbers(ps, v, 1, "the lens's radius", err) < 0)
+        return -1;
+    if (!(v[0] >= 0))
+        return parse_error(ps, err, "aperture: the lens's radius must be at least 0");
+    c->lens_radius = v[0];
+    word = read_word(ps);
+    if (word == NULL || strcmp(word, "focus") != 0)
+        return parse_error(ps, err, "expected 'focus DISTANCE' after the aperture");
+    if (read_numbers(ps, v, 1, "the distance in focus", err) < 0)
+        return -1;
+    if (!(v[0] > 0))
+        return parse_error(ps, err, "focus: the distance in focus must be above 0");
+    c->focus = v[0];
+    return 0;
+}
+
+/* "camera FROM_X FROM_Y FROM_Z  AT_X AT_Y AT_Z  UP_X UP_Y UP_Z  FOV_DEGREES
+ *  [aperture RADIUS focus DISTANCE]" */
 static int parse_camera(struct parser *ps, struct error *err)
 {
     double v[10];
@@ -121,6 +148,10 @@ static int parse_camera(struct parser *ps, struct error *err)
     c->at = vec3_at(v + 3);
     c->up = vec3_at(v + 6);
     c->fov = v[9];
+    c->lens_radius = 0;
+    c->focus = 1;
+    if (parse_lens(ps, c, err) < 0)
+        return -1;
     if (!(c->fov > 0 && c->fov < 180))
         return parse_error(ps, err, "vertical field of view must be in (0, 180) degrees");
     if (!camera_is_valid(c))

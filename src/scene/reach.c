@@ -31,8 +31,10 @@ void reach_note(struct scene *scene, const char *file, int line)
         r->camera_counted = 1;
         snprintf(r->camera_file, sizeof r->camera_file, "%s", file);
         r->camera_line = line;
-        extend(r, fmax(vec3_max_abs(scene->camera.from), vec3_max_abs(scene->camera.at)), file,
-               line);
+        const struct camera *c = &scene->camera;
+        extend(r, fmax(vec3_max_abs(c->from) + c->lens_radius, vec3_max_abs(c->at)), file, line);
+        if (c->lens_radius > 0) /* the plane in focus, where every lens ray aims */
+            extend(r, vec3_max_abs(c->from) + c->focus, file, line);
     }
 }
 
