@@ -13,6 +13,10 @@
  *     view in radians. Blender's camera looks down its local -z with +y up and +x right,
  *     so its world matrix has the columns u, v, -w and from: our right-handed frame
  *     (camera.h) as it is, not mirrored. Clipping from 1e-6 to 10 times the scene's reach.
+ *     A thin lens is Blender's depth of field: focus_distance ours, a round aperture, and
+ *     the f-stop that gives our radius, lens / 1000 / (2 radius), lens the focal length in
+ *     millimetres Blender derives from angle_y (Cycles' lens radius is lens / 1000 over
+ *     twice the f-stop, in scene units).
  *   - Pixels. A box filter of width 1 pixel: the pixel is the mean over its square.
  *     Film exposure 1, view transform Standard; the EXR holds linear RGB as rendered.
  *   - Sampling. Cycles' CPU path tracer, es->spp samples, no denoising, no adaptive
@@ -129,13 +133,22 @@ static const char *const PREAMBLE[] = {
     "    # our lengths in Blender's units: times UNIT, a power of 2, so exactly",
     "    return [UNIT * x for x in V]",
     "",
-    "def camera(rows, angle_y, clip_start, clip_end):",
+    "def camera(rows, angle_y, clip_start, clip_end, lens_radius, focus):",
     "    rows = [r[:3] + (UNIT * r[3],) for r in rows[:3]] + [rows[3]]",
     "    data = bpy.data.cameras.new('camera')",
     "    data.type, data.sensor_fit = 'PERSP', 'VERTICAL'",
     "    data.angle_y = angle_y",
     "    data.shift_x = data.shift_y = 0.0",
     "    data.clip_start, data.clip_end = UNIT * clip_start, UNIT * clip_end",
+    "    if lens_radius > 0:",
+    "        # Cycles' lens radius is lens / 1000 / (2 f-stop), lens the focal length in mm",
+    "        # that angle_y gave; a round aperture (no blades), focused on the plane at",
+    "        # focus_distance along the view direction",
+    "        data.dof.use_dof = True",
+    "        data.dof.focus_distance = UNIT * focus",
+    "        data.dof.aperture_blades = 0",
+    "        data.dof.aperture_ratio = 1.0",
+    "        data.dof.aperture_fstop = data.lens / 1000.0 / (2.0 * UNIT * lens_radius)",
     "    ob = bpy.data.objects.new('camera', data)",
     "    ob.matrix_world = Matrix(rows)",
     "    scene.collection.objects.link(ob)",
@@ -386,8 +399,8 @@ static void write_camera(FILE *f, const struct export_scene *es)
     fprintf(f, "camera(((%.9g, %.9g, %.9g, %.9g),\n", u.x, v.x, w.x, p.x);
     fprintf(f, "        (%.9g, %.9g, %.9g, %.9g),\n", u.y, v.y, w.y, p.y);
     fprintf(f, "        (%.9g, %.9g, %.9g, %.9g),\n", u.z, v.z, w.z, p.z);
-    fprintf(f, "        (0, 0, 0, 1)), %.9g, %.9g, %.9g)\n", c->fov * PI / 180.0, 1e-6 * r,
-            10.0 * r);
+    fprintf(f, "        (0, 0, 0, 1)), %.9g, %.9g, %.9g, %.9g, %.9g)\n", c->fov * PI / 180.0,
+            1e-6 * r, 10.0 * r, c->lens_radius, c->lens_radius > 0 ? c->focus : 0.0);
 }
 
 static const char *model_name(enum material_kind kind)

@@ -7,7 +7,9 @@
  *     linear RGB, and a spectral variant would upsample them (see export_pbrt.c).
  *   - Camera. Mitsuba's lookat puts the camera's +x, cross(up, dir), on the left of the
  *     image, which is where our right-handed frame has -u: the picture is not mirrored,
- *     no flip is needed. fov_axis "y" makes "fov" our full vertical field of view.
+ *     no flip is needed. fov_axis "y" makes "fov" our full vertical field of view. A thin
+ *     lens is the "thinlens" sensor: aperture_radius our radius, focus_distance our
+ *     distance in focus (its plane, as ours, that far along the view direction).
  *   - Pixels. A "box" reconstruction filter (radius 1/2): the mean over the pixel.
  *   - Lights. An "area" emitter gives radiance Le from the side its shape's normal points
  *     to (a mesh's counter-clockwise side, a sphere's outside), as ours; it has no
@@ -209,7 +211,11 @@ static void write_header(FILE *f, const struct export_scene *es)
     fprintf(f, "    <integrator type=\"path\">\n");
     fprintf(f, "        <integer name=\"max_depth\" value=\"-1\"/>\n");
     fprintf(f, "    </integrator>\n");
-    fprintf(f, "    <sensor type=\"perspective\">\n");
+    fprintf(f, "    <sensor type=\"%s\">\n", c->lens_radius > 0 ? "thinlens" : "perspective");
+    if (c->lens_radius > 0) {
+        fprintf(f, "        <float name=\"aperture_radius\" value=\"%.15g\"/>\n", c->lens_radius);
+        fprintf(f, "        <float name=\"focus_distance\" value=\"%.15g\"/>\n", c->focus);
+    }
     fprintf(f, "        <string name=\"fov_axis\" value=\"y\"/>\n");
     fprintf(f, "        <float name=\"fov\" value=\"%.15g\"/>\n", c->fov);
     fprintf(f, "        <transform name=\"to_world\">\n");

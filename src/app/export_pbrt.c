@@ -7,6 +7,9 @@
  *     mirrored. "Scale -1 1 1" before LookAt turns camera x round. It applies to the camera
  *     only: WorldBegin resets the transformation, so no surface changes its orientation.
  *   - Field of view. pbrt's "fov" is that of the image's shorter axis; ours is vertical.
+ *   - Lens. pbrt's "lensradius" and "focaldistance" are our thin lens's radius and its
+ *     distance in focus: a disc about the camera's position, aimed at the plane that far
+ *     along the view direction.
  *   - Pixels. A box filter of radius 1/2: the pixel is the mean over its square.
  *   - Lights. pbrt normalises an RGB emitter to the luminance of its colour space's white
  *     (scale /= SpectrumToPhotometric), so "rgb L" [c c c] has luminance c: area lights are
@@ -67,7 +70,11 @@ static void write_header(FILE *f, const struct export_scene *es)
     fprintf(f, "LookAt %.15g %.15g %.15g  %.15g %.15g %.15g  %.15g %.15g %.15g\n", c->from.x,
             c->from.y, c->from.z, c->at.x, c->at.y, c->at.z, c->up.x, c->up.y, c->up.z);
     fprintf(f, "# the shorter image axis's field of view (ours, %.9g, is vertical)\n", c->fov);
-    fprintf(f, "Camera \"perspective\" \"float fov\" [%.15g]\n", pbrt_fov(es));
+    fprintf(f, "Camera \"perspective\" \"float fov\" [%.15g]", pbrt_fov(es));
+    if (c->lens_radius > 0) /* pbrt's thin lens aims at the plane z = focaldistance, as ours */
+        fprintf(f, "\n    \"float lensradius\" [%.15g] \"float focaldistance\" [%.15g]",
+                c->lens_radius, c->focus);
+    fprintf(f, "\n");
     fprintf(f, "Sampler \"zsobol\" \"integer pixelsamples\" [%d]\n", es->spp);
     fprintf(f, "Integrator \"path\" \"integer maxdepth\" [1000] \"bool regularize\" false\n");
     fprintf(f, "PixelFilter \"box\" \"float xradius\" [0.5] \"float yradius\" [0.5]\n");
