@@ -26,9 +26,10 @@
 #                   needs libembree-dev, which the product never links; development)
 #   make fuzz       libFuzzer targets for every reader (scene, NFF, OBJ, PFM, CSV, tile
 #                   record, work file) and the option parser, built with clang (development)
-#   make crosscheck our pt references against Blender's Cycles, where blender (3.4+) is
-#                   installed: each scene exported, rendered, compared (CROSSCHECK_SPP,
-#                   default 4096: about 35 minutes; scripts/crosscheck.sh; development)
+#   make crosscheck our references against Blender's Cycles, where blender (3.4+) is
+#                   installed: each scene exported, rendered, compared (ONLY=NAME for
+#                   some; CROSSCHECK_SPP, default 4096: about 35 minutes for all;
+#                   scripts/crosscheck.sh; development)
 #   make install    photon in $(DESTDIR)$(PREFIX)/bin, its manual page photon.1 (written by
 #                   photon --manual from --help's text) in share/man/man1, the shipped scenes
 #                   in share/photon; PREFIX defaults to /usr/local. make uninstall removes
@@ -181,7 +182,7 @@ build/fuzz/%: tests/fuzz/%.c tests/fuzz/input.c tests/fuzz/input.h $(SRC) $(HEAD
 
 # Cycles against the pt references (scripts/crosscheck.sh): a development check, not a test.
 crosscheck: $(BIN)
-	sh scripts/crosscheck.sh
+	sh scripts/crosscheck.sh $(ONLY)
 
 PREFIX ?= /usr/local
 DESTDIR ?=

@@ -337,6 +337,44 @@ static void test_names_escaped(struct check *t)
     remove(log);
 }
 
+/* truth: each format's thin lens (pbrt-v4's "perspective" camera, Mitsuba 3's "thinlens"
+ *   sensor, Blender's depth of field), as their documentation names it, carries our
+ *   radius and distance in focus; a pinhole writes none of it. (That the three render
+ *   what we render is make crosscheck's to show: Cycles on the defocused edge.)
+ * tolerance: none (text).
+ * catches: a lens dropped from an export, the radius written as a diameter, the
+ *   distance in focus written as the look-at distance, a lens written for a pinhole. */
+static void test_lens_exports(struct check *t)
+{
+    static const char *const lens[][3] = {
+        {"pbrt", ".pbrt", "\"float lensradius\" [0.25] \"float focaldistance\" [3.5]"},
+        {"mitsuba", ".xml", "<sensor type=\"thinlens\">\n"
+                            "        <float name=\"aperture_radius\" value=\"0.25\"/>\n"
+                            "        <float name=\"focus_distance\" value=\"3.5\"/>"},
+        {"blender", ".py", ", 0.25, 3.5)\n# the background"},
+    };
+    /* a pinhole: no lens in pbrt and Mitsuba, radius 0 in Blender's camera() */
+    static const char *const pinhole[3][2] = {
+        {"lensradius", ""}, {"thinlens", ""}, {"", ", 0, 0)\n# the background"}};
+    char defocused[sizeof every_kind + 32], words[64];
+    strcpy(defocused, every_kind);
+    char *fov = strstr(defocused, "  30\n");
+    snprintf(fov, sizeof defocused - (size_t)(fov - defocused), "  30 aperture 0.25 focus 3.5%s",
+             strstr(every_kind, "  30\n") + 4);
+    for (int i = 0; i < 3; i++) {
+        struct exported e;
+        snprintf(words, sizeof words, "--format %s", lens[i][0]);
+        export_scene(&e, "lens", defocused, words, lens[i][1]);
+        CHECK(t, e.status == 0 && has(&e, lens[i][2]));
+        exported_free(&e);
+        export_scene(&e, "pinhole", every_kind, words, lens[i][1]);
+        CHECK(t, e.status == 0 && e.text != NULL);
+        CHECK(t, pinhole[i][0][0] == '\0' || !has(&e, pinhole[i][0]));
+        CHECK(t, pinhole[i][1][0] == '\0' || has(&e, pinhole[i][1]));
+        exported_free(&e);
+    }
+}
+
 void test_export(struct check *t)
 {
     RUN_TEST(t, test_pbrt_camera_and_film);
@@ -344,6 +382,7 @@ void test_export(struct check *t)
     RUN_TEST(t, test_pbrt_materials_and_shapes);
     RUN_TEST(t, test_channel);
     RUN_TEST(t, test_mitsuba);
+    RUN_TEST(t, test_lens_exports);
     RUN_TEST(t, test_shipped_scenes);
     RUN_TEST(t, test_failures);
     RUN_TEST(t, test_names_escaped);
