@@ -126,6 +126,8 @@ static void test_bad_scenes_are_refused(struct check *t)
         {"camera 0 0 0 0 0 1 0 1 0 40 lens 0.1 focus 2\n", 1, "unexpected 'lens'"},
         {"camera 0 0 0 0 0 1 0 1 0 40 aperture 0.1 focus 2 3\n", 1, "unexpected '3'"},
         {"camera 0 0 0 0 0 1 0 1 0 40 aperture 1e13 focus 2\n", 1, "2^40"},
+        {"camera 0 0 -5 0 0 0 0 1 0 40\ncamera 0 0 1e14 0 0 99999999999999 0 1 0 40\n", 2,
+         "2^40"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\n"
          "quad 0 0 0 1 0 0 1 1 0 0 2 0 m\n", 3, "not a parallelogram"},
         {"camera 0 0 0 0 0 1 0 1 0 40\nmaterial m lambert 1 1 1\n"

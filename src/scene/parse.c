@@ -158,6 +158,7 @@ static int parse_camera(struct parser *ps, struct error *err)
         return parse_error(ps, err, "look-at point equals the position, or up is parallel "
                                     "to the viewing direction");
     ps->scene->has_camera = 1;
+    ps->scene->reach.camera_counted = 0; /* a later camera line replaces this one: count it */
     return expect_end(ps, err);
 }
 

@@ -415,7 +415,7 @@ void bench_tte(void)
     static const struct photon_mode modes[N_PHOTON_MODES] = {
         {"1994", render_1994}, {"1996", render_1996}, {"2008", render_2008},
         {"2009", render_2009}};
-    static const struct tte_case cases[4] = {
+    static const struct tte_case cases[] = {
         {"cornell", "scenes/cornell.scene", "reference/cornell-pt.pfm",
          "reference/cornell-pt-var.pfm", modes, 4},
         {"cornell-specular", "scenes/cornell-specular.scene",
@@ -424,11 +424,14 @@ void bench_tte(void)
         {"cornell-glossy", "scenes/cornell-glossy.scene", "reference/cornell-glossy-pt.pfm",
          "reference/cornell-glossy-pt-var.pfm", modes + 2, 2},
         {"ppm-box", "scenes/ppm-box.scene", "reference/ppm-box.pfm", "reference/ppm-box-var.pfm",
+         modes + 2, 2},
+        {"defocused-caustic", "scenes/defocused-caustic.scene",
+         "reference/defocused-caustic-2009.pfm", "reference/defocused-caustic-2009-var.pfm",
          modes + 2, 2}};
     const char *trial_text = getenv("PHOTON_TTE_TRIAL");
     int trial = trial_text != NULL && trial_text[0] != '\0';
     if (trial)
         fprintf(stderr, "bench: tte: PHOTON_TTE_TRIAL: a trial run, its figures mean nothing\n");
-    for (int i = 0; i < 4; i++)
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
         time_to_error_on(&cases[i], trial);
 }
