@@ -9,7 +9,8 @@
  * export_mitsuba.c, export_blender.c). A writer reads nothing else: no mode, no BVH.
  *
  * Conventions every writer keeps (README: Rendering our scenes elsewhere):
- *   - a pinhole camera of our full vertical field of view, right-handed, +u right;
+ *   - a pinhole or thin-lens camera of our full vertical field of view, right-handed,
+ *     +u right;
  *   - a pixel is the mean radiance over its square: a box filter of radius 1/2;
  *   - area lights are one-sided (two_sided materials both) and given by radiance Le;
  *     point lights by power Phi per channel, intensity Phi / (4 pi);

@@ -9,7 +9,7 @@
  * scene as calls to them with our numbers, every one printed with %.9g (Blender stores
  * floats, which 9 digits give back exactly). Conventions, each one a way to get a
  * different picture:
- *   - Camera. A pinhole of sensor_fit VERTICAL and angle_y our full vertical field of
+ *   - Camera. A camera of sensor_fit VERTICAL and angle_y our full vertical field of
  *     view in radians. Blender's camera looks down its local -z with +y up and +x right,
  *     so its world matrix has the columns u, v, -w and from: our right-handed frame
  *     (camera.h) as it is, not mirrored. Clipping from 1e-6 to 10 times the scene's reach.

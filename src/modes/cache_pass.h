@@ -27,7 +27,9 @@
 /* Traces one camera path through the centre of every pixel of the whole image, in
  * scanline order, with estimator; path (x, y) draws from rng_stream(seed, STREAM_CACHE,
  * y * width + x, 0). The radiance is thrown away: the mode's estimator adds records to
- * cache as it goes (cache is read here only for the progress line). */
+ * cache as it goes (cache is read here only for the progress line). Through a thin lens
+ * the paths leave the lens's centre; a surface only other lens points see finds no
+ * usable record in the final pass and is gathered there in full. */
 void fill_cache_pass(const struct scene *scene, uint64_t seed,
                      struct radiance_estimator estimator, const struct irradiance_cache *cache,
                      int progress, struct render_counters *counters);

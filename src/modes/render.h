@@ -39,7 +39,7 @@
  * of each mirror or glass surface they meet, where a ray through its centre or a corner
  * meets one), not by its samples, so the number of samples does not depend on what they
  * found and the mean stays unbiased; a pixel with n samples still has exactly the value
- * a render with spp = n gives it.
+ * a render with spp = n gives it. Through a thin lens the probes leave the lens's centre.
  */
 #ifndef PHOTON_RENDER_H
 #define PHOTON_RENDER_H
