@@ -19,7 +19,7 @@
 set -u
 photon=$1
 case $photon in /*) ;; *) photon=$(pwd)/$photon ;; esac
-docs="README.md src/modes/README.md reference/README.md reference/suite.md scripts/README.md tests/bench/README.md"
+docs="README.md src/modes/README.md src/modes/measured.md reference/README.md reference/suite.md scripts/README.md tests/bench/README.md"
 problems=0
 problem() { echo "docs: $*"; problems=$((problems + 1)); }
 
