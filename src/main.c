@@ -291,6 +291,26 @@ static void print_stats(const struct run *run)
         print_jensen1996_stats(&run->j96_stats);
 }
 
+/* The settings both progressive modes read, from the options. */
+static struct progressive_settings progressive_settings(const struct options *o,
+                                                        const struct checkpoint *report,
+                                                        const struct checkpoint *snapshot)
+{
+    struct progressive_settings ps;
+    ps.photons_per_pass = (size_t)o->photons_per_pass;
+    ps.passes = o->passes;
+    ps.alpha = o->alpha;
+    ps.radius = o->radius;
+    ps.footprints = o->footprints;
+    ps.fit_radius = o->fit_radius;
+    ps.facing_test = o->facing_test;
+    ps.direct_photons = o->direct_photons;
+    ps.report = report;
+    ps.snapshot_every = o->checkpoint;
+    ps.snapshot = o->checkpoint > 0 ? snapshot : NULL;
+    return ps;
+}
+
 /* Renders with the chosen mode; the image is NULL (and *err filled) on failure. */
 static struct render_result render_mode(struct run *run, struct error *err)
 {
@@ -299,6 +319,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
     int want_variance = run->o.variance != NULL;
     struct photon_settings ps;
     struct ppm_settings pp = ppm_settings_default();
+    struct sppm_settings sp = sppm_settings_default();
     struct jensen1996_settings js = jensen1996_settings_default();
     struct jensen1994_settings j94 = jensen1994_settings_default();
     struct checkpoint snapshot = {write_snapshot, &run->o};
@@ -372,25 +393,15 @@ static struct render_result render_mode(struct run *run, struct error *err)
         return render_jensen1996(run->scene, &run->rs, &js, want_variance, &run->counters,
                                  &run->j96_stats, err);
     case MODE_PPM2008:
-    case MODE_SPPM2009:
-        pp.photons_per_pass = (size_t)run->o.photons_per_pass;
-        pp.passes = run->o.passes;
-        pp.alpha = run->o.alpha;
-        pp.radius = run->o.radius;
-        pp.footprints = run->o.footprints;
-        pp.fit_radius = run->o.fit_radius;
-        pp.disc_coverage = run->o.mode == MODE_SPPM2009 && run->o.disc_coverage;
+        pp.progressive = progressive_settings(&run->o, checkpoint, &snapshot);
         pp.caustic_footprints = run->o.caustic_footprints;
         pp.merge_hit_points = run->o.merge_hit_points;
         pp.resample_emission = run->o.resample_emission;
-        pp.facing_test = run->o.facing_test;
-        pp.direct_photons = run->o.direct_photons;
-        pp.snapshot_every = run->o.checkpoint;
-        pp.report = checkpoint;
-        pp.snapshot = run->o.checkpoint > 0 ? &snapshot : NULL;
-        if (run->o.mode == MODE_SPPM2009)
-            return render_sppm(run->scene, &run->rs, &pp, &run->counters, &run->ppm_stats);
         return render_ppm(run->scene, &run->rs, &pp, &run->counters, &run->ppm_stats);
+    case MODE_SPPM2009:
+        sp.progressive = progressive_settings(&run->o, checkpoint, &snapshot);
+        sp.disc_coverage = run->o.disc_coverage;
+        return render_sppm(run->scene, &run->rs, &sp, &run->counters, &run->ppm_stats);
     case MODE_DIRECT:
         break;
     }

@@ -74,8 +74,8 @@ static void test_guards_and_long_runs(struct check *t)
 static struct ppm_settings ppm_defaults(size_t photons_per_pass, long passes)
 {
     struct ppm_settings ps = ppm_settings_default();
-    ps.photons_per_pass = photons_per_pass;
-    ps.passes = passes;
+    ps.progressive.photons_per_pass = photons_per_pass;
+    ps.progressive.passes = passes;
     return ps;
 }
 
@@ -86,7 +86,7 @@ static struct image *seeded_image(const struct scene *scene, uint64_t seed,
 {
     struct render_settings rs = render_settings_whole(scene, seed, 1, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(photons_per_pass, passes);
-    ps.direct_photons = direct_photons;
+    ps.progressive.direct_photons = direct_photons;
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     return render_ppm(scene, &rs, &ps, &counters, &stats).image;
@@ -101,8 +101,8 @@ static struct image *whole_image(const struct scene *scene, size_t photons_per_p
 
 /* A render's inputs and its error_curve (truths.h). */
 struct convergence {
-    int direct_photons; /* input: ppm_settings.direct_photons */
-    int spp;            /* input: eye rays per pixel          */
+    int direct_photons; /* input: ppm_settings.progressive.direct_photons */
+    int spp;            /* input: eye rays per pixel                      */
     struct error_curve curve;
 };
 
@@ -118,13 +118,13 @@ static void converge(const char *path, int width, long passes, size_t photons_pe
     c->curve.scene = scene;
     struct render_settings rs = render_settings_whole(scene, 1, c->spp, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(photons_per_pass, passes);
-    ps.direct_photons = c->direct_photons;
-    ps.footprints = 1;
-    ps.fit_radius = 0;
+    ps.progressive.direct_photons = c->direct_photons;
+    ps.progressive.footprints = 1;
+    ps.progressive.fit_radius = 0;
     struct checkpoint checkpoint = {error_curve_record, &c->curve};
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
-    ps.report = &checkpoint;
+    ps.progressive.report = &checkpoint;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
     render_result_free(&result);
     scene_free(scene);
@@ -248,7 +248,7 @@ static void test_first_hits_not_counted(struct check *t)
         struct ppm_observer observer = {tally_photons, &tally};
         struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
         struct ppm_settings ps = ppm_defaults(4000, 8);
-        ps.direct_photons = direct_photons;
+        ps.progressive.direct_photons = direct_photons;
         ps.observer = &observer;
         struct render_counters counters = {0, 0, 0, 0, 0};
         struct ppm_stats stats;
@@ -395,13 +395,13 @@ static void test_paper_way_unchanged(struct check *t)
             continue;
         struct render_settings rs = render_settings_whole(scene, 1, 2, MAX_DEPTH_LIMIT);
         struct ppm_settings ps = ppm_defaults(2000, 4);
-        ps.direct_photons = 1;
-        ps.footprints = 1;
+        ps.progressive.direct_photons = 1;
+        ps.progressive.footprints = 1;
         ps.caustic_footprints = 0;
-        ps.fit_radius = 0;
+        ps.progressive.fit_radius = 0;
         ps.merge_hit_points = 0;
         ps.resample_emission = 0;
-        ps.facing_test = 0;
+        ps.progressive.facing_test = 0;
         struct render_counters counters = {0, 0, 0, 0, 0};
         struct ppm_stats stats;
         struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
@@ -562,11 +562,11 @@ static void test_checkpoints(struct check *t)
     struct checkpoint at_report = {count_call, report}, at_snapshot = {count_call, snapshots};
     struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(100, 5);
-    ps.snapshot_every = 2;
-    ps.snapshot = &at_snapshot;
+    ps.progressive.snapshot_every = 2;
+    ps.progressive.snapshot = &at_snapshot;
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
-    ps.report = &at_report;
+    ps.progressive.report = &at_report;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
     CHECK(t, report[0] == 4 && report[1] == 100 && report[2] == 200 && report[3] == 400 &&
              report[4] == 500);

@@ -27,10 +27,10 @@ static struct image *render(const struct scene *scene, int spp, const struct ppm
 static double error_at_edge(const struct scene *scene, int fit_radius, int *n)
 {
     struct ppm_settings ps = ppm_settings_default();
-    ps.photons_per_pass = 64000;
-    ps.passes = 256;
-    ps.direct_photons = 1;
-    ps.fit_radius = fit_radius;
+    ps.progressive.photons_per_pass = 64000;
+    ps.progressive.passes = 256;
+    ps.progressive.direct_photons = 1;
+    ps.progressive.fit_radius = fit_radius;
     struct ppm_stats stats;
     struct image *image = render(scene, 1, &ps, &stats);
     double error = error_before_edge(scene, image, n);
@@ -66,10 +66,10 @@ static void test_fit_to_open_edge(struct check *t)
 static double furnace_error(const struct scene *scene, int merge, size_t *hit_points)
 {
     struct ppm_settings ps = ppm_settings_default();
-    ps.photons_per_pass = 4000;
-    ps.passes = 256;
-    ps.footprints = 2;
-    ps.fit_radius = 0;
+    ps.progressive.photons_per_pass = 4000;
+    ps.progressive.passes = 256;
+    ps.progressive.footprints = 2;
+    ps.progressive.fit_radius = 0;
     ps.merge_hit_points = merge;
     struct ppm_stats stats;
     struct image *image = render(scene, 4, &ps, &stats);
@@ -153,8 +153,8 @@ static void render_caustic(const struct scene *scene, double caustic_footprints,
                            struct caustic_check *c)
 {
     struct ppm_settings ps = ppm_settings_default();
-    ps.photons_per_pass = 20000;
-    ps.passes = 64;
+    ps.progressive.photons_per_pass = 20000;
+    ps.progressive.passes = 64;
     ps.caustic_footprints = caustic_footprints;
     struct caustic_check zero = {64, 20000, 0.0, 0.0, 0.0, 0};
     *c = zero;
@@ -199,7 +199,7 @@ static double caustic_window_error(int merge)
     double error = -1;
     if (scene != NULL && ref != NULL) {
         struct ppm_settings ps = ppm_settings_default();
-        ps.passes = 32;
+        ps.progressive.passes = 32;
         ps.merge_hit_points = merge;
         struct render_settings rs = case_settings(scene, 1, PPM_DEFAULT_SPP, window);
         struct render_counters counters = {0, 0, 0, 0, 0};

@@ -19,15 +19,37 @@
 #include "truths.h"
 
 /* The paper's R0 (one footprint, whole) and the given photons, passes and direct way. */
-static struct ppm_settings sppm_settings(size_t photons_per_pass, long passes,
-                                         int direct_photons)
+static struct progressive_settings paper_radius(size_t photons_per_pass, long passes,
+                                                int direct_photons)
 {
-    struct ppm_settings ps = ppm_settings_default();
+    struct progressive_settings ps = sppm_settings_default().progressive;
     ps.photons_per_pass = photons_per_pass;
     ps.passes = passes;
     ps.direct_photons = direct_photons;
     ps.footprints = 1;
     ps.fit_radius = 0;
+    return ps;
+}
+
+/* 2009 with paper_radius() and no disc coverage. */
+static struct sppm_settings sppm_settings(size_t photons_per_pass, long passes,
+                                          int direct_photons)
+{
+    struct sppm_settings ps;
+    ps.progressive = paper_radius(photons_per_pass, passes, direct_photons);
+    ps.disc_coverage = 0;
+    return ps;
+}
+
+/* 2008 with paper_radius() and none of its own departures. */
+static struct ppm_settings ppm_paper_settings(size_t photons_per_pass, long passes,
+                                              int direct_photons)
+{
+    struct ppm_settings ps = ppm_settings_default();
+    ps.progressive = paper_radius(photons_per_pass, passes, direct_photons);
+    ps.resample_emission = 0;
+    ps.merge_hit_points = 0;
+    ps.caustic_footprints = 0;
     return ps;
 }
 
@@ -42,9 +64,9 @@ static void converge(const char *path, int width, long passes, size_t photons_pe
         return;
     c->scene = scene;
     struct render_settings rs = render_settings_whole(scene, 1, (int)passes, MAX_DEPTH_LIMIT);
-    struct ppm_settings ps = sppm_settings(photons_per_pass, passes, direct_photons);
+    struct sppm_settings ps = sppm_settings(photons_per_pass, passes, direct_photons);
     struct checkpoint checkpoint = {error_curve_record, c};
-    ps.report = &checkpoint;
+    ps.progressive.report = &checkpoint;
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     struct render_result result = render_sppm(scene, &rs, &ps, &counters, &stats);
@@ -131,12 +153,12 @@ static double error_at_edge(const char *path, int disc_coverage, int fit_radius,
     if (scene == NULL)
         return INFINITY;
     struct render_settings rs = render_settings_whole(scene, 1, PLANE_PASSES, MAX_DEPTH_LIMIT);
-    struct ppm_settings ps = sppm_settings_default();
-    ps.photons_per_pass = 64000;
-    ps.passes = PLANE_PASSES;
-    ps.direct_photons = 1;
+    struct sppm_settings ps = sppm_settings_default();
+    ps.progressive.photons_per_pass = 64000;
+    ps.progressive.passes = PLANE_PASSES;
+    ps.progressive.direct_photons = 1;
+    ps.progressive.fit_radius = fit_radius;
     ps.disc_coverage = disc_coverage;
-    ps.fit_radius = fit_radius;
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     struct render_result r = render_sppm(scene, &rs, &ps, &counters, &stats);
@@ -233,14 +255,11 @@ static void test_light_outline(struct check *t)
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     struct render_settings rs = render_settings_whole(scene, 1, 256, MAX_DEPTH_LIMIT);
-    struct ppm_settings ps = sppm_settings(1000, 256, 0);
-    struct render_result sppm = render_sppm(scene, &rs, &ps, &counters, &stats);
+    struct sppm_settings sps = sppm_settings(1000, 256, 0);
+    struct render_result sppm = render_sppm(scene, &rs, &sps, &counters, &stats);
     rs = render_settings_whole(scene, 1, 16, MAX_DEPTH_LIMIT);
-    ps = sppm_settings(1000, 256, 1);
-    ps.resample_emission = 0;
-    ps.merge_hit_points = 0;
-    ps.caustic_footprints = 0;
-    struct render_result ppm = render_ppm(scene, &rs, &ps, &counters, &stats);
+    struct ppm_settings pps = ppm_paper_settings(1000, 256, 1);
+    struct render_result ppm = render_ppm(scene, &rs, &pps, &counters, &stats);
     int n_sppm, n_ppm;
     double e_sppm = edge_error(scene, sppm.image, &n_sppm);
     double e_ppm = edge_error(scene, ppm.image, &n_ppm);
@@ -268,15 +287,14 @@ static double paper_relmse(const struct scene *scene, const struct image *truth,
 {
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
-    struct ppm_settings ps = sppm_settings(4000, 1024, 1);
-    ps.facing_test = 0;
-    ps.resample_emission = 0;
-    ps.merge_hit_points = 0;
-    ps.caustic_footprints = 0;
+    struct sppm_settings sps = sppm_settings(4000, 1024, 1);
+    struct ppm_settings pps = ppm_paper_settings(4000, 1024, 1);
+    sps.progressive.facing_test = 0;
+    pps.progressive.facing_test = 0;
     struct render_settings rs = render_settings_whole(scene, 1, sppm ? 1024 : spp,
                                                       MAX_DEPTH_LIMIT);
-    struct render_result r = sppm ? render_sppm(scene, &rs, &ps, &counters, &stats)
-                                  : render_ppm(scene, &rs, &ps, &counters, &stats);
+    struct render_result r = sppm ? render_sppm(scene, &rs, &sps, &counters, &stats)
+                                  : render_ppm(scene, &rs, &pps, &counters, &stats);
     double relmse = image_compare(r.image, truth).relmse;
     render_result_free(&r);
     return relmse;
@@ -345,9 +363,9 @@ static void test_crop_is_window(struct check *t)
     REQUIRE(t, scene != NULL);
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
-    struct ppm_settings ps = sppm_settings_default(); /* the disc probes' streams too */
-    ps.photons_per_pass = 5000;
-    ps.passes = 6;
+    struct sppm_settings ps = sppm_settings_default(); /* the disc probes' streams too */
+    ps.progressive.photons_per_pass = 5000;
+    ps.progressive.passes = 6;
     struct render_settings rs = render_settings_whole(scene, 7, 6, MAX_DEPTH_LIMIT);
     struct render_result whole = render_sppm(scene, &rs, &ps, &counters, &stats);
     static const int window[4] = {5, 9, 21, 30};

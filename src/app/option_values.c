@@ -114,12 +114,12 @@ void option_defaults(struct options *o)
     o->photons_per_pass = 0; /* the mode's default, set after parsing */
     o->alpha = PPM_DEFAULT_ALPHA;
     struct ppm_settings pp = ppm_settings_default();
-    o->footprints = pp.footprints;
-    o->fit_radius = pp.fit_radius;
+    o->footprints = pp.progressive.footprints;
+    o->fit_radius = pp.progressive.fit_radius;
     o->caustic_footprints = pp.caustic_footprints;
     o->merge_hit_points = pp.merge_hit_points;
     o->resample_emission = pp.resample_emission;
-    o->facing_test = pp.facing_test;
+    o->facing_test = pp.progressive.facing_test;
     o->cone = -1;
     o->caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     struct jensen1996_settings js = jensen1996_settings_default();

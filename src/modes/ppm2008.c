@@ -80,9 +80,6 @@
 
 #define PPM_MERGE_COS 0.9    /* hit points merge within 26 degrees (same_hit_point())   */
 #define PPM_ROULETTE_DEPTH 8 /* eye-path bounces before Russian roulette (take_lobe())  */
-/* The photons that reach hit points when a light sample takes the direct light: those
- * after a diffuse bounce, and caustics (L S+ D), which no shadow ray sees the light by. */
-#define PHOTON_AFTER_FIRST_BOUNCE (PHOTON_CAUSTIC | PHOTON_INDIRECT)
 
 /* An eye ray's hit merged into (or making) hit point `point`, until its pixel is done. */
 struct pending_member {
@@ -108,8 +105,7 @@ struct ppm {
     const struct photon_event *photon;  /* the photon being added (Sec. 3.1)              */
     double unnormalise;                 /* photons per pass: turns the tracer's Phi / N
                                            back into the paper's unnormalised Phi'        */
-    size_t photons_emitted;             /* N_emitted of Eq. 13, so far                    */
-    struct ppm_direct direct;           /* the direct term, unless ps->direct_photons     */
+    struct ppm_direct direct;           /* the direct term, unless the photons bring it   */
     long pass;                          /* the photon pass under way, from 0              */
     size_t pixel_first_point;           /* the first hit point of the pixel being traced    */
     int keep_members;                   /* merged hit points keep their members (below)   */
@@ -126,22 +122,21 @@ struct ppm {
 struct ppm_settings ppm_settings_default(void)
 {
     struct ppm_settings ps;
-    ps.photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
-    ps.passes = PPM_DEFAULT_PASSES;
-    ps.alpha = PPM_DEFAULT_ALPHA;
-    ps.radius = 0.0;
-    ps.footprints = PPM_DEFAULT_FOOTPRINTS;
-    ps.fit_radius = 1;
-    ps.disc_coverage = 0;
-    ps.caustic_footprints = PPM_DEFAULT_CAUSTIC_FOOTPRINTS;
+    ps.progressive.photons_per_pass = PPM_DEFAULT_PHOTONS_PER_PASS;
+    ps.progressive.passes = PPM_DEFAULT_PASSES;
+    ps.progressive.alpha = PPM_DEFAULT_ALPHA;
+    ps.progressive.radius = 0.0;
+    ps.progressive.footprints = PPM_DEFAULT_FOOTPRINTS;
+    ps.progressive.fit_radius = 1;
+    ps.progressive.facing_test = 1;
+    ps.progressive.direct_photons = 0;
+    ps.progressive.report = NULL;
+    ps.progressive.snapshot_every = 0;
+    ps.progressive.snapshot = NULL;
     ps.merge_hit_points = 1;
     ps.resample_emission = 1;
-    ps.facing_test = 1;
-    ps.report = NULL;
-    ps.snapshot_every = 0;
-    ps.snapshot = NULL;
+    ps.caustic_footprints = PPM_DEFAULT_CAUSTIC_FOOTPRINTS;
     ps.observer = NULL;
-    ps.direct_photons = 0;
     return ps;
 }
 
@@ -167,10 +162,10 @@ static double caustic_radius(const struct ppm *ppm, double global_r0, double dis
     const struct ppm_settings *ps = ppm->ps;
     if (ps->caustic_footprints <= 0)
         return 0.0;
-    if (ps->radius > 0)
-        return ps->radius;
+    if (ps->progressive.radius > 0)
+        return ps->progressive.radius;
     double r0 = ps->caustic_footprints * distance * ppm->footprint_per_distance;
-    return ps->fit_radius ? fmin(r0, global_r0) : r0;
+    return ps->progressive.fit_radius ? fmin(r0, global_r0) : r0;
 }
 
 static struct progressive_estimate empty_estimate(double radius)
@@ -297,8 +292,8 @@ static void store_hit_point(struct ppm *ppm, const struct surface *s,
     hp->material = s->material;
     hp->pixel = path->pixel;
     hp->weight = weight;
-    hp->global = empty_estimate(ppm_initial_radius(ppm->scene, ppm->ps, ppm->counters, s,
-                                                   path->distance));
+    hp->global = empty_estimate(ppm_initial_radius(ppm->scene, &ppm->ps->progressive, 0,
+                                                   ppm->counters, s, path->distance));
     hp->caustic = empty_estimate(caustic_radius(ppm, hp->global.radius, path->distance));
     hp->members = NULL;
     hp->n_members = 0;
@@ -383,7 +378,7 @@ static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct eye_pa
             seen = vec3_add(seen, vec3_mul(path.beta, surface_emission(&s)));
         if (path.stores && brdf_has_diffuse(s.material))
             store_hit_point(ppm, &s, &frame, &path);
-        else if (!ppm->ps->direct_photons && brdf_has_diffuse(s.material))
+        else if (!ppm->ps->progressive.direct_photons && brdf_has_diffuse(s.material))
             ppm_direct_sample(&ppm->direct, path.pixel, ppm->surfaces_met++, ppm->pass, &s,
                               &frame, path.beta, ppm->counters);
         struct brdf_sample lobes[2];
@@ -436,58 +431,34 @@ static void ray_tracing_pass(struct ppm *ppm)
 static void add_flux(void *context, size_t i)
 {
     struct ppm *ppm = context;
-    hit_point_add_photon(&ppm->points[i], ppm->photon, ppm->unnormalise, ppm->ps->facing_test,
-                         ppm->ps->caustic_footprints > 0);
+    hit_point_add_photon(&ppm->points[i], ppm->photon, ppm->unnormalise,
+                         ppm->ps->progressive.facing_test, ppm->ps->caustic_footprints > 0);
 }
 
-/* The tracer's sink: each stored photon goes to the hit points around it, then is gone. */
-static int add_photon(void *context, const struct photon_event *photon)
+/* Each photon a photon tracing pass stores goes to the hit points around it, at every
+ * non-specular hit (direct, caustic and indirect alike) with --direct-photons; by default
+ * except the first hit straight from the light. Departs from Sec. 3.1 there: the light
+ * samples of ppm_direct.c bring that light (the departure at the top). */
+static void add_photon(void *context, const struct photon_event *photon)
 {
     struct ppm *ppm = context;
     ppm->photon = photon;
     hit_point_tree_visit(&ppm->tree, photon->position, add_flux, ppm);
-    return 0;
-}
-
-size_t ppm_photon_pass(const struct scene *scene, const struct render_settings *rs,
-                       const struct ppm_settings *ps, long pass, const struct photon_sink *sink,
-                       unsigned long long *photon_rays)
-{
-    struct trace_settings ts;
-    memset(&ts, 0, sizeof ts);
-    ts.seed = rs->seed;
-    ts.pass = (uint64_t)pass;
-    ts.n_emit = ps->photons_per_pass; /* max_stored: unused, nothing is stored */
-    ts.store = ps->direct_photons ? PHOTON_MAP_GLOBAL : PHOTON_AFTER_FIRST_BOUNCE;
-    ts.max_depth = rs->max_depth;
-    ts.targets = NULL;
-    ts.projection = NULL;
-    trace_photons_into(scene, &ts, sink, photon_rays); /* the sink never stops it */
-    return ts.n_emit;
-}
-
-/* Pass p: photons_per_pass photons, each handed to the hit points at every non-specular
- * hit (Sec. 3.1: direct, caustic and indirect alike) with --direct-photons; by default
- * except the first hit straight from the light. Departs from Sec. 3.1 there: the light
- * samples of ppm_direct.c bring that light (the departure at the top). */
-static void photon_tracing_pass(struct ppm *ppm, long pass, struct ppm_stats *stats)
-{
-    struct photon_sink sink = {add_photon, ppm};
-    ppm->photons_emitted += ppm_photon_pass(ppm->scene, ppm->rs, ppm->ps, pass, &sink,
-                                            &stats->photon_rays);
 }
 
 /* After photon pass p (from 0), one more eye ray through every pixel that takes the direct
  * light, unless the photons bring it, and adds the emission it sees, unless only the ray
  * tracing pass's rays do (the departures explained at the top). */
-static void eye_ray_pass(struct ppm *ppm, long pass)
+static void eye_ray_pass(void *context, long pass)
 {
-    if (ppm->ps->direct_photons && !ppm->ps->resample_emission)
+    struct ppm *ppm = context;
+    int direct_photons = ppm->ps->progressive.direct_photons;
+    if (direct_photons && !ppm->ps->resample_emission)
         return; /* the paper's way: the ray would bring nothing */
     int sample = ppm->rs->spp + (int)pass;
     ppm->pass = pass;
     trace_eye_rays(ppm, sample, sample, 0);
-    if (!ppm->ps->direct_photons)
+    if (!direct_photons)
         ppm_direct_end_pass(&ppm->direct);
 }
 
@@ -524,13 +495,19 @@ void ppm_update_estimate(struct progressive_estimate *e, double alpha)
     e->m_photons = 0;
 }
 
-static void progressive_update(struct ppm *ppm)
+/* Pass p's end: every hit point's estimates updated, then shown to the observer. */
+static void progressive_update(void *context, long pass)
 {
+    struct ppm *ppm = context;
+    double alpha = ppm->ps->progressive.alpha;
     for (size_t i = 0; i < ppm->n_points; i++) {
-        ppm_update_estimate(&ppm->points[i].global, ppm->ps->alpha);
-        ppm_update_estimate(&ppm->points[i].caustic, ppm->ps->alpha);
+        ppm_update_estimate(&ppm->points[i].global, alpha);
+        ppm_update_estimate(&ppm->points[i].caustic, alpha);
     }
     hit_point_tree_refit(&ppm->tree); /* the discs shrank: tighten the boxes */
+    const struct ppm_observer *observer = ppm->ps->observer;
+    if (observer != NULL)
+        observer->after_pass(observer->context, pass + 1, ppm->points, ppm->n_points);
 }
 
 /* ---- 4.3 Radiance evaluation --------------------------------------------------------- */
@@ -546,17 +523,17 @@ struct vec3 ppm_radiance(struct vec3 tau, double r, double n_emitted)
 /* The image so far: the mean of what the eye rays saw directly plus every hit point's
  * Eq. 13 radiance times its pixel weight, summed in the order the hit points were made
  * (not the tree's, which depends on the window). */
-static void evaluate_image(const struct ppm *ppm, struct image *image)
+static void evaluate_image(const void *context, double n_emitted, struct image *image)
 {
+    const struct ppm *ppm = context;
     size_t n_pixels = (size_t)ppm->width * (size_t)ppm->height;
     for (size_t i = 0; i < n_pixels; i++) {
         image->pixels[i] = vec3_scale(ppm->seen[i], 1.0 / (double)ppm->eye_rays);
-        if (!ppm->ps->direct_photons)
+        if (!ppm->ps->progressive.direct_photons)
             image->pixels[i] = vec3_add(image->pixels[i], ppm_direct_radiance(&ppm->direct, i));
     }
     for (size_t i = 0; i < ppm->n_points; i++) {
         const struct hit_point *hp = &ppm->points[ppm->tree.place[i]]; /* the i-th made */
-        double n_emitted = (double)ppm->photons_emitted;
         struct vec3 l = vec3_add(ppm_radiance(hp->global.tau, hp->global.radius, n_emitted),
                                  ppm_radiance(hp->caustic.tau, hp->caustic.radius, n_emitted));
         image->pixels[hp->pixel] = vec3_add(image->pixels[hp->pixel], vec3_mul(hp->weight, l));
@@ -568,73 +545,22 @@ static void evaluate_image(const struct ppm *ppm, struct image *image)
         }
 }
 
-/* ---- the passes, their checkpoints and progress -------------------------------------- */
+/* ---- the passes ------------------------------------------------------------------ */
 
-static double mean_radius(const struct ppm *ppm)
+static double mean_radius(const void *context)
 {
+    const struct ppm *ppm = context;
     double sum = 0.0;
     for (size_t i = 0; i < ppm->n_points; i++)
         sum += ppm->points[i].global.radius;
     return ppm->n_points > 0 ? sum / (double)ppm->n_points : 0.0;
 }
 
-void ppm_show_progress(long pass, long passes, double photons, double mean_radius,
-                       double seconds, int done)
-{
-    double left = seconds * (double)(passes - pass) / (double)pass;
-    fprintf(stderr, "\rphoton: pass %ld/%ld, %.3g photons, mean radius %.3g, %.1f s, "
-            "about %.0f s left   ", pass, passes, photons, mean_radius, seconds, left);
-    if (done)
-        fputc('\n', stderr);
-    fflush(stderr);
-}
-
-/* Calls checkpoint with the image so far; returns the CPU seconds it took. */
-static double call_checkpoint(const struct ppm *ppm, const struct checkpoint *checkpoint,
-                              struct image *image, double seconds)
-{
-    evaluate_image(ppm, image);
-    return checkpoint->at(checkpoint->context, image, (long long)ppm->photons_emitted, seconds);
-}
-
-/* Photon passes until ps->passes or the time limit; fills image with the final estimate.
- * Checkpoint seconds count from the start of the ray tracing pass (offset seconds). */
-static void photon_passes(struct ppm *ppm, double offset, struct image *image,
-                          struct ppm_stats *stats)
-{
-    const struct ppm_settings *ps = ppm->ps;
-    double limit = ppm->rs->time_limit;
-    clock_t start = clock();
-    double excluded = 0.0, seconds = 0.0, last_shown = 0.0;
-    long pass = 0;
-    while (pass < ps->passes && !(pass > 0 && limit > 0 && offset + seconds >= limit)) {
-        photon_tracing_pass(ppm, pass, stats);
-        eye_ray_pass(ppm, pass);
-        progressive_update(ppm);
-        pass++;
-        if (ps->observer != NULL)
-            ps->observer->after_pass(ps->observer->context, pass, ppm->points, ppm->n_points);
-        seconds = cpu_seconds(start) - excluded;
-        int last = pass == ps->passes || (limit > 0 && offset + seconds >= limit);
-        if (ps->report != NULL && (is_power_of_two(pass) || last))
-            excluded += call_checkpoint(ppm, ps->report, image, offset + seconds);
-        if (ps->snapshot != NULL && ps->snapshot_every > 0 && pass % ps->snapshot_every == 0)
-            excluded += call_checkpoint(ppm, ps->snapshot, image, offset + seconds);
-        if (ppm->rs->progress && (last || seconds - last_shown >= 0.5)) {
-            ppm_show_progress(pass, ps->passes, (double)ppm->photons_emitted, mean_radius(ppm),
-                              seconds, last);
-            last_shown = seconds;
-        }
-    }
-    stats->passes = pass;
-    stats->seconds_photons = seconds;
-    evaluate_image(ppm, image);
-}
-
 struct render_result render_ppm(const struct scene *scene, const struct render_settings *rs,
                                 const struct ppm_settings *ps,
                                 struct render_counters *counters, struct ppm_stats *stats)
 {
+    const struct progressive_settings *common = &ps->progressive;
     struct ppm ppm;
     memset(&ppm, 0, sizeof ppm);
     memset(stats, 0, sizeof *stats);
@@ -646,10 +572,10 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     ppm.height = rs->y1 - rs->y0;
     ppm.seen = xcalloc((size_t)ppm.width * (size_t)ppm.height, sizeof *ppm.seen, "ppm pixels");
     ppm.footprint_per_distance = camera_footprint(&scene->camera);
-    ppm.unnormalise = (double)ps->photons_per_pass;
+    ppm.unnormalise = (double)common->photons_per_pass;
     ppm.keep_members = ps->merge_hit_points && ps->caustic_footprints > 0 &&
                        makes_caustics(scene);
-    if (!ps->direct_photons)
+    if (!common->direct_photons)
         ppm_direct_create(&ppm.direct, scene, rs);
     clock_t start = clock();
     ray_tracing_pass(&ppm);
@@ -660,13 +586,21 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     stats->initial_mean_radius = mean_radius(&ppm);
     struct render_result result = {NULL, NULL, 0.0};
     result.image = image_create(ppm.width, ppm.height);
-    photon_passes(&ppm, stats->seconds_ray_pass, result.image, stats);
+
+    /* The photon tracing passes, each followed by the new eye ray a pixel. */
+    struct progressive_steps steps = {&ppm, NULL, add_photon, eye_ray_pass, progressive_update,
+                                      evaluate_image, mean_radius};
+    struct progressive_run run = progressive_passes(&steps, scene, rs, common,
+                                                    stats->seconds_ray_pass, result.image,
+                                                    &stats->photon_rays);
+    stats->passes = run.passes;
+    stats->seconds_photons = run.seconds;
     result.seconds = stats->seconds_ray_pass + stats->seconds_photons;
-    stats->photons_emitted = ppm.photons_emitted;
+    stats->photons_emitted = run.photons_emitted;
     stats->mean_radius = mean_radius(&ppm);
     counters->passes = rs->spp;
     hit_point_tree_free(&ppm.tree);
-    if (!ps->direct_photons)
+    if (!common->direct_photons)
         ppm_direct_free(&ppm.direct);
     xfree(ppm.members);
     xfree(ppm.pending);

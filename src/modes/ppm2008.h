@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include "../base/error.h"
+#include "progressive.h"
 #include "render.h"
 
 #define PPM_DEFAULT_PHOTONS_PER_PASS 100000 /* the paper's (Sec. 5)                      */
@@ -23,7 +24,6 @@
 #define PPM_DEFAULT_FOOTPRINTS 4.0          /* default R0 in pixel footprints; the paper's
                                                "footprint of the pixel" (Sec. 4) is 1     */
 #define PPM_DEFAULT_CAUSTIC_FOOTPRINTS 1.0  /* R0 of the caustic estimate, in footprints */
-#define MAX_PASSES 100000000                /* documented limit on --passes              */
 #define PPM_MAX_EYE_RAYS (1 << 24)          /* documented limit on pixels x spp: each eye
                                                ray may leave a hit point of ~380 bytes   */
 
@@ -37,53 +37,18 @@ struct ppm_observer {
     void *context;
 };
 
+/* 2008's settings: what both progressive modes read, and the switches of 2008's own
+ * departures. */
 struct ppm_settings {
-    size_t photons_per_pass;          /* photons traced in each pass, 1..MAX_PHOTONS     */
-    long passes;                      /* the most photon passes, 1..MAX_PASSES           */
-    double alpha;                     /* Eq. 7: fraction of new photons kept, (0, 1)     */
-    double radius;                    /* > 0: R0 of every hit point, in scene units;
-                                         <= 0: footprints pixel footprints at the hit
-                                         point (see ppm2008.c)                          */
-    double footprints;                /* R0 in pixel footprints, > 0                     */
+    struct progressive_settings progressive;
     int merge_hit_points;             /* 1: a pixel's eye rays share a hit point where
                                          they meet a surface within its disc             */
     int resample_emission;            /* 1: each pass's new eye ray adds the emission it
                                          sees; 0: only the ray tracing pass's rays do    */
-    int facing_test;                  /* 1: a photon counts only at hit points whose
-                                         surface faces its own                           */
     double caustic_footprints;        /* > 0: caustic photons (L S+ D) gather in an
                                          estimate of their own, R0 this many footprints;
                                          0: in the one estimate, the paper's             */
-    int fit_radius;                   /* 1: R0 shortened until the disc lies on the
-                                         surface, clear of walls and open edges          */
-    int disc_coverage;                /* --mode 2009 only, 1: each pixel's estimate over
-                                         the part of its discs a surface covers, R0 fitted
-                                         to walls the surface goes on past (sppm2009.c);
-                                         0 for 2008                                      */
-    const struct checkpoint *report;  /* borrowed or NULL: gets the image after passes 1,
-                                         2, 4, ... and the last, work = photons emitted  */
-    long snapshot_every;              /* > 0: call snapshot after every this many passes */
-    const struct checkpoint *snapshot; /* borrowed or NULL: gets the image so far         */
     const struct ppm_observer *observer; /* borrowed or NULL                               */
-    int direct_photons;               /* 1: the direct light from photons too, the paper's
-                                         way; 0: by a light sample at each hit point
-                                         each pass, photons only after their first
-                                         bounce (see ppm2008.c)                          */
-};
-
-/* What the render did, for --stats. */
-struct ppm_stats {
-    size_t hit_points;               /* stored by the ray tracing pass                  */
-    size_t bytes_per_hit_point;      /* the hit point and its share of the tree         */
-    size_t hit_members;              /* eye rays merged hit points keep for their caustic
-                                        estimates (struct hit_member each)              */
-    long passes;                     /* photon passes done                               */
-    size_t photons_emitted;          /* N_emitted of Eq. 13                             */
-    double seconds_ray_pass;         /* CPU seconds of the ray tracing pass and tree     */
-    double seconds_photons;          /* CPU seconds of the photon passes                 */
-    double mean_radius;              /* mean R(x) over the hit points at the end         */
-    double initial_mean_radius;      /* mean R(x) before the first pass                  */
-    unsigned long long photon_rays;  /* rays cast tracing photons                        */
 };
 
 /* The defaults above: the paper's photons per pass and alpha, PPM_DEFAULT_PASSES passes,
@@ -104,29 +69,14 @@ struct vec3 ppm_corrected_flux(struct vec3 tau_n_plus_m, double n, double m, dou
  * Eq. 9 and Eq. 7 in turn, then M = 0 for the next pass. */
 void ppm_update_estimate(struct progressive_estimate *e, double alpha);
 
-struct photon_sink;
-
-/* Photon pass `pass` of a progressive render: ps->photons_per_pass photons with the
- * shared tracer, each stored photon handed to sink at once -- every one with
- * ps->direct_photons, else those after their first bounce (the light samples bring the
- * first); adds the tracer's rays to *photon_rays. Returns the photons emitted. */
-size_t ppm_photon_pass(const struct scene *scene, const struct render_settings *rs,
-                       const struct ppm_settings *ps, long pass, const struct photon_sink *sink,
-                       unsigned long long *photon_rays);
-
-/* The progress line of a progressive render after `pass` of `passes`. */
-void ppm_show_progress(long pass, long passes, double photons, double mean_radius,
-                       double seconds, int done);
-
 /* Eq. 13: L = tau / (pi R^2 N_emitted); zero when R or N_emitted is zero (nothing can
  * have been found yet). */
 struct vec3 ppm_radiance(struct vec3 tau, double r, double n_emitted);
 
 /* Renders the window of rs: the ray tracing pass with rs->spp eye rays per pixel (the
- * caller keeps window pixels x spp <= PPM_MAX_EYE_RAYS), then photon passes until
- * ps->passes are done or rs->time_limit has passed (no pass starts after it), calling
- * ps->report, ps->snapshot and ps->observer as they say. result.variance is always NULL:
- * the pixels of a progressive estimate are not means of independent samples. */
+ * caller keeps window pixels x spp <= PPM_MAX_EYE_RAYS), then photon passes as
+ * progressive_passes() runs them, calling ps->observer after each. result.variance is
+ * always NULL: the pixels of a progressive estimate are not means of independent samples. */
 struct render_result render_ppm(const struct scene *scene, const struct render_settings *rs,
                                 const struct ppm_settings *ps,
                                 struct render_counters *counters, struct ppm_stats *stats);

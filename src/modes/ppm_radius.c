@@ -58,9 +58,9 @@ static double disc_clear_of_walls(const struct scene *scene, struct render_count
     return r;
 }
 
-double ppm_initial_radius(const struct scene *scene, const struct ppm_settings *ps,
-                          struct render_counters *counters, const struct surface *s,
-                          double distance)
+double ppm_initial_radius(const struct scene *scene, const struct progressive_settings *ps,
+                          int past_walls_only, struct render_counters *counters,
+                          const struct surface *s, double distance)
 {
     if (ps->radius > 0)
         return ps->radius;
@@ -69,7 +69,7 @@ double ppm_initial_radius(const struct scene *scene, const struct ppm_settings *
     if (!ps->fit_radius)
         return r;
     double least = PPM_WALL_FLOOR * footprint;
-    if (ps->disc_coverage)
+    if (past_walls_only)
         return fmax(disc_clear_of_walls(scene, counters, s, r, footprint, 1), least);
     r = disc_clear_of_walls(scene, counters, s, r, 0.0, 0);
     while (r > least && !disc_rim_covered(scene, s->p, s->ng, 2 * r))

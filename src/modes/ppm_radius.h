@@ -6,15 +6,16 @@
 #ifndef PHOTON_PPM_RADIUS_H
 #define PHOTON_PPM_RADIUS_H
 
-#include "ppm2008.h"
+#include "progressive.h"
 #include "surface.h"
 
 /* R0 at surface s, seen at `distance` along its eye path: ps->radius if it is given; else
  * ps->footprints pixel footprints (the width a pixel covers at that distance), and with
- * ps->fit_radius shortened until the disc lies on the surface (with ps->disc_coverage,
- * only to clear walls the surface goes on past). Adds its wall probes to counters->rays. */
-double ppm_initial_radius(const struct scene *scene, const struct ppm_settings *ps,
-                          struct render_counters *counters, const struct surface *s,
-                          double distance);
+ * ps->fit_radius shortened until the disc lies on the surface (with past_walls_only, as
+ * 2009's disc coverage wants, only to clear walls the surface goes on past). Adds its wall
+ * probes to counters->rays. */
+double ppm_initial_radius(const struct scene *scene, const struct progressive_settings *ps,
+                          int past_walls_only, struct render_counters *counters,
+                          const struct surface *s, double distance);
 
 #endif

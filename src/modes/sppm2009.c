@@ -99,8 +99,9 @@ struct fitted_plane {
 struct sppm {
     const struct scene *scene;          /* borrowed                                        */
     const struct render_settings *rs;   /* borrowed                                        */
-    const struct ppm_settings *ps;      /* borrowed                                        */
+    const struct sppm_settings *ps;     /* borrowed                                        */
     struct render_counters *counters;   /* borrowed                                        */
+    struct ppm_stats *stats;            /* borrowed: gets the eye paths' seconds, mean R0   */
     int width;                          /* of the window                                   */
     size_t n_pixels;
     struct progressive_estimate *shared; /* owned: per window pixel, S's N, R and tau; R is
@@ -114,9 +115,8 @@ struct sppm {
     const struct photon_event *photon;  /* the photon being added                          */
     double unnormalise;                 /* photons per pass: the tracer's Phi / N back to
                                            the paper's unnormalised Phi'                   */
-    size_t photons_emitted;             /* N_emitted, so far                               */
     long passes_done;
-    struct ppm_direct direct;           /* the direct term, unless ps->direct_photons      */
+    struct ppm_direct direct;           /* the direct term, unless the photons bring it    */
     struct brdf_split *parts;           /* owned: each scene material's diffuse and
                                            specular parts (brdf_split())                   */
     struct disc_share *coverage;        /* owned, with ps->disc_coverage: per window pixel,
@@ -154,7 +154,8 @@ static void fit_to_surface(struct sppm *sppm, size_t pixel, const struct surface
     if (vec3_dot(plane->n, s->ng) >= DISC_SAME_SURFACE_COS &&
         fabs(vec3_dot(vec3_sub(s->p, plane->x), plane->n)) <= shared->radius)
         return;
-    double r = ppm_initial_radius(sppm->scene, sppm->ps, sppm->counters, s, distance);
+    double r = ppm_initial_radius(sppm->scene, &sppm->ps->progressive,
+                                   sppm->ps->disc_coverage, sppm->counters, s, distance);
     if (r < shared->radius)
         shrink_estimate(shared, r);
 }
@@ -167,8 +168,9 @@ static void store_hit_point(struct sppm *sppm, size_t pixel, const struct surfac
 {
     struct progressive_estimate *shared = &sppm->shared[pixel];
     if (shared->radius == 0)
-        shared->radius = ppm_initial_radius(sppm->scene, sppm->ps, sppm->counters, s, distance);
-    if (sppm->ps->disc_coverage && sppm->ps->fit_radius && sppm->ps->radius <= 0)
+        shared->radius = ppm_initial_radius(sppm->scene, &sppm->ps->progressive,
+                                   sppm->ps->disc_coverage, sppm->counters, s, distance);
+    if (sppm->ps->disc_coverage && sppm->ps->progressive.fit_radius && sppm->ps->progressive.radius <= 0)
         fit_to_surface(sppm, pixel, s, distance); /* else no fit could shorten R */
     struct hit_point *hp = &sppm->points[sppm->n_points++];
     hp->x = s->p;
@@ -257,7 +259,7 @@ static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ra
                 u[k] = rng_uniform(rng); /* one by one: an initializer's order is unspecified */
             struct brdf_sample bs;
             const struct material *lobe = part->has_diffuse ? &part->specular : s.material;
-            if (!sppm->ps->direct_photons && brdf_has_diffuse(lobe)) {
+            if (!sppm->ps->progressive.direct_photons && brdf_has_diffuse(lobe)) {
                 struct surface glossy = s;
                 glossy.material = lobe;
                 ppm_direct_point_lights(&sppm->direct, pixel, (uint64_t)depth + 1, pass,
@@ -279,16 +281,33 @@ static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ra
         store_hit_point(sppm, pixel, &s, &frame, beta, distance);
         if (sppm->ps->disc_coverage)
             probe_disc(sppm, pixel, pass, &s);
-        if (!sppm->ps->direct_photons)
+        if (!sppm->ps->progressive.direct_photons)
             ppm_direct_sample(&sppm->direct, pixel, 0, pass, &s, &frame, beta, sppm->counters);
         return;
     }
 }
 
-/* Pass `pass`: one eye path through every pixel of the window, then the hit points' grid. */
-static void distributed_ray_tracing_pass(struct sppm *sppm, long pass)
+/* The mean R over the pixels that have one: the progress line's and --stats's. */
+static double mean_radius(const void *context)
 {
+    const struct sppm *sppm = context;
+    double sum = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < sppm->n_pixels; i++)
+        if (sppm->shared[i].radius > 0) {
+            sum += sppm->shared[i].radius;
+            n++;
+        }
+    return n > 0 ? sum / (double)n : 0.0;
+}
+
+/* Pass `pass`: one eye path through every pixel of the window, then the hit points' grid;
+ * its CPU seconds go to the stats, and after the first pass the mean R0. */
+static void distributed_ray_tracing_pass(void *context, long pass)
+{
+    struct sppm *sppm = context;
     const struct render_settings *rs = sppm->rs;
+    clock_t start = clock();
     sppm->n_points = 0;
     for (int y = rs->y0; y < rs->y1; y++)
         for (int x = rs->x0; x < rs->x1; x++) {
@@ -299,6 +318,9 @@ static void distributed_ray_tracing_pass(struct sppm *sppm, long pass)
         }
     hit_point_grid_free(&sppm->grid);
     hit_point_grid_build(&sppm->grid, sppm->points, sppm->n_points);
+    sppm->stats->seconds_ray_pass += cpu_seconds(start);
+    if (pass == 0)
+        sppm->stats->initial_mean_radius = mean_radius(sppm);
 }
 
 /* ---- the photon tracing pass ----------------------------------------------------------- */
@@ -312,25 +334,16 @@ static void add_flux(void *context, size_t i)
                                                       sppm->photon->normal))
         return;
     hit_point_add_photon(&sppm->points[i], sppm->photon, sppm->unnormalise,
-                         sppm->ps->facing_test, 0);
+                         sppm->ps->progressive.facing_test, 0);
 }
 
-/* The tracer's sink: each stored photon goes to the hit points around it, then is gone. */
-static int add_photon(void *context, const struct photon_event *photon)
+/* Each photon a photon tracing pass stores (2008's pass) goes to the hit points around
+ * it. */
+static void add_photon(void *context, const struct photon_event *photon)
 {
     struct sppm *sppm = context;
     sppm->photon = photon;
     hit_point_grid_visit(&sppm->grid, photon->position, add_flux, sppm);
-    return 0;
-}
-
-/* Pass p: photons_per_pass photons with 2008's photon pass, each given to the hit
- * points around it. */
-static void photon_tracing_pass(struct sppm *sppm, long pass, struct ppm_stats *stats)
-{
-    struct photon_sink sink = {add_photon, sppm};
-    sppm->photons_emitted += ppm_photon_pass(sppm->scene, sppm->rs, sppm->ps, pass, &sink,
-                                             &stats->photon_rays);
 }
 
 /* ---- the progressive update of the shared statistics ---------------------------------- */
@@ -338,16 +351,18 @@ static void photon_tracing_pass(struct sppm *sppm, long pass, struct ppm_stats *
 /* Each hit point's Phi = beta (sum of f_r Phi') goes to its pixel's tau, and its M to the
  * update (ppm_update_estimate(): N, R, tau); a pixel without a hit point this pass found
  * no photon (M = 0) and keeps its values. */
-static void progressive_update(struct sppm *sppm)
+static void progressive_update(void *context, long pass)
 {
+    struct sppm *sppm = context;
+    (void)pass;
     for (size_t i = 0; i < sppm->n_points; i++) {
         const struct hit_point *hp = &sppm->points[i];
         struct progressive_estimate *shared = &sppm->shared[hp->pixel];
         shared->tau = vec3_add(shared->tau, vec3_mul(hp->weight, hp->global.tau));
         shared->m_photons = hp->global.m_photons;
-        ppm_update_estimate(shared, sppm->ps->alpha);
+        ppm_update_estimate(shared, sppm->ps->progressive.alpha);
     }
-    if (!sppm->ps->direct_photons)
+    if (!sppm->ps->progressive.direct_photons)
         ppm_direct_end_pass(&sppm->direct);
     sppm->passes_done++;
 }
@@ -367,15 +382,16 @@ static double covered_share(const struct sppm *sppm, size_t i)
 /* The image so far: per pixel, the photons' tau / (pi R^2 N_emitted), over the covered
  * share of its discs, plus the mean of what the eye paths saw directly and, unless
  * photons bring it, of their direct light. */
-static void evaluate_image(const struct sppm *sppm, struct image *image)
+static void evaluate_image(const void *context, double n_emitted, struct image *image)
 {
+    const struct sppm *sppm = context;
     double passes = sppm->passes_done > 0 ? (double)sppm->passes_done : 1.0;
     for (size_t i = 0; i < sppm->n_pixels; i++) {
         const struct progressive_estimate *e = &sppm->shared[i];
-        struct vec3 photons = ppm_radiance(e->tau, e->radius, (double)sppm->photons_emitted);
+        struct vec3 photons = ppm_radiance(e->tau, e->radius, n_emitted);
         struct vec3 l = vec3_add(vec3_scale(sppm->seen[i], 1.0 / passes),
                                  vec3_scale(photons, 1.0 / covered_share(sppm, i)));
-        if (!sppm->ps->direct_photons)
+        if (!sppm->ps->progressive.direct_photons)
             l = vec3_add(l, ppm_direct_radiance(&sppm->direct, i));
         if (!vec3_is_finite(l)) { /* a bug upstream: report, never write */
             sppm->counters->nonfinite_samples++;
@@ -385,42 +401,23 @@ static void evaluate_image(const struct sppm *sppm, struct image *image)
     }
 }
 
-static double mean_radius(const struct sppm *sppm)
-{
-    double sum = 0.0;
-    size_t n = 0;
-    for (size_t i = 0; i < sppm->n_pixels; i++)
-        if (sppm->shared[i].radius > 0) {
-            sum += sppm->shared[i].radius;
-            n++;
-        }
-    return n > 0 ? sum / (double)n : 0.0;
-}
-
 /* ---- the passes -------------------------------------------------------------------- */
 
-/* Calls checkpoint with the image so far; returns the CPU seconds it took. */
-static double call_checkpoint(const struct sppm *sppm, const struct checkpoint *checkpoint,
-                              struct image *image, double seconds)
+struct sppm_settings sppm_settings_default(void)
 {
-    evaluate_image(sppm, image);
-    return checkpoint->at(checkpoint->context, image, (long long)sppm->photons_emitted,
-                          seconds);
-}
-
-struct ppm_settings sppm_settings_default(void)
-{
-    struct ppm_settings ps = ppm_settings_default();
-    ps.passes = SPPM_DEFAULT_PASSES;
-    ps.photons_per_pass = SPPM_DEFAULT_PHOTONS_PER_PASS;
+    struct sppm_settings ps;
+    ps.progressive = ppm_settings_default().progressive;
+    ps.progressive.passes = SPPM_DEFAULT_PASSES;
+    ps.progressive.photons_per_pass = SPPM_DEFAULT_PHOTONS_PER_PASS;
     ps.disc_coverage = 1;
     return ps;
 }
 
 struct render_result render_sppm(const struct scene *scene, const struct render_settings *rs,
-                                 const struct ppm_settings *ps,
+                                 const struct sppm_settings *ps,
                                  struct render_counters *counters, struct ppm_stats *stats)
 {
+    const struct progressive_settings *common = &ps->progressive;
     struct sppm sppm;
     memset(&sppm, 0, sizeof sppm);
     memset(stats, 0, sizeof *stats);
@@ -428,6 +425,7 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     sppm.rs = rs;
     sppm.ps = ps;
     sppm.counters = counters;
+    sppm.stats = stats;
     sppm.width = rs->x1 - rs->x0;
     sppm.n_pixels = (size_t)sppm.width * (size_t)(rs->y1 - rs->y0);
     sppm.shared = xcalloc(sppm.n_pixels, sizeof *sppm.shared, "sppm statistics");
@@ -437,56 +435,35 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
         sppm.coverage = xcalloc(sppm.n_pixels, sizeof *sppm.coverage, "sppm disc coverage");
         sppm.fitted = xcalloc(sppm.n_pixels, sizeof *sppm.fitted, "sppm fitted planes");
     }
-    sppm.unnormalise = (double)ps->photons_per_pass;
+    sppm.unnormalise = (double)common->photons_per_pass;
     sppm.parts = xmalloc(scene->n_materials + 1, sizeof *sppm.parts, "sppm materials");
     for (size_t m = 0; m < scene->n_materials; m++)
         sppm.parts[m] = brdf_split(&scene->materials[m]);
     hit_point_grid_build(&sppm.grid, sppm.points, 0);
-    if (!ps->direct_photons)
+    if (!common->direct_photons)
         ppm_direct_create(&sppm.direct, scene, rs);
     struct render_result result = {NULL, NULL, 0.0};
     result.image = image_create(sppm.width, rs->y1 - rs->y0);
 
-    clock_t start = clock();
-    double excluded = 0.0, seconds = 0.0, last_shown = 0.0, limit = rs->time_limit;
-    while (sppm.passes_done < ps->passes && !(sppm.passes_done > 0 && limit > 0 &&
-                                              seconds >= limit)) {
-        long pass = sppm.passes_done;
-        clock_t eye_start = clock();
-        distributed_ray_tracing_pass(&sppm, pass);
-        stats->seconds_ray_pass += cpu_seconds(eye_start);
-        if (pass == 0)
-            stats->initial_mean_radius = mean_radius(&sppm);
-        photon_tracing_pass(&sppm, pass, stats);
-        progressive_update(&sppm);
-        seconds = cpu_seconds(start) - excluded;
-        int last = sppm.passes_done == ps->passes || (limit > 0 && seconds >= limit);
-        if (ps->report != NULL && (is_power_of_two(sppm.passes_done) || last))
-            excluded += call_checkpoint(&sppm, ps->report, result.image, seconds);
-        if (ps->snapshot != NULL && ps->snapshot_every > 0 &&
-            sppm.passes_done % ps->snapshot_every == 0)
-            excluded += call_checkpoint(&sppm, ps->snapshot, result.image, seconds);
-        if (rs->progress && (last || seconds - last_shown >= 0.5)) {
-            ppm_show_progress(sppm.passes_done, ps->passes, (double)sppm.photons_emitted,
-                              mean_radius(&sppm), seconds, last);
-            last_shown = seconds;
-        }
-    }
-    evaluate_image(&sppm, result.image);
-    result.seconds = seconds;
-    stats->passes = sppm.passes_done;
-    stats->seconds_photons = seconds - stats->seconds_ray_pass;
+    /* Each pass: the distributed ray tracing pass, the photon tracing pass, the update. */
+    struct progressive_steps steps = {&sppm, distributed_ray_tracing_pass, add_photon, NULL,
+                                      progressive_update, evaluate_image, mean_radius};
+    struct progressive_run run = progressive_passes(&steps, scene, rs, common, 0.0,
+                                                    result.image, &stats->photon_rays);
+    result.seconds = run.seconds;
+    stats->passes = run.passes;
+    stats->seconds_photons = run.seconds - stats->seconds_ray_pass;
     stats->hit_points = sppm.n_points;
     stats->bytes_per_hit_point = sizeof(struct hit_point) + HIT_POINT_GRID_BYTES_PER_POINT +
                                  sizeof(struct progressive_estimate) + sizeof(struct vec3) +
                                  (ps->disc_coverage ? sizeof(struct disc_share) +
                                                           sizeof(struct fitted_plane)
                                                     : 0);
-    stats->photons_emitted = sppm.photons_emitted;
+    stats->photons_emitted = run.photons_emitted;
     stats->mean_radius = mean_radius(&sppm);
-    counters->passes = (int)sppm.passes_done;
+    counters->passes = (int)run.passes;
     hit_point_grid_free(&sppm.grid);
-    if (!ps->direct_photons)
+    if (!common->direct_photons)
         ppm_direct_free(&sppm.direct);
     xfree(sppm.parts);
     xfree(sppm.coverage);

@@ -1,8 +1,6 @@
 /*
  * modes/sppm2009.h -- `--mode 2009`: stochastic progressive photon mapping (Hachisuka and
- * Jensen 2009). Its settings are 2008's (struct ppm_settings), of which it reads
- * photons_per_pass, passes, alpha, radius, footprints, fit_radius, disc_coverage,
- * facing_test, direct_photons, report, snapshot_every and snapshot.
+ * Jensen 2009).
  */
 #ifndef PHOTON_SPPM2009_H
 #define PHOTON_SPPM2009_H
@@ -15,16 +13,25 @@
  * 50,000 photons, so fewer, fuller passes reach an error sooner. */
 #define SPPM_DEFAULT_PHOTONS_PER_PASS 100000
 
-/* 2009's defaults: ppm_settings_default() with SPPM_DEFAULT_PASSES passes of
- * SPPM_DEFAULT_PHOTONS_PER_PASS photons and the disc coverage on. */
-struct ppm_settings sppm_settings_default(void);
+/* 2009's settings: what both progressive modes read, and the switch of 2009's own
+ * departure. */
+struct sppm_settings {
+    struct progressive_settings progressive;
+    int disc_coverage; /* 1: each pixel's estimate over the part of its discs a surface
+                          covers, R0 fitted only to walls the surface goes on past
+                          (sppm2009.c)                                                 */
+};
 
-/* Renders the window of rs: ps->passes passes (fewer when rs->time_limit passes first),
- * each one eye path through every pixel and ps->photons_per_pass photons, calling
- * ps->report and ps->snapshot as 2008 does. stats->hit_points is the last pass's;
+/* 2009's defaults: 2008's common settings with SPPM_DEFAULT_PASSES passes of
+ * SPPM_DEFAULT_PHOTONS_PER_PASS photons, and the disc coverage on. */
+struct sppm_settings sppm_settings_default(void);
+
+/* Renders the window of rs: the passes of ps->progressive (fewer when rs->time_limit
+ * passes first), each one eye path through every pixel and a photon tracing pass, calling
+ * its report and snapshot as 2008 does. stats->hit_points is the last pass's;
  * result.variance is NULL. */
 struct render_result render_sppm(const struct scene *scene, const struct render_settings *rs,
-                                 const struct ppm_settings *ps,
+                                 const struct sppm_settings *ps,
                                  struct render_counters *counters, struct ppm_stats *stats);
 
 #endif

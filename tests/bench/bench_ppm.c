@@ -20,7 +20,7 @@ void bench_ppm(void)
         return;
     struct render_settings rs = render_settings_whole(scene, 1, PPM_DEFAULT_SPP, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_settings_default();
-    ps.passes = BENCH_PPM_PASSES;
+    ps.progressive.passes = BENCH_PPM_PASSES;
     double hit_points_per_s[BENCH_REPEATS], photons_per_s[BENCH_REPEATS], sum = 0;
     struct ppm_stats stats;
     for (int r = 0; r < BENCH_REPEATS; r++) {

@@ -178,8 +178,8 @@ static struct render_result render_2008(const struct scene *scene, int trial, st
     struct render_settings rs = settings_at(scene, PPM_DEFAULT_SPP, trial);
     struct ppm_settings ps = ppm_settings_default();
     if (trial) {
-        ps.photons_per_pass /= TRIAL_SHRINK;
-        ps.passes = TRIAL_PASSES;
+        ps.progressive.photons_per_pass /= TRIAL_SHRINK;
+        ps.progressive.passes = TRIAL_PASSES;
     }
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
@@ -193,12 +193,12 @@ static struct render_result render_2009(const struct scene *scene, int trial, st
                                         struct error *err)
 {
     (void)err; /* render_sppm does not fail on a finished scene */
-    struct ppm_settings ps = sppm_settings_default();
+    struct sppm_settings ps = sppm_settings_default();
     if (trial) {
-        ps.photons_per_pass /= TRIAL_SHRINK;
-        ps.passes = TRIAL_PASSES;
+        ps.progressive.photons_per_pass /= TRIAL_SHRINK;
+        ps.progressive.passes = TRIAL_PASSES;
     }
-    struct render_settings rs = settings_at(scene, (int)ps.passes, trial);
+    struct render_settings rs = settings_at(scene, (int)ps.progressive.passes, trial);
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct ppm_stats stats;
     struct render_result result = render_sppm(scene, &rs, &ps, &counters, &stats);

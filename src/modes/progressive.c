@@ -1,0 +1,115 @@
+/*
+ * modes/progressive.c -- the loop of passes that 2008 and 2009 share.
+ *
+ * Both papers' renders are passes repeated until the image is good enough, each ending
+ * in the progressive update (2008's Eq. 7, 9 and 12); the image exists at any pass
+ * (Eq. 13). A pass here is the mode's step before its photons (2009's distributed ray
+ * tracing pass), its photon tracing pass, the mode's step after the photons (2008's new
+ * eye ray a pixel) and the update; between passes come the checkpoints and the progress
+ * line, whose time is not counted.
+ *
+ * The photon tracing pass is the same in both modes: ps->photons_per_pass photons with
+ * the shared tracer, each stored photon handed to the mode at once (no photon is kept
+ * after it has been added); photon i of pass p draws from rng_stream(seed,
+ * STREAM_PHOTON, p, i), so a pass's photons depend on nothing but the seed and p.
+ */
+#include "progressive.h"
+
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include "../photon/trace.h"
+
+/* The photons that reach hit points when a light sample takes the direct light: those
+ * after a diffuse bounce, and caustics (L S+ D), which no shadow ray sees the light by. */
+#define PHOTON_AFTER_FIRST_BOUNCE (PHOTON_CAUSTIC | PHOTON_INDIRECT)
+
+/* The tracer's sink: the mode adds each stored photon to its hit points; the tracer
+ * goes on. */
+static int hand_to_mode(void *context, const struct photon_event *photon)
+{
+    const struct progressive_steps *steps = context;
+    steps->add_photon(steps->mode, photon);
+    return 0;
+}
+
+/* Photon tracing pass `pass`: every photon stored with ps->direct_photons, else those
+ * after their first bounce (the light samples bring the first). Returns the photons
+ * emitted. */
+static size_t photon_tracing_pass(const struct progressive_steps *steps,
+                                  const struct scene *scene, const struct render_settings *rs,
+                                  const struct progressive_settings *ps, long pass,
+                                  unsigned long long *photon_rays)
+{
+    struct trace_settings ts;
+    memset(&ts, 0, sizeof ts);
+    ts.seed = rs->seed;
+    ts.pass = (uint64_t)pass;
+    ts.n_emit = ps->photons_per_pass; /* max_stored: unused, nothing is stored */
+    ts.store = ps->direct_photons ? PHOTON_MAP_GLOBAL : PHOTON_AFTER_FIRST_BOUNCE;
+    ts.max_depth = rs->max_depth;
+    ts.targets = NULL;
+    ts.projection = NULL;
+    struct photon_sink sink = {hand_to_mode, (void *)steps};
+    trace_photons_into(scene, &ts, &sink, photon_rays); /* the sink never stops it */
+    return ts.n_emit;
+}
+
+static void show_progress(long pass, long passes, double photons, double mean_radius,
+                          double seconds, int done)
+{
+    double left = seconds * (double)(passes - pass) / (double)pass;
+    fprintf(stderr, "\rphoton: pass %ld/%ld, %.3g photons, mean radius %.3g, %.1f s, "
+            "about %.0f s left   ", pass, passes, photons, mean_radius, seconds, left);
+    if (done)
+        fputc('\n', stderr);
+    fflush(stderr);
+}
+
+/* Calls checkpoint with the image so far; returns the CPU seconds it took. */
+static double call_checkpoint(const struct progressive_steps *steps,
+                              const struct checkpoint *checkpoint, size_t photons_emitted,
+                              struct image *image, double seconds)
+{
+    steps->evaluate(steps->mode, (double)photons_emitted, image);
+    return checkpoint->at(checkpoint->context, image, (long long)photons_emitted, seconds);
+}
+
+struct progressive_run progressive_passes(const struct progressive_steps *steps,
+                                          const struct scene *scene,
+                                          const struct render_settings *rs,
+                                          const struct progressive_settings *ps, double offset,
+                                          struct image *image, unsigned long long *photon_rays)
+{
+    struct progressive_run run = {0, 0, 0.0};
+    double limit = rs->time_limit;
+    clock_t start = clock();
+    double excluded = 0.0, last_shown = 0.0;
+    while (run.passes < ps->passes &&
+           !(run.passes > 0 && limit > 0 && offset + run.seconds >= limit)) {
+        long pass = run.passes;
+        if (steps->before_photons != NULL)
+            steps->before_photons(steps->mode, pass);
+        run.photons_emitted += photon_tracing_pass(steps, scene, rs, ps, pass, photon_rays);
+        if (steps->after_photons != NULL)
+            steps->after_photons(steps->mode, pass);
+        steps->update(steps->mode, pass);
+        run.passes++;
+        run.seconds = cpu_seconds(start) - excluded;
+        double at = offset + run.seconds;
+        int last = run.passes == ps->passes || (limit > 0 && at >= limit);
+        if (ps->report != NULL && (is_power_of_two(run.passes) || last))
+            excluded += call_checkpoint(steps, ps->report, run.photons_emitted, image, at);
+        if (ps->snapshot != NULL && ps->snapshot_every > 0 &&
+            run.passes % ps->snapshot_every == 0)
+            excluded += call_checkpoint(steps, ps->snapshot, run.photons_emitted, image, at);
+        if (rs->progress && (last || run.seconds - last_shown >= 0.5)) {
+            show_progress(run.passes, ps->passes, (double)run.photons_emitted,
+                          steps->mean_radius(steps->mode), run.seconds, last);
+            last_shown = run.seconds;
+        }
+    }
+    steps->evaluate(steps->mode, (double)run.photons_emitted, image);
+    return run;
+}
