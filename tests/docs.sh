@@ -36,6 +36,23 @@ done > docs-missing.tmp
 while read -r line; do problem "$line"; done < docs-missing.tmp
 rm -f docs-missing.tmp
 
+# 1b. Functions named: every `name()` a document shows is defined in src/ or tests/ (a
+# function at the start of its line, or a macro), apart from the outside ones listed here:
+# the C library's clock() and time(), Embree's rtcIntersect1(), Radiance's posgradient().
+outside=" clock time rtcIntersect1 posgradient "
+for doc in $docs tests/data/README.md; do
+    [ -f "$doc" ] || continue
+    grep -oE '`[A-Za-z_][A-Za-z0-9_]*\(\)`' "$doc" | tr -d '`()' | sort -u |
+        while read -r name; do
+            case $outside in *" $name "*) continue ;; esac
+            grep -rqE "^([A-Za-z_].*[ *])?$name\(|^#define $name\(" --include='*.c' \
+                --include='*.h' src tests ||
+                echo "$doc names $name(), which nothing in src/ or tests/ defines"
+        done
+done > docs-functions.tmp
+while read -r line; do problem "$line"; done < docs-functions.tmp
+rm -f docs-functions.tmp
+
 # 2. Options shown on command lines.
 usage=$("$photon" --help 2>&1)
 for doc in $docs; do

@@ -105,7 +105,7 @@ struct j94 {
     int filling_cache;               /* the pre-pass: records where none is usable      */
     int strata_theta, strata_phi;    /* a record's m x n strata, one ray each            */
     int sample_theta, sample_phi;    /* a camera sample's share of them, for a glossy
-                                        part's gather (glossy_interreflection())         */
+                                        part's gather (sample_gather())                  */
     int light_strata;                /* each light sampled on light_strata^2 strata      */
     double diagonal;                 /* of the scene's box                               */
     int max_depth;                   /* longest chain of bounces followed                */

@@ -21,7 +21,7 @@
  * the photon map for the rest. */
 struct deposits {
     struct photon_trace photons;
-    struct photon_trace glossy;             /* those that keep_direction()             */
+    struct photon_trace glossy;             /* those that keeps_direction()            */
     struct illumination_maps *illumination; /* borrowed; NULL: photon maps everywhere */
     const struct scene *scene;              /* borrowed                                */
     const struct jensen1994_settings *js;   /* borrowed                                */

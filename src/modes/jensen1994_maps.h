@@ -20,8 +20,9 @@ struct irradiance_stores {
                                                and the caustic bit (CP: PHOTON_CAUSTIC)  */
     struct kdtree *caustics;                /* owned: copies of the CP photons alone, so
                                                that caustic estimates search only them   */
-    struct kdtree *glossy;                  /* owned: the photons that keep_direction(),
-                                               holding it (empty without glossy_gather)  */
+    struct kdtree *glossy;                  /* owned: the photons keeps_direction()
+                                               keeps with their direction (empty
+                                               without glossy_gather)                    */
     struct illumination_maps *illumination; /* owned, finished; NULL: photon maps only   */
 };
 

@@ -7,9 +7,8 @@
  * (brdf_models.h). A non-delta sample's weight and pdf are computed here from the
  * model's own eval and pdf, so the three always agree.
  *
- * Glass follows direct.c's glass_ray(): eta = n_t / n_i with the outside at index 1;
- * the reflected or refracted lobe is chosen with the exact Fresnel probability F
- * (optics.h), so its weight is the lobe's reflectance over its probability: 1 for
+ * Glass: eta = n_t / n_i with the outside at index 1; the reflected or refracted lobe is
+ * chosen with the exact Fresnel probability F (optics.h), so its weight is the lobe's reflectance over its probability: 1 for
  * reflection, (1 - F) / (1 - F) / eta^2 for radiance refracted (Veach 1997, Sec. 5.2).
  */
 #include "brdf.h"
