@@ -17,9 +17,10 @@
  * al.'s "Getting rid of packets" (2008) use). The slots that are still ranges become the
  * node's interior children, laid side by side and built the same way, depth first; but a
  * range of at most BVH_MAX_LEAF items becomes a leaf even where the SAH would split it, as a
- * node of two or three tiny leaves costs a visit and 256 bytes for little (on terrain1m it
- * halves the nodes and is faster, most on secondary rays). C_trav = C_isect = 1 and 16
- * bins: ratios 0.5 and 2, and 32 bins, moved no rays workload figure beyond the noise.
+ * node of two or three tiny leaves costs a visit and 256 bytes for little: fewer nodes, and
+ * faster rays, most of all secondary ones. C_trav = C_isect = 1 and 16 bins: other ratios
+ * and more bins gain nothing the rays workload can tell from noise (src/modes/measured.md
+ * has the figures of both).
  */
 #include "bvh.h"
 

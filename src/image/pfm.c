@@ -12,8 +12,9 @@
  *
  * The reader also skips '#' comment lines between header fields, which some writers put
  * there; the writer writes none, since other readers refuse them (netpbm's pfmtopam does,
- * so a crop's window goes in a file of its own: app/tile.h). Greyscale "Pf" files are refused: a reference is colour. Every size is
- * checked, and the data's length compared with it, before the image is allocated.
+ * so a crop's window goes in a file of its own: app/tile.h). Greyscale "Pf" files are
+ * refused: a reference is colour. Every size is checked, and the data's length compared
+ * with it, before the image is allocated.
  *
  * Byte order is assembled by hand from the float's bits, so the file is the same on hosts
  * of either endianness; the one assumption is that float is IEEE binary32 (checked below)

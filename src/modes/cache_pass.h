@@ -39,11 +39,11 @@ void fill_cache_pass(const struct scene *scene, uint64_t seed,
  * straight from the camera, whatever path reached p: a pixel seen at an angle covers
  * 1 / cos more of the surface (up to 10 times). A record is read by every path that
  * reaches it, and a floor seen in a curved mirror at a grazing angle has footprints ten
- * times a direct view's: a bound from that path gave its records a reach of 37 cm, and
- * one noisy gather made for the mirror then lit a band of the floor seen directly 15%
- * too dark. Fills *r_min (CACHE_MIN_REACH footprints over a, and at least the ray offset
- * at p, so positive even at the camera's own position) and *r_max (CACHE_R_MAX
- * diagonals, at least r_min). */
+ * times a direct view's: a bound from that path gives its records a reach far beyond a
+ * direct view's, and one noisy gather made for the mirror then leaves a band of the floor
+ * seen directly too dark (src/modes/measured.md). Fills *r_min (CACHE_MIN_REACH footprints
+ * over a, and at least the ray offset at p, so positive even at the camera's own position)
+ * and *r_max (CACHE_R_MAX diagonals, at least r_min). */
 void record_radius_bounds(const struct camera *camera, struct vec3 p, struct vec3 n,
                           double accuracy, double diagonal, double *r_min, double *r_max);
 

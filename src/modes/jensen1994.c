@@ -373,8 +373,9 @@ static struct vec3 eye_radiance(const struct j94 *m, const struct surface *s, st
     if (split.has_specular) {
         l = vec3_add(l, specular_light(m, s, &split.specular, &frame, path, rng, counters));
         /* L_r,s is traced, and a traced ray never meets a point light, a delta: a glossy
-         * lobe's highlight of one would be lost (the sphere flake's Phong spheres were
-         * 20-35% dark), so the point lights are sampled through a glossy lobe too. */
+         * lobe's highlight of one would be lost (the sphere flake's Phong spheres would be
+         * dark: src/modes/README.md), so the point lights are sampled through a glossy
+         * lobe too. */
         if (brdf_has_diffuse(&split.specular))
             l = vec3_add(l, direct_light(m, s, &split.specular, &frame, 1, rng, counters));
     }
@@ -466,9 +467,10 @@ static void tear_down(struct j94 *m)
     irradiance_cache_free(m->cache); /* m->stores are the work's */
 }
 
-/* Pass 1 into work when it is empty (maps[0] the photon map, maps[1] the CP photons'
- * tree, maps[2] the glossy photons' (keeps_direction()), and the illumination maps when js asks for them), else the stores work holds
- * (loaded from a file). m->stores borrows them from work. */
+/* Pass 1 into work when it is empty (maps[0] the photon map, maps[1] the CP photons' tree,
+ * maps[2] the glossy photons' (keeps_direction()), and the illumination maps when js asks
+ * for them), else the stores work holds (loaded from a file). m->stores borrows them from
+ * work. */
 static int photon_stores(struct j94 *m, const struct scene *scene,
                          const struct render_settings *rs, struct global_work *work,
                          struct error *err)

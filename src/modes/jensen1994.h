@@ -16,18 +16,21 @@
 #define J94_DEFAULT_PHOTONS 4000000    /* --photons: light rays of pass 1; searches cost
                                           log N, so a large map is cheap, and its
                                           estimates' discs, hanging over the walls'
-                                          edges, are small (src/modes/README.md)                */
+                                          edges, are small (src/modes/README.md)         */
 #define J94_DEFAULT_SPP 64             /* --spp: the cache and maps are shared by all
                                           samples, so the final pass is the cheap part;
-                                          16 leave the light's outline aliased by 4%    */
-#define J94_DEFAULT_GATHER 50          /* --gather: photons in an irradiance estimate (the
-                                          paper used 40 on the desk, 80 on the landscape,
-                                          200 for its Fig. 8); with 100 the discs at the
-                                          open front's corners left them 3.5% dark      */
+                                          fewer leave the light's outline aliased
+                                          (src/modes/measured.md)                        */
+#define J94_DEFAULT_GATHER 50          /* --gather: photons in an irradiance estimate
+                                          (the paper used 40 on the desk, 80 on the
+                                          landscape, 200 for its Fig. 8); more widen the
+                                          discs, which darken the open front's corners
+                                          (src/modes/measured.md)                        */
 #define J94_DEFAULT_GATHER_RAYS 512    /* --gather-rays: irradiance-gradient rays of one
-                                          cache record (Ward and Heckbert's strata); at
-                                          256 a record's noise near the glass ball put
-                                          whole blocks 4% off (README)                   */
+                                          cache record (Ward and Heckbert's strata);
+                                          with fewer, a record's noise near the glass
+                                          ball puts whole blocks past 3%
+                                          (src/modes/measured.md)                        */
 #define J94_DEFAULT_LIGHT_SAMPLES 4    /* --light-samples: stratified samples of each light
                                           at a surface (2 x 2)                           */
 #define J94_DEFAULT_CACHE_ACCURACY 0.15 /* --cache-accuracy: Ward's a                     */
@@ -65,8 +68,9 @@ struct jensen1994_settings {
     struct global_work *work; /* NULL: pass 1 and the cache's pre-pass run and are released
                                  here; else, empty, it receives their work (maps[0] the
                                  photon map, maps[1] the CP photons' tree, maps[2] the
-                                 glossy photons', the illumination maps, the cache's records), or, full, holds it to use
-                                 instead (photon/global_work.h)                          */
+                                 glossy photons', the illumination maps, the cache's
+                                 records), or, full, holds it to use instead
+                                 (photon/global_work.h)                                  */
 };
 
 /* What the render did, for --stats (the paper's Fig. 9 and more). */

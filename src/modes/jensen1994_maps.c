@@ -136,8 +136,8 @@ static unsigned char *receiving_primitives(const struct scene *scene)
 /* A kd-tree of copies of the CP photons among traced's (departs from Sec. 3.3, which
  * keeps one map and tells CP photons by their bit: searched for CP photons alone, that
  * map must visit every photon within the radius wherever caustics are sparse or absent,
- * which made the Cornell box's final pass grow with the photons, 85 s at 200,000 and
- * 190 s at 500,000. The copies cost 20 bytes per CP photon.) */
+ * so the Cornell box's final pass would grow with the photons: src/modes/measured.md.
+ * The copies cost 20 bytes per CP photon.) */
 static struct kdtree *caustic_photons_of(const struct photon_trace *traced)
 {
     struct photon *cp = xmalloc(traced->n_caustic > 0 ? traced->n_caustic : 1, sizeof *cp,

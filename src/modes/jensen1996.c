@@ -51,11 +51,12 @@
  * Departures (each with its figures in src/modes/README.md; --paper undoes them all):
  * approximate points on Lambertian surfaces, gather rays' ends among them, read irradiance
  * precomputed at every N-th global photon (Christensen 1999; --precomputed-irradiance 0:
- * the paper's estimate at each), pre-pass 56 -> 6 CPU s at the same error; every shadow
- * ray is cast, cheaper among 13 objects than a 16-photon search (--shadow-photons: Sec.
- * 4.1's); a record of precomputed irradiance divides its photons by the part of its disc
- * a surface covers (photon/disc_coverage.h), not Eq. 3's pi r^2 (--no-disc-coverage): a
- * disc past the floor's open front edge made the balls' fronts, which see it, 3-5% dark.
+ * the paper's estimate at each), which makes the pre-pass many times faster at the same
+ * error; every shadow ray is cast, cheaper among 13 objects than a 16-photon search
+ * (--shadow-photons: Sec. 4.1's); a record of precomputed irradiance divides its photons
+ * by the part of its disc a surface covers (photon/disc_coverage.h), not Eq. 3's pi r^2
+ * (--no-disc-coverage): a disc past the floor's open front edge darkens the balls'
+ * fronts, which see it.
  */
 #include "jensen1996.h"
 

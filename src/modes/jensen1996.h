@@ -12,40 +12,44 @@
 #include "../photon/global_work.h"
 #include "render.h"
 
-#define J96_DEFAULT_PHOTONS 1250000        /* --photons: with --disc-coverage and k = 40
-                                              both boxes' blocks are all within 2.6% at
-                                              1,250,000 (58 and 61 MB at the peak; at
-                                              1,000,000 the specular box's ceiling had
-                                              one at 3.2%); 4,000,000 took 141 MB for the
-                                              global map (README)                        */
+#define J96_DEFAULT_PHOTONS 1250000        /* --photons: enough, with --disc-coverage and
+                                              k = 40, for every block of both Cornell
+                                              boxes to be within 3%: fewer leave the
+                                              specular box's ceiling, which sees the
+                                              floor's caustics through the global map's
+                                              few caustic photons, past it, and more cost
+                                              memory (src/modes/measured.md)              */
 #define J96_DEFAULT_GATHER 40              /* --gather: k of the global map's estimates;
                                               a smaller disc blurs the crease under the
-                                              front ball less: block (160, 224) +3.5% at
-                                              100, +2.6% at 50 (1,000,000 photons)     */
+                                              front ball less (src/modes/measured.md)     */
 #define J96_DEFAULT_SPP 128                /* --spp: the final pass costs little beside
-                                              the maps and the cache all samples share;
-                                              Cornell box: relmse 0.000125 at 64, 0.000080
-                                              at 128, for 7 more CPU s of 37 (pt needs
-                                              133 and 248 s to get there)            */
-#define J96_DEFAULT_CAUSTIC_PHOTONS 1000000 /* --caustic-photons: at 100,000 the glass
-                                               ball's caustic spread 4% past its edges  */
+                                              the maps and the cache all samples share,
+                                              so 64 more samples than 64 cut the camera's
+                                              noise for a small part of the time
+                                              (src/modes/measured.md)                     */
+#define J96_DEFAULT_CAUSTIC_PHOTONS 1000000 /* --caustic-photons: enough that the glass
+                                               ball's caustic keeps its edges
+                                               (src/modes/measured.md)                    */
 #define J96_DEFAULT_CAUSTIC_GATHER 60      /* photons in a caustic estimate               */
-#define J96_DEFAULT_GATHER_RAYS 512        /* --gather-rays: final gather rays per record;
-                                              at 256 one record beside the glass ball
-                                              was 16% bright over an 8 x 8 patch      */
+#define J96_DEFAULT_GATHER_RAYS 512        /* --gather-rays: final gather rays per
+                                              record; with fewer, a record's own noise
+                                              shows as a bright patch beside the glass
+                                              ball (src/modes/measured.md)                */
 #define J96_DEFAULT_GLOSSY_RAYS 6          /* --glossy-rays: the paper's "maximum of 6"   */
 #define J96_DEFAULT_CACHE_ACCURACY 0.15    /* --cache-accuracy: Ward's a                  */
 #define J96_DEFAULT_ACCURATE_DISTANCE 3.0  /* --accurate-distance (see jensen1996.c): at
-                                              1 the crease under the Cornell box's front
-                                              ball was +3.0% (k = 50, 1,000,000 photons),
-                                              at 3 +2.6%, for the same CPU seconds       */
+                                              3 radii, more short gather rays into a
+                                              crease take the map's indirect photons
+                                              alone, which blurs the crease under the
+                                              Cornell box's front ball less than 1 does,
+                                              at no cost in time (src/modes/measured.md)  */
 #define J96_DEFAULT_ACCURATE_WEIGHT 0.1    /* --accurate-weight (see jensen1996.c)        */
 #define J96_DEFAULT_PRECOMPUTED 16         /* --precomputed-irradiance: records at every
                                               16th photon of the global map (Christensen
-                                              1999 took every 4th: the same blocks here,
-                                              4 times the precomputation; every 32nd
-                                              leaves 20 times the gather rays' ends
-                                              without a record near enough)          */
+                                              1999 took every 4th: the same blocks for
+                                              more precomputation; sparser records leave
+                                              many more gather rays' ends without one
+                                              near enough; src/modes/README.md)           */
 #define J96_MAX_PRECOMPUTED 1000000        /* documented limit on --precomputed-irradiance */
 #define J96_VISIBILITY_PHOTONS 16          /* photons that decide a light's visibility    */
 #define J96_MAX_GATHER_RAYS 65536          /* documented limit on --gather-rays           */

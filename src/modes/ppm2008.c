@@ -14,7 +14,7 @@
  *       plus the emission the eye paths saw directly.
  *
  * Each departure from the paper below has a switch; --paper turns them all off
- * (src/modes/README.md has what each measured).
+ * (src/modes/README.md has the figures of each).
  *
  * The direct light (--direct-photons is the paper's way). The paper estimates it from the
  * photons like all the rest; on a diffuse box it is most of the light, and so most of the
@@ -185,15 +185,14 @@ static int same_hit_point(const struct hit_point *hp, const struct surface *s)
            vec3_dot(hp->n, s->ng) >= PPM_MERGE_COS && vec3_dot(hp->wo, s->wo) >= PPM_MERGE_COS;
 }
 
-/* Merged hit points keep their members (--merge-hit-points with the caustic estimate,
- * in a scene with something specular to make caustics). The hit point stands for its
- * members' part of the surface at one point: right for the photons' smooth light after a
- * bounce, not for a caustic seen directly, whose sharp light a single point aliases (the
- * specular box's caustic, 64 x 64 pixels at 64 passes: relmse 0.0036 merged, 0.00051 a
- * hit point an eye ray). So the caustic estimate is the mean over the members' own discs,
- * sharing one radius: a caustic photon counts by the share of members whose disc holds
- * it (hit_point_add_photon()), and as the radius shrinks the estimate tends to the mean
- * of the members' points, as the paper's hit points do. */
+/* Merged hit points keep their members (--merge-hit-points with the caustic estimate, in a
+ * scene with something specular to make caustics). The hit point stands for its members'
+ * part of the surface at one point: right for the photons' smooth light after a bounce,
+ * not for a caustic seen directly, whose sharp light a single point aliases (the specular
+ * box's caustic under the glass ball: src/modes/README.md). So the caustic estimate is the
+ * mean over the members' own discs, sharing one radius: a caustic photon counts by the
+ * share of members whose disc holds it (hit_point_add_photon()), and as the radius shrinks
+ * the estimate tends to the mean of the members' points, as the paper's hit points do. */
 static void add_member(struct ppm *ppm, size_t point, struct vec3 x, struct vec3 weight)
 {
     if (ppm->n_pending == ppm->cap_pending) {
@@ -326,9 +325,10 @@ static int specular_lobes(const struct surface *s, const struct shading_frame *f
  * 0 when roulette ends it; else *ray is the ray leaving s along the lobe. Roulette waits
  * longer here than in a path tracer because a hit point is made once for the whole
  * render: its roulette decision is frozen into every pass, keeping a low-weight path at
- * weight 1/q or losing it for good, which no number of passes averages out (the glass
- * ball seen in the mirror ball was 3% dark on average over seeds with roulette from the
- * third bounce). Paths that long weigh next to nothing after mirrors and glass. */
+ * weight 1/q or losing it for good, which no number of passes averages out (with
+ * roulette from the third bounce the glass ball seen in the mirror ball is dark on
+ * average over seeds: src/modes/README.md). Paths that long weigh next to nothing after
+ * mirrors and glass. */
 static int take_lobe(const struct surface *s, const struct brdf_sample *lobe,
                      struct eye_path *path, struct rng *rng, struct ray *ray)
 {

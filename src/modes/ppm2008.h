@@ -13,7 +13,8 @@
 
 #define PPM_DEFAULT_PHOTONS_PER_PASS 100000 /* the paper's (Sec. 5)                      */
 #define PPM_DEFAULT_PASSES 144              /* the fewest (by 16) that keep every 16 x 16
-                                               block of both Cornell boxes within 3%     */
+                                               block of both Cornell boxes within 3%
+                                               (src/modes/measured.md)                   */
 #define PPM_DEFAULT_ALPHA 0.7               /* the paper's (Sec. 5)                      */
 #define PPM_DEFAULT_SPP 16                  /* eye rays per pixel that store hit points,
                                                fixed for the whole render (each pass adds

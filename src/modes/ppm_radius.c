@@ -15,7 +15,7 @@
  * wide (the light falls off towards an open edge over a disc's width).
  *
  * With --disc-coverage (--mode 2009) the estimate itself divides by the part of the disc
- * its surface covers, so corners and open edges no longer darken it, and a short radius
+ * its surface covers, so corners and open edges do not darken it, and a short radius
  * would only cost noise. A wall is then a fault only where the surface goes on past it
  * (the ceiling inside a lamp's shroud, the floor under a ball): there the disc would take
  * photons from the far side, which the coverage counts as its own. So R0 stops short of

@@ -33,8 +33,8 @@
  * takes specular_spp samples instead of spp. The light's image after ideal specular
  * bounces (in a glass ball seen in a mirror ball, say) can be a speck far smaller than a
  * pixel and far brighter than the rest of it, which only the pixel's camera points find:
- * its noise falls only with more of them (at 256 samples such a speck left a 16 x 16
- * block of the specular Cornell box 2-3% noisy). Whether the camera sees one is decided
+ * its noise falls only with more of them (src/modes/measured.md has the figures:
+ * SPECULAR_SPP_FACTOR). Whether the camera sees one is decided
  * by probe rays (render.c: a 16 x 16 grid through the pixel, followed through every lobe
  * of each mirror or glass surface they meet, where a ray through its centre or a corner
  * meets one), not by its samples, so the number of samples does not depend on what they
@@ -63,10 +63,10 @@
 #define ADAPTIVE_FLOOR 1e-3
 #define ADAPTIVE_MIN_SPP 4 /* the command line's min_spp: the paper's "average of 4 samples
                               pr. pixel" is where its adaptive sampling settled            */
-/* 1994's and 1996's --specular-spp is this many times --spp. The light's speck in the
- * glass ball seen in the mirror ball put its 16 x 16 block of the specular Cornell box
- * 3-4% off the path tracer's at 64 samples, and still 2-3% (one standard deviation, over
- * seeds) at 256; 4,096 take that to about 0.6% (README). */
+/* 1994's and 1996's --specular-spp is this many times --spp: the light's speck in the
+ * glass ball seen in the mirror ball keeps its 16 x 16 block of the specular Cornell box
+ * off the path tracer's at 64 samples and still at 256; 64 times as many bring it close
+ * (src/modes/measured.md). */
 #define SPECULAR_SPP_FACTOR 64
 
 struct render_settings {

@@ -24,10 +24,10 @@
  *       saw directly, averaged over the passes.
  *
  * The photon search finds the pass's hit points (at most one a pixel) in a hash grid
- * (photon/hit_point_grid.c), rebuilt each pass: built without sorting, it made the whole
- * render 7% faster than the kd-tree of photon/hit_points.c that 2008 keeps for its fixed
- * hit points (specular box, 24 passes, paired timings, CPU ratio 0.926), with the same
- * image to the bit. The memory is O(pixels) and does not grow with the passes.
+ * (photon/hit_point_grid.c), rebuilt each pass: built without sorting, it makes the whole
+ * render faster than the kd-tree of photon/hit_points.c that 2008 keeps for its fixed hit
+ * points, with the same image to the bit (src/modes/measured.md). The memory is
+ * O(pixels) and does not grow with the passes.
  *
  * The initial radius: R0 of a pixel is ppm_initial_radius() at the first hit point it
  * gets: --footprints widths of a pixel at that distance, fitted to the surface
@@ -38,8 +38,8 @@
  * disc lies off its surface, where no photon lands though pi R^2 counts it, and the pixel
  * is dark by that part. 2008 shortens each hit point's R0 until its disc lies on the
  * surface; here a pixel's radius is shared by hit points anywhere in its square, and one
- * short enough for all of them is noise for all of them (Cornell box, 256 passes: relmse
- * 3.8e-4 so, 1.0e-4 this way). Instead each pass probes one point of its hit point's
+ * short enough for all of them is noise for all of them (the figures:
+ * src/modes/README.md). Instead each pass probes one point of its hit point's
  * disc (disc_probe(); the pass-th point of the pixel's own shuffled (0,2)-sequence), and
  * the image divides the pixel's photon estimate by the share of its probes that found the
  * surface: tau / (pi R^2) is the sum over the passes of Phi_i / (pi R_i^2) (Eq. 12 keeps
@@ -231,7 +231,7 @@ static double hit_point_probability(const struct brdf_split *part,
  * weight divided by the probability of the choice, so each part counts once, unbiased.
  * A glossy lobe so followed samples the point lights through itself (with light-sampled
  * direct light): its sampled directions find every other light, never a point light's
- * highlight (the sphere flake's Phong spheres were 20-35% dark without). */
+ * highlight (without it the sphere flake's Phong spheres are dark: src/modes/README.md). */
 static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ray ray,
                            struct rng *rng)
 {

@@ -8,9 +8,8 @@
 #include "ppm2008.h"
 
 #define SPPM_DEFAULT_PASSES 256 /* one eye path a pixel each */
-/* The 2008 paper's photons a pass. On the Cornell box 128 passes of 100,000 reached relmse
- * 0.00061 in 27 CPU s, 256 of 50,000 0.00063 in 36 s: an eye pass costs about as much as
- * 50,000 photons, so fewer, fuller passes reach an error sooner. */
+/* The 2008 paper's photons a pass: an eye pass costs about as much as 50,000 photons, so
+ * fewer, fuller passes reach an error sooner (src/modes/measured.md). */
 #define SPPM_DEFAULT_PHOTONS_PER_PASS 100000
 
 /* 2009's settings: what both progressive modes read, and the switch of 2009's own

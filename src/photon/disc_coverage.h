@@ -32,13 +32,13 @@
 #define DISC_SAME_SURFACE_COS 0.5
 
 /* The share of the disc of radius r > 0 around x, in the plane with unit normal n, over
- * which a surface that holds photons (trace.h: a non-delta part that reflects) lies
- * within DISC_DEPTH r of the plane, in [DISC_COVERAGE_FLOOR, 1]. At each of the
- * DISC_RINGS x DISC_SPOKES points q of the disc (the centres of equal-area cells, in a
- * frame fixed by n) a ray from DISC_DEPTH r above q along -n looks for such a surface
- * down to as far below, passing through mirrors and glass; a surface turned less than 60 degrees from the plane, either
- * way, counts, so a gently curved one (a sphere seen from a disc smaller than itself)
- * is the same surface. Deterministic: no random numbers. */
+ * which a surface that holds photons (trace.h: a non-delta part that reflects) lies within
+ * DISC_DEPTH r of the plane, in [DISC_COVERAGE_FLOOR, 1]. At each of the DISC_RINGS x
+ * DISC_SPOKES points q of the disc (the centres of equal-area cells, in a frame fixed by
+ * n) a ray from DISC_DEPTH r above q along -n looks for such a surface down to as far
+ * below, passing through mirrors and glass; a surface turned less than 60 degrees from the
+ * plane, either way, counts, so a gently curved one (a sphere seen from a disc smaller
+ * than itself) is the same surface. Deterministic: no random numbers. */
 double disc_coverage(const struct scene *scene, struct vec3 x, struct vec3 n, double r);
 
 /* Whether a surface that holds photons lies under the point of the disc of radius r > 0

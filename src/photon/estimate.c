@@ -9,8 +9,8 @@
  * rim, has weight 0: the other k - 1 lie uniformly inside the disc, and for a Poisson
  * density lambda, E[(k - 1) / (pi r^2)] = lambda exactly, so the filtered estimate of a
  * uniform region has no bias. Eq. 3 as printed counts the rim photon too, and its mean
- * is lambda k / (k - 1): 1% too bright at k = 100, which showed as a ceiling lit only
- * indirectly coming out 1% above the path tracer's. So the plain estimate here leaves
+ * is lambda k / (k - 1): 1% too bright at k = 100, enough to show on a ceiling lit only
+ * indirectly (src/modes/README.md, Estimates). So the plain estimate here leaves
  * out the photon on the rim (the one at d_p = r), as the cone filter does, and so does
  * the 1994 irradiance estimate with each E_j. Where fewer than k photons lie within the
  * maximum radius, r is that radius, no photon marks it, and all of them count.

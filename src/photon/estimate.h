@@ -6,12 +6,13 @@
  * x that contains them; each one's flux is reflected towards wo through the BRDF with
  * the direction it arrived from:
  *   L(x, wo) ~ sum_p f_r(x, wo, wi_p) Delta Phi_p / (pi r^2).
- * The estimate assumes the photons lie on the surface through x (the disc of area
- * pi r^2); it is consistent (right as N and k grow with k / N -> 0) and biased for finite
- * k: blurred where light changes over r. With r the k-th photon's distance, Eq. 3 as
- * printed overestimates a uniform density by k / (k - 1); the photon on the rim is left
- * out here (count_rim keeps the paper's sum), which removes that bias, as the cone filter with constant 1 does by giving
- * it weight 0 (see estimate.c). The map must not hold shadow photons (trace.h).
+ * The estimate assumes the photons lie on the surface through x (the disc of area pi r^2);
+ * it is consistent (right as N and k grow with k / N -> 0) and biased for finite k:
+ * blurred where light changes over r. With r the k-th photon's distance, Eq. 3 as printed
+ * overestimates a uniform density by k / (k - 1); the photon on the rim is left out here
+ * (count_rim keeps the paper's sum), which removes that bias, as the cone filter with
+ * constant 1 does by giving it weight 0 (see estimate.c). The map must not hold shadow
+ * photons (trace.h).
  */
 #ifndef PHOTON_ESTIMATE_H
 #define PHOTON_ESTIMATE_H
@@ -78,9 +79,10 @@ struct irradiance_settings {
  * direction bytes (the 1994 record: position, normal, energy, caustic bit):
  *   E_x = sum_{i=1..n-1} e_i / (pi r^2),
  * r the distance of the n-th nearest photon, and only photons whose normal faces n
- * (positive dot product) adding their energy e_i. The paper sums to n; the n-th photon,
- * on the rim, only marks r here, which takes away the sum's bias of n / (n - 1) (see
- * estimate.c), unless count_rim asks for the paper's sum. With fewer than n photons within max_r2, all count over that disc.
+ * (positive dot product) adding their energy e_i. The paper sums to n; the n-th photon, on
+ * the rim, only marks r here, which takes away the sum's bias of n / (n - 1) (see
+ * estimate.c), unless count_rim asks for the paper's sum. With fewer than n photons within
+ * max_r2, all count over that disc.
  * Differential checking (run R > 0): the photons are added nearest first; E_j is the
  * estimate from the j - 1 nearest over r = the j-th distance. From the 2R-th photon on, the
  * estimate stops at the first j where each of the last R additions raised it

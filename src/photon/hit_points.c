@@ -18,8 +18,8 @@
 #include "../base/alloc.h"
 #include "trace.h"
 
-#define HIT_POINT_LEAF 8 /* points in a leaf; measured on the Cornell box: 4, 8 and 16 are
-                            within 5% of each other, 1 (no leaves) is 1.5x slower */
+#define HIT_POINT_LEAF 8 /* points in a leaf: leaves of 4, 8 or 16 search about as fast,
+                            none at all much slower (src/modes/measured.md) */
 
 /* The box of the sphere of the hit point's reach around it: its discs and then some. */
 static struct aabb disc_box(const struct hit_point *hp)

@@ -129,8 +129,8 @@ static void gradient_to_world(struct vec3 gx, struct vec3 gy, struct vec3 t, str
  * v_k = v at the middle of sector k. Departs from Ward and Heckbert (and Radiance's
  * dirgradient()), who take pi / (m n) tan theta at each ring's middle: the last ring's
  * tan theta runs to infinity and its middle value falls short of its mean, so theirs is
- * about 0.44 / sqrt(m) short (19% with the 6 rings of a 256-ray gather), which showed as
- * a darkened underside of the Cornell box's balls; the exact integral of each stratum
+ * about 0.44 / sqrt(m) short (19% with the 6 rings of a 256-ray gather), which darkens
+ * the underside of the Cornell box's balls; the exact integral of each stratum
  * costs nothing more (test_cache.c measures both). The sign is the one our convention
  * dE = (n_i x n) . grad_r asks for. */
 static void rotational_gradient(int m, int n_phi, const struct stratum_sample *samples,
@@ -213,7 +213,7 @@ static void translational_gradient(int m, int n_phi, const struct stratum_sample
 /* R_i no larger than E_i / |grad_t E_i| (luminance), and no smaller than r_min. Departs
  * from Ward and Heckbert (switchable: struct record_reach; --no-gradient-limit), whose
  * R_i is the harmonic mean distance alone: where the
- * irradiance changes fast, a record now reaches only as far as its gradient stays a small
+ * irradiance changes fast, a record here reaches only as far as its gradient stays a small
  * correction (at a R_i it moves E_i by at most a E_i), so a lookup does not extend a
  * straight line across a shadow's edge. */
 static double gradient_limited_radius(double r, struct vec3 e, const struct vec3 grad_t[3],

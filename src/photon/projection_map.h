@@ -99,8 +99,8 @@ struct projection_maps;
  * the caller against the limits above: absurd values are refused where options are read).
  * Lights of zero power get no maps. Never fails (out of memory is fatal()); a scene with
  * nothing a light can reach gets maps with no marked cell, and projection_emit() then emits
- * nothing. Time: maps x primitives x the cells each primitive's cone covers (0.5 s for
- * 11000 triangles seen from a sphere light's 32 maps). An area light's own primitive is
+ * nothing. Time: maps x primitives x the cells each primitive's cone covers
+ * (src/modes/measured.md has a figure). An area light's own primitive is
  * left out of its maps (light leaves it and never comes back to it: it is flat or
  * convex). */
 struct projection_maps *projection_maps_build(const struct scene *scene,

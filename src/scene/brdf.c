@@ -8,8 +8,9 @@
  * model's own eval and pdf, so the three always agree.
  *
  * Glass: eta = n_t / n_i with the outside at index 1; the reflected or refracted lobe is
- * chosen with the exact Fresnel probability F (optics.h), so its weight is the lobe's reflectance over its probability: 1 for
- * reflection, (1 - F) / (1 - F) / eta^2 for radiance refracted (Veach 1997, Sec. 5.2).
+ * chosen with the exact Fresnel probability F (optics.h), so its weight is the lobe's
+ * reflectance over its probability: 1 for reflection, (1 - F) / (1 - F) / eta^2 for
+ * radiance refracted (Veach 1997, Sec. 5.2).
  */
 #include "brdf.h"
 

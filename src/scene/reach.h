@@ -2,16 +2,15 @@
  * scene/reach.h -- how far a scene reaches from the origin, against the range that double
  * precision and the tracer resolve; scenes outside it are refused where they are read.
  *
- * What was measured (a 1 W point light over a white floor, a blocker between them; README:
- * Scene files): a hit point is resolved to about 2^-52 of its distance from the origin (a
- * sphere's to 2^-52 of its radius), and a spawned ray starts RAY_OFFSET_REL x max(1, |p|)
- * = 1e-9 x max(1, |p|) off its surface. So:
+ * Why these limits (README: Scene files; the renders that test them, a 1 W point light over
+ * a white floor with a blocker between them: src/modes/measured.md): a hit point is resolved
+ * to about 2^-52 of its distance from the origin (a sphere's to 2^-52 of its radius), and a
+ * spawned ray starts RAY_OFFSET_REL x max(1, |p|) = 1e-9 x max(1, |p|) off its surface. So:
  *   - a scene may reach at most REACH_MAX_RATIO = 2^40 (1.1e12) times the camera's distance
  *     to its look-at point from the origin: there a point is resolved to 2^-12 of that
- *     distance. A floor of +-1e13 at a camera distance of 2 moved the picture by 1e-4,
- *     +-1e15 snapped every hit point to one, a sphere of radius 1e18 rendered black;
- *   - the camera's distance to its look-at point must be at least REACH_MIN_CAMERA = 1e-6:
- *     a blocker 0.5e-8 above a floor (camera distance 2e-8) cast no shadow, at 2e-7 it did.
+ *     distance, and further out the picture moves, then hit points snap together;
+ *   - the camera's distance to its look-at point must be at least REACH_MIN_CAMERA = 1e-6,
+ *     above which a blocker just over a floor still casts its shadow.
  * The reach counts every primitive's box, every point light and the camera.
  */
 #ifndef PHOTON_REACH_H
@@ -21,7 +20,7 @@
 
 #include "../base/error.h"
 
-#define REACH_MAX_RATIO 1099511627776.0 /* 2^40: measured above */
+#define REACH_MAX_RATIO 1099511627776.0 /* 2^40: see above */
 #define REACH_MIN_CAMERA 1e-6           /* 1000 x the smallest ray offset, 1e-9       */
 
 /* What the readers have seen of the scene's reach so far. */
