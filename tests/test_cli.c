@@ -8,6 +8,7 @@
 
 #include "../src/image/image.h"
 #include "files.h"
+#include "option_words.h"
 #include "tests.h"
 #include "truths.h"
 
@@ -83,6 +84,74 @@ static void test_options(struct check *t)
              log_contains("not with 2009: camera samples per pixel"));
     CHECK(t, photon("") == 2 && log_contains("no scene"));
     CHECK(t, photon("a.scene b.scene") == 2 && log_contains("more than one"));
+}
+
+/* truth: an option given that does nothing with the others exits 2 with a message naming
+ *   it and the setting that leaves it idle, and writes nothing (app/option_checks.c says
+ *   why each is idle); each half alone is taken, and so is the idle option when the
+ *   setting comes from --paper and the option is left to it.
+ * catches: such a pair taken in silence, a refusal that also fires on one half, on a
+ *   preset's or --paper's words, or on a value that still acts (caustic K > 0 with
+ *   --radius, --adaptive above 4 samples, a checkpoint before the last pass). */
+static void test_idle_options_refused(struct check *t)
+{
+    static const char *const idle[][2] = {
+        {"--mode 1996 --disc-coverage --precomputed-irradiance 0",
+         "--disc-coverage: does nothing with --precomputed-irradiance 0, which makes no "
+         "records"},
+        {"--mode 1996 --paper --disc-coverage",
+         "--disc-coverage: does nothing with --precomputed-irradiance 0 (from --paper)"},
+        {"--mode 2008 --radius 2 --footprints 3",
+         "--footprints: does nothing with --radius, which sets R0 in scene units"},
+        {"--mode 2009 --fit-radius --radius 2", "--fit-radius: does nothing with --radius"},
+        {"--mode 2008 --radius 2 --no-fit-radius --footprints 3", "--no-fit-radius: does"},
+        {"--mode 1996 --cache-accuracy 0 --no-bounded-reach",
+         "--no-bounded-reach: does nothing with --cache-accuracy 0, which keeps no"},
+        {"--mode 1996 --gradient-limit --cache-accuracy 0",
+         "--gradient-limit: does nothing with --cache-accuracy 0"},
+        {"--mode 1996 --caustic-photons 0 --cone 2",
+         "--cone: does nothing with --caustic-photons 0, which makes no caustic map"},
+        {"--mode 1996 --caustic-photons 0 --caustic-gather 5",
+         "--caustic-gather: does nothing with --caustic-photons 0"},
+        {"--mode 1996 --caustic-radius-fraction 1 --caustic-photons 0",
+         "--caustic-radius-fraction: does nothing with --caustic-photons 0"},
+        {"--mode pt --spp 4 --adaptive 0.1", "--adaptive: does nothing with --spp 4, as no"},
+        {"--mode direct --quality preview --adaptive 0.1",
+         "--adaptive: does nothing with --spp 4 (from --quality preview)"},
+        {"--mode 1996 --paper --spp 2 --specular-spp 4 --adaptive 0.1",
+         "--adaptive: does nothing with --specular-spp 4"},
+        {"--mode 2008 --passes 8 --checkpoint 8", "--checkpoint: does nothing with --passes 8,"},
+        {"--mode 2009 --checkpoint 100000", "--checkpoint: does nothing with --passes "},
+    };
+    remove(OUT "_idle.pfm"); /* a run stopped before its end may have left them */
+    remove(OUT "_idle.png");
+    for (size_t i = 0; i < sizeof idle / sizeof idle[0]; i++) {
+        char args[COMMAND_MAX];
+        snprintf(args, sizeof args, "-o " OUT "_idle.pfm %s scenes/cornell.scene", idle[i][0]);
+        int refused = photon(args) == 2 && log_contains(idle[i][1]);
+        CHECK(t, refused && !file_exists(OUT "_idle.pfm") && !file_exists(OUT "_idle.png"));
+        if (!refused)
+            fprintf(stderr, "test_cli: not refused as expected: %s\n", idle[i][0]);
+    }
+    static const char *const taken[] = {
+        "--mode 1996 --disc-coverage", "--mode 1996 --precomputed-irradiance 0",
+        "--mode 1996 --precomputed-irradiance 0 --no-disc-coverage", "--mode 1996 --paper",
+        "--mode 2008 --footprints 3 --no-fit-radius", "--mode 2008 --paper --radius 2",
+        "--mode 2009 --paper --radius 2 --disc-coverage",
+        "--mode 2008 --radius 2 --caustic-footprints 3", "--mode 1996 --cache-accuracy 0",
+        "--mode 1996 --paper --cache-accuracy 0", "--mode 1996 --caustic-photons 0",
+        "--mode 1996 --caustic-photons 0 --one-map --cone 2 --caustic-gather 5",
+        "--mode pt --spp 8 --adaptive 0.1", "--mode pt --spp 2 --specular-spp 8 --adaptive 0.1",
+        "--mode 1996 --spp 1 --adaptive 0.1", "--mode 2008 --passes 8 --checkpoint 7",
+    };
+    struct options o;
+    for (size_t i = 0; i < sizeof taken / sizeof taken[0]; i++)
+        CHECK(t, options_of(taken[i], &o) == 0);
+    CHECK(t, photon("-o " OUT "_idle.pfm --mode 2008 --no-progress --width 4 --height 4 --spp 1 "
+                    "--passes 2 --photons-per-pass 500 --radius 2 scenes/cornell.scene") == 0 &&
+             file_exists(OUT "_idle.pfm"));
+    remove(OUT "_idle.pfm");
+    remove(OUT "_idle.png");
 }
 
 /* truth: bad input gets "file:line: message", exit status 2, and no output file: not
@@ -603,6 +672,7 @@ static void test_failed_png_leaves_nothing(struct check *t)
 void test_cli(struct check *t)
 {
     RUN_TEST(t, test_options);
+    RUN_TEST(t, test_idle_options_refused);
     RUN_TEST(t, test_bad_scene_leaves_no_output);
     RUN_TEST(t, test_no_assertion_reachable_from_scenes);
     RUN_TEST(t, test_unwritable_output_refused_at_once);

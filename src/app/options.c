@@ -1,5 +1,6 @@
 /*
- * app/options.c -- parsing the render command's options (options.h).
+ * app/options.c -- parsing the render command's options (options.h); option_checks.c
+ * refuses those that do not go together.
  */
 #include "options.h"
 
@@ -15,6 +16,7 @@
 #include "../modes/ppm2008.h"
 #include "../photon/trace.h"
 #include "help.h"
+#include "option_checks.h"
 #include "option_values.h"
 #include "presets.h"
 
@@ -80,8 +82,8 @@ static const struct option_spec specs[] = {
      "also writes FILE.pfm.window for photon merge", FOR_ALL},
     {"--adaptive", OPT_REAL, FIELD(adaptive), 0, 1e6, "E",
      "stop sampling a pixel (after 4 samples, at powers of two) once its mean's standard "
-     "error is at most E times the mean (Jensen & Christensen 1994); 0 = off (default 0)",
-     FOR_SAMPLES},
+     "error is at most E times the mean (Jensen & Christensen 1994); 0 = off (default 0); "
+     "refused where no pixel takes more than 4 samples", FOR_SAMPLES},
     {"--max-depth", OPT_INT, FIELD(max_depth), 0, MAX_DEPTH_LIMIT, "N",
      "longest chain of bounces followed (default: direct 16, others 1000)", FOR_ALL},
     {"--time-limit", OPT_REAL_ABOVE, FIELD(time_limit), 0, 1e9, "SECONDS",
@@ -120,8 +122,9 @@ static const struct option_spec specs[] = {
      "caustic estimates reach F times --max-radius (default 0.25: a wide disc hangs over a "
      "surface's edges where caustic photons are sparse; the paper's 1)", FOR_1994 | FOR_1996},
     {"--caustic-photons", OPT_INT, FIELD(caustic_photons), 0, MAX_PHOTONS, "N",
-     "photons emitted towards specular objects for the caustic map (default 1000000)",
-     FOR_1996},
+     "photons emitted towards specular objects for the caustic map (default 1000000); with "
+     "0 and no --one-map, --caustic-gather, --caustic-radius-fraction and --cone are "
+     "refused", FOR_1996},
     {"--caustic-gather", OPT_INT, FIELD(caustic_gather), 1, MAX_GATHER, "K",
      "photons in each caustic estimate (default 60)", FOR_1996},
     {"--gather-rays", OPT_INT, FIELD(gather_rays), 2, J96_MAX_GATHER_RAYS, "N",
@@ -131,7 +134,8 @@ static const struct option_spec specs[] = {
      "rays sampling a glossy surface seen accurately (default 6, the paper's)", FOR_1996},
     {"--cache-accuracy", OPT_REAL, FIELD(cache_accuracy), 0, 10, "A",
      "irradiance cache accuracy a (Ward 1988); 1996 only: 0 = gather at every "
-     "point (default 0.15)", FOR_1994 | FOR_1996},
+     "point, and the switches of a record's R (--bounded-reach, --gradient-limit) are "
+     "refused (default 0.15)", FOR_1994 | FOR_1996},
     {"--accurate-distance", OPT_REAL, FIELD(accurate_distance), 0, 1e6, "F",
      "gather rays shorter than F radii of the estimate they reach are evaluated "
      "accurately (default 3)", FOR_1996},
@@ -151,7 +155,8 @@ static const struct option_spec specs[] = {
     {"--disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
      "records of precomputed irradiance (2009: a pixel's estimate) count the photons of "
      "their disc's plane over the part of the disc a surface covers, found by probe rays "
-     "(2009: one a pass), in place of pi r^2 (the default)", FOR_1996 | FOR_2009},
+     "(2009: one a pass), in place of pi r^2 (the default); 1996: refused with "
+     "--precomputed-irradiance 0, which makes no records", FOR_1996 | FOR_2009},
     {"--no-disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
      "over the whole disc, pi r^2, as Eq. 3 (the paper's)", FOR_1996 | FOR_2009},
     {"--both-lobes", OPT_FLAG, FIELD(both_lobes), 0, 0, "",
@@ -207,17 +212,19 @@ static const struct option_spec specs[] = {
      "fraction of new photons kept (Eq. 7; default 0.7)", FOR_PROGRESSIVE},
     {"--radius", OPT_REAL_ABOVE, FIELD(radius), 0, 1e30, "R",
      "initial radius in scene units (default: --footprints pixel footprints at each hit "
-     "point)", FOR_PROGRESSIVE},
-    {"--footprints", OPT_REAL_ABOVE, FIELD(footprints), 0, 1e6, "K",
-     "initial radius in pixel footprints at each hit point (default 4; the paper's: 1)",
+     "point); --footprints and --fit-radius, which it leaves unused, are refused with it",
      FOR_PROGRESSIVE},
+    {"--footprints", OPT_REAL_ABOVE, FIELD(footprints), 0, 1e6, "K",
+     "initial radius in pixel footprints at each hit point (default 4; the paper's: 1); "
+     "refused with --radius", FOR_PROGRESSIVE},
     {"--caustic-footprints", OPT_REAL, FIELD(caustic_footprints), 0, 1e6, "K",
-     "caustic photons gather in an estimate of their own, R0 of K footprints; 0 = in the "
-     "one estimate, the paper's (default 1)", FOR_2008},
+     "caustic photons gather in an estimate of their own, R0 of K footprints (with "
+     "--radius: R0 = --radius, whatever K > 0); 0 = in the one estimate, the paper's "
+     "(default 1)", FOR_2008},
     {"--fit-radius", OPT_FLAG, FIELD(fit_radius), 0, 0, "",
      "shorten each initial radius until its disc lies on its surface, clear of walls and "
      "open edges (2009 with --disc-coverage: clear of walls the surface goes on past) "
-     "(the default)", FOR_PROGRESSIVE},
+     "(the default); refused with --radius, as is --no-fit-radius", FOR_PROGRESSIVE},
     {"--no-fit-radius", OPT_FLAG, FIELD(fit_radius), 0, 0, "",
      "keep the initial radius whole, the paper's", FOR_PROGRESSIVE},
     {"--merge-hit-points", OPT_FLAG, FIELD(merge_hit_points), 0, 0, "",
@@ -238,8 +245,8 @@ static const struct option_spec specs[] = {
      "direct light from photons too, the paper's way (default: a light sample at each "
      "hit point each pass, photons only after their first bounce)", FOR_PROGRESSIVE},
     {"--checkpoint", OPT_INT, FIELD(checkpoint), 1, MAX_PASSES, "K",
-     "write the image (-o) every K passes, each write complete (default: at the end)",
-     FOR_PROGRESSIVE},
+     "write the image (-o) every K passes, each write complete (default: at the end); "
+     "refused for K >= --passes", FOR_PROGRESSIVE},
     {"--exposure", OPT_REAL, FIELD(exposure), 0, 1e30, "E",
      "PNG or PPM only (not the PFM): multiply radiance by E before sRGB encoding "
      "(default 1)", FOR_ALL},
@@ -445,26 +452,6 @@ static const struct option_spec *find_spec(const char *name)
     return NULL;
 }
 
-/* --save-photons and --load-photons: one of them, in a mode that has global work to
- * save. */
-static int check_global_work_options(const struct options *o, struct error *err)
-{
-    const char *name = o->save_photons != NULL ? "--save-photons" : "--load-photons";
-    if (o->save_photons == NULL && o->load_photons == NULL)
-        return 0;
-    if (o->save_photons != NULL && o->load_photons != NULL)
-        return error_set(err, "", 0, "--save-photons and --load-photons: give one or the "
-                                     "other");
-    if (o->mode == MODE_DIRECT || o->mode == MODE_PT)
-        return error_set(err, "", 0, "%s: mode %s has no global work to save (every sample "
-                         "belongs to its pixel)", name, mode_name(o->mode));
-    if (o->mode == MODE_PPM2008 || o->mode == MODE_SPPM2009)
-        return error_set(err, "", 0, "%s: mode %s traces new photons in every pass; they "
-                         "are not saved (their tracing is the smaller part of a tile's "
-                         "work: scripts/README.md)", name, mode_name(o->mode));
-    return 0;
-}
-
 /* The option given first on the command line (given[k]: the argv index of specs[k], 0
  * when absent) that means nothing for o->mode (option_spec.modes): -1 with *err naming
  * the modes it is for. */
@@ -568,21 +555,13 @@ static int apply_preset_and_words(int argc, char **argv, struct options *o,
     return status;
 }
 
-/* Where o->spp came from when the command line did not give it, for a message: ", from
- * --quality NAME" when the preset has --spp, else ", the mode's default". */
-static const char *spp_origin(const struct options *o, const int given[N_SPECS])
+/* command_words.given (option_checks.h) over given[]: where the command line gave the
+ * option called name, 0 when it did not. */
+static int given_word(const void *given, const char *name)
 {
-    static char origin[64];
-    if (given[find_spec("--spp") - specs] > 0)
-        return "";
-    struct preset_words preset;
-    preset_words(o->mode, o->quality, &preset);
-    for (int i = 0; i < preset.n_words; i++)
-        if (strcmp(preset.word[i], "--spp") == 0) {
-            snprintf(origin, sizeof origin, ", from --quality %s", quality_name(o->quality));
-            return origin;
-        }
-    return ", the mode's default";
+    const struct option_spec *spec = find_spec(name);
+    assert(spec != NULL);
+    return ((const int *)given)[spec - specs];
 }
 
 int parse_options(int argc, char **argv, struct options *o, struct error *err)
@@ -600,31 +579,14 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
     mode_defaults(o);
     if (o->cone > 0 && o->cone < 1)
         return error_set(err, "", 0, "--cone: k must be 0 (no filter) or at least 1");
-    int progressive = o->mode == MODE_PPM2008 || o->mode == MODE_SPPM2009;
-    if (progressive && o->adaptive > 0)
-        return error_set(err, "", 0, "--adaptive: not available with --mode %s, whose "
-                                     "pixels are not means of independent samples",
-                         mode_name(o->mode));
-    if (o->mode == MODE_JENSEN1994 && o->cache_accuracy == 0)
-        return error_set(err, "", 0, "--cache-accuracy: mode 1994 needs its irradiance "
-                                     "cache, a > 0");
-    if (progressive && o->specular_spp > 0)
-        return error_set(err, "", 0, "--specular-spp: not available with --mode %s, whose "
-                                     "pixels all take the same eye rays", mode_name(o->mode));
     if (o->specular_spp == 0) /* spp <= MAX_SPP, so the product cannot overflow */
         o->specular_spp = (o->mode == MODE_JENSEN1996 || o->mode == MODE_JENSEN1994) &&
                                   !o->paper
                               ? (int)fmin(SPECULAR_SPP_FACTOR * o->spp, MAX_SPP)
                               : o->spp;
-    if (o->specular_spp < o->spp)
-        return error_set(err, "", 0, "--specular-spp %d: expected at least --spp (%d%s)",
-                         o->specular_spp, o->spp, spp_origin(o, given));
-    if (check_global_work_options(o, err) < 0)
+    struct command_words words = {given_word, given};
+    if (check_combinations(o, &words, err) < 0)
         return -1;
-    if (progressive && o->variance != NULL)
-        return error_set(err, "", 0, "--variance: not available with --mode %s, whose "
-                                     "pixels are not means of independent samples",
-                         mode_name(o->mode));
     return check_modes(o, given, err); /* after the checks above, whose messages say why */
 }
 

@@ -103,7 +103,9 @@ struct options {
  * --mode's mode (app/presets.h), then argv's words, so an option given in argv wins
  * wherever it stands. Returns 0 to render, 1 when --help or --version was printed
  * (exit 0), -1 with *err filled for bad options (exit 2), among them an option that
- * means nothing for the mode ("--passes: only for --mode 2008 ..."). */
+ * means nothing for the mode ("--passes: only for --mode 2008 ...") and one given that
+ * does nothing with the others ("--footprints: does nothing with --radius, ...":
+ * app/option_checks.h). */
 int parse_options(int argc, char **argv, struct options *o, struct error *err);
 
 const char *mode_name(enum mode mode);
