@@ -11,25 +11,36 @@ void test_image(struct check *t);  /* test_image.c: PFM/PPM, compare metrics    
 void test_png(struct check *t);    /* test_png.c: PNG files, outside readers      */
 void test_compare(struct check *t); /* test_compare.c: per-pixel statistical test */
 void test_plot(struct check *t);   /* test_plot.c: CSV reading, SVG plots         */
-void test_geom(struct check *t);   /* test_geom.c: primitives, BVH, robustness    */
+void test_geom(struct check *t);   /* test_geom.c: the BVH against brute force    */
+void test_geom_primitives(struct check *t); /* test_geom_primitives.c: spheres, triangles, quads */
 void test_bvh(struct check *t);    /* test_bvh.c: the float box test, wide nodes, mesh */
 void test_scene(struct check *t);  /* test_scene.c: parser, camera, lights        */
-void test_brdf(struct check *t);   /* test_brdf.c: the material models            */
-void test_shapes(struct check *t); /* test_shapes.c: sphere flake, heightfield    */
-void test_import(struct check *t); /* test_import.c: cone, ear clipping, NFF, OBJ */
+void test_brdf(struct check *t);   /* test_brdf.c: the models' samplers, energy   */
+void test_brdf_glass(struct check *t); /* test_brdf_glass.c: glass's optics, delta lobes */
+void test_brdf_conventions(struct check *t); /* test_brdf_conventions.c: every model's edges */
+void test_shapes(struct check *t); /* test_shapes.c: the sphere flake             */
+void test_shapes_heightfield(struct check *t); /* test_shapes_heightfield.c: noise, heightfield */
+void test_import(struct check *t); /* test_import.c: NFF, OBJ, scene keywords     */
+void test_import_geom(struct check *t); /* test_import_geom.c: the cone, ear clipping */
 void test_photon(struct check *t); /* test_photon.c: photon record, kd-tree       */
 void test_hit_points(struct check *t); /* test_hit_points.c: 2008's hit-point tree  */
-void test_trace(struct check *t);  /* test_trace.c: emission, tracing, estimates  */
+void test_trace_emission(struct check *t); /* test_trace_emission.c: photon emission */
+void test_trace(struct check *t);  /* test_trace.c: photon tracing, path classes  */
+void test_trace_estimates(struct check *t); /* test_trace_estimates.c: estimates, maps */
+void test_trace_photons_mode(struct check *t); /* test_trace_photons_mode.c: --mode photons */
 void test_precomputed(struct check *t); /* test_precomputed.c: irradiance at photons */
 void test_projection(struct check *t); /* test_projection.c: projection maps (1994) */
+void test_projection_cells(struct check *t); /* test_projection_cells.c: the maps' cells */
 void test_ppm(struct check *t);    /* test_ppm.c: progressive photon mapping      */
-void test_cache(struct check *t);  /* test_cache.c: irradiance cache, gradients   */
+void test_cache(struct check *t);  /* test_cache.c: irradiance cache records      */
+void test_cache_lookup(struct check *t); /* test_cache_lookup.c: the cache's lookups */
 void test_render(struct check *t); /* test_render.c: direct mode, crops, scaling, adaptive */
 void test_pt(struct check *t);     /* test_pt.c: the path tracer, closed forms    */
 void test_jensen1994(struct check *t); /* test_jensen1994.c: --mode 1994             */
 void test_jensen1996(struct check *t); /* test_jensen1996.c: --mode 1996, photon maps */
 void test_report(struct check *t); /* test_report.c: --report, --time-limit, ...  */
 void test_merge(struct check *t);  /* test_merge.c: tile records, photon merge      */
+void test_merge_work_file(struct check *t); /* test_merge_work_file.c: the work file's bytes */
 void test_cli(struct check *t);    /* test_cli.c: the command line, exit statuses */
 void test_docs(struct check *t);   /* test_docs.c: the documentation against the product */
 void test_spd(struct check *t);    /* test_spd.c: all 22 SPD files (PHOTON_SPD), by name only */
