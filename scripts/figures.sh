@@ -1,6 +1,6 @@
 #!/bin/sh
 # scripts/figures.sh [presets] [bench] [rays] -- re-measures the figures README.md (and, for
-# rays, tests/bench/README.md) states and writes them in, between the lines
+# bench's phases and rays, tests/bench/README.md) states and writes them in, between the lines
 # <!-- figures:NAME --> and <!-- /figures:NAME -->. Run by `make figures` (ONLY=presets,
 # bench or rays for one part) from the top of the repository, after ./photon and build/bench
 # are built.
@@ -8,9 +8,10 @@
 #   presets  scripts/presets.sh: every mode's presets on both Cornell boxes against the
 #            references (about 15 minutes of CPU; two renders run at once)
 #   bench    `make bench ONLY=tte`, time to error: one row a photon mode and scene, its CPU
-#            seconds, its relmse, pt's CPU seconds to that relmse and their ratio (about half
-#            an hour of CPU; PHOTON_TTE_TRIAL=1 tries the pipeline in a minute, on figures
-#            that mean nothing, and says so in the table)
+#            seconds, its relmse, pt's CPU seconds to that relmse and their ratio; and, into
+#            tests/bench/README.md, where each mode's seconds went (about half an hour of
+#            CPU; PHOTON_TTE_TRIAL=1 tries the pipeline in a minute, on figures that mean
+#            nothing, and says so in the table)
 #   rays     `make bench-embree`, photon's ray casting beside Embree 3's on the rays
 #            workload, into tests/bench/README.md (needs Embree and SPD=DIR, the folder of
 #            the SPD files; a few minutes; not part of the default parts)
@@ -123,13 +124,13 @@ for part in $parts; do
     bench)
         make --no-print-directory bench ONLY=tte > build/figures-bench.txt
         tte_table build/figures-bench.txt > build/figures-bench.md
-        echo >> build/figures-bench.md
-        phase_table build/figures-bench.txt >> build/figures-bench.md
+        phase_table build/figures-bench.txt > build/figures-phases.md
         if [ -n "${PHOTON_TTE_TRIAL:-}" ]; then
             printf '\nA trial run (PHOTON_TTE_TRIAL): these figures mean nothing.\n' \
                 >> build/figures-bench.md
         fi
         splice bench build/figures-bench.md
+        splice phases build/figures-phases.md tests/bench/README.md
         ;;
     rays)
         make --no-print-directory bench-embree SPD="${SPD:-}" > build/figures-rays.txt
