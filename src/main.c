@@ -393,6 +393,12 @@ static struct render_result render_mode(struct run *run, struct error *err)
         return render_jensen1996(run->scene, &run->rs, &js, want_variance, &run->counters,
                                  &run->j96_stats, err);
     case MODE_PPM2008:
+        if (ppm_glossy_material(run->scene) >= 0)
+            fprintf(stderr, "photon: warning: 2008's hit points estimate glossy lobes (the "
+                    "first in material '%s') from photons, whose few hits near a narrow "
+                    "lobe's peak speckle the image and fade slowly with the passes; 2009 "
+                    "follows those lobes from the eye\n",
+                    run->scene->materials[ppm_glossy_material(run->scene)].name);
         pp.progressive = progressive_settings(&run->o, checkpoint, &snapshot);
         pp.caustic_footprints = run->o.caustic_footprints;
         pp.merge_hit_points = run->o.merge_hit_points;

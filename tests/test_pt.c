@@ -204,10 +204,14 @@ static int warns(const char *mode, const char *scene, const char *text)
  *   has probability zero in pt; the specular box's light is an area light, whose caustics
  *   pt finds (slowly), and the Cornell box has nothing specular.
  *   --mode photons, the photon map seen directly, is never a converged image.
+ *   2008's fixed hit points on a glossy lobe (the glossy box's Ward floor) speckle, which 2009
+ *   avoids; Lambertian walls, mirrors, glass and Schlick's broad r >= 1/2 (glossy-floor,
+ *   where 2008 converges: reference/suite.md) have no such lobe.
  * tolerance: none: the warning is there or not.
  * catches: an image silently missing its caustics, a warning for area lights' caustics, or
  *   for point lights in a scene with nothing specular; a photon map shown as if it were a
- *   converged image. */
+ *   converged image; 2008 silently speckled by glossy lobes, or warning of mirrors, glass
+ *   and Lambertian surfaces. */
 static void test_warns_of_what_it_cannot_find(struct check *t)
 {
     static const char *caustics = "warning: pt cannot find the caustics of point lights";
@@ -216,6 +220,13 @@ static void test_warns_of_what_it_cannot_find(struct check *t)
     CHECK(t, !warns("pt", "scenes/analytic/point-over-plane.scene", caustics));
     CHECK(t, warns("photons", "scenes/cornell.scene", "warning: --mode photons shows"));
     CHECK(t, !warns("1996", "scenes/cornell.scene", "warning:"));
+    static const char *glossy = "warning: 2008's hit points estimate glossy lobes (the first "
+                                "in material 'floor')";
+    CHECK(t, warns("2008", "scenes/cornell-glossy.scene", glossy));
+    CHECK(t, !warns("2009", "scenes/cornell-glossy.scene", "warning:"));
+    CHECK(t, !warns("2008", "scenes/cornell.scene", "warning:"));
+    CHECK(t, !warns("2008", "scenes/glossy-floor.scene", "warning:"));
+    CHECK(t, !warns("2008", "scenes/cornell-specular.scene", "warning:"));
 }
 
 void test_pt(struct check *t)

@@ -608,3 +608,13 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     xfree(ppm.seen);
     return result;
 }
+
+int ppm_glossy_material(const struct scene *scene)
+{
+    for (size_t i = 0; i < scene->n_materials; i++) {
+        struct brdf_split split = brdf_split(&scene->materials[i]);
+        if (split.has_specular && !brdf_is_delta(&split.specular))
+            return (int)i;
+    }
+    return -1;
+}

@@ -82,4 +82,12 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
                                 const struct ppm_settings *ps,
                                 struct render_counters *counters, struct ppm_stats *stats);
 
+/* The first material with a glossy lobe (a specular part, Jensen 1996's f_r,s, that is not
+ * an ideal mirror: Phong's and Ward's lobes, Schlick's with 0 < r < 1/2), or -1. The paper's
+ * hit points sit on the first non-specular surface, so such a lobe is estimated from the
+ * photons at a fixed hit point: a photon arriving near the lobe's peak lights the few hit
+ * points that face it with a large f_r, a speckle that fades slowly with the passes, where
+ * 2009 follows the lobe from the eye in every pass. */
+int ppm_glossy_material(const struct scene *scene);
+
 #endif
