@@ -2,7 +2,7 @@
  * tests/test_paper.c -- `--paper` (app/presets.h) and the switches it stands for: the
  * option parser gives each mode exactly the words of its row, the user's own options still
  * win, a render with --paper is the same bytes as one with the words spelled out, and the
- * one switch shared by three modes, --rim-photon, computes the paper's sums (the other
+ * one switch shared by three modes, --no-exclude-rim-photon, computes the paper's sums (the other
  * switches' effects: test_switches.c).
  */
 #include <math.h>
@@ -73,13 +73,13 @@ static void test_user_options_win_over_paper(struct check *t)
 {
     struct options o;
     CHECK(t, options_of("--precomputed-irradiance 4 --mode 1996 --paper", &o) == 0);
-    CHECK(t, o.precomputed_irradiance == 4 && o.shadow_photons == 1 && o.count_rim == 1);
-    CHECK(t, options_of("--mode 1996 --paper --no-shadow-photons --specular-spp 256", &o) == 0);
-    CHECK(t, o.shadow_photons == 0 && o.precomputed_irradiance == 0 && o.specular_spp == 256);
+    CHECK(t, o.precomputed_irradiance == 4 && o.shadow_rays == 0 && o.exclude_rim == 0);
+    CHECK(t, options_of("--mode 1996 --paper --shadow-rays --specular-spp 256", &o) == 0);
+    CHECK(t, o.shadow_rays == 1 && o.precomputed_irradiance == 0 && o.specular_spp == 256);
     CHECK(t, options_of("--mode 1996 --quality preview --paper", &o) == 0);
     CHECK(t, o.precomputed_irradiance == 0 && o.spp == 8 && o.gather_rays == 32);
     CHECK(t, options_of("--mode 1996", &o) == 0);
-    CHECK(t, o.paper == 0 && o.count_rim == 0 && o.specular_spp == 64 * o.spp);
+    CHECK(t, o.paper == 0 && o.exclude_rim == 1 && o.specular_spp == 64 * o.spp);
     CHECK(t, options_of("--mode 1996 --paper --glossy-corner --caustic-radius-fraction 0.5", &o)
                  == 0);
     CHECK(t, o.glossy_corner == 1 && o.caustic_radius_fraction == 0.5 && o.both_lobes == 0 &&
@@ -92,18 +92,17 @@ static void test_user_options_win_over_paper(struct check *t)
 static void test_paper_renders_as_its_words(struct check *t)
 {
     static const char *const runs[][2] = {
-        {"--mode photons --photons 20000", "--rim-photon"},
+        {"--mode photons --photons 20000", "--no-exclude-rim-photon"},
         {"--mode 1994 --photons 20000 --gather-rays 16 --spp 2",
-         "--rim-photon --caustic-radius-fraction 1 --no-both-lobes --no-bounded-reach "
-         "--no-gradient-limit --specular-spp 2"},
+         "--no-exclude-rim-photon --caustic-radius-fraction 1 --no-both-lobes "
+         "--no-bounded-reach --no-gradient-limit --specular-spp 2"},
         {"--mode 1996 --photons 20000 --caustic-photons 5000 --gather-rays 16 --spp 2",
-         "--rim-photon --shadow-photons --precomputed-irradiance 0 --no-disc-coverage "
-         "--caustic-radius-fraction 1 --no-both-lobes --no-glossy-corner --no-bounded-reach "
-         "--no-gradient-limit --specular-spp 2"},
+         "--no-exclude-rim-photon --no-shadow-rays --no-precomputed-irradiance "
+         "--no-disc-coverage --caustic-radius-fraction 1 --no-both-lobes --no-glossy-corner "
+         "--no-bounded-reach --no-gradient-limit --specular-spp 2"},
         {"--mode 2008 --passes 3 --photons-per-pass 5000 --spp 2",
-         "--direct-photons --footprints 1 --caustic-footprints 0 --no-fit-radius "
-         "--no-merge-hit-points "
-         "--no-resample-emission --no-facing-test"},
+         "--no-direct-light-samples --footprints 1 --no-caustic-footprints --no-fit-radius "
+         "--no-merge-hit-points --no-resample-emission --no-facing-test"},
     };
     for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {
         char args[512];
