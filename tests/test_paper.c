@@ -79,10 +79,10 @@ static int parses(const char *mode, const char *words, uint64_t *hash)
 
 /* truth: the rule of a departure's switch (the top of app/options.c): every word --paper
  *   stands for, in every mode, is --no-NAME where --help lists --NAME, or an option with
- *   the paper's value, not 0. Such a --NAME is the mode's default: given alone it leaves the options as
- *   they are (a switch), or it takes a value, of which 0 is none (a departure with a
- *   value, whose paper's side is --no-NAME alone); and --no-NAME changes them. No --no-NAME
- *   that --help lists is any mode's default.
+ *   the paper's value, not 0. Such a --NAME is the mode's default: given alone it leaves
+ *   the options as they are (a switch), or it takes a value, of which 0 is none (a
+ *   departure with a value, whose paper's side is --no-NAME alone); and --no-NAME changes
+ *   them. No --no-NAME that --help lists is any mode's default.
  * tolerance: none (hashes of the parsed options).
  * catches: a paper's side spelled as a flag of its own (--rim-photon), a --no-NAME that
  *   is the default (--no-shadow-photons, the paper's being --shadow-photons), 0 for the

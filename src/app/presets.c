@@ -81,9 +81,9 @@ int read_quality(const char *text, enum quality *quality, struct error *err)
 /* --paper: the options that turn a mode's departures from its paper off (src/modes/
  * README.md lists each, why, and what it measured): each departure's --no-NAME, or the
  * paper's value of an option that is a number (--footprints 1), the rule at options.c's
- * enum option_kind. A mode not named has none with a switch. Beyond these words, --paper gives the specular
- * pixels --spp samples (options.c), since --specular-spp's default is a multiple of
- * --spp. */
+ * enum option_kind. A mode not named has none with a switch. Beyond these words, --paper
+ * gives the specular pixels --spp samples (options.c), since --specular-spp's default is a
+ * multiple of --spp. */
 static const struct {
     enum mode mode;
     const char *words;
