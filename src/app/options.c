@@ -67,8 +67,9 @@ static const struct option_spec specs[] = {
      "preview, default or reference: the mode's preset of options (listed below), applied "
      "before the other options given (default default)", FOR_ALL},
     {"--paper", OPT_FLAG, FIELD(paper), 0, 0, "",
-     "the paper as written: every departure of the mode off (listed below), before the "
-     "other options given", FOR_ALL},
+     "the paper as written: every departure of the mode off, before the other options "
+     "given (listed below: a departure's switch is --NAME, the default, and --no-NAME, the "
+     "paper's; or the paper's value of a number)", FOR_ALL},
     {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm|.png|.ppm",
      "output: FILE.pfm (linear radiance) and FILE.png beside it for display; -o FILE.ppm "
      "writes FILE.ppm in place of the PNG (default: SCENE's name)", FOR_ALL},
@@ -156,7 +157,8 @@ static const struct option_spec specs[] = {
      "decide a light's visibility from shadow photons where they agree, a ray where they "
      "do not (the paper's)", FOR_1996},
     {"--one-map", OPT_FLAG, FIELD(one_map), 0, 0, "",
-     "one global map of as many photons instead of a caustic and a global map", FOR_1996},
+     "one global map of as many photons in place of the caustic and the global map that "
+     "the paper and the default keep", FOR_1996},
     {"--precomputed-irradiance", OPT_INT, FIELD(precomputed_irradiance), 1,
      J96_MAX_PRECOMPUTED, "N",
      "gather rays read irradiance precomputed at every N-th global photon (Christensen "
@@ -213,7 +215,8 @@ static const struct option_spec specs[] = {
      "photon maps everywhere (the paper's Fig. 5), or illumination maps on quads and "
      "spheres and photon maps elsewhere (Fig. 4) (default photon)", FOR_1994},
     {"--no-projection-maps", OPT_FLAG, FIELD(projection_maps), 0, 0, "",
-     "emit photons into all directions instead of through projection maps", FOR_1994},
+     "emit photons into all directions, not through projection maps as the paper (Sec. "
+     "3.1) and the default do", FOR_1994},
     {"--passes", OPT_INT, FIELD(passes), 1, MAX_PASSES, "N",
      "photon passes (default 144; 2009: 256, each with one new eye path a pixel; "
      "--time-limit may stop sooner)", FOR_PROGRESSIVE},
