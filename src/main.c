@@ -304,14 +304,18 @@ static struct progressive_settings progressive_settings(const struct options *o,
     ps.footprints = o->footprints;
     ps.fit_radius = o->fit_radius;
     ps.facing_test = o->facing_test;
-    ps.direct_photons = o->direct_photons;
+    ps.direct_photons = !o->direct_light_samples;
     ps.report = report;
     ps.snapshot_every = o->checkpoint;
     ps.snapshot = o->checkpoint > 0 ? snapshot : NULL;
     return ps;
 }
 
-/* Renders with the chosen mode; the image is NULL (and *err filled) on failure. */
+/* Renders with the chosen mode; the image is NULL (and *err filled) on failure. The
+ * options name a departure by its default side (--exclude-rim-photon, --shadow-rays,
+ * --direct-light-samples), the modes' settings the switches count_rim, shadow_photons and
+ * direct_photons by the paper's, so those are negated where they become settings (here
+ * and in progressive_settings()). */
 static struct render_result render_mode(struct run *run, struct error *err)
 {
     struct checkpoint report = {report_checkpoint, &run->report};
@@ -342,7 +346,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         ps.gather = (size_t)run->o.gather;
         ps.max_radius = run->o.max_radius;
         ps.cone_k = run->o.cone;
-        ps.count_rim = run->o.count_rim;
+        ps.count_rim = !run->o.exclude_rim;
         ps.work = &run->work;
         return render_photons(run->scene, &run->rs, &ps, want_variance, checkpoint,
                               &run->counters, &run->photon_stats, err);
@@ -351,7 +355,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         j94.gather = (size_t)run->o.gather;
         j94.max_radius = run->o.max_radius;
         j94.differential_run = run->o.differential_run;
-        j94.count_rim = run->o.count_rim;
+        j94.count_rim = !run->o.exclude_rim;
         j94.caustic_radius_fraction = run->o.caustic_radius_fraction;
         j94.gather_rays = run->o.gather_rays;
         j94.cache_accuracy = run->o.cache_accuracy;
@@ -373,14 +377,14 @@ static struct render_result render_mode(struct run *run, struct error *err)
         js.caustic_gather = (size_t)run->o.caustic_gather;
         js.max_radius = run->o.max_radius;
         js.cone_k = run->o.cone;
-        js.count_rim = run->o.count_rim;
+        js.count_rim = !run->o.exclude_rim;
         js.caustic_radius_fraction = run->o.caustic_radius_fraction;
         js.gather_rays = run->o.gather_rays;
         js.glossy_rays = run->o.glossy_rays;
         js.cache_accuracy = run->o.cache_accuracy;
         js.accurate_distance = run->o.accurate_distance;
         js.accurate_weight = run->o.accurate_weight;
-        js.shadow_photons = run->o.shadow_photons;
+        js.shadow_photons = !run->o.shadow_rays;
         js.one_map = run->o.one_map;
         js.precomputed_irradiance = run->o.precomputed_irradiance;
         js.disc_coverage = run->o.disc_coverage;

@@ -96,11 +96,11 @@ static void test_options(struct check *t)
 static void test_idle_options_refused(struct check *t)
 {
     static const char *const idle[][2] = {
-        {"--mode 1996 --disc-coverage --precomputed-irradiance 0",
-         "--disc-coverage: does nothing with --precomputed-irradiance 0, which makes no "
+        {"--mode 1996 --disc-coverage --no-precomputed-irradiance",
+         "--disc-coverage: does nothing with --no-precomputed-irradiance, which makes no "
          "records"},
         {"--mode 1996 --paper --disc-coverage",
-         "--disc-coverage: does nothing with --precomputed-irradiance 0 (from --paper)"},
+         "--disc-coverage: does nothing with --no-precomputed-irradiance (from --paper)"},
         {"--mode 2008 --radius 2 --footprints 3",
          "--footprints: does nothing with --radius, which sets R0 in scene units"},
         {"--mode 2009 --fit-radius --radius 2", "--fit-radius: does nothing with --radius"},
@@ -134,8 +134,8 @@ static void test_idle_options_refused(struct check *t)
             fprintf(stderr, "test_cli: not refused as expected: %s\n", idle[i][0]);
     }
     static const char *const taken[] = {
-        "--mode 1996 --disc-coverage", "--mode 1996 --precomputed-irradiance 0",
-        "--mode 1996 --precomputed-irradiance 0 --no-disc-coverage", "--mode 1996 --paper",
+        "--mode 1996 --disc-coverage", "--mode 1996 --no-precomputed-irradiance",
+        "--mode 1996 --no-precomputed-irradiance --no-disc-coverage", "--mode 1996 --paper",
         "--mode 2008 --footprints 3 --no-fit-radius", "--mode 2008 --paper --radius 2",
         "--mode 2009 --paper --radius 2 --disc-coverage",
         "--mode 2008 --radius 2 --caustic-footprints 3", "--mode 1996 --cache-accuracy 0",

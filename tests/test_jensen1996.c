@@ -193,7 +193,7 @@ static void test_point_in_sphere(struct check *t)
  * catches: visibility decided the wrong way round (whole shadows lit), photons of one
  *   light deciding for another, photons from the far side of a wall counted, shadow
  *   photons left in the global map (the floor brightened or darkened under the spheres),
- *   --no-shadow-photons ignored. */
+ *   shadow_photons 0 ignored (every shadow ray cast). */
 static void test_shadow_photons(struct check *t)
 {
     static const int window[4] = {25, 42, 55, 63};

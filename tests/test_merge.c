@@ -52,7 +52,8 @@ static const char *const same_pixels_options[] = {
     "-o build/x.pfm", "--crop 0 0 4 4", "--time-limit 5", "--reference r.pfm --report r.csv",
     "--variance v.pfm", "--mode 2008 --checkpoint 3", "--exposure 2", "--stats", "--progress",
     "--no-progress", "--save-photons w.work", "--load-photons w.work", "--quality default",
-    "--mode pt --paper", "--mode 1996 --no-shadow-photons" /* the default */,
+    "--mode pt --paper", "--exclude-rim-photon" /* the default */,
+    "--mode 1996 --shadow-rays" /* the default */,
     "--mode 1996 --disc-coverage" /* the default */, "--mode 1994 --both-lobes" /* the default */,
     "--mode 1994 --glossy-gather" /* the default */,
     "--mode 1994 --glossy-photons" /* the default */,
@@ -60,16 +61,18 @@ static const char *const same_pixels_options[] = {
     "--mode 1996 --gradient-limit" /* the default */,
     "--mode 2008 --fit-radius --merge-hit-points --resample-emission --facing-test" /* the
                                                                                   defaults */,
+    "--mode 2009 --direct-light-samples" /* the default */,
 };
 static const char *const other_pixels_options[] = {
     "--mode pt", "--seed 2", "--spp 3", "--specular-spp 40", "--width 100", "--height 100",
     "--adaptive 0.1", "--max-depth 3", "--photons 7", "--gather 9", "--max-radius 2", "--cone 2",
-    "--rim-photon", "--mode 1994 --caustic-radius-fraction 1",
+    "--no-exclude-rim-photon", "--mode 1994 --caustic-radius-fraction 1",
     "--mode 1996 --caustic-photons 5", "--mode 1996 --caustic-gather 5",
     "--mode 1996 --gather-rays 9", "--mode 1996 --glossy-rays 2",
     "--mode 1996 --cache-accuracy 0.2", "--mode 1996 --accurate-distance 2",
-    "--mode 1996 --accurate-weight 0.2", "--mode 1996 --shadow-photons",
+    "--mode 1996 --accurate-weight 0.2", "--mode 1996 --no-shadow-rays",
     "--mode 1996 --one-map", "--mode 1996 --precomputed-irradiance 4",
+    "--mode 1996 --no-precomputed-irradiance",
     "--mode 1996 --no-disc-coverage", "--mode 1996 --no-both-lobes",
     "--mode 1996 --no-glossy-corner", "--mode 1994 --no-bounded-reach",
     "--mode 1996 --no-bounded-reach", "--mode 1994 --no-gradient-limit",
@@ -77,10 +80,11 @@ static const char *const other_pixels_options[] = {
     "--mode 1994 --differential 3", "--mode 1994 --light-samples 9",
     "--mode 1994 --irradiance-store illumination", "--mode 1994 --no-projection-maps",
     "--mode 2008 --passes 3", "--mode 2008 --photons-per-pass 7", "--mode 2008 --alpha 0.5",
-    "--mode 2008 --radius 2", "--mode 2008 --direct-photons", "--mode 2008 --footprints 2",
+    "--mode 2008 --radius 2", "--mode 2008 --no-direct-light-samples",
+    "--mode 2008 --footprints 2",
     "--mode 2008 --no-fit-radius", "--mode 2008 --no-merge-hit-points",
     "--mode 2008 --no-resample-emission", "--mode 2008 --no-facing-test",
-    "--mode 2008 --caustic-footprints 2",
+    "--mode 2008 --caustic-footprints 2", "--mode 2008 --no-caustic-footprints",
 };
 
 /* The hash words are compared with: that of their leading "--mode M" alone when more

@@ -1,9 +1,10 @@
 /*
  * tests/test_paper.c -- `--paper` (app/presets.h) and the switches it stands for: the
- * option parser gives each mode exactly the words of its row, the user's own options still
+ * option parser gives each mode exactly the words of its row, each word follows the rule
+ * of a departure's switch (--no-NAME beside a default --NAME), the user's own options still
  * win, a render with --paper is the same bytes as one with the words spelled out, and the
- * one switch shared by three modes, --rim-photon, computes the paper's sums (the other
- * switches' effects: test_switches.c).
+ * one switch shared by three modes, --no-exclude-rim-photon, computes the paper's sums (the
+ * other switches' effects: test_switches.c).
  */
 #include <math.h>
 #include <stdio.h>
@@ -66,6 +67,92 @@ static void test_paper_is_its_words(struct check *t)
     remove(OUT ".log");
 }
 
+/* Whether the words "--mode MODE WORDS" parse; their options' hash in *hash if so. */
+static int parses(const char *mode, const char *words, uint64_t *hash)
+{
+    char text[512];
+    struct options o;
+    snprintf(text, sizeof text, "--mode %s %s", mode, words);
+    *hash = hash_of(text);
+    return options_of(text, &o) == 0;
+}
+
+/* truth: the rule of a departure's switch (the top of app/options.c): every word --paper
+ *   stands for, in every mode, is --no-NAME where --help lists --NAME, or an option with
+ *   the paper's value, not 0. Such a --NAME is the mode's default: given alone it leaves
+ *   the options as they are (a switch), or it takes a value, of which 0 is none (a
+ *   departure with a value, whose paper's side is --no-NAME alone); and --no-NAME changes
+ *   them. No --no-NAME that --help lists is any mode's default.
+ * tolerance: none (hashes of the parsed options).
+ * catches: a paper's side spelled as a flag of its own (--rim-photon), a --no-NAME that
+ *   is the default (--no-shadow-photons, the paper's being --shadow-photons), 0 for the
+ *   paper's way (--precomputed-irradiance 0, in --paper's words or in a range), a
+ *   --no-NAME without its --NAME. */
+static void test_paper_words_follow_the_rule(struct check *t)
+{
+    CHECK(t, photon_logged("", "--help", OUT ".log") == 0);
+    char *help = read_text_file(OUT ".log");
+    REQUIRE(t, help != NULL);
+    for (size_t m = 0; m < N_MODES; m++) {
+        uint64_t defaults, hash;
+        REQUIRE(t, parses(modes[m], "", &defaults));
+        struct options o;
+        char words[256], on[64], listed[80];
+        snprintf(words, sizeof words, "--mode %s", modes[m]);
+        REQUIRE(t, options_of(words, &o) == 0);
+        struct preset_words p;
+        paper_words(o.mode, 1, &p);
+        for (int i = 0; i < p.n_words; i++) {
+            const char *word = p.word[i];
+            if (i + 1 < p.n_words && strncmp(p.word[i + 1], "--", 2) != 0) {
+                /* an option with the paper's value, which is not 0: a value that turns
+                 * a departure off is its --no-NAME */
+                snprintf(words, sizeof words, "%s %s", word, p.word[i + 1]);
+                int ok = parses(modes[m], words, &hash) && atof(p.word[i + 1]) != 0;
+                CHECK(t, ok);
+                if (!ok)
+                    fprintf(stderr, "test_paper: --mode %s --paper: %s breaks the rule\n",
+                            modes[m], words);
+                i++;
+                continue;
+            }
+            int paired = strncmp(word, "--no-", 5) == 0;
+            snprintf(on, sizeof on, "--%s", paired ? word + 5 : word);
+            snprintf(listed, sizeof listed, "\n  %s ", on);
+            int ok = paired && strstr(help, listed) != NULL && parses(modes[m], word, &hash) &&
+                     hash != defaults;
+            if (parses(modes[m], on, &hash)) { /* a switch: --NAME is the default */
+                ok = ok && hash == defaults;
+            } else { /* a departure with a value: 0 is none of them, --no-NAME is off */
+                snprintf(words, sizeof words, "%s 0", on);
+                ok = ok && !parses(modes[m], words, &hash);
+            }
+            CHECK(t, ok);
+            if (!ok)
+                fprintf(stderr, "test_paper: --mode %s --paper: %s breaks the rule\n",
+                        modes[m], word);
+        }
+    }
+    /* --no-progress changes no pixel, so no hash sees it; its default asks the
+     * environment. */
+    const char *row = "\n  --no-";
+    for (const char *at = strstr(help, row); at != NULL; at = strstr(at + 1, row)) {
+        char name[64];
+        if (sscanf(at, " %63s", name) != 1 || strcmp(name, "--no-progress") == 0)
+            continue;
+        for (size_t m = 0; m < N_MODES; m++) {
+            uint64_t defaults, hash;
+            int default_side = parses(modes[m], "", &defaults) &&
+                               parses(modes[m], name, &hash) && hash == defaults;
+            CHECK(t, !default_side);
+            if (default_side)
+                fprintf(stderr, "test_paper: %s is --mode %s's default\n", name, modes[m]);
+        }
+    }
+    free(help);
+    remove(OUT ".log");
+}
+
 /* truth: parse_options()'s order (options.h): defaults, preset, --paper, the user's words.
  * catches: --paper applied after the user's words, or only when it comes first; a
  *   preset's words applied after --paper's. */
@@ -73,13 +160,13 @@ static void test_user_options_win_over_paper(struct check *t)
 {
     struct options o;
     CHECK(t, options_of("--precomputed-irradiance 4 --mode 1996 --paper", &o) == 0);
-    CHECK(t, o.precomputed_irradiance == 4 && o.shadow_photons == 1 && o.count_rim == 1);
-    CHECK(t, options_of("--mode 1996 --paper --no-shadow-photons --specular-spp 256", &o) == 0);
-    CHECK(t, o.shadow_photons == 0 && o.precomputed_irradiance == 0 && o.specular_spp == 256);
+    CHECK(t, o.precomputed_irradiance == 4 && o.shadow_rays == 0 && o.exclude_rim == 0);
+    CHECK(t, options_of("--mode 1996 --paper --shadow-rays --specular-spp 256", &o) == 0);
+    CHECK(t, o.shadow_rays == 1 && o.precomputed_irradiance == 0 && o.specular_spp == 256);
     CHECK(t, options_of("--mode 1996 --quality preview --paper", &o) == 0);
     CHECK(t, o.precomputed_irradiance == 0 && o.spp == 8 && o.gather_rays == 32);
     CHECK(t, options_of("--mode 1996", &o) == 0);
-    CHECK(t, o.paper == 0 && o.count_rim == 0 && o.specular_spp == 64 * o.spp);
+    CHECK(t, o.paper == 0 && o.exclude_rim == 1 && o.specular_spp == 64 * o.spp);
     CHECK(t, options_of("--mode 1996 --paper --glossy-corner --caustic-radius-fraction 0.5", &o)
                  == 0);
     CHECK(t, o.glossy_corner == 1 && o.caustic_radius_fraction == 0.5 && o.both_lobes == 0 &&
@@ -92,18 +179,17 @@ static void test_user_options_win_over_paper(struct check *t)
 static void test_paper_renders_as_its_words(struct check *t)
 {
     static const char *const runs[][2] = {
-        {"--mode photons --photons 20000", "--rim-photon"},
+        {"--mode photons --photons 20000", "--no-exclude-rim-photon"},
         {"--mode 1994 --photons 20000 --gather-rays 16 --spp 2",
-         "--rim-photon --caustic-radius-fraction 1 --no-both-lobes --no-bounded-reach "
-         "--no-gradient-limit --specular-spp 2"},
+         "--no-exclude-rim-photon --caustic-radius-fraction 1 --no-both-lobes "
+         "--no-bounded-reach --no-gradient-limit --specular-spp 2"},
         {"--mode 1996 --photons 20000 --caustic-photons 5000 --gather-rays 16 --spp 2",
-         "--rim-photon --shadow-photons --precomputed-irradiance 0 --no-disc-coverage "
-         "--caustic-radius-fraction 1 --no-both-lobes --no-glossy-corner --no-bounded-reach "
-         "--no-gradient-limit --specular-spp 2"},
+         "--no-exclude-rim-photon --no-shadow-rays --no-precomputed-irradiance "
+         "--no-disc-coverage --caustic-radius-fraction 1 --no-both-lobes --no-glossy-corner "
+         "--no-bounded-reach --no-gradient-limit --specular-spp 2"},
         {"--mode 2008 --passes 3 --photons-per-pass 5000 --spp 2",
-         "--direct-photons --footprints 1 --caustic-footprints 0 --no-fit-radius "
-         "--no-merge-hit-points "
-         "--no-resample-emission --no-facing-test"},
+         "--no-direct-light-samples --footprints 1 --no-caustic-footprints --no-fit-radius "
+         "--no-merge-hit-points --no-resample-emission --no-facing-test"},
     };
     for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {
         char args[512];
@@ -165,6 +251,7 @@ static void test_rim_photon_switch(struct check *t)
 void test_paper(struct check *t)
 {
     RUN_TEST(t, test_paper_is_its_words);
+    RUN_TEST(t, test_paper_words_follow_the_rule);
     RUN_TEST(t, test_user_options_win_over_paper);
     RUN_TEST(t, test_paper_renders_as_its_words);
     RUN_TEST(t, test_rim_photon_switch);

@@ -10,8 +10,8 @@
  *   --footprints, --fit-radius, --no-fit-radius with --radius (2008, 2009):
  *     ppm_initial_radius() returns --radius before it reads either, 2008's
  *     caustic_radius() too, and 2009 fits a radius to the surface only without it.
- *   --disc-coverage with --precomputed-irradiance 0 (1996): the coverage is taken only
- *     by the records of precomputed irradiance (precompute_irradiance()), and 0 makes
+ *   --disc-coverage with --no-precomputed-irradiance (1996): the coverage is taken only
+ *     by the records of precomputed irradiance (precompute_irradiance()), and there are
  *     none. --no-disc-coverage is taken there: it states Eq. 3's pi r^2, which every
  *     estimate then uses, and --paper's words spelled out carry it.
  *   --bounded-reach, --gradient-limit and their --no- forms with --cache-accuracy 0
@@ -24,7 +24,7 @@
  *     only at that many samples or more, short of the pixel's target (render_pass()).
  *   --checkpoint K with K >= --passes (2008, 2009): the first write would follow pass K,
  *     and the image is written after the last pass anyway.
- * Not refused, since they do something: --caustic-footprints K with --radius, whose K > 0
+ * Not refused, since they do something: --caustic-footprints K with --radius, which
  * still turns 2008's caustic estimate on (at --radius, as --help says), and --alpha with
  * --passes 1, whose Eq. 12 and Eq. 9 cancel in the estimate only up to rounding.
  */
@@ -64,15 +64,25 @@ static void origin(const struct options *o, const struct command_words *words,
         snprintf(text, size, "the mode's default");
 }
 
-/* "NAME VALUE", and where the value came from in brackets when the command line did not
- * give it ("--passes 8 (from --quality preview)"), into text[size]. */
-static void setting(const struct options *o, const struct command_words *words,
-                    const char *name, double value, char *text, size_t size)
+/* "NAME VALUE" ("NAME" when value is empty), and where it came from in brackets when the
+ * command line did not give it ("--passes 8 (from --quality preview)",
+ * "--no-precomputed-irradiance (from --paper)"), into text[size]. */
+static void setting_text(const struct options *o, const struct command_words *words,
+                         const char *name, const char *value, char *text, size_t size)
 {
     char from[48];
     origin(o, words, name, from, sizeof from);
-    snprintf(text, size, "%s %.15g%s%s%s", name, value, from[0] != '\0' ? " (" : "", from,
-             from[0] != '\0' ? ")" : "");
+    snprintf(text, size, "%s%s%s%s%s%s", name, value[0] != '\0' ? " " : "", value,
+             from[0] != '\0' ? " (" : "", from, from[0] != '\0' ? ")" : "");
+}
+
+/* setting_text() of an option's number. */
+static void setting(const struct options *o, const struct command_words *words,
+                    const char *name, double value, char *text, size_t size)
+{
+    char number[32];
+    snprintf(number, sizeof number, "%.15g", value);
+    setting_text(o, words, name, number, text, size);
 }
 
 /* --save-photons and --load-photons: one of them, in a mode that has global work to
@@ -144,7 +154,7 @@ static int check_idle(const struct options *o, const struct command_words *words
             return -1;
     }
     if (o->mode == MODE_JENSEN1996 && o->precomputed_irradiance == 0) {
-        setting(o, words, "--precomputed-irradiance", 0, with, sizeof with);
+        setting_text(o, words, "--no-precomputed-irradiance", "", with, sizeof with);
         if (refuse_idle(words, disc_coverage, 1, with, "which makes no records of "
                         "precomputed irradiance, the only estimates it acts on in mode "
                         "1996", err) < 0)

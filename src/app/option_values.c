@@ -120,6 +120,7 @@ void option_defaults(struct options *o)
     o->merge_hit_points = pp.merge_hit_points;
     o->resample_emission = pp.resample_emission;
     o->facing_test = pp.progressive.facing_test;
+    o->direct_light_samples = !pp.progressive.direct_photons;
     o->cone = -1;
     o->caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     struct jensen1996_settings js = jensen1996_settings_default();
@@ -130,7 +131,8 @@ void option_defaults(struct options *o)
     o->cache_accuracy = js.cache_accuracy;
     o->accurate_distance = js.accurate_distance;
     o->accurate_weight = js.accurate_weight;
-    o->shadow_photons = js.shadow_photons;
+    o->exclude_rim = !js.count_rim;
+    o->shadow_rays = !js.shadow_photons;
     o->precomputed_irradiance = js.precomputed_irradiance;
     o->disc_coverage = js.disc_coverage;
     o->both_lobes = js.both_lobes;

@@ -20,8 +20,14 @@
 #include "option_values.h"
 #include "presets.h"
 
+/* A departure from a mode's paper is switched by a pair of options: --NAME, its default
+ * side, and --no-NAME, the paper's (--paper's words are such --no-NAMEs, or an option
+ * with the paper's value). OPT_FLAG sets its int field to 0 when its name starts with
+ * --no-, else to 1. A departure with a value is --NAME VALUE, whose range leaves out 0,
+ * and --no-NAME, an OPT_OFF: it sets the field of --NAME to 0, which the modes read as
+ * the departure off. */
 enum option_kind {
-    OPT_FLAG, OPT_INT, OPT_SEED, OPT_REAL, OPT_REAL_ABOVE, OPT_REAL_BETWEEN, OPT_MODE,
+    OPT_FLAG, OPT_OFF, OPT_INT, OPT_SEED, OPT_REAL, OPT_REAL_ABOVE, OPT_REAL_BETWEEN, OPT_MODE,
     OPT_QUALITY, OPT_OUTPUT, OPT_FILE, OPT_CROP, OPT_STORE
 };
 
@@ -61,8 +67,9 @@ static const struct option_spec specs[] = {
      "preview, default or reference: the mode's preset of options (listed below), applied "
      "before the other options given (default default)", FOR_ALL},
     {"--paper", OPT_FLAG, FIELD(paper), 0, 0, "",
-     "the paper as written: every departure of the mode off (listed below), before the "
-     "other options given", FOR_ALL},
+     "the paper as written: every departure of the mode off, before the other options "
+     "given (listed below: a departure's switch is --NAME, the default, and --no-NAME, the "
+     "paper's; or the paper's value of a number)", FOR_ALL},
     {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm|.png|.ppm",
      "output: FILE.pfm (linear radiance) and FILE.png beside it for display; -o FILE.ppm "
      "writes FILE.ppm in place of the PNG (default: SCENE's name)", FOR_ALL},
@@ -115,9 +122,12 @@ static const struct option_spec specs[] = {
     {"--cone", OPT_REAL, FIELD(cone), 0, 1e6, "K",
      "cone filter constant k >= 1 (Jensen 1996 Eq. 4); 0 = none (default: "
      "photons 0, 1996 1 on caustics)", FOR_PHOTONS | FOR_1996},
-    {"--rim-photon", OPT_FLAG, FIELD(count_rim), 0, 0, "",
-     "estimates count the photon on the rim too, as Eq. 3 is printed (the paper's; "
-     "k / (k - 1) too bright)", FOR_PHOTON_MAPS},
+    {"--exclude-rim-photon", OPT_FLAG, FIELD(exclude_rim), 0, 0, "",
+     "estimates leave out the k-th photon, which only marks the radius r (the default)",
+     FOR_PHOTON_MAPS},
+    {"--no-exclude-rim-photon", OPT_FLAG, FIELD(exclude_rim), 0, 0, "",
+     "count it too, as Eq. 3 is printed (the paper's; k / (k - 1) too bright)",
+     FOR_PHOTON_MAPS},
     {"--caustic-radius-fraction", OPT_REAL, FIELD(caustic_radius_fraction), 0.001, 1, "F",
      "caustic estimates reach F times --max-radius (default 0.25: a wide disc hangs over a "
      "surface's edges where caustic photons are sparse; the paper's 1)", FOR_1994 | FOR_1996},
@@ -141,22 +151,25 @@ static const struct option_spec specs[] = {
      "accurately (default 3)", FOR_1996},
     {"--accurate-weight", OPT_REAL, FIELD(accurate_weight), 0, 1, "W",
      "rays with throughput below W are evaluated approximately (default 0.1)", FOR_1996},
-    {"--shadow-photons", OPT_FLAG, FIELD(shadow_photons), 0, 0, "",
-     "decide a light's visibility from shadow photons where they agree (the paper's)",
-     FOR_1996},
-    {"--no-shadow-photons", OPT_FLAG, FIELD(shadow_photons), 0, 0, "",
-     "cast every shadow ray instead (the default)", FOR_1996},
+    {"--shadow-rays", OPT_FLAG, FIELD(shadow_rays), 0, 0, "",
+     "cast every shadow ray, and store no shadow photons (the default)", FOR_1996},
+    {"--no-shadow-rays", OPT_FLAG, FIELD(shadow_rays), 0, 0, "",
+     "decide a light's visibility from shadow photons where they agree, a ray where they "
+     "do not (the paper's)", FOR_1996},
     {"--one-map", OPT_FLAG, FIELD(one_map), 0, 0, "",
-     "one global map of as many photons instead of a caustic and a global map", FOR_1996},
-    {"--precomputed-irradiance", OPT_INT, FIELD(precomputed_irradiance), 0,
+     "one global map of as many photons in place of the caustic and the global map that "
+     "the paper and the default keep", FOR_1996},
+    {"--precomputed-irradiance", OPT_INT, FIELD(precomputed_irradiance), 1,
      J96_MAX_PRECOMPUTED, "N",
      "gather rays read irradiance precomputed at every N-th global photon (Christensen "
-     "1999); 0 = a radiance estimate at each ray's end, the paper's (default 16)", FOR_1996},
+     "1999; default 16)", FOR_1996},
+    {"--no-precomputed-irradiance", OPT_OFF, FIELD(precomputed_irradiance), 0, 0, "",
+     "a radiance estimate at each gather ray's end (the paper's)", FOR_1996},
     {"--disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
      "records of precomputed irradiance (2009: a pixel's estimate) count the photons of "
      "their disc's plane over the part of the disc a surface covers, found by probe rays "
      "(2009: one a pass), in place of pi r^2 (the default); 1996: refused with "
-     "--precomputed-irradiance 0, which makes no records", FOR_1996 | FOR_2009},
+     "--no-precomputed-irradiance, which makes no records", FOR_1996 | FOR_2009},
     {"--no-disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
      "over the whole disc, pi r^2, as Eq. 3 (the paper's)", FOR_1996 | FOR_2009},
     {"--both-lobes", OPT_FLAG, FIELD(both_lobes), 0, 0, "",
@@ -202,7 +215,8 @@ static const struct option_spec specs[] = {
      "photon maps everywhere (the paper's Fig. 5), or illumination maps on quads and "
      "spheres and photon maps elsewhere (Fig. 4) (default photon)", FOR_1994},
     {"--no-projection-maps", OPT_FLAG, FIELD(projection_maps), 0, 0, "",
-     "emit photons into all directions instead of through projection maps", FOR_1994},
+     "emit photons into all directions, not through projection maps as the paper (Sec. "
+     "3.1) and the default do", FOR_1994},
     {"--passes", OPT_INT, FIELD(passes), 1, MAX_PASSES, "N",
      "photon passes (default 144; 2009: 256, each with one new eye path a pixel; "
      "--time-limit may stop sooner)", FOR_PROGRESSIVE},
@@ -217,10 +231,11 @@ static const struct option_spec specs[] = {
     {"--footprints", OPT_REAL_ABOVE, FIELD(footprints), 0, 1e6, "K",
      "initial radius in pixel footprints at each hit point (default 4; the paper's: 1); "
      "refused with --radius", FOR_PROGRESSIVE},
-    {"--caustic-footprints", OPT_REAL, FIELD(caustic_footprints), 0, 1e6, "K",
+    {"--caustic-footprints", OPT_REAL_ABOVE, FIELD(caustic_footprints), 0, 1e6, "K",
      "caustic photons gather in an estimate of their own, R0 of K footprints (with "
-     "--radius: R0 = --radius, whatever K > 0); 0 = in the one estimate, the paper's "
-     "(default 1)", FOR_2008},
+     "--radius: R0 = --radius, whatever K; default 1)", FOR_2008},
+    {"--no-caustic-footprints", OPT_OFF, FIELD(caustic_footprints), 0, 0, "",
+     "caustic photons in the one estimate (the paper's)", FOR_2008},
     {"--fit-radius", OPT_FLAG, FIELD(fit_radius), 0, 0, "",
      "shorten each initial radius until its disc lies on its surface, clear of walls and "
      "open edges (2009 with --disc-coverage: clear of walls the surface goes on past) "
@@ -241,9 +256,11 @@ static const struct option_spec specs[] = {
      FOR_PROGRESSIVE},
     {"--no-facing-test", OPT_FLAG, FIELD(facing_test), 0, 0, "",
      "every photon within R counts (the papers leave the test open)", FOR_PROGRESSIVE},
-    {"--direct-photons", OPT_FLAG, FIELD(direct_photons), 0, 0, "",
-     "direct light from photons too, the paper's way (default: a light sample at each "
-     "hit point each pass, photons only after their first bounce)", FOR_PROGRESSIVE},
+    {"--direct-light-samples", OPT_FLAG, FIELD(direct_light_samples), 0, 0, "",
+     "direct light by a light sample at each hit point each pass, photons only after their "
+     "first bounce (the default)", FOR_PROGRESSIVE},
+    {"--no-direct-light-samples", OPT_FLAG, FIELD(direct_light_samples), 0, 0, "",
+     "direct light from photons too (the paper's)", FOR_PROGRESSIVE},
     {"--checkpoint", OPT_INT, FIELD(checkpoint), 1, MAX_PASSES, "K",
      "write the image (-o) every K passes, each write complete (default: at the end); "
      "refused for K >= --passes", FOR_PROGRESSIVE},
@@ -385,6 +402,14 @@ static int read_mode(const char *text, enum mode *mode, struct error *err)
                      text != NULL ? text : "nothing");
 }
 
+static const struct option_spec *find_spec(const char *name)
+{
+    for (size_t i = 0; i < N_SPECS; i++)
+        if (strcmp(specs[i].name, name) == 0)
+            return &specs[i];
+    return NULL;
+}
+
 /* Applies option spec to the value words at argv[*i + 1 ...], advancing *i past them. */
 static int apply_option(const struct option_spec *spec, char **argv, int argc, int *i,
                         struct options *o, struct error *err)
@@ -396,6 +421,17 @@ static int apply_option(const struct option_spec *spec, char **argv, int argc, i
     case OPT_FLAG:
         *(int *)field = strncmp(spec->name, "--no-", 5) != 0;
         return 0;
+    case OPT_OFF: {
+        char name[64];
+        snprintf(name, sizeof name, "--%s", spec->name + strlen("--no-"));
+        const struct option_spec *on = find_spec(name);
+        assert(on != NULL && on->offset == spec->offset);
+        if (on->kind == OPT_INT)
+            *(int *)field = 0;
+        else
+            *(double *)field = 0;
+        return 0;
+    }
     case OPT_INT:
     case OPT_REAL:
     case OPT_REAL_ABOVE:
@@ -442,14 +478,6 @@ static int apply_option(const struct option_spec *spec, char **argv, int argc, i
         return 0;
     }
     return -1;
-}
-
-static const struct option_spec *find_spec(const char *name)
-{
-    for (size_t i = 0; i < N_SPECS; i++)
-        if (strcmp(specs[i].name, name) == 0)
-            return &specs[i];
-    return NULL;
 }
 
 /* The option given first on the command line (given[k]: the argv index of specs[k], 0
@@ -635,6 +663,9 @@ static void option_text(const struct option_spec *spec, const struct options *o,
     case OPT_INT:
     case OPT_STORE:
         snprintf(text, size, "%s=%d\n", spec->name, *(const int *)field);
+        return;
+    case OPT_OFF: /* its field is hashed under the option it turns off */
+        text[0] = '\0';
         return;
     case OPT_QUALITY:
     case OPT_OUTPUT:

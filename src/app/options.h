@@ -59,7 +59,8 @@ struct options {
     double max_radius;            /* photon modes: gathering radius; 0 = default   */
     double cone;                  /* photon modes: cone filter k; 0 = none, -1 = the
                                      mode's default (photons 0, 1996 1)            */
-    int count_rim;                /* photon modes: estimates count the rim photon  */
+    int exclude_rim;              /* photon modes: estimates leave the rim photon out;
+                                     0 counts it, as Eq. 3 is printed              */
     double caustic_radius_fraction; /* 1994, 1996: caustic estimates' reach, a fraction
                                      of max_radius                                  */
     int caustic_photons;          /* 1996: photons emitted for the caustic map     */
@@ -69,9 +70,11 @@ struct options {
     double cache_accuracy;        /* 1996: Ward's a; 0 = no irradiance cache       */
     double accurate_distance;     /* 1996: corner threshold, in estimate radii     */
     double accurate_weight;       /* 1996: throughput below which rays go rough    */
-    int shadow_photons;           /* 1996: decide visibility from shadow photons   */
+    int shadow_rays;              /* 1996: cast every shadow ray; 0 = shadow photons
+                                     decide where they agree, the paper's          */
     int one_map;                  /* 1996: one map for global and caustic photons  */
-    int precomputed_irradiance;   /* 1996: records at every N-th photon; 0 = none  */
+    int precomputed_irradiance;   /* 1996: records at every N-th photon; 0 = none,
+                                     the paper's (--no-precomputed-irradiance)      */
     int disc_coverage;            /* 1996: records over their disc's covered part  */
     int both_lobes;               /* 1994, 1996: mirrors and glass trace every lobe */
     int glossy_corner;            /* 1996: the corner way behind glossy lobes      */
@@ -91,12 +94,14 @@ struct options {
     double radius;                /* 2008, 2009: initial radius; 0 = pixel footprints */
     double footprints;            /* 2008, 2009: initial radius in pixel footprints */
     int fit_radius;               /* 2008, 2009: initial radius fitted to the surface */
-    double caustic_footprints;    /* 2008: caustic estimate's R0; 0 = none         */
+    double caustic_footprints;    /* 2008: caustic estimate's R0; 0 = none, the
+                                     paper's (--no-caustic-footprints)              */
     int merge_hit_points;         /* 2008: a pixel's eye rays share hit points     */
     int resample_emission;        /* 2008: each pass's eye ray adds emission       */
     int facing_test;              /* 2008, 2009: photons count where surfaces face */
     int checkpoint;               /* 2008, 2009: write the image every this many passes */
-    int direct_photons;           /* 2008, 2009: direct light from photons, the paper's */
+    int direct_light_samples;     /* 2008, 2009: direct light by light samples; 0 =
+                                     from photons, the paper's                      */
 };
 
 /* Parses argv into *o: the defaults, then the words of the preset that --quality names for

@@ -79,25 +79,27 @@ int read_quality(const char *text, enum quality *quality, struct error *err)
 }
 
 /* --paper: the options that turn a mode's departures from its paper off (src/modes/
- * README.md lists each, why, and what it measured). A mode not named has none with a
- * switch. Beyond these words, --paper gives the specular pixels --spp samples
- * (options.c), since --specular-spp's default is a multiple of --spp. */
+ * README.md lists each, why, and what it measured): each departure's --no-NAME, or the
+ * paper's value of an option that is a number (--footprints 1), the rule at options.c's
+ * enum option_kind. A mode not named has none with a switch. Beyond these words, --paper
+ * gives the specular pixels --spp samples (options.c), since --specular-spp's default is a
+ * multiple of --spp. */
 static const struct {
     enum mode mode;
     const char *words;
 } as_written[] = {
-    {MODE_PHOTONS, "--rim-photon"},
-    {MODE_JENSEN1994, "--rim-photon --caustic-radius-fraction 1 --no-both-lobes "
+    {MODE_PHOTONS, "--no-exclude-rim-photon"},
+    {MODE_JENSEN1994, "--no-exclude-rim-photon --caustic-radius-fraction 1 --no-both-lobes "
                        "--no-glossy-gather --no-glossy-photons --no-bounded-reach "
                        "--no-gradient-limit"},
-    {MODE_JENSEN1996, "--rim-photon --shadow-photons --precomputed-irradiance 0 "
+    {MODE_JENSEN1996, "--no-exclude-rim-photon --no-shadow-rays --no-precomputed-irradiance "
                        "--no-disc-coverage --caustic-radius-fraction 1 --no-both-lobes "
                        "--no-glossy-corner --no-bounded-reach --no-gradient-limit"},
-    {MODE_PPM2008, "--direct-photons --footprints 1 --caustic-footprints 0 --no-fit-radius "
-                    "--no-merge-hit-points "
-                    "--no-resample-emission --no-facing-test"},
-    {MODE_SPPM2009, "--direct-photons --footprints 1 --no-fit-radius --no-disc-coverage "
-                     "--no-facing-test"},
+    {MODE_PPM2008, "--no-direct-light-samples --footprints 1 --no-caustic-footprints "
+                    "--no-fit-radius --no-merge-hit-points --no-resample-emission "
+                    "--no-facing-test"},
+    {MODE_SPPM2009, "--no-direct-light-samples --footprints 1 --no-fit-radius "
+                     "--no-disc-coverage --no-facing-test"},
 };
 
 /* Splits words, one space apart, into *out. */

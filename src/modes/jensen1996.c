@@ -50,10 +50,10 @@
  *
  * Departures (each with its figures in src/modes/README.md; --paper undoes them all):
  * approximate points on Lambertian surfaces, gather rays' ends among them, read irradiance
- * precomputed at every N-th global photon (Christensen 1999; --precomputed-irradiance 0:
+ * precomputed at every N-th global photon (Christensen 1999; --no-precomputed-irradiance:
  * the paper's estimate at each), which makes the pre-pass many times faster at the same
  * error; every shadow ray is cast, cheaper among 13 objects than a 16-photon search
- * (--shadow-photons: Sec. 4.1's); a record of precomputed irradiance divides its photons
+ * (--no-shadow-rays: Sec. 4.1's); a record of precomputed irradiance divides its photons
  * by the part of its disc a surface covers (photon/disc_coverage.h), not Eq. 3's pi r^2
  * (--no-disc-coverage): a disc past the floor's open front edge darkens the balls'
  * fronts, which see it.

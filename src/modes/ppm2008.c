@@ -16,10 +16,10 @@
  * Each departure from the paper below has a switch; --paper turns them all off
  * (src/modes/README.md has the figures of each).
  *
- * The direct light (--direct-photons is the paper's way). The paper estimates it from the
- * photons like all the rest; on a diffuse box it is most of the light, and so most of the
- * estimate's noise and of its blur (across a shadow's edge, at a corner). By default each
- * pass's new eye ray through each pixel (below) takes it by light sampling instead, as
+ * The direct light (--no-direct-light-samples is the paper's way). The paper estimates it
+ * from the photons like all the rest; on a diffuse box it is most of the light, and so most
+ * of the estimate's noise and of its blur (across a shadow's edge, at a corner). By default
+ * each pass's new eye ray through each pixel (below) takes it by light sampling instead, as
  * pbrt-v4's SPPM keeps a direct term beside its photons: one shadow-tested sample of every
  * light wherever that ray meets a surface with a non-delta part (ppm_direct.c, the samples
  * of --mode direct); the pixel's direct term is the mean over the passes, so shadows and
@@ -48,10 +48,11 @@
  * pixel" is one; it leaves R0 to the user), shortened until the disc lies on its surface,
  * clear of walls and open edges (ppm_radius.c says why and how).
  *
- * The caustic estimate (--caustic-footprints). Caustic photons are sparse and their light
- * sharp; a disc wide enough for the smooth indirect light blurs them. As Jensen's caustic
- * map has a smaller radius than his global one, each hit point keeps a second progressive
- * estimate for caustic photons alone, R0 one footprint, reduced by Eq. 7-12 on its own.
+ * The caustic estimate (--caustic-footprints K; --no-caustic-footprints is the
+ * paper's). Caustic photons are sparse and their light sharp; a disc wide enough for the
+ * smooth indirect light blurs them. As Jensen's caustic map has a smaller radius than his
+ * global one, each hit point keeps a second progressive estimate for caustic photons
+ * alone, R0 one footprint, reduced by Eq. 7-12 on its own.
  *
  * The facing test (--facing-test): a photon counts only at hit points whose surface faces
  * its own (add_flux()); Sec. 3.1 takes every photon within R, and the sphere of radius R
@@ -436,9 +437,9 @@ static void add_flux(void *context, size_t i)
 }
 
 /* Each photon a photon tracing pass stores goes to the hit points around it, at every
- * non-specular hit (direct, caustic and indirect alike) with --direct-photons; by default
- * except the first hit straight from the light. Departs from Sec. 3.1 there: the light
- * samples of ppm_direct.c bring that light (the departure at the top). */
+ * non-specular hit (direct, caustic and indirect alike) with --no-direct-light-samples; by
+ * default except the first hit straight from the light. Departs from Sec. 3.1 there: the
+ * light samples of ppm_direct.c bring that light (the departure at the top). */
 static void add_photon(void *context, const struct photon_event *photon)
 {
     struct ppm *ppm = context;

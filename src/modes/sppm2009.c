@@ -54,9 +54,10 @@
  * (shrink_estimate()).
  *
  * Departures, as in 2008, each with its switch, off under --paper:
- *   the direct light (--direct-photons is the paper's way) by one shadow-tested light
- *       sample at each pass's hit point (ppm_direct.c), photons counted only after their
- *       first bounce (caustics still count): the paper estimates it from photons too;
+ *   the direct light (--no-direct-light-samples is the paper's way) by one
+ *       shadow-tested light sample at each pass's hit point (ppm_direct.c), photons
+ *       counted only after their first bounce (caustics still count): the paper
+ *       estimates it from photons too;
  *   the fitted initial radius (--fit-radius) and R0 in footprints: the paper leaves R0
  *       to the user;
  *   the disc coverage (--disc-coverage), above;
