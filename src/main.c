@@ -20,6 +20,7 @@
 #include "app/tile.h"
 #include "app/work_file.h"
 #include "base/alloc.h"
+#include "base/output.h"
 #include "image/compare.h"
 #include "image/plot.h"
 #include "modes/direct.h"

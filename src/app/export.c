@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/output.h"
 #include "options.h"
 
 #define EXPORT_USAGE                                                                      \

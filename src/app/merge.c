@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/output.h"
 #include "../image/image.h"
 #include "options.h"
 #include "tile.h"

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "../base/output.h"
 #include "../modes/jensen1994_maps.h"
 #include "../modes/photons.h"
 #include "../photon/estimate.h"
