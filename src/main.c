@@ -13,6 +13,7 @@
 #include <time.h>
 
 #include "app/export.h"
+#include "app/option_values.h"
 #include "app/options.h"
 #include "app/merge.h"
 #include "app/probe.h"

@@ -11,7 +11,7 @@
 
 #include "../base/alloc.h"
 #include "../base/output.h"
-#include "options.h"
+#include "option_values.h"
 
 #define EXPORT_USAGE                                                                      \
     "usage: photon export --format pbrt|mitsuba|blender SCENE -o OUT [--spp N] "         \
