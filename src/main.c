@@ -13,6 +13,7 @@
 #include <time.h>
 
 #include "app/export.h"
+#include "app/option_values.h"
 #include "app/options.h"
 #include "app/merge.h"
 #include "app/probe.h"
@@ -20,6 +21,7 @@
 #include "app/tile.h"
 #include "app/work_file.h"
 #include "base/alloc.h"
+#include "base/output.h"
 #include "image/compare.h"
 #include "image/plot.h"
 #include "modes/direct.h"

@@ -15,6 +15,11 @@
 #     measured row in reference/suite.md; every PFM in reference/ has its line; every
 #     scene the table names exists, every scenes/analytic/ scene has a reference, and
 #     every option the table gives is one photon's --help lists. Nothing is rendered.
+#  5. No include circle: module dir/x is src/dir/x.c with src/dir/x.h, and depends on every
+#     module whose header one of its two files includes (#include "..." resolved from the
+#     including file's folder); no module may depend on itself round a circle (README:
+#     Where things are). Each circle is printed as the shortest way back to one of its
+#     modules, starting from the least name: "a -> b -> a".
 # Prints one line per problem and "docs: N problems"; exits 1 when there is any.
 set -u
 photon=$1
@@ -125,6 +130,53 @@ sed -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' "$suite" |
 } > docs-suite-problems.tmp
 while read -r line; do problem "$line"; done < docs-suite-problems.tmp
 rm -f docs-suite.tmp docs-suite-problems.tmp
+
+# 5. Include circles. One awk reads every include line of src/, resolves its path, and looks
+#    from each module for the shortest way back to it (breadth first).
+find src -name '*.[ch]' | sort | xargs awk '
+function module(path) { sub(/^src\//, "", path); sub(/\.[ch]$/, "", path); return path }
+function resolve(dir, name,    n, part, i, k, kept, path) {
+    n = split(dir "/" name, part, "/")
+    k = 0
+    for (i = 1; i <= n; i++)
+        if (part[i] == "..") k--
+        else if (part[i] != "." && part[i] != "") kept[++k] = part[i]
+    path = kept[1]
+    for (i = 2; i <= k; i++) path = path "/" kept[i]
+    return path
+}
+/^[ \t]*#[ \t]*include[ \t]*"/ {
+    name = $0; sub(/^[^"]*"/, "", name); sub(/".*/, "", name)
+    dir = FILENAME; sub(/\/[^\/]*$/, "", dir)
+    a = module(FILENAME); b = module(resolve(dir, name))
+    if (a != b && !((a, b) in edge)) { edge[a, b] = 1; after[a] = after[a] " " b; node[a] = 1 }
+}
+END {
+    for (start in node) {
+        split("", from); split("", seen)
+        head = 1; tail = 1; queue[1] = start; last = ""
+        while (head <= tail && last == "") {
+            at = queue[head++]
+            n = split(after[at], next_of, " ")
+            for (i = 1; i <= n && last == ""; i++)
+                if (next_of[i] == start) last = at
+                else if (!(next_of[i] in seen)) {
+                    seen[next_of[i]] = 1; from[next_of[i]] = at; queue[++tail] = next_of[i]
+                }
+        }
+        if (last == "") continue
+        k = 0  # ring[k], ..., ring[1]: start -> ... -> last, the way back found
+        for (m = last; m != start; m = from[m]) ring[++k] = m
+        ring[++k] = start
+        least = 1
+        for (i = 2; i <= k; i++) if (ring[i] < ring[least]) least = i
+        text = ring[least]; i = least
+        do { i = i == 1 ? k : i - 1; text = text " -> " ring[i] } while (i != least)
+        if (!(text in told)) { told[text] = 1; print text }
+    }
+}' | sort > docs-circles.tmp
+while read -r line; do problem "include circle: $line"; done < docs-circles.tmp
+rm -f docs-circles.tmp
 
 echo "docs: $n README commands run, $problems problems"
 [ "$problems" -eq 0 ]

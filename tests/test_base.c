@@ -9,6 +9,7 @@
 #include "../src/base/alloc.h"
 #include "../src/base/error.h"
 #include "../src/base/hash.h"
+#include "../src/base/output.h"
 #include "../src/base/rng.h"
 #include "../src/base/sequence02.h"
 #include "files.h"

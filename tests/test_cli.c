@@ -590,7 +590,7 @@ static void remove_outputs(const char *name)
     }
 }
 
-/* truth: the naming rule of -o (options.h, read_output): NAME.pfm is always written, and
+/* truth: the naming rule of -o (option_values.h, read_output): NAME.pfm is always written, and
  *   beside it NAME.png, or NAME.ppm when -o names one; nothing else. --checkpoint's
  *   snapshots and photon merge follow the same rule. The PFM does not depend on -o's ending.
  * catches: the display image written over the PFM (x.png holding a PFM), a PNG written

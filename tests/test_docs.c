@@ -1,7 +1,8 @@
 /*
  * tests/test_docs.c -- the documentation against the product: tests/docs.sh checks that
  * every file the documents name exists, that every option their command lines show is one
- * photon takes, and runs the README's commands as shown.
+ * photon takes, and that src/'s includes close no circle between modules, and runs the
+ * README's commands as shown.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,7 +18,7 @@
  *   command run as a user would (with --quality preview appended to renders).
  * catches: a document naming a file that was moved or never committed, an option renamed
  *   or removed under the README's feet, a command whose output directory or input is
- *   missing in a fresh clone. */
+ *   missing in a fresh clone, an include that closes a circle between modules. */
 static void test_documented_commands_work(struct check *t)
 {
     char command[1024];

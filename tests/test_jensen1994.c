@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "../src/image/compare.h"
+#include "../src/modes/jensen1994.h"
 #include "../src/modes/jensen1994_maps.h"
 #include "../src/photon/estimate.h"
 #include "../src/photon/kdtree.h"

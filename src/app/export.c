@@ -10,7 +10,8 @@
 #include <string.h>
 
 #include "../base/alloc.h"
-#include "options.h"
+#include "../base/output.h"
+#include "option_values.h"
 
 #define EXPORT_USAGE                                                                      \
     "usage: photon export --format pbrt|mitsuba|blender SCENE -o OUT [--spp N] "         \

@@ -28,6 +28,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "../base/output.h"
 #include "export.h"
 
 #define PI 3.14159265358979323846

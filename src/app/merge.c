@@ -14,8 +14,9 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/output.h"
 #include "../image/image.h"
-#include "options.h"
+#include "option_values.h"
 #include "tile.h"
 
 #define MERGE_USAGE "usage: photon merge -o FULL.pfm TILE.pfm [TILE.pfm ...] [--exposure E]"

@@ -9,7 +9,7 @@
  * two overlapping, and together covering every pixel. Then FULL.pfm is the whole image,
  * byte for byte the file a render without --crop writes (README: a crop renders
  * bit-identically to the same window of the whole image), and its display image is beside
- * it: FULL.png, or FULL.ppm for -o FULL.ppm (-o as for a render, options.h read_output;
+ * it: FULL.png, or FULL.ppm for -o FULL.ppm (-o as for a render, option_values.h read_output;
  * --exposure too). Anything else exits 2 with a message naming the file, the
  * overlap or the missing windows, and writes nothing.
  */

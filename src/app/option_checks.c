@@ -34,6 +34,7 @@
 #include <string.h>
 
 #include "../modes/render.h"
+#include "option_values.h"
 #include "presets.h"
 
 /* Whether a layer's words (a preset's, --paper's) name the option called name. */

@@ -9,7 +9,7 @@
 #ifndef PHOTON_OPTION_CHECKS_H
 #define PHOTON_OPTION_CHECKS_H
 
-#include "options.h"
+#include "render_options.h"
 
 /* Which options the command line itself gave: given(table, name) is the index in argv of
  * the word that named the option called name, 0 when none did (a preset or --paper may

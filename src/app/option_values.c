@@ -1,7 +1,7 @@
 /*
  * app/option_values.c -- reading the values that follow an option's name: numbers, the
- * seed, -o's file name, --irradiance-store's word (options.h, option_values.h); and
- * the defaults each mode gives the options left unset.
+ * seed, -o's file name, the mode's name, --irradiance-store's word (option_values.h);
+ * and the defaults each mode gives the options left unset.
  */
 #include "option_values.h"
 
@@ -16,6 +16,27 @@
 #include "../modes/jensen1996.h"
 #include "../modes/photons.h"
 #include "../modes/sppm2009.h"
+
+const char *mode_name(enum mode mode)
+{
+    switch (mode) {
+    case MODE_DIRECT:
+        return "direct";
+    case MODE_PT:
+        return "pt";
+    case MODE_PHOTONS:
+        return "photons";
+    case MODE_JENSEN1994:
+        return "1994";
+    case MODE_JENSEN1996:
+        return "1996";
+    case MODE_PPM2008:
+        return "2008";
+    case MODE_SPPM2009:
+        return "2009";
+    }
+    return "?";
+}
 
 void number_range(enum number_kind kind, double min, double max, char *text, size_t size)
 {

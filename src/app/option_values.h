@@ -1,12 +1,43 @@
 /*
- * app/option_values.h -- the value readers options.c uses beyond those options.h offers
- * to the subcommands (read_number(), read_seed(), read_output(), in option_values.c), and
- * the defaults that depend on the mode.
+ * app/option_values.h -- reading the values that follow an option's name (numbers, the
+ * seed, -o's file name, the mode, --irradiance-store's word), for the render command's
+ * options (options.c) and the subcommands' alike, and the defaults that depend on the
+ * mode.
  */
 #ifndef PHOTON_OPTION_VALUES_H
 #define PHOTON_OPTION_VALUES_H
 
-#include "options.h"
+#include <stddef.h>
+#include <stdint.h>
+
+#include "../base/error.h"
+#include "render_options.h"
+
+/* --mode's word for mode ("direct", ..., "2009"). */
+const char *mode_name(enum mode mode);
+
+/* What a number must be: whole in [min, max], real in [min, max], real in (min, max], or
+ * real in (min, max). */
+enum number_kind { NUMBER_WHOLE, NUMBER_REAL, NUMBER_ABOVE, NUMBER_BETWEEN };
+
+/* A number from text in base/number.h's syntax and within kind's range; -1 with *err
+ * naming the option (name) and the range otherwise. Also for the subcommands' options. */
+int read_number(const char *name, const char *text, double min, double max,
+                enum number_kind kind, double *value, struct error *err);
+
+/* The range of kind, min and max in words ("a whole number from 1 to 1048576"), as
+ * read_number()'s message and --help say it, into text[size]. */
+void number_range(enum number_kind kind, double min, double max, char *text, size_t size);
+
+/* A --seed value: a whole number from 0 to 2^64 - 1; -1 with *err filled otherwise. */
+int read_seed(const char *text, uint64_t *seed, struct error *err);
+
+/* An -o value: a file name NAME.pfm, NAME.png or NAME.ppm (NAME not empty) shorter than
+ * OUTPUT_PATH_MAX. Puts NAME.pfm, the image of record always written, in
+ * output[OUTPUT_PATH_MAX], and the display image beside it in *display: PPM for NAME.ppm,
+ * else PNG. -1 with *err filled otherwise. Also for photon merge. */
+int read_output(const char *text, char *output, enum display_format *display,
+                struct error *err);
 
 /* --irradiance-store's word: *illumination 0 for photon, 1 for illumination; -1 with *err
  * filled for any other word. */

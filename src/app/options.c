@@ -273,27 +273,6 @@ static const struct option_spec specs[] = {
 };
 #define N_SPECS (sizeof specs / sizeof specs[0])
 
-const char *mode_name(enum mode mode)
-{
-    switch (mode) {
-    case MODE_DIRECT:
-        return "direct";
-    case MODE_PT:
-        return "pt";
-    case MODE_PHOTONS:
-        return "photons";
-    case MODE_JENSEN1994:
-        return "1994";
-    case MODE_JENSEN1996:
-        return "1996";
-    case MODE_PPM2008:
-        return "2008";
-    case MODE_SPPM2009:
-        return "2009";
-    }
-    return "?";
-}
-
 static const enum mode every_mode[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1994,
                                        MODE_JENSEN1996, MODE_PPM2008, MODE_SPPM2009};
 #define N_MODES (sizeof every_mode / sizeof every_mode[0])

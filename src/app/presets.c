@@ -23,6 +23,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "option_values.h"
+
 struct preset {
     enum mode mode;
     enum quality quality;

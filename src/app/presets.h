@@ -12,7 +12,7 @@
 
 #include "../base/error.h"
 #include "help.h"
-#include "options.h"
+#include "render_options.h"
 
 #define PRESET_MAX_WORDS 24  /* longest word list in the table, with room to spare */
 #define PRESET_MAX_CHARS 256 /* longest word list's characters, with its final '\0' */

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "../base/output.h"
 #include "../modes/jensen1994_maps.h"
 #include "../modes/photons.h"
 #include "../photon/estimate.h"
@@ -14,7 +15,7 @@
 #include "../photon/kdtree.h"
 #include "../photon/trace.h"
 #include "../scene/brdf.h"
-#include "options.h"
+#include "option_values.h"
 
 #define PROBE_DEFAULT_GATHER 200      /* the paper's Fig. 8: "200 photons per estimate"  */
 #define PROBE_DEFAULT_PHOTONS 1000000 /* light rays: reference/fig8-*.svg were made with

@@ -5,6 +5,7 @@
 
 #include <time.h>
 
+#include "../base/output.h"
 #include "../image/compare.h"
 
 int report_open(struct report *r, const char *csv_path, const struct image *reference,

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "../base/input.h"
+#include "../base/output.h"
 #include "../image/image.h"
 
 #define RECORD_LINE_MAX 128 /* the longest valid line, "window" with four 5-digit numbers,

@@ -16,6 +16,7 @@
 #include "../base/alloc.h"
 #include "../base/binary.h"
 #include "../base/hash.h"
+#include "../base/output.h"
 #include "../photon/illumination_map.h"
 
 #define PHOTON_BYTES 20   /* a photon in the file, as in memory (photon.h)   */

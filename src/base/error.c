@@ -1,10 +1,7 @@
 /*
- * base/error.c -- error records and fatal(), which removes every temporary output
- * (output.h) before it exits.
+ * base/error.c -- error records and fatal().
  */
 #include "error.h"
-
-#include "output.h"
 
 #include <errno.h>
 #include <stdarg.h>
@@ -63,7 +60,6 @@ void error_print(const struct error *err)
 
 void fatal(const char *format, ...)
 {
-    outputs_abandon();
     va_list args;
     va_start(args, format);
     fputs("photon: ", stderr);

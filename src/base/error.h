@@ -6,11 +6,12 @@
  * main() prints "file:line: message" and exits with status 2.
  *
  * Machine failures (out of memory, a failed write) exit with status 1: out of memory
- * through fatal(), which removes every temporary output still open and prints
- * "photon: message"; a failed write is reported like bad input, with failed_write set,
- * so that the command finishes cleanly and exits 1 (error_exit_status). An output
- * that cannot be written where it is to go is bad input, found by outputs_check()
- * before any work (output.h, where outputs are written whole or not at all).
+ * through fatal(), which prints "photon: message" and exits, and at exit every temporary
+ * output still open is removed (output.h); a failed write is reported like bad input,
+ * with failed_write set, so that the command finishes cleanly and exits 1
+ * (error_exit_status). An output that cannot be written where it is to go is bad input,
+ * found by outputs_check() before any work (output.h, where outputs are written whole or
+ * not at all).
  */
 #ifndef PHOTON_ERROR_H
 #define PHOTON_ERROR_H
@@ -38,9 +39,8 @@ void error_print(const struct error *err);
 /* The exit status for err: 1 when a write failed, 2 for bad input. */
 int error_exit_status(const struct error *err);
 
-/* Removes temporary outputs, prints "photon: message" and exits with status 1. */
+/* Prints "photon: message" and exits with status 1; exit() runs the output registry's
+ * cleanup, which removes every temporary output (output.h registers it by atexit()). */
 void fatal(const char *format, ...);
-
-#include "output.h" /* output_open() and the rest, once here */
 
 #endif

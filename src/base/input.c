@@ -2,32 +2,17 @@
  * base/input.c -- files photon reads: regular files only, read to their size (input.h).
  *
  * C99 cannot ask what kind of file a name is, so input_open() asks by behaviour:
- * "NAME/." opens only for a directory; a pipe cannot seek to its end; and a regular file
- * has nothing past its end, where a device such as /dev/zero (which says its size is 0)
- * goes on giving bytes. A file that passes all three is read to the size it had.
+ * "NAME/." opens only for a directory (file_kind.h); a pipe cannot seek to its end; and a
+ * regular file has nothing past its end, where a device such as /dev/zero (which says its
+ * size is 0) goes on giving bytes. A file that passes all three is read to the size it had.
  */
 #include "input.h"
 
 #include <errno.h>
 #include <string.h>
 
-#include "alloc.h"
+#include "file_kind.h"
 #include "output.h"
-
-int input_is_directory(const char *name)
-{
-    if (name[0] == '\0')
-        return 0;
-    size_t n = strlen(name);
-    char *dot = xmalloc(n + 3, 1, "file name");
-    memcpy(dot, name, n);
-    memcpy(dot + n, "/.", 3);
-    FILE *f = fopen(dot, "rb");
-    xfree(dot);
-    if (f != NULL)
-        fclose(f);
-    return f != NULL;
-}
 
 /* Measures in->f's size and makes sure nothing follows it; leaves it at its start. */
 static int measure(struct input *in, struct error *err)
@@ -56,7 +41,7 @@ int input_open(struct input *in, const char *name, struct error *err)
     in->f = NULL;
     if (name[0] == '\0')
         return error_set(err, "", 0, "an empty file name");
-    if (input_is_directory(name))
+    if (file_is_directory(name))
         return error_set(err, name, 0, "is a directory");
     errno = 0;
     in->f = fopen(name, "rb");

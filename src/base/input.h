@@ -45,7 +45,4 @@ int input_line(struct input *in, char *text, size_t size, struct error *err);
 /* Closes what input_open() opened; a closed or never opened input is left alone. */
 void input_close(struct input *in);
 
-/* Whether name is a directory: name + "/." opens only when it is (C99 has no stat()). */
-int input_is_directory(const char *name);
-
 #endif

@@ -15,8 +15,8 @@
 #include <time.h>
 
 #include "alloc.h"
+#include "file_kind.h"
 #include "hash.h"
-#include "input.h"
 
 #define PROBE_MARKER_MAX 64 /* "photon-output-check" + two numbers */
 #define COMPARE_CHUNK 65536 /* bytes compared at a time when an output may be an input */
@@ -166,7 +166,7 @@ static int input_goes_through(struct output *o, const char *input, struct error 
 static int refuse_if_same(struct output *o, const char *input, long size, struct error *err)
 {
     if (o->lone || o->state != OUTPUT_DECLARED || file_size(o->name) != size ||
-        input_is_directory(o->name) || !same_bytes(o->name, input))
+        file_is_directory(o->name) || !same_bytes(o->name, input))
         return 0;
     int through = input_goes_through(o, input, err);
     if (through < 0)
@@ -200,7 +200,7 @@ static int check_name(const struct output *o, struct error *err)
     size_t n = strlen(o->name);
     if (n == 0)
         return error_set(err, "", 0, "%s: an empty file name", o->role);
-    if (o->name[n - 1] == '/' || input_is_directory(o->name))
+    if (o->name[n - 1] == '/' || file_is_directory(o->name))
         return error_set(err, o->name, 0, "is a directory (%s)", o->role);
     if (n + 5 > OUTPUT_NAME_MAX)
         return error_set(err, o->name, 0, "the file name is too long (%s)", o->role);

@@ -42,6 +42,7 @@
 #include "compare.h"
 
 #include "../base/number.h"
+#include "../base/output.h"
 #include "png.h"
 
 #include <assert.h>

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/output.h"
 #include "png.h"
 
 /* sRGB encoding of a linear value: 12.92 c on the linear segment c <= 0.0031308, else

@@ -24,6 +24,7 @@
 #include "image.h"
 
 #include "../base/input.h"
+#include "../base/output.h"
 
 #include <assert.h>
 #include <float.h>

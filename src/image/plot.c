@@ -37,6 +37,7 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/output.h"
 #include "csv.h"
 
 #define SERIES_MAX_ROWS 1000000 /* rows per file: a report has one per checkpoint */

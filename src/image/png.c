@@ -26,6 +26,7 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/output.h"
 
 #define STORED_BLOCK_MAX 65535 /* RFC 1951 Sec. 3.2.4: LEN is 16 bits                */
 #define ADLER_BASE 65521       /* RFC 1950 Sec. 2.2: the largest prime below 65536    */

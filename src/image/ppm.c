@@ -10,6 +10,7 @@
 
 
 #include "../base/alloc.h"
+#include "../base/output.h"
 
 int ppm_write(const char *name, const struct image *img, double exposure, struct error *err)
 {

@@ -46,7 +46,7 @@
  * every crop repeats; --load-photons reads them from a file instead (photon/
  * global_work.h).
  */
-#include "jensen1994_maps.h"
+#include "jensen1994.h"
 
 #include <string.h>
 #include <time.h>
@@ -57,32 +57,9 @@
 #include "../photon/projection_map.h"
 #include "../photon/trace.h"
 #include "cache_pass.h"
+#include "jensen1994_maps.h"
 #include "photons.h"
 #include "surface.h"
-
-
-struct jensen1994_settings jensen1994_settings_default(void)
-{
-    struct jensen1994_settings js;
-    js.n_photons = J94_DEFAULT_PHOTONS;
-    js.gather = J94_DEFAULT_GATHER;
-    js.max_radius = 0;
-    js.differential_run = DIFFERENTIAL_RUN;
-    js.count_rim = 0;
-    js.gather_rays = J94_DEFAULT_GATHER_RAYS;
-    js.cache_accuracy = J94_DEFAULT_CACHE_ACCURACY;
-    js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;
-    js.caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
-    js.both_lobes = 1;
-    js.glossy_gather = 1;
-    js.glossy_photons = 1;
-    js.bounded_reach = 1;
-    js.gradient_limit = 1;
-    js.projection_maps = 1;
-    js.illumination_maps = 0;
-    js.work = NULL;
-    return js;
-}
 
 /* ---- Sec. 4, pass 2: Monte Carlo ray tracing ---- */
 

@@ -5,7 +5,8 @@
 #ifndef PHOTON_JENSEN1994_MAPS_H
 #define PHOTON_JENSEN1994_MAPS_H
 
-#include "jensen1994.h"
+#include "../scene/scene.h"
+#include "jensen1994_settings.h"
 
 struct kdtree;
 struct illumination_maps;

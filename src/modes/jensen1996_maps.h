@@ -13,9 +13,10 @@
 
 #include "../photon/kdtree.h"
 #include "../scene/scene.h"
-#include "jensen1996.h"
+#include "jensen1996_settings.h"
+#include "render.h"
 
-/* The maps pass 2 reads, borrowed from the render's global work (jensen1996.h). */
+/* The maps pass 2 reads, borrowed from the render's global work (jensen1996_settings.h). */
 struct photon_maps {
     struct kdtree *global;      /* L (S|D)* D, without shadow photons                     */
     struct kdtree *caustic;     /* L S+ D; NULL without specular objects or with one_map  */

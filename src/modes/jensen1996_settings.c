@@ -1,7 +1,8 @@
 /*
- * modes/jensen1996_settings.c -- the defaults of `--mode 1996`'s settings (jensen1996.h).
+ * modes/jensen1996_settings.c -- the defaults of `--mode 1996`'s settings
+ * (jensen1996_settings.h).
  */
-#include "jensen1996.h"
+#include "jensen1996_settings.h"
 
 #include "photons.h"
 

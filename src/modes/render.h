@@ -50,6 +50,7 @@
 #include "../base/rng.h"
 #include "../image/image.h"
 #include "../scene/scene.h"
+#include "render_counters.h"
 
 #define MAX_SPP (1 << 20)    /* documented limit on samples per pixel */
 #define DEFAULT_SPP 16       /* --spp when not given, for the camera-driven modes */
@@ -83,21 +84,6 @@ struct render_settings {
     int specular_spp;   /* when more than spp: the samples, in place of spp, of a pixel
                            in which the camera sees a light through mirrors or glass;
                            otherwise those take spp too                                  */
-};
-
-struct render_counters {
-    unsigned long long rays;              /* rays cast: camera, secondary and shadow     */
-    unsigned long long nonfinite_samples; /* samples dropped for NaN or Inf: always 0
-                                             unless a bug lets one through              */
-    unsigned long long samples;           /* camera samples taken, over all pixels of the
-                                             window (added to, like rays): divided by
-                                             the window's pixels, the mean spp          */
-    int passes;                           /* sample passes run: the most samples a pixel
-                                             took (spp reached when adaptive is off;
-                                             specular_spp when specular_pixels > 0)     */
-    size_t specular_pixels;               /* pixels of the window that take specular_spp
-                                             samples: the camera sees a light through
-                                             mirrors or glass in them (set, not added)  */
 };
 
 /* Radiance arriving at the camera along ray, estimated by a mode from its own state. */

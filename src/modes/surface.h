@@ -11,7 +11,7 @@
 #include "../base/rng.h"
 #include "../scene/brdf.h"
 #include "../scene/scene.h"
-#include "render.h"
+#include "render_counters.h"
 
 #define ROULETTE_DEPTH 3 /* bounces before roulette, as in pbrt: short paths are cheap */
 

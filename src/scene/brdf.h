@@ -27,6 +27,7 @@
 #ifndef PHOTON_BRDF_H
 #define PHOTON_BRDF_H
 
+#include "brdf_sample.h"
 #include "material.h"
 
 /* What a path carries, which decides how refraction scales it (Veach 1997, Sec. 5.2):
@@ -44,18 +45,6 @@ struct shading_frame {
     int front;                /* 1 if n is the primitive's front (outside) normal: glass
                                  refracts from index 1 into ior; 0 from ior into 1      */
     enum transport transport; /* what the path carries                                  */
-};
-
-/* One sampled direction. */
-struct brdf_sample {
-    struct vec3 wi;     /* unit, away from the surface                                    */
-    struct vec3 weight; /* the throughput multiplier: f cos_i / pdf for a non-delta
-                           sample; reflectance / probability for a delta one; both
-                           include 1 / eta^2 for radiance refracted by glass            */
-    double pdf;         /* non-delta: solid-angle pdf of wi, equal to brdf_pdf(wo, wi);
-                           delta: the probability of having chosen that lobe            */
-    int delta;          /* 1 if wi came from a mirror or refraction lobe                 */
-    int transmitted;    /* 1 if wi crosses the surface (refraction)                      */
 };
 
 /* The frame around unit normal n (t and b from vec3_frame()). */

@@ -14,7 +14,8 @@
 #ifndef PHOTON_BRDF_MODELS_H
 #define PHOTON_BRDF_MODELS_H
 
-#include "brdf.h"
+#include "brdf_sample.h"
+#include "material.h"
 
 struct vec3 phong_eval(const struct material *m, struct vec3 wo, struct vec3 wi);
 double phong_pdf(const struct material *m, struct vec3 wo, struct vec3 wi);

@@ -37,6 +37,7 @@
  */
 #include "emit.h"
 
+#include "brdf.h"
 #include "brdf_models.h"
 #include "scene.h"
 

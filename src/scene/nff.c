@@ -67,6 +67,7 @@
 #include "../geom/polygon.h"
 #include "../geom/triangle.h"
 #include "../image/image.h"
+#include "reach.h"
 
 #define NFF_MAX_LINE 4096  /* longest line in bytes, newline included; SPD's are < 100 */
 #define NFF_MAX_TOKENS 16  /* the longest NFF line, `c` with its 8 numbers, has 9 words */

@@ -19,6 +19,7 @@
 #include "../image/image.h"
 #include "nff.h"
 #include "parser.h"
+#include "reach.h"
 
 static int parse_file(struct scene *scene, const char *path, int depth, struct error *err);
 

@@ -11,28 +11,16 @@
  *     distance, and further out the picture moves, then hit points snap together;
  *   - the camera's distance to its look-at point must be at least REACH_MIN_CAMERA = 1e-6,
  *     above which a blocker just over a floor still casts its shadow.
- * The reach counts every primitive's box, every point light and the camera.
+ * The reach counts every primitive's box, every point light and the camera; what has been
+ * counted so far is the scene's own record (reach_record.h).
  */
 #ifndef PHOTON_REACH_H
 #define PHOTON_REACH_H
-
-#include <stddef.h>
 
 #include "../base/error.h"
 
 #define REACH_MAX_RATIO 1099511627776.0 /* 2^40: see above */
 #define REACH_MIN_CAMERA 1e-6           /* 1000 x the smallest ray offset, 1e-9       */
-
-/* What the readers have seen of the scene's reach so far. */
-struct scene_reach {
-    double reach;                /* the largest |coordinate| seen (primitive, light, camera) */
-    char file[ERROR_FILE_MAX];   /* the line that reached it, for the message                */
-    int line;
-    size_t n_prims, n_lights;    /* primitives and lights counted so far                     */
-    int camera_counted;
-    char camera_file[ERROR_FILE_MAX]; /* the camera's line                                   */
-    int camera_line;
-};
 
 struct scene;
 

@@ -23,7 +23,7 @@
 #include "camera.h"
 #include "light.h"
 #include "material.h"
-#include "reach.h"
+#include "reach_record.h"
 
 #define MAX_MATERIALS 65536 /* documented limit: far beyond any real scene, bounds memory */
 #define MAX_LIGHTS 65536    /* likewise; direct lighting samples every light at each hit */

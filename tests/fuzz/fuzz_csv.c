@@ -6,6 +6,7 @@
  */
 #include <stdint.h>
 
+#include "../../src/base/output.h"
 #include "../../src/image/csv.h"
 #include "input.h"
 

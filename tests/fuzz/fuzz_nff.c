@@ -10,6 +10,7 @@
  */
 #include <stdint.h>
 
+#include "../../src/base/output.h"
 #include "../../src/scene/nff.h"
 #include "input.h"
 

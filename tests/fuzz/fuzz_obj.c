@@ -10,6 +10,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "../../src/base/output.h"
 #include "../../src/scene/obj.h"
 #include "input.h"
 

@@ -8,6 +8,7 @@
  */
 #include <stdint.h>
 
+#include "../../src/base/output.h"
 #include "../../src/image/image.h"
 #include "input.h"
 

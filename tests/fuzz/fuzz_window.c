@@ -8,6 +8,7 @@
 #include <stdio.h>
 
 #include "../../src/app/tile.h"
+#include "../../src/base/output.h"
 #include "input.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

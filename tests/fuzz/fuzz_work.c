@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "../../src/app/work_file.h"
+#include "../../src/base/output.h"
 #include "input.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
