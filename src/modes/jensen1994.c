@@ -376,7 +376,7 @@ static struct vec3 eye_radiance(const struct j94 *m, const struct surface *s, st
          * lobe's highlight of one would be lost (the sphere flake's Phong spheres would be
          * dark: src/modes/README.md), so the point lights are sampled through a glossy
          * lobe too. */
-        if (brdf_has_diffuse(&split.specular))
+        if (brdf_has_non_delta(&split.specular))
             l = vec3_add(l, direct_light(m, s, &split.specular, &frame, 1, rng, counters));
     }
     return l;

@@ -128,7 +128,7 @@ static unsigned char *receiving_primitives(const struct scene *scene)
                                       "receiving primitives");
     for (size_t i = 0; i < n_prims; i++) {
         int material = geometry_primitive_material(scene->geometry, (int)i);
-        receives[i] = (unsigned char)brdf_has_diffuse(&scene->materials[material]);
+        receives[i] = (unsigned char)brdf_has_non_delta(&scene->materials[material]);
     }
     return receives;
 }

@@ -269,7 +269,7 @@ static struct vec3 specular_reflection(const struct j96 *m, const struct surface
                                                 counters));
         return sum;
     }
-    int glossy = brdf_has_diffuse(&split->specular); /* a non-delta lobe */
+    int glossy = brdf_has_non_delta(&split->specular); /* a non-delta lobe */
     int n_rays = path.eval == ACCURATE && glossy && !path.split ? m->js->glossy_rays : 1;
     for (int r = 0; r < n_rays; r++) {
         double u[3];
@@ -469,7 +469,7 @@ static struct vec3 surface_radiance(const struct j96 *m, const struct surface *s
         if (split.has_diffuse)
             l = vec3_add(l, global_estimate(m, s, &split, &frame, &r2));
     } else {
-        if (brdf_has_diffuse(s->material))
+        if (brdf_has_non_delta(s->material))
             l = vec3_add(l, direct_illumination(m, s, &frame, rng, counters));
         if (split.has_diffuse) {
             l = vec3_add(l, caustics(m, s, &split, &frame));

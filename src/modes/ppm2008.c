@@ -376,9 +376,9 @@ static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct eye_pa
                                                                TRANSPORT_RADIANCE);
         if (sees_emission)
             seen = vec3_add(seen, vec3_mul(path.beta, surface_emission(&s)));
-        if (path.stores && brdf_has_diffuse(s.material))
+        if (path.stores && brdf_has_non_delta(s.material))
             store_hit_point(ppm, &s, &frame, &path);
-        else if (!ppm->ps->progressive.direct_photons && brdf_has_diffuse(s.material))
+        else if (!ppm->ps->progressive.direct_photons && brdf_has_non_delta(s.material))
             ppm_direct_sample(&ppm->direct, path.pixel, ppm->surfaces_met++, ppm->pass, &s,
                               &frame, path.beta, ppm->counters);
         struct brdf_sample lobes[2];

@@ -259,7 +259,7 @@ static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ra
                 u[k] = rng_uniform(rng); /* one by one: an initializer's order is unspecified */
             struct brdf_sample bs;
             const struct material *lobe = part->has_diffuse ? &part->specular : s.material;
-            if (!sppm->ps->progressive.direct_photons && brdf_has_diffuse(lobe)) {
+            if (!sppm->ps->progressive.direct_photons && brdf_has_non_delta(lobe)) {
                 struct surface glossy = s;
                 glossy.material = lobe;
                 ppm_direct_point_lights(&sppm->direct, pixel, (uint64_t)depth + 1, pass,
