@@ -12,23 +12,18 @@
  *   Lr = int f_r L_l cos + int f_r,s (L_c + L_d) cos + int f_r,d L_c cos + int f_r,d L_d cos,
  * the light split into direct (l), caustic (c: via specular surfaces only) and soft
  * indirect (d: reflected diffusely at least once), the BRDF into a diffuse and a specular
- * part (brdf_split(), scene/brdf.h). Each term is evaluated accurately or approximately:
- *   accurate     at surfaces seen from the eye directly or through specular (and glossy)
- *                reflections while the ray's weight is at least --accurate-weight:
- *                direct light by light sampling, with shadow rays only where the shadow
+ * part (brdf_split(), scene/brdf.h). Where each term is evaluated accurately and where
+ * approximately is Sec. 4's rule (accurate_or_approximate()); how:
+ *   accurate     direct light by light sampling, with shadow rays only where the shadow
  *                photons nearby disagree (4.1); the specular part by Monte Carlo with
  *                BRDF importance sampling (4.2); caustics from the caustic map with the
  *                cone filter (4.3); soft indirect light by a final gather guided by the
  *                global map's photons, through Ward's irradiance cache on Lambertian
  *                surfaces (4.4);
- *   corner       at the end of a gather ray shorter than --accurate-distance radii of the
- *                global estimate there ("otherwise we might risk inaccurate colour
- *                bleeding effects in corners"), and at surfaces seen through a glossy
- *                reflection (whose blur hides the map's; --no-glossy-corner evaluates
- *                them accurately, the paper's way): as accurate, except that the soft
+ *   corner       (at the end of a short gather ray) as accurate, except that the soft
  *                indirect light is the global map's estimate from its indirect photons;
- *   approximate  after a diffuse bounce or at low weight: the global map's radiance
- *                estimate of the diffuse part, and still the specular part by Monte Carlo.
+ *   approximate  the global map's radiance estimate of the diffuse part, and still the
+ *                specular part by Monte Carlo.
  *
  * Counting every path once. Direct light at accurate and corner points is light sampling
  * through the whole non-delta BRDF, so a ray sampled there by the specular part must not
@@ -77,6 +72,7 @@
 
 /* ---- Sec. 4, pass 2: rendering ---- */
 
+/* How a surface is evaluated (the top of the file; accurate_or_approximate() decides). */
 enum evaluation { ACCURATE, CORNER, APPROXIMATE };
 
 /* Which emission a ray may add where it lands (see the top of the file). */
@@ -93,7 +89,7 @@ struct path {
     int depth;               /* bounces so far                                           */
     enum evaluation eval;    /* how the surface it reaches is evaluated                  */
     enum emission_rule rule; /* which emission it may add                               */
-    int split;               /* whether it already branched into glossy_rays rays        */
+    int branched;            /* whether it already branched into glossy_rays rays        */
 };
 
 /* The render's scratch and tallies: one per render, reached through the const mode. */
@@ -128,6 +124,47 @@ struct j96 {
 
 static struct vec3 trace(const struct j96 *m, struct ray ray, struct path path, struct rng *rng,
                          struct render_counters *counters);
+static struct vec3 surface_radiance(const struct j96 *m, const struct surface *s,
+                                    struct path path, struct rng *rng,
+                                    struct render_counters *counters);
+
+/* A ray reaching a surface, as accurate_or_approximate() sees it: after a specular bounce,
+ * how the surface it left was evaluated, whether by a glossy lobe (not a delta one) and
+ * its throughput's luminance; after a diffuse bounce (a gather ray), its length and the
+ * squared radius of the global estimate where it ends (0: none, no diffuse part). */
+enum bounce { FROM_EYE, SPECULAR_BOUNCE, DIFFUSE_BOUNCE };
+struct arrival {
+    enum bounce last; /* the bounce it comes from; FROM_EYE: none, a camera ray */
+    enum evaluation from;
+    int glossy;
+    double weight;
+    double length, radius2;
+};
+
+/* Sec. 4's rule: "We use the accurate computation if the surface is seen directly by the
+ * eye or perhaps via a few specular reflections. We also use the accurate computation if
+ * the distance between the ray origin and the intersection point is below a small
+ * threshold value [...]. The approximate evaluation is used if the ray intersecting the
+ * surface has been reflected diffusely since it left the eye or if the weight of the ray
+ * is low." The few reflections: from an accurate point, with weight --accurate-weight or
+ * more. The small threshold: --accurate-distance radii of the global estimate at the ray's
+ * end, whose disc reaches back towards the gathering point ("colour bleeding effects in
+ * corners"); that end gets the corner evaluation (the top of the file). Departure: a
+ * surface seen through a glossy lobe, whose blur hides the global map's, gets it too
+ * (glossy_corner; off, the paper's: glossy lobes count as specular), sparing a gather for
+ * every glossy ray. */
+static enum evaluation accurate_or_approximate(const struct j96 *m, const struct arrival *a)
+{
+    if (a->last == FROM_EYE)
+        return ACCURATE;
+    if (a->last == DIFFUSE_BOUNCE) {
+        double reach = m->js->accurate_distance;
+        return a->length * a->length < reach * reach * a->radius2 ? CORNER : APPROXIMATE;
+    }
+    if (a->from != ACCURATE || a->weight < m->js->accurate_weight)
+        return APPROXIMATE;
+    return a->glossy && m->js->glossy_corner ? CORNER : ACCURATE;
+}
 
 static struct vec3 emitted(const struct surface *s, enum emission_rule rule)
 {
@@ -214,27 +251,23 @@ static struct vec3 direct_illumination(const struct j96 *m, const struct surface
 
 /* Follows one direction out of the specular part: the path after the bounce (its
  * evaluation and emission rule) and Russian roulette. share: the part of the estimate the
- * direction stands for (1 / rays for one of several samples, 1 for a whole lobe); split:
- * whether the path has branched into glossy rays. */
+ * direction stands for (1 / rays for one of several samples, 1 for a whole lobe);
+ * branched: whether the path has branched into glossy rays. */
 static struct vec3 follow_specular(const struct j96 *m, const struct surface *s,
-                                   const struct brdf_sample *bs, double share, int split,
+                                   const struct brdf_sample *bs, double share, int branched,
                                    struct path path, struct rng *rng,
                                    struct render_counters *counters)
 {
     struct path next;
     next.beta = vec3_mul(path.beta, bs->weight);
     next.depth = path.depth + 1;
-    next.split = split;
+    next.branched = branched;
     double q = roulette_odds(next.beta, path.depth);
     if (q < 1 && !(rng_uniform(rng) < q))
         return vec3_zero();
-    /* Seen through a glossy lobe, whose blur hides the global map's, a surface gets the
-     * corner evaluation: no gather for every ray of every glossy sample (glossy_corner;
-     * off, the paper's accurate evaluation, which counts glossy lobes as specular). */
-    if (path.eval != ACCURATE || vec3_luminance(next.beta) < m->js->accurate_weight)
-        next.eval = APPROXIMATE;
-    else
-        next.eval = bs->delta || !m->js->glossy_corner ? ACCURATE : CORNER;
+    struct arrival bounce = {.last = SPECULAR_BOUNCE, .from = path.eval, .glossy = !bs->delta,
+                             .weight = vec3_luminance(next.beta)};
+    next.eval = accurate_or_approximate(m, &bounce);
     if (bs->delta)
         next.rule = path.rule == EMISSION_SKIP_DIRECT ? EMISSION_COUNTED : path.rule;
     else
@@ -265,12 +298,12 @@ static struct vec3 specular_reflection(const struct j96 *m, const struct surface
         struct brdf_sample lobes[2];
         int n_lobes = brdf_delta_lobes(&split->specular, frame, s->wo, lobes);
         for (int k = 0; k < n_lobes; k++)
-            sum = vec3_add(sum, follow_specular(m, s, &lobes[k], 1.0, path.split, path, rng,
+            sum = vec3_add(sum, follow_specular(m, s, &lobes[k], 1.0, path.branched, path, rng,
                                                 counters));
         return sum;
     }
     int glossy = brdf_has_non_delta(&split->specular); /* a non-delta lobe */
-    int n_rays = path.eval == ACCURATE && glossy && !path.split ? m->js->glossy_rays : 1;
+    int n_rays = path.eval == ACCURATE && glossy && !path.branched ? m->js->glossy_rays : 1;
     for (int r = 0; r < n_rays; r++) {
         double u[3];
         for (int k = 0; k < 3; k++)
@@ -278,7 +311,7 @@ static struct vec3 specular_reflection(const struct j96 *m, const struct surface
         struct brdf_sample bs;
         if (brdf_sample(&split->specular, frame, s->wo, u, &bs))
             sum = vec3_add(sum, follow_specular(m, s, &bs, 1.0 / n_rays,
-                                                path.split || n_rays > 1, path, rng,
+                                                path.branched || n_rays > 1, path, rng,
                                                 counters));
     }
     return sum;
@@ -299,12 +332,44 @@ static struct vec3 caustics(const struct j96 *m, const struct surface *s,
 
 /* -- 4.4 soft indirect illumination: the final gather -- */
 
-/* Radiance arriving along a gather ray that hit s at distance d: the global map's
- * estimate, unless the ray is shorter than --accurate-distance radii of that estimate,
- * where the estimate's disc reaches back towards the gathering point. */
+/* The global map's radiance through the diffuse part at an approximate point, and *r2 its
+ * disc: Eq. 3, or f_r,d times a record's irradiance (the departure from Sec. 4.4 above;
+ * f_r,d towards the normal is rho / pi where it reflects towards wo at all). */
+static struct vec3 global_estimate(const struct j96 *m, const struct surface *s,
+                                   const struct brdf_split *split,
+                                   const struct shading_frame *frame, double *r2)
+{
+    struct vec3 e;
+    if (m->precomputed != NULL && split->lambertian &&
+        precomputed_irradiance_at(m->precomputed, s->p, s->ng, m->scratch->nn, &e, r2)) {
+        m->scratch->stats->precomputed_reads++;
+        return vec3_mul(brdf_eval(&split->diffuse, frame, s->wo, frame->n), e);
+    }
+    m->scratch->stats->global_estimates++;
+    return photon_estimate(m, m->maps.global, &m->global_es, s, &split->diffuse, frame, r2);
+}
+
+/* Radiance arriving along a gather ray that hit s at distance d, evaluated as
+ * accurate_or_approximate() says: in the corner way, or the global map's estimate. */
 static struct vec3 gathered_radiance(const struct j96 *m, const struct surface *s, double d,
                                      struct path path, struct rng *rng,
-                                     struct render_counters *counters);
+                                     struct render_counters *counters)
+{
+    struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
+    struct brdf_split split = brdf_split(s->material);
+    double r2 = 0.0;
+    struct vec3 estimate = vec3_zero();
+    if (split.has_diffuse)
+        estimate = global_estimate(m, s, &split, &frame, &r2);
+    struct arrival bounce = {.last = DIFFUSE_BOUNCE, .length = d, .radius2 = r2};
+    path.eval = accurate_or_approximate(m, &bounce);
+    if (path.eval == CORNER)
+        return surface_radiance(m, s, path, rng, counters);
+    struct vec3 l = vec3_add(emitted(s, path.rule), estimate);
+    if (split.has_specular)
+        l = vec3_add(l, specular_reflection(m, s, &split, &frame, path, rng, counters));
+    return l;
+}
 
 /* Jensen 1995's importance from the photon map on Ward and Heckbert's strata: the flux of
  * the nearest global photons arriving through each stratum, times f_r,d there. */
@@ -438,24 +503,6 @@ static struct vec3 soft_indirect(const struct j96 *m, const struct surface *s,
 
 /* -- a surface, term by term -- */
 
-/* The global map's radiance through the diffuse part at an approximate point, and *r2 its
- * disc: Eq. 3, or f_r,d times a record's irradiance (the departure from Sec. 4.4 above;
- * f_r,d towards the normal is rho / pi where it reflects towards wo at all). */
-static struct vec3 global_estimate(const struct j96 *m, const struct surface *s,
-                                       const struct brdf_split *split,
-                                       const struct shading_frame *frame, double *r2)
-{
-    struct vec3 e;
-    if (m->precomputed != NULL && split->lambertian &&
-        precomputed_irradiance_at(m->precomputed, s->p, s->ng, m->scratch->nn, &e, r2)) {
-        m->scratch->stats->precomputed_reads++;
-        return vec3_mul(brdf_eval(&split->diffuse, frame, s->wo, frame->n), e);
-    }
-    m->scratch->stats->global_estimates++;
-    return photon_estimate(m, m->maps.global, &m->global_es, s, &split->diffuse, frame, r2);
-}
-
-
 /* Radiance leaving s towards s->wo, Eq. 2 evaluated as path.eval says. */
 static struct vec3 surface_radiance(const struct j96 *m, const struct surface *s,
                                     struct path path, struct rng *rng,
@@ -488,28 +535,6 @@ static struct vec3 surface_radiance(const struct j96 *m, const struct surface *s
     return l;
 }
 
-static struct vec3 gathered_radiance(const struct j96 *m, const struct surface *s, double d,
-                                     struct path path, struct rng *rng,
-                                     struct render_counters *counters)
-{
-    struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
-    struct brdf_split split = brdf_split(s->material);
-    double r2 = 0.0;
-    struct vec3 estimate = vec3_zero();
-    if (split.has_diffuse)
-        estimate = global_estimate(m, s, &split, &frame, &r2);
-    double reach = m->js->accurate_distance;
-    if (split.has_diffuse && d * d < reach * reach * r2) {
-        path.eval = CORNER;
-        return surface_radiance(m, s, path, rng, counters);
-    }
-    path.eval = APPROXIMATE;
-    struct vec3 l = vec3_add(emitted(s, path.rule), estimate);
-    if (split.has_specular)
-        l = vec3_add(l, specular_reflection(m, s, &split, &frame, path, rng, counters));
-    return l;
-}
-
 static struct vec3 trace(const struct j96 *m, struct ray ray, struct path path, struct rng *rng,
                          struct render_counters *counters)
 {
@@ -520,21 +545,18 @@ static struct vec3 trace(const struct j96 *m, struct ray ray, struct path path, 
     return surface_radiance(m, &s, path, rng, counters);
 }
 
-static struct path camera_path(void)
+static struct path camera_path(const struct j96 *m)
 {
-    struct path path;
-    path.beta = vec3(1.0, 1.0, 1.0);
-    path.depth = 0;
-    path.split = 0;
-    path.eval = ACCURATE;
-    path.rule = EMISSION_COUNTED;
+    struct arrival from_eye = {.last = FROM_EYE};
+    struct path path = {vec3(1.0, 1.0, 1.0), 0, accurate_or_approximate(m, &from_eye),
+                        EMISSION_COUNTED, 0};
     return path;
 }
 
 static struct vec3 j96_radiance(const void *mode, struct ray ray, struct rng *rng,
                                 struct render_counters *counters)
 {
-    return trace(mode, ray, camera_path(), rng, counters);
+    return trace(mode, ray, camera_path(mode), rng, counters);
 }
 
 /* ---- putting it together ---- */
