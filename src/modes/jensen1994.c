@@ -128,33 +128,53 @@ static struct vec3 diffuse_reflection(const struct surface *s, const struct mate
 
 /* -- 4.0.1 L_r,d,l: direct light -- */
 
-/* Each light sampled on a k x k grid of jittered strata of its sample space, through
- * `part` (the diffuse-like part), with a shadow ray per sample; a point light, whose every
- * sample is the same, once. With points_only, the point lights alone (see
- * specular_light()). */
+/* Light `light` sampled on a k x k grid of jittered strata of its sample space, through
+ * `part`, with a shadow ray per sample; a point light, whose every sample is the same,
+ * once. Adds the samples' mean to *sum. */
+static void add_light_samples(const struct j94 *m, const struct light *light,
+                              const struct surface *s, const struct material *part,
+                              const struct shading_frame *frame, struct rng *rng,
+                              struct render_counters *counters, struct vec3 *sum)
+{
+    int k = light->kind == LIGHT_POINT ? 1 : m->light_strata;
+    for (int j = 0; j < k * k; j++) {
+        double u1 = (j % k + rng_uniform(rng)) / k, u2 = (j / k + rng_uniform(rng)) / k;
+        struct light_sample ls;
+        struct vec3 contribution;
+        if (!light_contribution(light, s, part, frame, u1, u2, &ls, &contribution))
+            continue;
+        m->stats->shadow_rays++;
+        counters->rays++;
+        if (!light_blocked(m->scene, s, &ls))
+            *sum = vec3_add(*sum, vec3_scale(contribution, 1.0 / (k * k)));
+    }
+}
+
+/* L_r,d,l: every light's stratified samples through the diffuse-like part. */
 static struct vec3 direct_light(const struct j94 *m, const struct surface *s,
-                                const struct material *part,
-                                const struct shading_frame *frame, int points_only,
-                                struct rng *rng, struct render_counters *counters)
+                                const struct material *diffuse,
+                                const struct shading_frame *frame, struct rng *rng,
+                                struct render_counters *counters)
 {
     struct vec3 sum = vec3_zero();
-    for (size_t i = 0; i < m->scene->n_lights; i++) {
-        if (points_only && m->scene->lights[i].kind != LIGHT_POINT)
-            continue;
-        int k = m->scene->lights[i].kind == LIGHT_POINT ? 1 : m->light_strata;
-        for (int j = 0; j < k * k; j++) {
-            double u1 = (j % k + rng_uniform(rng)) / k, u2 = (j / k + rng_uniform(rng)) / k;
-            struct light_sample ls;
-            struct vec3 contribution;
-            if (!light_contribution(&m->scene->lights[i], s, part, frame, u1, u2, &ls,
-                                    &contribution))
-                continue;
-            m->stats->shadow_rays++;
-            counters->rays++;
-            if (!light_blocked(m->scene, s, &ls))
-                sum = vec3_add(sum, vec3_scale(contribution, 1.0 / (k * k)));
-        }
-    }
+    for (size_t i = 0; i < m->scene->n_lights; i++)
+        add_light_samples(m, &m->scene->lights[i], s, diffuse, frame, rng, counters, &sum);
+    return sum;
+}
+
+/* A departure without a switch: L_r,s is traced, and a traced ray never meets a point
+ * light, a delta, so a glossy lobe's highlight of one would be lost (the sphere flake's
+ * Phong spheres would be dark: src/modes/README.md); the point lights are sampled
+ * through the glossy lobe too. */
+static struct vec3 point_lights_through_lobe(const struct j94 *m, const struct surface *s,
+                                             const struct material *glossy,
+                                             const struct shading_frame *frame,
+                                             struct rng *rng, struct render_counters *counters)
+{
+    struct vec3 sum = vec3_zero();
+    for (size_t i = 0; i < m->scene->n_lights; i++)
+        if (m->scene->lights[i].kind == LIGHT_POINT)
+            add_light_samples(m, &m->scene->lights[i], s, glossy, frame, rng, counters, &sum);
     return sum;
 }
 
@@ -356,7 +376,7 @@ static struct vec3 eye_radiance(const struct j94 *m, const struct surface *s, st
     struct brdf_split split = brdf_split(s->material);
     struct vec3 l = surface_emission(s);
     if (split.has_diffuse) {
-        l = vec3_add(l, direct_light(m, s, &split.diffuse, &frame, 0, rng, counters));
+        l = vec3_add(l, direct_light(m, s, &split.diffuse, &frame, rng, counters));
         l = vec3_add(l, caustic_light(m, s, &split.diffuse, &frame));
         if (!split.lambertian && m->js->glossy_gather) {
             /* Departs from Sec. 4.0.3, whose diffuse-like surfaces are Lambertian and
@@ -372,12 +392,9 @@ static struct vec3 eye_radiance(const struct j94 *m, const struct surface *s, st
     }
     if (split.has_specular) {
         l = vec3_add(l, specular_light(m, s, &split.specular, &frame, path, rng, counters));
-        /* L_r,s is traced, and a traced ray never meets a point light, a delta: a glossy
-         * lobe's highlight of one would be lost (the sphere flake's Phong spheres would be
-         * dark: src/modes/README.md), so the point lights are sampled through a glossy
-         * lobe too. */
         if (brdf_has_non_delta(&split.specular))
-            l = vec3_add(l, direct_light(m, s, &split.specular, &frame, 1, rng, counters));
+            l = vec3_add(l, point_lights_through_lobe(m, s, &split.specular, &frame, rng,
+                                                      counters));
     }
     return l;
 }
