@@ -91,7 +91,7 @@ static void test_brdf_below_surface_and_kinds(struct check *t)
         CHECK(t, !sample_with(m, &f, below, 0.5, 0.5, 0.5, &s));
         int delta = m->kind == MATERIAL_MIRROR || m->kind == MATERIAL_GLASS ||
                     (m->kind == MATERIAL_SCHLICK && m->roughness == 0);
-        CHECK(t, brdf_is_delta(m) == delta && brdf_has_diffuse(m) == !delta);
+        CHECK(t, brdf_is_delta(m) == delta && brdf_has_non_delta(m) == !delta);
         CHECK(t, !delta || brdf_pdf(m, &f, wo, frame_direction(&f, 0.6, 0.2 + PI)) == 0);
     }
 }

@@ -69,7 +69,7 @@ static struct vec3 scatter(const struct direct_mode *dm, const struct surface *s
     const struct material *m = s->material;
     struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
     struct vec3 l = vec3_zero();
-    if (brdf_has_diffuse(m))
+    if (brdf_has_non_delta(m))
         l = direct_lighting(dm->scene, s, &frame, rng, counters);
     if (brdf_has_delta(m) && depth < dm->max_depth)
         l = vec3_add(l, specular_ray(dm, s, &frame, depth, rng, counters));

@@ -73,9 +73,9 @@ struct path {
                          after a glossy bounce: no caustic photon holds that light)       */
 };
 
-struct j94 {
+struct jensen1994 {
     const struct scene *scene;
-    const struct jensen1994_settings *js;
+    const struct jensen1994_settings *settings;
     struct irradiance_stores stores;
     struct irradiance_settings all_photons, caustic_photons;
     struct irradiance_cache *cache;
@@ -91,10 +91,11 @@ struct j94 {
     struct jensen1994_stats *stats;
 };
 
-static struct vec3 trace(const struct j94 *m, struct ray ray, struct path path, struct rng *rng,
-                         struct render_counters *counters);
-static struct vec3 trace_from(const struct j94 *m, const struct surface *s, struct path path,
-                              struct rng *rng, struct render_counters *counters);
+static struct vec3 trace(const struct jensen1994 *mode, struct ray ray, struct path path,
+                         struct rng *rng, struct render_counters *counters);
+static struct vec3 trace_from(const struct jensen1994 *mode, const struct surface *s,
+                              struct path path, struct rng *rng,
+                              struct render_counters *counters);
 
 /* Radiance that the diffuse-like part reflects from irradiance e: albedo / pi times e. */
 static struct vec3 diffuse_reflection(const struct surface *s, const struct material *diffuse,
@@ -105,33 +106,56 @@ static struct vec3 diffuse_reflection(const struct surface *s, const struct mate
 
 /* -- 4.0.1 L_r,d,l: direct light -- */
 
-/* Each light sampled on a k x k grid of jittered strata of its sample space, through
- * `part` (the diffuse-like part), with a shadow ray per sample; a point light, whose every
- * sample is the same, once. With points_only, the point lights alone (see
- * specular_light()). */
-static struct vec3 direct_light(const struct j94 *m, const struct surface *s,
-                                const struct material *part,
-                                const struct shading_frame *frame, int points_only,
-                                struct rng *rng, struct render_counters *counters)
+/* Light `light` sampled on a k x k grid of jittered strata of its sample space, through
+ * `part`, with a shadow ray per sample; a point light, whose every sample is the same,
+ * once. Adds the samples' mean to *sum. */
+static void add_light_samples(const struct jensen1994 *mode, const struct light *light,
+                              const struct surface *s, const struct material *part,
+                              const struct shading_frame *frame, struct rng *rng,
+                              struct render_counters *counters, struct vec3 *sum)
+{
+    int k = light->kind == LIGHT_POINT ? 1 : mode->light_strata;
+    for (int j = 0; j < k * k; j++) {
+        double u1 = (j % k + rng_uniform(rng)) / k, u2 = (j / k + rng_uniform(rng)) / k;
+        struct light_sample ls;
+        struct vec3 contribution;
+        if (!light_contribution(light, s, part, frame, u1, u2, &ls, &contribution))
+            continue;
+        mode->stats->shadow_rays++;
+        counters->rays++;
+        if (!light_blocked(mode->scene, s, &ls))
+            *sum = vec3_add(*sum, vec3_scale(contribution, 1.0 / (k * k)));
+    }
+}
+
+/* L_r,d,l: every light's stratified samples through the diffuse-like part. */
+static struct vec3 direct_light(const struct jensen1994 *mode, const struct surface *s,
+                                const struct material *diffuse,
+                                const struct shading_frame *frame, struct rng *rng,
+                                struct render_counters *counters)
 {
     struct vec3 sum = vec3_zero();
-    for (size_t i = 0; i < m->scene->n_lights; i++) {
-        if (points_only && m->scene->lights[i].kind != LIGHT_POINT)
-            continue;
-        int k = m->scene->lights[i].kind == LIGHT_POINT ? 1 : m->light_strata;
-        for (int j = 0; j < k * k; j++) {
-            double u1 = (j % k + rng_uniform(rng)) / k, u2 = (j / k + rng_uniform(rng)) / k;
-            struct light_sample ls;
-            struct vec3 contribution;
-            if (!light_contribution(&m->scene->lights[i], s, part, frame, u1, u2, &ls,
-                                    &contribution))
-                continue;
-            m->stats->shadow_rays++;
-            counters->rays++;
-            if (!light_blocked(m->scene, s, &ls))
-                sum = vec3_add(sum, vec3_scale(contribution, 1.0 / (k * k)));
-        }
-    }
+    for (size_t i = 0; i < mode->scene->n_lights; i++)
+        add_light_samples(mode, &mode->scene->lights[i], s, diffuse, frame, rng, counters,
+                          &sum);
+    return sum;
+}
+
+/* A departure without a switch: L_r,s is traced, and a traced ray never meets a point
+ * light, a delta, so a glossy lobe's highlight of one would be lost (the sphere flake's
+ * Phong spheres would be dark: src/modes/README.md); the point lights are sampled
+ * through the glossy lobe too. */
+static struct vec3 point_lights_through_lobe(const struct jensen1994 *mode,
+                                             const struct surface *s,
+                                             const struct material *glossy,
+                                             const struct shading_frame *frame, struct rng *rng,
+                                             struct render_counters *counters)
+{
+    struct vec3 sum = vec3_zero();
+    for (size_t i = 0; i < mode->scene->n_lights; i++)
+        if (mode->scene->lights[i].kind == LIGHT_POINT)
+            add_light_samples(mode, &mode->scene->lights[i], s, glossy, frame, rng, counters,
+                              &sum);
     return sum;
 }
 
@@ -141,27 +165,28 @@ static struct vec3 direct_light(const struct j94 *m, const struct surface *s,
  * keeps_direction()): through a part that is not Lambertian, the reflected light depends
  * on where it came from, so it is Jensen 1996's Eq. 3 through f_r,d (no differential
  * checking). */
-static struct vec3 stored_reflection(const struct j94 *m, const struct surface *s,
+static struct vec3 stored_reflection(const struct jensen1994 *mode, const struct surface *s,
                                      const struct material *diffuse,
                                      const struct shading_frame *frame,
                                      const struct irradiance_settings *is)
 {
-    if (keeps_direction(m->js, m->stores.illumination, s->material, s->prim)) {
+    if (keeps_direction(mode->settings, mode->stores.illumination, s->material, s->prim)) {
         struct estimate_point at = {s->p, s->ng, s->wo, diffuse, frame};
         struct estimate_settings es = {is->n, is->max_r2, 0.0, is->kinds, is->count_rim};
-        return radiance_estimate(m->stores.glossy, &at, &es, m->nn);
+        return radiance_estimate(mode->stores.glossy, &at, &es, mode->nn);
     }
     struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, is};
-    return diffuse_reflection(s, diffuse, frame, stored_irradiance(&m->stores, &q, m->nn));
+    return diffuse_reflection(s, diffuse, frame,
+                              stored_irradiance(&mode->stores, &q, mode->nn));
 }
 
 /* -- 4.0.2 L_r,d,s: caustics, from the CP photons alone -- */
 
-static struct vec3 caustic_light(const struct j94 *m, const struct surface *s,
+static struct vec3 caustic_light(const struct jensen1994 *mode, const struct surface *s,
                                  const struct material *diffuse,
                                  const struct shading_frame *frame)
 {
-    return stored_reflection(m, s, diffuse, frame, &m->caustic_photons);
+    return stored_reflection(mode, s, diffuse, frame, &mode->caustic_photons);
 }
 
 /* -- L_r,s: the specular-like part by recursive Monte Carlo ray tracing -- */
@@ -174,20 +199,20 @@ static struct vec3 caustic_light(const struct j94 *m, const struct surface *s,
  * the photon map as a gather ray's end does, instead of a final gather for every ray of
  * every glossy bounce (on the sphere flake, whose Phong spheres see each other, half the
  * camera samples fell outside the cache's records and gathered on the spot). */
-static struct path after_bounce(const struct j94 *m, const struct brdf_sample *bs,
+static struct path after_bounce(const struct jensen1994 *mode, const struct brdf_sample *bs,
                                 struct path path)
 {
     path.depth++;
     if (!bs->delta) {
         path.emission = 1;
-        path.secondary = path.secondary || m->js->glossy_photons;
+        path.secondary = path.secondary || mode->settings->glossy_photons;
     }
     return path;
 }
 
 /* The radiance arriving along lobe bs of f_r,s times its weight, with Russian roulette
  * after ROULETTE_DEPTH bounces. */
-static struct vec3 follow_lobe(const struct j94 *m, const struct surface *s,
+static struct vec3 follow_lobe(const struct jensen1994 *mode, const struct surface *s,
                                const struct brdf_sample *bs, struct path path, struct rng *rng,
                                struct render_counters *counters)
 {
@@ -196,8 +221,8 @@ static struct vec3 follow_lobe(const struct j94 *m, const struct surface *s,
     if (q < 1 && !(rng_uniform(rng) < q))
         return vec3_zero(); /* absorbed (always when q = 0) */
     path.beta = vec3_scale(path.beta, 1.0 / q);
-    path = after_bounce(m, bs, path);
-    struct vec3 li = trace(m, surface_ray(s, bs->wi, bs->transmitted), path, rng, counters);
+    path = after_bounce(mode, bs, path);
+    struct vec3 li = trace(mode, surface_ray(s, bs->wi, bs->transmitted), path, rng, counters);
     return vec3_mul(vec3_scale(bs->weight, 1.0 / q), li);
 }
 
@@ -205,19 +230,19 @@ static struct vec3 follow_lobe(const struct j94 *m, const struct surface *s,
  * refraction both, as Whitted's ray tracer, so glass shows no noise from choosing
  * between them; with both_lobes off, the paper's Monte Carlo: one lobe, chosen by the
  * BRDF's sampling), else one direction sampled from the glossy lobe. */
-static struct vec3 specular_light(const struct j94 *m, const struct surface *s,
+static struct vec3 specular_light(const struct jensen1994 *mode, const struct surface *s,
                                   const struct material *specular,
                                   const struct shading_frame *frame, struct path path,
                                   struct rng *rng, struct render_counters *counters)
 {
-    if (path.depth >= m->max_depth)
+    if (path.depth >= mode->max_depth)
         return vec3_zero();
     struct vec3 sum = vec3_zero();
-    if (m->js->both_lobes && brdf_is_delta(specular)) {
+    if (mode->settings->both_lobes && brdf_is_delta(specular)) {
         struct brdf_sample lobes[2];
         int n_lobes = brdf_delta_lobes(specular, frame, s->wo, lobes);
         for (int k = 0; k < n_lobes; k++)
-            sum = vec3_add(sum, follow_lobe(m, s, &lobes[k], path, rng, counters));
+            sum = vec3_add(sum, follow_lobe(mode, s, &lobes[k], path, rng, counters));
         return sum;
     }
     double u[3];
@@ -225,7 +250,7 @@ static struct vec3 specular_light(const struct j94 *m, const struct surface *s,
         u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
     struct brdf_sample bs;
     if (brdf_sample(specular, frame, s->wo, u, &bs))
-        sum = follow_lobe(m, s, &bs, path, rng, counters);
+        sum = follow_lobe(mode, s, &bs, path, rng, counters);
     return sum;
 }
 
@@ -235,7 +260,8 @@ static struct vec3 specular_light(const struct j94 *m, const struct surface *s,
  * it): the radiance the secondary path finds (the irradiance stores where it lands) and
  * the distance to its first surface, or zero and infinity when it leaves the scene (the
  * sky is direct light, which direct_light() samples) or starts below the surface. */
-static struct stratum_sample gather_stratum(const struct j94 *m, const struct surface *s,
+static struct stratum_sample gather_stratum(const struct jensen1994 *mode,
+                                            const struct surface *s,
                                             const struct shading_frame *frame, int n_theta,
                                             int n_phi, int j, int k, struct path gather,
                                             struct vec3 *wi, struct rng *rng,
@@ -250,111 +276,115 @@ static struct stratum_sample gather_stratum(const struct j94 *m, const struct su
         return sample; /* below the geometric surface: no light arrives */
     struct surface at;
     double t;
-    m->stats->gradient_rays++;
-    if (!ray_surface(m->scene, surface_ray(s, *wi, 0), counters, &at, &t))
+    mode->stats->gradient_rays++;
+    if (!ray_surface(mode->scene, surface_ray(s, *wi, 0), counters, &at, &t))
         return sample;
-    sample.radiance = trace_from(m, &at, gather, rng, counters);
+    sample.radiance = trace_from(mode, &at, gather, rng, counters);
     sample.distance = t;
     return sample;
 }
 
 /* Ward and Heckbert's gather at s: one cosine-distributed ray per stratum. Fills
- * m->strata; returns the record with its radius bounded as cache_pass.h says. */
-static struct irradiance_record gather_record(const struct j94 *m, const struct surface *s,
+ * mode->strata; returns the record with its radius bounded as cache_pass.h says. */
+static struct irradiance_record gather_record(const struct jensen1994 *mode,
+                                              const struct surface *s,
                                               const struct shading_frame *frame,
                                               struct path path, struct rng *rng,
                                               struct render_counters *counters)
 {
     struct path gather = {vec3(1, 1, 1), path.depth + 1, 1, 0};
-    for (int j = 0; j < m->strata_theta; j++)
-        for (int k = 0; k < m->strata_phi; k++) {
+    for (int j = 0; j < mode->strata_theta; j++)
+        for (int k = 0; k < mode->strata_phi; k++) {
             struct vec3 wi;
-            m->strata[j * m->strata_phi + k] = gather_stratum(
-                m, s, frame, m->strata_theta, m->strata_phi, j, k, gather, &wi, rng, counters);
+            mode->strata[j * mode->strata_phi + k] =
+                gather_stratum(mode, s, frame, mode->strata_theta, mode->strata_phi, j, k,
+                               gather, &wi, rng, counters);
         }
-    struct record_reach reach =
-        record_reach_at(&m->scene->camera, s->p, frame->n, m->js->cache_accuracy, m->diagonal,
-                        m->js->bounded_reach, m->js->gradient_limit);
-    return irradiance_record_of(s->p, frame->t, frame->b, frame->n, m->strata_theta,
-                                m->strata_phi, m->strata, reach);
+    struct record_reach reach = record_reach_at(
+        &mode->scene->camera, s->p, frame->n, mode->settings->cache_accuracy, mode->diagonal,
+        mode->settings->bounded_reach, mode->settings->gradient_limit);
+    return irradiance_record_of(s->p, frame->t, frame->b, frame->n, mode->strata_theta,
+                                mode->strata_phi, mode->strata, reach);
 }
 
 /* A camera sample's share of a record's gather at s, sample_theta x sample_phi strata of
  * one ray each: pi / (m n) times the sum over them of w L, w = f_r,d(wi, wo) through
  * `through` (the reflected radiance), or 1 for NULL (the irradiance). Its mean over a
  * pixel's samples is the pixel's, with the cost of one record per pixel. */
-static struct vec3 sample_gather(const struct j94 *m, const struct surface *s,
+static struct vec3 sample_gather(const struct jensen1994 *mode, const struct surface *s,
                                  const struct material *through,
                                  const struct shading_frame *frame, struct path path,
                                  struct rng *rng, struct render_counters *counters)
 {
     struct path gather = {vec3(1, 1, 1), path.depth + 1, 1, 0};
     struct vec3 sum = vec3_zero();
-    for (int j = 0; j < m->sample_theta; j++)
-        for (int k = 0; k < m->sample_phi; k++) {
+    for (int j = 0; j < mode->sample_theta; j++)
+        for (int k = 0; k < mode->sample_phi; k++) {
             struct vec3 wi;
-            struct stratum_sample sample = gather_stratum(
-                m, s, frame, m->sample_theta, m->sample_phi, j, k, gather, &wi, rng, counters);
+            struct stratum_sample sample =
+                gather_stratum(mode, s, frame, mode->sample_theta, mode->sample_phi, j, k,
+                               gather, &wi, rng, counters);
             struct vec3 w = through != NULL ? brdf_eval(through, frame, s->wo, wi)
                                             : vec3(1.0, 1.0, 1.0);
             sum = vec3_add(sum, vec3_mul(w, sample.radiance));
         }
-    return vec3_scale(sum, PI / (m->sample_theta * m->sample_phi));
+    return vec3_scale(sum, PI / (mode->sample_theta * mode->sample_phi));
 }
 
 /* The irradiance of multiple diffuse reflections at s: interpolated from the cache where
  * a record is usable (Ward 1988); else gathered, in the pre-pass into a new record, in the
  * final pass (a point no record covers) with the camera sample's share of a record's rays,
  * kept nowhere. */
-static struct vec3 diffuse_interreflection(const struct j94 *m, const struct surface *s,
+static struct vec3 diffuse_interreflection(const struct jensen1994 *mode,
+                                           const struct surface *s,
                                            const struct shading_frame *frame, struct path path,
                                            struct rng *rng, struct render_counters *counters)
 {
     struct vec3 e;
-    double a = m->js->cache_accuracy * (m->filling_cache ? CACHE_FILL_STRICTNESS : 1.0);
-    if (irradiance_cache_lookup(m->cache, s->p, frame->n, a, &e))
+    double a =
+        mode->settings->cache_accuracy * (mode->filling_cache ? CACHE_FILL_STRICTNESS : 1.0);
+    if (irradiance_cache_lookup(mode->cache, s->p, frame->n, a, &e))
         return e;
-    if (!m->filling_cache) {
-        m->stats->gather_fallbacks++;
-        return sample_gather(m, s, NULL, frame, path, rng, counters);
+    if (!mode->filling_cache) {
+        mode->stats->gather_fallbacks++;
+        return sample_gather(mode, s, NULL, frame, path, rng, counters);
     }
-    struct irradiance_record record = gather_record(m, s, frame, path, rng, counters);
-    irradiance_cache_add(m->cache, &record);
+    struct irradiance_record record = gather_record(mode, s, frame, path, rng, counters);
+    irradiance_cache_add(mode->cache, &record);
     return record.e;
 }
 
 /* -- a surface, term by term -- */
 
 /* Radiance leaving s towards s->wo on a path from the eye: L_e + L_r,s + L_r,d. */
-static struct vec3 eye_radiance(const struct j94 *m, const struct surface *s, struct path path,
-                                struct rng *rng, struct render_counters *counters)
+static struct vec3 eye_radiance(const struct jensen1994 *mode, const struct surface *s,
+                                struct path path, struct rng *rng,
+                                struct render_counters *counters)
 {
     struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
     struct brdf_split split = brdf_split(s->material);
     struct vec3 l = surface_emission(s);
     if (split.has_diffuse) {
-        l = vec3_add(l, direct_light(m, s, &split.diffuse, &frame, 0, rng, counters));
-        l = vec3_add(l, caustic_light(m, s, &split.diffuse, &frame));
-        if (!split.lambertian && m->js->glossy_gather) {
+        l = vec3_add(l, direct_light(mode, s, &split.diffuse, &frame, rng, counters));
+        l = vec3_add(l, caustic_light(mode, s, &split.diffuse, &frame));
+        if (!split.lambertian && mode->settings->glossy_gather) {
             /* Departs from Sec. 4.0.3, whose diffuse-like surfaces are Lambertian and
              * reflect the cache's irradiance as albedo / pi: a part that is not (a broad
              * lobe: Schlick's model with r >= 1/2) reflects int f_r,d L cos, which depends
              * on where the light comes from, so each camera sample gathers its share
              * through f_r,d itself, no cache (glossy_gather; off, the paper's). */
-            l = vec3_add(l, sample_gather(m, s, &split.diffuse, &frame, path, rng, counters));
+            l = vec3_add(l,
+                         sample_gather(mode, s, &split.diffuse, &frame, path, rng, counters));
         } else {
-            struct vec3 e = diffuse_interreflection(m, s, &frame, path, rng, counters);
+            struct vec3 e = diffuse_interreflection(mode, s, &frame, path, rng, counters);
             l = vec3_add(l, diffuse_reflection(s, &split.diffuse, &frame, e));
         }
     }
     if (split.has_specular) {
-        l = vec3_add(l, specular_light(m, s, &split.specular, &frame, path, rng, counters));
-        /* L_r,s is traced, and a traced ray never meets a point light, a delta: a glossy
-         * lobe's highlight of one would be lost (the sphere flake's Phong spheres would be
-         * dark: src/modes/README.md), so the point lights are sampled through a glossy
-         * lobe too. */
-        if (brdf_has_diffuse(&split.specular))
-            l = vec3_add(l, direct_light(m, s, &split.specular, &frame, 1, rng, counters));
+        l = vec3_add(l, specular_light(mode, s, &split.specular, &frame, path, rng, counters));
+        if (brdf_has_non_delta(&split.specular))
+            l = vec3_add(l, point_lights_through_lobe(mode, s, &split.specular, &frame, rng,
+                                                      counters));
     }
     return l;
 }
@@ -362,7 +392,7 @@ static struct vec3 eye_radiance(const struct j94 *m, const struct surface *s, st
 /* Radiance leaving s towards s->wo on a gather ray (Sec. 4.0.3): the diffuse-like part
  * reflects the irradiance of all photons, read from the photon map; the specular-like
  * part is followed on; emission only on a path that has taken a glossy bounce. */
-static struct vec3 secondary_radiance(const struct j94 *m, const struct surface *s,
+static struct vec3 secondary_radiance(const struct jensen1994 *mode, const struct surface *s,
                                       struct path path, struct rng *rng,
                                       struct render_counters *counters)
 {
@@ -370,30 +400,31 @@ static struct vec3 secondary_radiance(const struct j94 *m, const struct surface 
     struct brdf_split split = brdf_split(s->material);
     struct vec3 l = path.emission ? surface_emission(s) : vec3_zero();
     if (split.has_diffuse)
-        l = vec3_add(l, stored_reflection(m, s, &split.diffuse, &frame, &m->all_photons));
+        l = vec3_add(l, stored_reflection(mode, s, &split.diffuse, &frame, &mode->all_photons));
     if (split.has_specular)
-        l = vec3_add(l, specular_light(m, s, &split.specular, &frame, path, rng, counters));
+        l = vec3_add(l, specular_light(mode, s, &split.specular, &frame, path, rng, counters));
     return l;
 }
 
-static struct vec3 trace_from(const struct j94 *m, const struct surface *s, struct path path,
-                              struct rng *rng, struct render_counters *counters)
+static struct vec3 trace_from(const struct jensen1994 *mode, const struct surface *s,
+                              struct path path, struct rng *rng,
+                              struct render_counters *counters)
 {
-    return path.secondary ? secondary_radiance(m, s, path, rng, counters)
-                          : eye_radiance(m, s, path, rng, counters);
+    return path.secondary ? secondary_radiance(mode, s, path, rng, counters)
+                          : eye_radiance(mode, s, path, rng, counters);
 }
 
-static struct vec3 trace(const struct j94 *m, struct ray ray, struct path path, struct rng *rng,
-                         struct render_counters *counters)
+static struct vec3 trace(const struct jensen1994 *mode, struct ray ray, struct path path,
+                         struct rng *rng, struct render_counters *counters)
 {
     struct surface s;
     double t;
-    if (!ray_surface(m->scene, ray, counters, &s, &t)) /* the sky, emission as any other */
-        return path.emission ? m->scene->background : vec3_zero();
-    return trace_from(m, &s, path, rng, counters);
+    if (!ray_surface(mode->scene, ray, counters, &s, &t)) /* the sky, emission as any other */
+        return path.emission ? mode->scene->background : vec3_zero();
+    return trace_from(mode, &s, path, rng, counters);
 }
 
-static struct vec3 j94_radiance(const void *mode, struct ray ray, struct rng *rng,
+static struct vec3 camera_ray_radiance(const void *mode, struct ray ray, struct rng *rng,
                                 struct render_counters *counters)
 {
     struct path eye = {vec3(1, 1, 1), 0, 0, 1};
@@ -403,127 +434,128 @@ static struct vec3 j94_radiance(const void *mode, struct ray ray, struct rng *rn
 /* ---- putting it together ---- */
 
 /* The mode's state from the scene and the settings: estimates, strata, cache, scratch. */
-static void set_up(struct j94 *m, const struct scene *scene, const struct render_settings *rs,
-                   const struct jensen1994_settings *js)
+static void set_up(struct jensen1994 *mode, const struct scene *scene,
+                   const struct render_settings *rs, const struct jensen1994_settings *settings)
 {
     struct aabb box = geometry_bounds(scene->geometry);
-    m->scene = scene;
-    m->js = js;
-    m->max_depth = rs->max_depth;
-    m->diagonal = scene_diagonal(scene);
-    double max_radius = js->max_radius > 0 ? js->max_radius
-                                           : PHOTONS_RADIUS_FRACTION * m->diagonal;
-    struct irradiance_settings all = {js->gather, max_radius * max_radius, 0,
-                                      js->differential_run, js->count_rim};
-    m->all_photons = all;
-    m->caustic_photons = all;
-    m->caustic_photons.max_r2 *= js->caustic_radius_fraction * js->caustic_radius_fraction;
-    m->caustic_photons.kinds = PHOTON_CAUSTIC;
+    mode->scene = scene;
+    mode->settings = settings;
+    mode->max_depth = rs->max_depth;
+    mode->diagonal = scene_diagonal(scene);
+    double max_radius = settings->max_radius > 0 ? settings->max_radius
+                                           : PHOTONS_RADIUS_FRACTION * mode->diagonal;
+    struct irradiance_settings all = {settings->gather, max_radius * max_radius, 0,
+                                      settings->differential_run, settings->count_rim};
+    mode->all_photons = all;
+    mode->caustic_photons = all;
+    mode->caustic_photons.max_r2 *=
+        settings->caustic_radius_fraction * settings->caustic_radius_fraction;
+    mode->caustic_photons.kinds = PHOTON_CAUSTIC;
     /* Ward and Heckbert's strata, m x n with n about pi m, one ray each */
-    m->strata_theta = (int)floor(sqrt(js->gather_rays / PI) + 0.5);
-    m->strata_theta = m->strata_theta < 1 ? 1 : m->strata_theta;
-    m->strata_phi = js->gather_rays / m->strata_theta;
-    int share = js->gather_rays / rs->spp; /* spp >= 1 */
-    m->sample_theta = (int)floor(sqrt(share / PI) + 0.5);
-    m->sample_theta = m->sample_theta < 1 ? 1 : m->sample_theta;
-    m->sample_phi = share / m->sample_theta > 0 ? share / m->sample_theta : 1;
-    m->light_strata = (int)floor(sqrt((double)js->light_samples));
-    m->filling_cache = 0;
-    m->cache = irradiance_cache_create(isfinite(box.lo.x) ? box : (struct aabb){vec3_zero(),
+    mode->strata_theta = (int)floor(sqrt(settings->gather_rays / PI) + 0.5);
+    mode->strata_theta = mode->strata_theta < 1 ? 1 : mode->strata_theta;
+    mode->strata_phi = settings->gather_rays / mode->strata_theta;
+    int share = settings->gather_rays / rs->spp; /* spp >= 1 */
+    mode->sample_theta = (int)floor(sqrt(share / PI) + 0.5);
+    mode->sample_theta = mode->sample_theta < 1 ? 1 : mode->sample_theta;
+    mode->sample_phi = share / mode->sample_theta > 0 ? share / mode->sample_theta : 1;
+    mode->light_strata = (int)floor(sqrt((double)settings->light_samples));
+    mode->filling_cache = 0;
+    mode->cache = irradiance_cache_create(isfinite(box.lo.x) ? box : (struct aabb){vec3_zero(),
                                                                                vec3_zero()},
-                                       js->cache_accuracy);
-    m->nn = nearest_create(js->gather);
-    m->strata = xmalloc((size_t)m->strata_theta * (size_t)m->strata_phi, sizeof *m->strata,
-                        "strata");
+                                       settings->cache_accuracy);
+    mode->nn = nearest_create(settings->gather);
+    mode->strata = xmalloc((size_t)mode->strata_theta * (size_t)mode->strata_phi,
+                           sizeof *mode->strata, "strata");
 }
 
-static void tear_down(struct j94 *m)
+static void tear_down(struct jensen1994 *mode)
 {
-    xfree(m->strata);
-    nearest_free(m->nn);
-    irradiance_cache_free(m->cache); /* m->stores are the work's */
+    xfree(mode->strata);
+    nearest_free(mode->nn);
+    irradiance_cache_free(mode->cache); /* mode->stores are the work's */
 }
 
 /* Pass 1 into work when it is empty (maps[0] the photon map, maps[1] the CP photons' tree,
- * maps[2] the glossy photons' (keeps_direction()), and the illumination maps when js asks
- * for them), else the stores work holds (loaded from a file). m->stores borrows them from
+ * maps[2] the glossy photons' (keeps_direction()), and the illumination maps when settings asks
+ * for them), else the stores work holds (loaded from a file). mode->stores borrows them from
  * work. */
-static int photon_stores(struct j94 *m, const struct scene *scene,
+static int photon_stores(struct jensen1994 *mode, const struct scene *scene,
                          const struct render_settings *rs, struct global_work *work,
                          struct error *err)
 {
     if (work->n_maps == 0) {
-        if (jensen1994_trace(scene, rs->seed, rs->max_depth, m->js, &m->stores, m->stats,
-                             err) < 0)
+        if (jensen1994_trace(scene, rs->seed, rs->max_depth, mode->settings, &mode->stores,
+                             mode->stats, err) < 0)
             return -1;
         global_work_add_maps(work, 3);
-        work->maps[0] = m->stores.photons;
-        work->maps[1] = m->stores.caustics;
-        work->maps[2] = m->stores.glossy;
-        work->illumination = m->stores.illumination;
+        work->maps[0] = mode->stores.photons;
+        work->maps[1] = mode->stores.caustics;
+        work->maps[2] = mode->stores.glossy;
+        work->illumination = mode->stores.illumination;
         return 0;
     }
     if (work->n_maps != 3 || work->maps[0] == NULL || work->maps[1] == NULL ||
         work->maps[2] == NULL ||
-        (work->illumination != NULL) != (m->js->illumination_maps != 0))
+        (work->illumination != NULL) != (mode->settings->illumination_maps != 0))
         return error_set(err, "", 0, "--load-photons: the file does not hold the three "
                                      "photon trees (and, with --irradiance-store "
                                      "illumination, the illumination maps) mode 1994 saves");
-    m->stores.photons = work->maps[0];
-    m->stores.caustics = work->maps[1];
-    m->stores.glossy = work->maps[2];
-    m->stores.illumination = work->illumination;
+    mode->stores.photons = work->maps[0];
+    mode->stores.caustics = work->maps[1];
+    mode->stores.glossy = work->maps[2];
+    mode->stores.illumination = work->illumination;
     if (work->illumination != NULL)
-        count_illumination(work->illumination, m->stats);
-    m->stats->photons_stored = work->maps[0]->n_photons + work->maps[2]->n_photons;
-    m->stats->photons_caustic = work->maps[1]->n_photons;
-    m->stats->photons_glossy = work->maps[2]->n_photons;
-    m->stats->bytes_photon_map = kdtree_bytes(work->maps[0]) + kdtree_bytes(work->maps[2]);
-    m->stats->bytes_caustic_photons = kdtree_bytes(work->maps[1]);
+        count_illumination(work->illumination, mode->stats);
+    mode->stats->photons_stored = work->maps[0]->n_photons + work->maps[2]->n_photons;
+    mode->stats->photons_caustic = work->maps[1]->n_photons;
+    mode->stats->photons_glossy = work->maps[2]->n_photons;
+    mode->stats->bytes_photon_map = kdtree_bytes(work->maps[0]) + kdtree_bytes(work->maps[2]);
+    mode->stats->bytes_caustic_photons = kdtree_bytes(work->maps[1]);
     return 0;
 }
 
 struct render_result render_jensen1994(const struct scene *scene,
                                        const struct render_settings *rs,
-                                       const struct jensen1994_settings *js, int want_variance,
-                                       struct render_counters *counters,
+                                       const struct jensen1994_settings *settings,
+                                       int want_variance, struct render_counters *counters,
                                        struct jensen1994_stats *stats, struct error *err)
 {
     struct render_result result = {NULL, NULL, 0.0};
     memset(stats, 0, sizeof *stats);
-    struct j94 m;
-    memset(&m, 0, sizeof m);
-    m.stats = stats;
-    m.js = js;
-    struct global_work own_work = {NULL, 0, NULL, 0, NULL}; /* without js->work: made, freed */
-    struct global_work *work = js->work != NULL ? js->work : &own_work;
+    struct jensen1994 mode;
+    memset(&mode, 0, sizeof mode);
+    mode.stats = stats;
+    mode.settings = settings;
+    struct global_work own_work = {NULL, 0, NULL, 0, NULL}; /* without settings->work */
+    struct global_work *work = settings->work != NULL ? settings->work : &own_work;
     int loaded = work->n_maps > 0;
     clock_t start = clock();
-    if (photon_stores(&m, scene, rs, work, err) < 0) {
+    if (photon_stores(&mode, scene, rs, work, err) < 0) {
         global_work_free(&own_work);
         return result;
     }
     stats->seconds_photons = cpu_seconds(start);
-    set_up(&m, scene, rs, js);
-    stats->strata_theta = m.strata_theta;
-    stats->strata_phi = m.strata_phi;
+    set_up(&mode, scene, rs, settings);
+    stats->strata_theta = mode.strata_theta;
+    stats->strata_phi = mode.strata_phi;
     start = clock();
-    struct radiance_estimator estimator = {j94_radiance, &m};
+    struct radiance_estimator estimator = {camera_ray_radiance, &mode};
     if (loaded) {
-        global_work_fill_cache(work, m.cache);
+        global_work_fill_cache(work, mode.cache);
     } else {
-        m.filling_cache = 1;
-        fill_cache_pass(scene, rs->seed, estimator, m.cache, rs->progress, counters);
-        m.filling_cache = 0;
-        global_work_keep_cache(work, m.cache);
+        mode.filling_cache = 1;
+        fill_cache_pass(scene, rs->seed, estimator, mode.cache, rs->progress, counters);
+        mode.filling_cache = 0;
+        global_work_keep_cache(work, mode.cache);
     }
     stats->seconds_cache = cpu_seconds(start);
-    stats->cache_records = irradiance_cache_records(m.cache);
-    stats->bytes_cache = irradiance_cache_bytes(m.cache);
+    stats->cache_records = irradiance_cache_records(mode.cache);
+    stats->bytes_cache = irradiance_cache_bytes(mode.cache);
     result = render_pixels(scene, rs, estimator, want_variance, NULL, counters);
     stats->seconds_final_pass = result.seconds;
     result.seconds += stats->seconds_photons + stats->seconds_cache;
-    tear_down(&m);
+    tear_down(&mode);
     global_work_free(&own_work);
     return result;
 }

@@ -21,17 +21,18 @@
  * the photon map for the rest. */
 struct deposits {
     struct photon_trace photons;
-    struct photon_trace glossy;             /* those that keeps_direction()            */
-    struct illumination_maps *illumination; /* borrowed; NULL: photon maps everywhere */
-    const struct scene *scene;              /* borrowed                                */
-    const struct jensen1994_settings *js;   /* borrowed                                */
+    struct photon_trace glossy;                 /* those that keeps_direction()        */
+    struct illumination_maps *illumination;     /* borrowed; NULL: photon maps everywhere */
+    const struct scene *scene;                  /* borrowed                            */
+    const struct jensen1994_settings *settings; /* borrowed                            */
 };
 
-int keeps_direction(const struct jensen1994_settings *js,
+int keeps_direction(const struct jensen1994_settings *settings,
                     const struct illumination_maps *illumination, const struct material *m,
                     int prim)
 {
-    if (!js->glossy_gather || (illumination != NULL && illumination_covers(illumination, prim)))
+    if (!settings->glossy_gather ||
+        (illumination != NULL && illumination_covers(illumination, prim)))
         return 0;
     struct brdf_split split = brdf_split(m);
     return split.has_diffuse && !split.lambertian;
@@ -54,7 +55,7 @@ static int deposit_photon(void *context, const struct photon_event *e)
     const struct material *m =
         &d->scene->materials[geometry_primitive_material(d->scene->geometry, e->prim)];
     size_t room = MAX_PHOTONS - d->photons.n_photons - d->glossy.n_photons;
-    if (keeps_direction(d->js, d->illumination, m, e->prim))
+    if (keeps_direction(d->settings, d->illumination, m, e->prim))
         return photon_trace_store(&d->glossy, d->glossy.n_photons + room, e);
     struct photon_event stored = *e;
     stored.wi = e->normal;
@@ -63,13 +64,14 @@ static int deposit_photon(void *context, const struct photon_event *e)
 
 /* Light rays through projection maps (when on) into d; fills the projection stats. */
 static int trace_light_paths(const struct scene *scene, const struct trace_settings *base,
-                             const struct jensen1994_settings *js, struct deposits *d,
+                             const struct jensen1994_settings *settings, struct deposits *d,
                              struct jensen1994_stats *stats)
 {
     struct trace_settings ts = *base;
     struct projection_settings ps = {PROJECTION_N_THETA_DEFAULT, PROJECTION_N_PHI_DEFAULT,
                                      PROJECTION_BOOST_DEFAULT};
-    struct projection_maps *maps = js->projection_maps ? projection_maps_build(scene, &ps) : NULL;
+    struct projection_maps *maps =
+        settings->projection_maps ? projection_maps_build(scene, &ps) : NULL;
     ts.projection = maps;
     struct photon_sink sink = {deposit_photon, d};
     int status = trace_photons_into(scene, &ts, &sink, &stats->photon_rays);
@@ -128,7 +130,7 @@ static unsigned char *receiving_primitives(const struct scene *scene)
                                       "receiving primitives");
     for (size_t i = 0; i < n_prims; i++) {
         int material = geometry_primitive_material(scene->geometry, (int)i);
-        receives[i] = (unsigned char)brdf_has_diffuse(&scene->materials[material]);
+        receives[i] = (unsigned char)brdf_has_non_delta(&scene->materials[material]);
     }
     return receives;
 }
@@ -160,13 +162,13 @@ void count_illumination(const struct illumination_maps *maps,
 }
 
 int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
-                     const struct jensen1994_settings *js, struct irradiance_stores *out,
+                     const struct jensen1994_settings *settings, struct irradiance_stores *out,
                      struct jensen1994_stats *stats, struct error *err)
 {
     struct trace_settings ts;
     memset(&ts, 0, sizeof ts);
     ts.seed = seed;
-    ts.n_emit = js->n_photons;
+    ts.n_emit = settings->n_photons;
     ts.max_stored = MAX_PHOTONS;
     ts.store = PHOTON_MAP_GLOBAL; /* every deposit: direct, caustic and indirect */
     ts.max_depth = max_depth;
@@ -178,8 +180,8 @@ int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
     d.glossy.photons = NULL;
     d.illumination = NULL;
     d.scene = scene;
-    d.js = js;
-    if (js->illumination_maps) {
+    d.settings = settings;
+    if (settings->illumination_maps) {
         double *footprint = pretrace_footprints(scene);
         unsigned char *receives = receiving_primitives(scene);
         d.illumination = illumination_maps_create(scene->geometry, scene_diagonal(scene),
@@ -187,7 +189,7 @@ int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
         xfree(receives);
         xfree(footprint);
     }
-    if (trace_light_paths(scene, &ts, js, &d, stats) < 0) {
+    if (trace_light_paths(scene, &ts, settings, &d, stats) < 0) {
         photon_trace_free(&d.photons);
         photon_trace_free(&d.glossy);
         illumination_maps_free(d.illumination);

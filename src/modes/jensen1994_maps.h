@@ -14,7 +14,7 @@ struct nearest;
 struct irradiance_settings;
 
 /* The irradiance stores pass 1 fills (Sec. 3.2-3.3): the photon map, and with
- * js->illumination_maps the illumination maps of the surfaces that have parameters
+ * settings->illumination_maps the illumination maps of the surfaces that have parameters
  * (quads and spheres), which then hold those surfaces' photons instead. */
 struct irradiance_stores {
     struct kdtree *photons;                 /* owned: photons holding their surface normal
@@ -27,22 +27,22 @@ struct irradiance_stores {
     struct illumination_maps *illumination; /* owned, finished; NULL: photon maps only   */
 };
 
-/* Pass 1 alone (Sec. 3): js->n_photons light rays from the scene's lights (finished) with
+/* Pass 1 alone (Sec. 3): settings->n_photons light rays from the scene's lights (finished) with
  * seed, followed for at most max_depth bounces, deposited into *out (which the caller
  * releases with irradiance_stores_free()); fills the photon fields of *stats. Returns 0,
  * or -1 with *err filled and nothing left allocated when more than MAX_PHOTONS would be
  * stored. The render's first step, and `photon probe`'s (app/probe.h). */
 int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
-                     const struct jensen1994_settings *js, struct irradiance_stores *out,
+                     const struct jensen1994_settings *settings, struct irradiance_stores *out,
                      struct jensen1994_stats *stats, struct error *err);
 void irradiance_stores_free(struct irradiance_stores *stores);
 
 /* Whether a photon landing on primitive prim of material m keeps its direction (in the
- * stores' glossy tree) rather than the normal: with js->glossy_gather, on a diffuse-like
+ * stores' glossy tree) rather than the normal: with settings->glossy_gather, on a diffuse-like
  * part that is not Lambertian (a broad lobe: brdf_split()), unless prim has an
  * illumination map. A departure from Sec. 3.3, whose photons hold the normal: the light
  * such a part reflects depends on where it came from. */
-int keeps_direction(const struct jensen1994_settings *js,
+int keeps_direction(const struct jensen1994_settings *settings,
                     const struct illumination_maps *illumination, const struct material *m,
                     int prim);
 

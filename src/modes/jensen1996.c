@@ -12,23 +12,18 @@
  *   Lr = int f_r L_l cos + int f_r,s (L_c + L_d) cos + int f_r,d L_c cos + int f_r,d L_d cos,
  * the light split into direct (l), caustic (c: via specular surfaces only) and soft
  * indirect (d: reflected diffusely at least once), the BRDF into a diffuse and a specular
- * part (brdf_split(), scene/brdf.h). Each term is evaluated accurately or approximately:
- *   accurate     at surfaces seen from the eye directly or through specular (and glossy)
- *                reflections while the ray's weight is at least --accurate-weight:
- *                direct light by light sampling, with shadow rays only where the shadow
+ * part (brdf_split(), scene/brdf.h). Where each term is evaluated accurately and where
+ * approximately is Sec. 4's rule (accurate_or_approximate()); how:
+ *   accurate     direct light by light sampling, with shadow rays only where the shadow
  *                photons nearby disagree (4.1); the specular part by Monte Carlo with
  *                BRDF importance sampling (4.2); caustics from the caustic map with the
  *                cone filter (4.3); soft indirect light by a final gather guided by the
  *                global map's photons, through Ward's irradiance cache on Lambertian
  *                surfaces (4.4);
- *   corner       at the end of a gather ray shorter than --accurate-distance radii of the
- *                global estimate there ("otherwise we might risk inaccurate colour
- *                bleeding effects in corners"), and at surfaces seen through a glossy
- *                reflection (whose blur hides the map's; --no-glossy-corner evaluates
- *                them accurately, the paper's way): as accurate, except that the soft
+ *   corner       (at the end of a short gather ray) as accurate, except that the soft
  *                indirect light is the global map's estimate from its indirect photons;
- *   approximate  after a diffuse bounce or at low weight: the global map's radiance
- *                estimate of the diffuse part, and still the specular part by Monte Carlo.
+ *   approximate  the global map's radiance estimate of the diffuse part, and still the
+ *                specular part by Monte Carlo.
  *
  * Counting every path once. Direct light at accurate and corner points is light sampling
  * through the whole non-delta BRDF, so a ray sampled there by the specular part must not
@@ -77,6 +72,7 @@
 
 /* ---- Sec. 4, pass 2: rendering ---- */
 
+/* How a surface is evaluated (the top of the file; accurate_or_approximate() decides). */
 enum evaluation { ACCURATE, CORNER, APPROXIMATE };
 
 /* Which emission a ray may add where it lands (see the top of the file). */
@@ -93,7 +89,7 @@ struct path {
     int depth;               /* bounces so far                                           */
     enum evaluation eval;    /* how the surface it reaches is evaluated                  */
     enum emission_rule rule; /* which emission it may add                               */
-    int split;               /* whether it already branched into glossy_rays rays        */
+    int branched;            /* whether it already branched into glossy_rays rays        */
 };
 
 /* The render's scratch and tallies: one per render, reached through the const mode. */
@@ -107,9 +103,9 @@ struct scratch {
     struct jensen1996_stats *stats;
 };
 
-struct j96 {
+struct jensen1996 {
     const struct scene *scene;
-    const struct jensen1996_settings *js;
+    const struct jensen1996_settings *settings;
     struct photon_maps maps;
     struct precomputed_irradiance *precomputed; /* owned; NULL with precomputed_irradiance 0 */
     struct irradiance_cache *cache; /* NULL with --cache-accuracy 0                     */
@@ -126,8 +122,50 @@ struct j96 {
     struct scratch *scratch;
 };
 
-static struct vec3 trace(const struct j96 *m, struct ray ray, struct path path, struct rng *rng,
-                         struct render_counters *counters);
+static struct vec3 trace(const struct jensen1996 *mode, struct ray ray, struct path path,
+                         struct rng *rng, struct render_counters *counters);
+static struct vec3 surface_radiance(const struct jensen1996 *mode, const struct surface *s,
+                                    struct path path, struct rng *rng,
+                                    struct render_counters *counters);
+
+/* A ray reaching a surface, as accurate_or_approximate() sees it: after a specular bounce,
+ * how the surface it left was evaluated, whether by a glossy lobe (not a delta one) and
+ * its throughput's luminance; after a diffuse bounce (a gather ray), its length and the
+ * squared radius of the global estimate where it ends (0: none, no diffuse part). */
+enum bounce { FROM_EYE, SPECULAR_BOUNCE, DIFFUSE_BOUNCE };
+struct arrival {
+    enum bounce last; /* the bounce it comes from; FROM_EYE: none, a camera ray */
+    enum evaluation from;
+    int glossy;
+    double weight;
+    double length, radius2;
+};
+
+/* Sec. 4's rule: "We use the accurate computation if the surface is seen directly by the
+ * eye or perhaps via a few specular reflections. We also use the accurate computation if
+ * the distance between the ray origin and the intersection point is below a small
+ * threshold value [...]. The approximate evaluation is used if the ray intersecting the
+ * surface has been reflected diffusely since it left the eye or if the weight of the ray
+ * is low." The few reflections: from an accurate point, with weight --accurate-weight or
+ * more. The small threshold: --accurate-distance radii of the global estimate at the ray's
+ * end, whose disc reaches back towards the gathering point ("colour bleeding effects in
+ * corners"); that end gets the corner evaluation (the top of the file). Departure: a
+ * surface seen through a glossy lobe, whose blur hides the global map's, gets it too
+ * (glossy_corner; off, the paper's: glossy lobes count as specular), sparing a gather for
+ * every glossy ray. */
+static enum evaluation accurate_or_approximate(const struct jensen1996 *mode,
+                                               const struct arrival *a)
+{
+    if (a->last == FROM_EYE)
+        return ACCURATE;
+    if (a->last == DIFFUSE_BOUNCE) {
+        double reach = mode->settings->accurate_distance;
+        return a->length * a->length < reach * reach * a->radius2 ? CORNER : APPROXIMATE;
+    }
+    if (a->from != ACCURATE || a->weight < mode->settings->accurate_weight)
+        return APPROXIMATE;
+    return a->glossy && mode->settings->glossy_corner ? CORNER : ACCURATE;
+}
 
 static struct vec3 emitted(const struct surface *s, enum emission_rule rule)
 {
@@ -136,7 +174,7 @@ static struct vec3 emitted(const struct surface *s, enum emission_rule rule)
 
 /* Eq. 3 (Eq. 5 with the cone filter) through material at s. *r2 receives the squared
  * radius of the photons used. */
-static struct vec3 photon_estimate(const struct j96 *m, const struct kdtree *map,
+static struct vec3 photon_estimate(const struct jensen1996 *mode, const struct kdtree *map,
                                    const struct estimate_settings *es, const struct surface *s,
                                    const struct material *material,
                                    const struct shading_frame *frame, double *r2)
@@ -147,62 +185,38 @@ static struct vec3 photon_estimate(const struct j96 *m, const struct kdtree *map
     at.wo = s->wo;
     at.material = material;
     at.frame = frame;
-    struct vec3 l = radiance_estimate(map, &at, es, m->scratch->nn);
-    *r2 = m->scratch->nn->r2;
+    struct vec3 l = radiance_estimate(map, &at, es, mode->scratch->nn);
+    *r2 = mode->scratch->nn->r2;
     return l;
 }
 
 /* -- 4.1 direct illumination -- */
 
-enum visibility { VISIBLE, OCCLUDED, UNDECIDED };
-
-/* Jensen and Christensen 1995: the light's nearest direct and shadow photons on this
- * side of the surface. All direct: the light is visible; all shadow: it is blocked;
- * a mixture, or fewer than half of J96_VISIBILITY_PHOTONS within reach: a shadow ray. */
-static enum visibility visibility_from_photons(const struct j96 *m, size_t light,
-                                               const struct surface *s)
-{
-    if (m->maps.visibility == NULL)
-        return UNDECIDED;
-    struct nearest *nn = m->scratch->nn;
-    locate_photons(m->maps.visibility[light], s->p, m->global_es.max_r2,
-                   J96_VISIBILITY_PHOTONS, nn);
-    size_t direct = 0, shadow = 0;
-    for (size_t i = 0; i < nn->found; i++) {
-        if (!(vec3_dot(photon_direction(nn->photon[i]), s->ng) > 0))
-            continue; /* arrived at the other side of a thin wall */
-        if (nn->photon[i]->flags & PHOTON_SHADOW)
-            shadow++;
-        else
-            direct++;
-    }
-    if (2 * (direct + shadow) < J96_VISIBILITY_PHOTONS || (direct > 0 && shadow > 0))
-        return UNDECIDED;
-    return shadow == 0 ? VISIBLE : OCCLUDED;
-}
-
 /* The first term of Eq. 2 at an accurate point: one sample of each light through the
  * whole non-delta BRDF; a shadow ray only where the shadow photons leave it open. */
-static struct vec3 direct_illumination(const struct j96 *m, const struct surface *s,
+static struct vec3 direct_illumination(const struct jensen1996 *mode, const struct surface *s,
                                        const struct shading_frame *frame, struct rng *rng,
                                        struct render_counters *counters)
 {
-    struct jensen1996_stats *stats = m->scratch->stats;
+    struct jensen1996_stats *stats = mode->scratch->stats;
     struct vec3 sum = vec3_zero();
-    for (size_t i = 0; i < m->scene->n_lights; i++) {
+    for (size_t i = 0; i < mode->scene->n_lights; i++) {
         struct light_sample ls;
         struct vec3 contribution;
         double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
-        if (!light_contribution(&m->scene->lights[i], s, s->material, frame, u1, u2, &ls,
+        if (!light_contribution(&mode->scene->lights[i], s, s->material, frame, u1, u2, &ls,
                                 &contribution))
             continue;
-        enum visibility v = visibility_from_photons(m, i, s);
+        enum visibility v = UNDECIDED;
+        if (mode->maps.visibility != NULL)
+            v = shadow_photon_visibility(mode->maps.visibility[i], s, mode->global_es.max_r2,
+                                         mode->scratch->nn);
         if (v != UNDECIDED) {
             stats->shadow_rays_avoided++;
         } else {
             stats->shadow_rays++;
             counters->rays++;
-            v = light_blocked(m->scene, s, &ls) ? OCCLUDED : VISIBLE;
+            v = light_blocked(mode->scene, s, &ls) ? OCCLUDED : VISIBLE;
         }
         if (v == VISIBLE)
             sum = vec3_add(sum, contribution);
@@ -214,33 +228,29 @@ static struct vec3 direct_illumination(const struct j96 *m, const struct surface
 
 /* Follows one direction out of the specular part: the path after the bounce (its
  * evaluation and emission rule) and Russian roulette. share: the part of the estimate the
- * direction stands for (1 / rays for one of several samples, 1 for a whole lobe); split:
- * whether the path has branched into glossy rays. */
-static struct vec3 follow_specular(const struct j96 *m, const struct surface *s,
-                                   const struct brdf_sample *bs, double share, int split,
+ * direction stands for (1 / rays for one of several samples, 1 for a whole lobe);
+ * branched: whether the path has branched into glossy rays. */
+static struct vec3 follow_specular(const struct jensen1996 *mode, const struct surface *s,
+                                   const struct brdf_sample *bs, double share, int branched,
                                    struct path path, struct rng *rng,
                                    struct render_counters *counters)
 {
     struct path next;
     next.beta = vec3_mul(path.beta, bs->weight);
     next.depth = path.depth + 1;
-    next.split = split;
+    next.branched = branched;
     double q = roulette_odds(next.beta, path.depth);
     if (q < 1 && !(rng_uniform(rng) < q))
         return vec3_zero();
-    /* Seen through a glossy lobe, whose blur hides the global map's, a surface gets the
-     * corner evaluation: no gather for every ray of every glossy sample (glossy_corner;
-     * off, the paper's accurate evaluation, which counts glossy lobes as specular). */
-    if (path.eval != ACCURATE || vec3_luminance(next.beta) < m->js->accurate_weight)
-        next.eval = APPROXIMATE;
-    else
-        next.eval = bs->delta || !m->js->glossy_corner ? ACCURATE : CORNER;
+    struct arrival bounce = {.last = SPECULAR_BOUNCE, .from = path.eval, .glossy = !bs->delta,
+                             .weight = vec3_luminance(next.beta)};
+    next.eval = accurate_or_approximate(mode, &bounce);
     if (bs->delta)
         next.rule = path.rule == EMISSION_SKIP_DIRECT ? EMISSION_COUNTED : path.rule;
     else
         next.rule = path.eval == APPROXIMATE ? EMISSION_COUNTED : EMISSION_SKIP_DIRECT;
     next.beta = vec3_scale(next.beta, share / q);
-    struct vec3 li = trace(m, surface_ray(s, bs->wi, bs->transmitted), next, rng, counters);
+    struct vec3 li = trace(mode, surface_ray(s, bs->wi, bs->transmitted), next, rng, counters);
     return vec3_mul(vec3_scale(bs->weight, share / q), li);
 }
 
@@ -253,32 +263,34 @@ static struct vec3 follow_specular(const struct j96 *m, const struct surface *s,
  * off, the paper's one sampled ray, as at approximate points). A lobe whose
  * path weight falls below --accurate-weight turns approximate and stops branching, which
  * bounds the number of rays. */
-static struct vec3 specular_reflection(const struct j96 *m, const struct surface *s,
+static struct vec3 specular_reflection(const struct jensen1996 *mode, const struct surface *s,
                                        const struct brdf_split *split,
                                        const struct shading_frame *frame, struct path path,
                                        struct rng *rng, struct render_counters *counters)
 {
-    if (path.depth >= m->max_depth)
+    if (path.depth >= mode->max_depth)
         return vec3_zero();
     struct vec3 sum = vec3_zero();
-    if (path.eval == ACCURATE && m->js->both_lobes && brdf_is_delta(&split->specular)) {
+    if (path.eval == ACCURATE && mode->settings->both_lobes &&
+        brdf_is_delta(&split->specular)) {
         struct brdf_sample lobes[2];
         int n_lobes = brdf_delta_lobes(&split->specular, frame, s->wo, lobes);
         for (int k = 0; k < n_lobes; k++)
-            sum = vec3_add(sum, follow_specular(m, s, &lobes[k], 1.0, path.split, path, rng,
-                                                counters));
+            sum = vec3_add(sum, follow_specular(mode, s, &lobes[k], 1.0, path.branched, path,
+                                                rng, counters));
         return sum;
     }
-    int glossy = brdf_has_diffuse(&split->specular); /* a non-delta lobe */
-    int n_rays = path.eval == ACCURATE && glossy && !path.split ? m->js->glossy_rays : 1;
+    int glossy = brdf_has_non_delta(&split->specular); /* a non-delta lobe */
+    int n_rays =
+        path.eval == ACCURATE && glossy && !path.branched ? mode->settings->glossy_rays : 1;
     for (int r = 0; r < n_rays; r++) {
         double u[3];
         for (int k = 0; k < 3; k++)
             u[k] = rng_uniform(rng);
         struct brdf_sample bs;
         if (brdf_sample(&split->specular, frame, s->wo, u, &bs))
-            sum = vec3_add(sum, follow_specular(m, s, &bs, 1.0 / n_rays,
-                                                path.split || n_rays > 1, path, rng,
+            sum = vec3_add(sum, follow_specular(mode, s, &bs, 1.0 / n_rays,
+                                                path.branched || n_rays > 1, path, rng,
                                                 counters));
     }
     return sum;
@@ -287,37 +299,70 @@ static struct vec3 specular_reflection(const struct j96 *m, const struct surface
 /* -- 4.3 caustics -- */
 
 /* The third term of Eq. 2: the caustic map's estimate through f_r,d, seen directly. */
-static struct vec3 caustics(const struct j96 *m, const struct surface *s,
+static struct vec3 caustics(const struct jensen1996 *mode, const struct surface *s,
                             const struct brdf_split *split, const struct shading_frame *frame)
 {
-    const struct kdtree *map = m->js->one_map ? m->maps.global : m->maps.caustic;
+    const struct kdtree *map = mode->settings->one_map ? mode->maps.global : mode->maps.caustic;
     double r2;
     if (map == NULL)
         return vec3_zero();
-    return photon_estimate(m, map, &m->caustic_es, s, &split->diffuse, frame, &r2);
+    return photon_estimate(mode, map, &mode->caustic_es, s, &split->diffuse, frame, &r2);
 }
 
 /* -- 4.4 soft indirect illumination: the final gather -- */
 
-/* Radiance arriving along a gather ray that hit s at distance d: the global map's
- * estimate, unless the ray is shorter than --accurate-distance radii of that estimate,
- * where the estimate's disc reaches back towards the gathering point. */
-static struct vec3 gathered_radiance(const struct j96 *m, const struct surface *s, double d,
-                                     struct path path, struct rng *rng,
-                                     struct render_counters *counters);
+/* The global map's radiance through the diffuse part at an approximate point, and *r2 its
+ * disc: Eq. 3, or f_r,d times a record's irradiance (the departure from Sec. 4.4 above;
+ * f_r,d towards the normal is rho / pi where it reflects towards wo at all). */
+static struct vec3 global_estimate(const struct jensen1996 *mode, const struct surface *s,
+                                   const struct brdf_split *split,
+                                   const struct shading_frame *frame, double *r2)
+{
+    struct vec3 e;
+    if (mode->precomputed != NULL && split->lambertian &&
+        precomputed_irradiance_at(mode->precomputed, s->p, s->ng, mode->scratch->nn, &e, r2)) {
+        mode->scratch->stats->precomputed_reads++;
+        return vec3_mul(brdf_eval(&split->diffuse, frame, s->wo, frame->n), e);
+    }
+    mode->scratch->stats->global_estimates++;
+    return photon_estimate(mode, mode->maps.global, &mode->global_es, s, &split->diffuse, frame,
+                           r2);
+}
+
+/* Radiance arriving along a gather ray that hit s at distance d, evaluated as
+ * accurate_or_approximate() says: in the corner way, or the global map's estimate. */
+static struct vec3 gathered_radiance(const struct jensen1996 *mode, const struct surface *s,
+                                     double d, struct path path, struct rng *rng,
+                                     struct render_counters *counters)
+{
+    struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
+    struct brdf_split split = brdf_split(s->material);
+    double r2 = 0.0;
+    struct vec3 estimate = vec3_zero();
+    if (split.has_diffuse)
+        estimate = global_estimate(mode, s, &split, &frame, &r2);
+    struct arrival bounce = {.last = DIFFUSE_BOUNCE, .length = d, .radius2 = r2};
+    path.eval = accurate_or_approximate(mode, &bounce);
+    if (path.eval == CORNER)
+        return surface_radiance(mode, s, path, rng, counters);
+    struct vec3 l = vec3_add(emitted(s, path.rule), estimate);
+    if (split.has_specular)
+        l = vec3_add(l, specular_reflection(mode, s, &split, &frame, path, rng, counters));
+    return l;
+}
 
 /* Jensen 1995's importance from the photon map on Ward and Heckbert's strata: the flux of
  * the nearest global photons arriving through each stratum, times f_r,d there. */
-static double stratum_importance(const struct j96 *m, const struct gather_plan *plan,
+static double stratum_importance(const struct jensen1996 *mode, const struct gather_plan *plan,
                                  const struct surface *s, const struct material *diffuse,
                                  const struct shading_frame *frame)
 {
     int mn = plan->theta * plan->phi;
-    double *importance = m->scratch->importance;
+    double *importance = mode->scratch->importance;
     for (int i = 0; i < mn; i++)
         importance[i] = 0.0;
-    struct nearest *nn = m->scratch->nn;
-    locate_photons(m->maps.global, s->p, m->global_es.max_r2, m->global_es.k, nn);
+    struct nearest *nn = mode->scratch->nn;
+    locate_photons(mode->maps.global, s->p, mode->global_es.max_r2, mode->global_es.k, nn);
     double total = 0.0;
     for (size_t i = 0; i < nn->found; i++) {
         struct vec3 wi = photon_direction(nn->photon[i]);
@@ -337,13 +382,13 @@ static double stratum_importance(const struct j96 *m, const struct gather_plan *
 
 /* The final gather at s: the strata's mean radiances and distances, and the summands of
  * its estimate (the mean radiances, or for a part that is not Lambertian mean f_r,d L). */
-static void final_gather(const struct j96 *m, const struct gather_plan *plan,
-                         const struct surface *s, const struct material *diffuse, int lambertian,
-                         const struct shading_frame *frame, struct path path, struct rng *rng,
-                         struct render_counters *counters)
+static void final_gather(const struct jensen1996 *mode, const struct gather_plan *plan,
+                         const struct surface *s, const struct material *diffuse,
+                         int lambertian, const struct shading_frame *frame, struct path path,
+                         struct rng *rng, struct render_counters *counters)
 {
-    struct scratch *sc = m->scratch;
-    allot_rays(plan, stratum_importance(m, plan, s, diffuse, frame), sc->importance,
+    struct scratch *sc = mode->scratch;
+    allot_rays(plan, stratum_importance(mode, plan, s, diffuse, frame), sc->importance,
                sc->rays_in);
     struct path gather = path;
     gather.depth = path.depth + 1;
@@ -366,9 +411,9 @@ static void final_gather(const struct j96 *m, const struct gather_plan *plan,
                 counters->rays++;
                 sc->stats->gather_rays++;
                 struct vec3 li = vec3_zero(); /* the sky: direct light, sampled */
-                if (scene_intersect(m->scene, surface_ray(s, wi, 0), INFINITY, &hit)) {
-                    struct surface at = surface_at(m->scene, &hit, vec3_neg(wi));
-                    li = gathered_radiance(m, &at, hit.t, gather, rng, counters);
+                if (scene_intersect(mode->scene, surface_ray(s, wi, 0), INFINITY, &hit)) {
+                    struct surface at = surface_at(mode->scene, &hit, vec3_neg(wi));
+                    li = gathered_radiance(mode, &at, hit.t, gather, rng, counters);
                     nearest = fmin(nearest, hit.t);
                 }
                 sum = vec3_add(sum, li);
@@ -385,19 +430,21 @@ static void final_gather(const struct j96 *m, const struct gather_plan *plan,
 }
 
 /* Irradiance at s from a final gather, as an irradiance record. */
-static struct irradiance_record gathered_record(const struct j96 *m, const struct surface *s,
+static struct irradiance_record gathered_record(const struct jensen1996 *mode,
+                                                const struct surface *s,
                                                 const struct material *diffuse,
                                                 const struct shading_frame *frame,
                                                 struct path path, struct rng *rng,
                                                 struct render_counters *counters)
 {
-    final_gather(m, &m->cached, s, diffuse, 1, frame, path, rng, counters);
-    double a = m->cache != NULL ? m->js->cache_accuracy : 1.0; /* no cache: R is unused */
-    struct record_reach reach = record_reach_at(&m->scene->camera, s->p, frame->n, a,
-                                                m->diagonal, m->js->bounded_reach,
-                                                m->js->gradient_limit);
-    return irradiance_record_of(s->p, frame->t, frame->b, frame->n, m->cached.theta,
-                                m->cached.phi, m->scratch->strata, reach);
+    final_gather(mode, &mode->cached, s, diffuse, 1, frame, path, rng, counters);
+    /* no cache: R is unused */
+    double a = mode->cache != NULL ? mode->settings->cache_accuracy : 1.0;
+    struct record_reach reach = record_reach_at(&mode->scene->camera, s->p, frame->n, a,
+                                                mode->diagonal, mode->settings->bounded_reach,
+                                                mode->settings->gradient_limit);
+    return irradiance_record_of(s->p, frame->t, frame->b, frame->n, mode->cached.theta,
+                                mode->cached.phi, mode->scratch->strata, reach);
 }
 
 /* The fourth term of Eq. 2 at an accurate point. Lambertian: rho / pi times the
@@ -407,57 +454,42 @@ static struct irradiance_record gathered_record(const struct j96 *m, const struc
  * camera sample's share of the rays, kept nowhere. Not Lambertian: no cache can hold
  * it (it depends on wo), so each camera sample gathers its share, the mean f_r,d L per
  * stratum. */
-static struct vec3 soft_indirect(const struct j96 *m, const struct surface *s,
+static struct vec3 soft_indirect(const struct jensen1996 *mode, const struct surface *s,
                                  const struct brdf_split *split,
                                  const struct shading_frame *frame, struct path path,
                                  struct rng *rng, struct render_counters *counters)
 {
     if (!split->lambertian) {
-        final_gather(m, &m->per_sample, s, &split->diffuse, 0, frame, path, rng, counters);
-        return strata_integral(&m->per_sample, m->scratch->summand);
+        final_gather(mode, &mode->per_sample, s, &split->diffuse, 0, frame, path, rng,
+                     counters);
+        return strata_integral(&mode->per_sample, mode->scratch->summand);
     }
     struct vec3 e;
     /* The pre-pass asks with a stricter a than the final pass reads with, so that the
      * final pass's camera samples find the records made at pixel centres. */
-    double a = m->js->cache_accuracy * (m->filling_cache ? CACHE_FILL_STRICTNESS : 1.0);
-    if (m->cache != NULL && irradiance_cache_lookup(m->cache, s->p, frame->n, a, &e))
+    double a =
+        mode->settings->cache_accuracy * (mode->filling_cache ? CACHE_FILL_STRICTNESS : 1.0);
+    if (mode->cache != NULL && irradiance_cache_lookup(mode->cache, s->p, frame->n, a, &e))
         return vec3_scale(vec3_mul(split->diffuse.rho, e), 1.0 / PI);
-    if (m->cache == NULL || m->filling_cache) {
+    if (mode->cache == NULL || mode->filling_cache) {
         struct irradiance_record record =
-            gathered_record(m, s, &split->diffuse, frame, path, rng, counters);
-        if (m->cache != NULL)
-            irradiance_cache_add(m->cache, &record);
+            gathered_record(mode, s, &split->diffuse, frame, path, rng, counters);
+        if (mode->cache != NULL)
+            irradiance_cache_add(mode->cache, &record);
         e = record.e;
     } else {
-        m->scratch->stats->gather_fallbacks++;
-        final_gather(m, &m->per_sample, s, &split->diffuse, 1, frame, path, rng, counters);
-        e = strata_integral(&m->per_sample, m->scratch->summand);
+        mode->scratch->stats->gather_fallbacks++;
+        final_gather(mode, &mode->per_sample, s, &split->diffuse, 1, frame, path, rng,
+                     counters);
+        e = strata_integral(&mode->per_sample, mode->scratch->summand);
     }
     return vec3_scale(vec3_mul(split->diffuse.rho, e), 1.0 / PI);
 }
 
 /* -- a surface, term by term -- */
 
-/* The global map's radiance through the diffuse part at an approximate point, and *r2 its
- * disc: Eq. 3, or f_r,d times a record's irradiance (the departure from Sec. 4.4 above;
- * f_r,d towards the normal is rho / pi where it reflects towards wo at all). */
-static struct vec3 global_estimate(const struct j96 *m, const struct surface *s,
-                                       const struct brdf_split *split,
-                                       const struct shading_frame *frame, double *r2)
-{
-    struct vec3 e;
-    if (m->precomputed != NULL && split->lambertian &&
-        precomputed_irradiance_at(m->precomputed, s->p, s->ng, m->scratch->nn, &e, r2)) {
-        m->scratch->stats->precomputed_reads++;
-        return vec3_mul(brdf_eval(&split->diffuse, frame, s->wo, frame->n), e);
-    }
-    m->scratch->stats->global_estimates++;
-    return photon_estimate(m, m->maps.global, &m->global_es, s, &split->diffuse, frame, r2);
-}
-
-
 /* Radiance leaving s towards s->wo, Eq. 2 evaluated as path.eval says. */
-static struct vec3 surface_radiance(const struct j96 *m, const struct surface *s,
+static struct vec3 surface_radiance(const struct jensen1996 *mode, const struct surface *s,
                                     struct path path, struct rng *rng,
                                     struct render_counters *counters)
 {
@@ -467,101 +499,78 @@ static struct vec3 surface_radiance(const struct j96 *m, const struct surface *s
     double r2;
     if (path.eval == APPROXIMATE) {
         if (split.has_diffuse)
-            l = vec3_add(l, global_estimate(m, s, &split, &frame, &r2));
+            l = vec3_add(l, global_estimate(mode, s, &split, &frame, &r2));
     } else {
-        if (brdf_has_diffuse(s->material))
-            l = vec3_add(l, direct_illumination(m, s, &frame, rng, counters));
+        if (brdf_has_non_delta(s->material))
+            l = vec3_add(l, direct_illumination(mode, s, &frame, rng, counters));
         if (split.has_diffuse) {
-            l = vec3_add(l, caustics(m, s, &split, &frame));
+            l = vec3_add(l, caustics(mode, s, &split, &frame));
             if (path.eval == ACCURATE) {
-                l = vec3_add(l, soft_indirect(m, s, &split, &frame, path, rng, counters));
+                l = vec3_add(l, soft_indirect(mode, s, &split, &frame, path, rng, counters));
             } else {
-                struct estimate_settings indirect = m->global_es;
+                struct estimate_settings indirect = mode->global_es;
                 indirect.kinds = PHOTON_INDIRECT;
-                l = vec3_add(l, photon_estimate(m, m->maps.global, &indirect, s,
+                l = vec3_add(l, photon_estimate(mode, mode->maps.global, &indirect, s,
                                                 &split.diffuse, &frame, &r2));
             }
         }
     }
     if (split.has_specular)
-        l = vec3_add(l, specular_reflection(m, s, &split, &frame, path, rng, counters));
+        l = vec3_add(l, specular_reflection(mode, s, &split, &frame, path, rng, counters));
     return l;
 }
 
-static struct vec3 gathered_radiance(const struct j96 *m, const struct surface *s, double d,
-                                     struct path path, struct rng *rng,
-                                     struct render_counters *counters)
-{
-    struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
-    struct brdf_split split = brdf_split(s->material);
-    double r2 = 0.0;
-    struct vec3 estimate = vec3_zero();
-    if (split.has_diffuse)
-        estimate = global_estimate(m, s, &split, &frame, &r2);
-    double reach = m->js->accurate_distance;
-    if (split.has_diffuse && d * d < reach * reach * r2) {
-        path.eval = CORNER;
-        return surface_radiance(m, s, path, rng, counters);
-    }
-    path.eval = APPROXIMATE;
-    struct vec3 l = vec3_add(emitted(s, path.rule), estimate);
-    if (split.has_specular)
-        l = vec3_add(l, specular_reflection(m, s, &split, &frame, path, rng, counters));
-    return l;
-}
-
-static struct vec3 trace(const struct j96 *m, struct ray ray, struct path path, struct rng *rng,
-                         struct render_counters *counters)
+static struct vec3 trace(const struct jensen1996 *mode, struct ray ray, struct path path,
+                         struct rng *rng, struct render_counters *counters)
 {
     struct surface s;
     double t;
-    if (!ray_surface(m->scene, ray, counters, &s, &t)) /* the sky, emission as any other */
-        return path.rule == EMISSION_COUNTED ? m->scene->background : vec3_zero();
-    return surface_radiance(m, &s, path, rng, counters);
+    if (!ray_surface(mode->scene, ray, counters, &s, &t)) /* the sky, emission as any other */
+        return path.rule == EMISSION_COUNTED ? mode->scene->background : vec3_zero();
+    return surface_radiance(mode, &s, path, rng, counters);
 }
 
-static struct path camera_path(void)
+static struct path camera_path(const struct jensen1996 *mode)
 {
-    struct path path;
-    path.beta = vec3(1.0, 1.0, 1.0);
-    path.depth = 0;
-    path.split = 0;
-    path.eval = ACCURATE;
-    path.rule = EMISSION_COUNTED;
+    struct arrival from_eye = {.last = FROM_EYE};
+    struct path path = {vec3(1.0, 1.0, 1.0), 0, accurate_or_approximate(mode, &from_eye),
+                        EMISSION_COUNTED, 0};
     return path;
 }
 
-static struct vec3 j96_radiance(const void *mode, struct ray ray, struct rng *rng,
+static struct vec3 camera_ray_radiance(const void *mode, struct ray ray, struct rng *rng,
                                 struct render_counters *counters)
 {
-    return trace(mode, ray, camera_path(), rng, counters);
+    return trace(mode, ray, camera_path(mode), rng, counters);
 }
 
 /* ---- putting it together ---- */
 
 /* A checkpoint that adds the photon pass's and the pre-pass's seconds to the render's,
  * and counts work as photons emitted plus gather rays so far. */
-struct j96_checkpoint {
+struct pass2_checkpoint {
     const struct checkpoint *inner;      /* borrowed */
     double seconds;                      /* added to every checkpoint's time */
     const struct jensen1996_stats *stats; /* borrowed */
 };
 
-static double j96_checkpoint_at(void *context, const struct image *mean, long long work,
+static double pass2_checkpoint_at(void *context, const struct image *mean, long long work,
                                 double seconds)
 {
-    const struct j96_checkpoint *jc = context;
+    const struct pass2_checkpoint *jc = context;
     (void)work;
     long long spent = (long long)jc->stats->photons_emitted + (long long)jc->stats->gather_rays;
     return jc->inner->at(jc->inner->context, mean, spent, seconds + jc->seconds);
 }
 
-static struct scratch *scratch_create(const struct j96 *m, struct jensen1996_stats *stats)
+static struct scratch *scratch_create(const struct jensen1996 *mode,
+                                      struct jensen1996_stats *stats)
 {
-    size_t k = m->js->global_gather > m->js->caustic_gather ? m->js->global_gather
-                                                            : m->js->caustic_gather;
+    size_t k = mode->settings->global_gather > mode->settings->caustic_gather
+                   ? mode->settings->global_gather
+                   : mode->settings->caustic_gather;
     k = k > J96_VISIBILITY_PHOTONS ? k : J96_VISIBILITY_PHOTONS;
-    size_t mn = (size_t)m->cached.theta * (size_t)m->cached.phi; /* the larger plan */
+    size_t mn = (size_t)mode->cached.theta * (size_t)mode->cached.phi; /* the larger plan */
     struct scratch *sc = xmalloc(1, sizeof *sc, "render scratch");
     sc->nn = nearest_create(k);
     sc->importance = xmalloc(mn, sizeof *sc->importance, "strata");
@@ -583,96 +592,97 @@ static void scratch_free(struct scratch *sc)
 }
 
 /* The mode's settings from the scene and the user's. */
-static void set_up(struct j96 *m, const struct scene *scene, const struct render_settings *rs,
-                   const struct jensen1996_settings *js, struct jensen1996_stats *stats)
+static void set_up(struct jensen1996 *mode, const struct scene *scene,
+                   const struct render_settings *rs, const struct jensen1996_settings *settings,
+                   struct jensen1996_stats *stats)
 {
     struct aabb box = geometry_bounds(scene->geometry);
-    m->scene = scene;
-    m->js = js;
-    m->diagonal = scene_diagonal(scene);
-    double max_radius = js->max_radius > 0 ? js->max_radius
-                                           : PHOTONS_RADIUS_FRACTION * m->diagonal;
-    m->global_es.k = js->global_gather;
-    m->global_es.max_r2 = max_radius * max_radius;
-    m->global_es.cone_k = 0;
-    m->global_es.kinds = 0;
-    m->global_es.count_rim = js->count_rim;
-    m->caustic_es.k = js->caustic_gather;
-    m->caustic_es.max_r2 = m->global_es.max_r2 * js->caustic_radius_fraction *
-                           js->caustic_radius_fraction;
-    m->caustic_es.cone_k = js->cone_k;
-    m->caustic_es.kinds = js->one_map ? PHOTON_CAUSTIC : 0;
-    m->caustic_es.count_rim = js->count_rim;
-    m->cached = gather_plan_of(js->gather_rays);
-    m->per_sample = gather_plan_of(js->gather_rays / rs->spp);
-    m->max_depth = rs->max_depth;
-    m->filling_cache = 0;
-    m->cache = NULL;
-    if (js->cache_accuracy > 0 && isfinite(box.lo.x))
-        m->cache = irradiance_cache_create(box, js->cache_accuracy);
-    m->precomputed = NULL;
-    if (m->maps.records != NULL) {
+    mode->scene = scene;
+    mode->settings = settings;
+    mode->diagonal = scene_diagonal(scene);
+    double max_radius = settings->max_radius > 0 ? settings->max_radius
+                                           : PHOTONS_RADIUS_FRACTION * mode->diagonal;
+    mode->global_es.k = settings->global_gather;
+    mode->global_es.max_r2 = max_radius * max_radius;
+    mode->global_es.cone_k = 0;
+    mode->global_es.kinds = 0;
+    mode->global_es.count_rim = settings->count_rim;
+    mode->caustic_es.k = settings->caustic_gather;
+    mode->caustic_es.max_r2 = mode->global_es.max_r2 * settings->caustic_radius_fraction *
+                           settings->caustic_radius_fraction;
+    mode->caustic_es.cone_k = settings->cone_k;
+    mode->caustic_es.kinds = settings->one_map ? PHOTON_CAUSTIC : 0;
+    mode->caustic_es.count_rim = settings->count_rim;
+    mode->cached = gather_plan_of(settings->gather_rays);
+    mode->per_sample = gather_plan_of(settings->gather_rays / rs->spp);
+    mode->max_depth = rs->max_depth;
+    mode->filling_cache = 0;
+    mode->cache = NULL;
+    if (settings->cache_accuracy > 0 && isfinite(box.lo.x))
+        mode->cache = irradiance_cache_create(box, settings->cache_accuracy);
+    mode->precomputed = NULL;
+    if (mode->maps.records != NULL) {
         clock_t start = clock();
-        struct irradiance_settings is = {m->global_es.k, m->global_es.max_r2, 0, 0,
-                                         js->count_rim};
-        m->precomputed = precompute_irradiance(m->maps.global, m->maps.records, &is,
-                                               js->disc_coverage ? scene : NULL);
+        struct irradiance_settings is = {mode->global_es.k, mode->global_es.max_r2, 0, 0,
+                                         settings->count_rim};
+        mode->precomputed = precompute_irradiance(mode->maps.global, mode->maps.records, &is,
+                                               settings->disc_coverage ? scene : NULL);
         stats->seconds_precompute = cpu_seconds(start);
-        stats->bytes_precomputed += precomputed_irradiance_bytes(m->precomputed);
+        stats->bytes_precomputed += precomputed_irradiance_bytes(mode->precomputed);
     }
 }
 
 struct render_result render_jensen1996(const struct scene *scene,
                                        const struct render_settings *rs,
-                                       const struct jensen1996_settings *js, int want_variance,
-                                       struct render_counters *counters,
+                                       const struct jensen1996_settings *settings,
+                                       int want_variance, struct render_counters *counters,
                                        struct jensen1996_stats *stats, struct error *err)
 {
     struct render_result result = {NULL, NULL, 0.0};
     memset(stats, 0, sizeof *stats);
-    struct j96 m;
-    memset(&m, 0, sizeof m);
-    struct global_work own_work = {NULL, 0, NULL, 0, NULL}; /* without js->work: made, freed */
-    struct jensen1996_settings with_work = *js;
+    struct jensen1996 mode;
+    memset(&mode, 0, sizeof mode);
+    struct global_work own_work = {NULL, 0, NULL, 0, NULL}; /* without settings->work */
+    struct jensen1996_settings with_work = *settings;
     if (with_work.work == NULL)
         with_work.work = &own_work;
-    js = &with_work;
-    int loaded = js->work->n_maps > 0;
+    settings = &with_work;
+    int loaded = settings->work->n_maps > 0;
     clock_t start = clock();
-    if ((!loaded && build_photon_maps(scene, rs, js, stats, err) < 0) ||
-        borrow_photon_maps(scene, js, &m.maps, stats, err) < 0) {
+    if ((!loaded && build_photon_maps(scene, rs, settings, stats, err) < 0) ||
+        borrow_photon_maps(scene, settings, &mode.maps, stats, err) < 0) {
         global_work_free(&own_work);
         return result;
     }
-    set_up(&m, scene, rs, js, stats);
+    set_up(&mode, scene, rs, settings, stats);
     stats->seconds_photons = cpu_seconds(start);
-    stats->strata_theta = m.cached.theta;
-    stats->strata_phi = m.cached.phi;
-    m.scratch = scratch_create(&m, stats);
+    stats->strata_theta = mode.cached.theta;
+    stats->strata_phi = mode.cached.phi;
+    mode.scratch = scratch_create(&mode, stats);
     start = clock();
-    if (m.cache != NULL && loaded) {
-        global_work_fill_cache(js->work, m.cache);
-    } else if (m.cache != NULL) {
-        struct radiance_estimator filler = {j96_radiance, &m};
-        m.filling_cache = 1;
-        fill_cache_pass(scene, rs->seed, filler, m.cache, rs->progress, counters);
-        m.filling_cache = 0;
-        global_work_keep_cache(js->work, m.cache);
+    if (mode.cache != NULL && loaded) {
+        global_work_fill_cache(settings->work, mode.cache);
+    } else if (mode.cache != NULL) {
+        struct radiance_estimator filler = {camera_ray_radiance, &mode};
+        mode.filling_cache = 1;
+        fill_cache_pass(scene, rs->seed, filler, mode.cache, rs->progress, counters);
+        mode.filling_cache = 0;
+        global_work_keep_cache(settings->work, mode.cache);
     }
     stats->seconds_cache = cpu_seconds(start);
-    stats->cache_records = m.cache != NULL ? irradiance_cache_records(m.cache) : 0;
-    stats->bytes_cache = m.cache != NULL ? irradiance_cache_bytes(m.cache) : 0;
-    struct radiance_estimator estimator = {j96_radiance, &m};
+    stats->cache_records = mode.cache != NULL ? irradiance_cache_records(mode.cache) : 0;
+    stats->bytes_cache = mode.cache != NULL ? irradiance_cache_bytes(mode.cache) : 0;
+    struct radiance_estimator estimator = {camera_ray_radiance, &mode};
     double before = stats->seconds_photons + stats->seconds_cache;
-    struct j96_checkpoint jc = {js->report, before, stats};
-    struct checkpoint report = {j96_checkpoint_at, &jc};
+    struct pass2_checkpoint jc = {settings->report, before, stats};
+    struct checkpoint report = {pass2_checkpoint_at, &jc};
     result = render_pixels(scene, rs, estimator, want_variance,
-                           js->report != NULL ? &report : NULL, counters);
+                           settings->report != NULL ? &report : NULL, counters);
     stats->seconds_final_pass = result.seconds;
     result.seconds += before;
-    scratch_free(m.scratch);
-    irradiance_cache_free(m.cache);
-    precomputed_irradiance_free(m.precomputed);
-    global_work_free(&own_work); /* m.maps borrowed from it */
+    scratch_free(mode.scratch);
+    irradiance_cache_free(mode.cache);
+    precomputed_irradiance_free(mode.precomputed);
+    global_work_free(&own_work); /* mode.maps borrowed from it */
     return result;
 }

@@ -12,14 +12,14 @@
 #include "render.h"
 
 /* Renders the window of rs: pass 1 (the maps), the irradiance cache's pre-pass over the
- * whole image (or both from js->work when it is full), then rs->spp camera samples per
- * pixel. On failure (more than MAX_PHOTONS photons would be stored, or js->work holds
+ * whole image (or both from settings->work when it is full), then rs->spp camera samples per
+ * pixel. On failure (more than MAX_PHOTONS photons would be stored, or settings->work holds
  * maps that do not fit the scene and settings) returns a result with image NULL and
  * *err filled. */
 struct render_result render_jensen1996(const struct scene *scene,
                                        const struct render_settings *rs,
-                                       const struct jensen1996_settings *js, int want_variance,
-                                       struct render_counters *counters,
+                                       const struct jensen1996_settings *settings,
+                                       int want_variance, struct render_counters *counters,
                                        struct jensen1996_stats *stats, struct error *err);
 
 #endif

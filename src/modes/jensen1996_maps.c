@@ -25,7 +25,7 @@ struct global_sink {
     struct photon_trace global;
     struct photon_trace *visibility; /* n_lights of them, or NULL */
     struct photon_trace records;     /* empty when step is 0 */
-    size_t step;                     /* js->precomputed_irradiance */
+    size_t step;                     /* settings->precomputed_irradiance */
 };
 
 static int store_record(struct global_sink *gs, const struct photon_event *e)
@@ -86,11 +86,13 @@ static int too_many_photons(struct error *err)
  * one_map the caustic photons' share is emitted here too, so both variants spend the
  * same photons. */
 static int build_global_map(const struct scene *scene, const struct render_settings *rs,
-                            const struct jensen1996_settings *js, struct photon_maps *maps,
-                            struct jensen1996_stats *stats, struct error *err)
+                            const struct jensen1996_settings *settings,
+                            struct photon_maps *maps, struct jensen1996_stats *stats,
+                            struct error *err)
 {
-    size_t n_emit = js->global_photons + (js->one_map ? js->caustic_photons : 0);
-    unsigned store = PHOTON_MAP_GLOBAL | (js->shadow_photons ? PHOTON_SHADOW : 0);
+    size_t n_emit =
+        settings->global_photons + (settings->one_map ? settings->caustic_photons : 0);
+    unsigned store = PHOTON_MAP_GLOBAL | (settings->shadow_photons ? PHOTON_SHADOW : 0);
     struct trace_settings ts = photon_pass(rs, 0, n_emit < MAX_PHOTONS ? n_emit : MAX_PHOTONS,
                                            store);
     struct global_sink gs;
@@ -98,8 +100,8 @@ static int build_global_map(const struct scene *scene, const struct render_setti
     gs.global.photons = NULL;
     gs.visibility = NULL;
     gs.records.photons = NULL;
-    gs.step = (size_t)js->precomputed_irradiance;
-    if (js->shadow_photons && scene->n_lights > 0)
+    gs.step = (size_t)settings->precomputed_irradiance;
+    if (settings->shadow_photons && scene->n_lights > 0)
         gs.visibility = xcalloc(scene->n_lights, sizeof *gs.visibility, "visibility maps");
     struct photon_sink sink = {store_global, &gs};
     int failed = trace_photons_into(scene, &ts, &sink, &stats->photon_rays) < 0;
@@ -122,16 +124,18 @@ static int build_global_map(const struct scene *scene, const struct render_setti
 /* The caustic map, "emitting photons towards the specular objects in the scene and
  * storing these as they hit diffuse surfaces"; not built when nothing is specular. */
 static int build_caustic_map(const struct scene *scene, const struct render_settings *rs,
-                             const struct jensen1996_settings *js, struct photon_maps *maps,
-                             struct jensen1996_stats *stats, struct error *err)
+                             const struct jensen1996_settings *settings,
+                             struct photon_maps *maps, struct jensen1996_stats *stats,
+                             struct error *err)
 {
-    if (js->one_map || js->caustic_photons == 0 || scene->n_materials == 0)
+    if (settings->one_map || settings->caustic_photons == 0 || scene->n_materials == 0)
         return 0;
     struct bounding_sphere *spheres = xmalloc(scene->n_materials, sizeof *spheres, "targets");
     struct emission_targets targets = {spheres, specular_targets(scene, spheres)};
     int status = 0;
     if (targets.n_spheres > 0) {
-        struct trace_settings ts = photon_pass(rs, 1, js->caustic_photons, PHOTON_MAP_CAUSTIC);
+        struct trace_settings ts =
+            photon_pass(rs, 1, settings->caustic_photons, PHOTON_MAP_CAUSTIC);
         ts.targets = &targets;
         struct photon_trace traced;
         status = trace_photons(scene, &ts, &traced, err);
@@ -157,35 +161,35 @@ static void photon_maps_free(struct photon_maps *maps)
 }
 
 int build_photon_maps(const struct scene *scene, const struct render_settings *rs,
-                      const struct jensen1996_settings *js, struct jensen1996_stats *stats,
-                      struct error *err)
+                      const struct jensen1996_settings *settings,
+                      struct jensen1996_stats *stats, struct error *err)
 {
     struct photon_maps maps = {NULL, NULL, NULL, 0, NULL};
-    if (build_global_map(scene, rs, js, &maps, stats, err) < 0 ||
-        build_caustic_map(scene, rs, js, &maps, stats, err) < 0) {
+    if (build_global_map(scene, rs, settings, &maps, stats, err) < 0 ||
+        build_caustic_map(scene, rs, settings, &maps, stats, err) < 0) {
         photon_maps_free(&maps);
         return -1;
     }
-    global_work_add_maps(js->work, 2 + maps.n_lights + (maps.records != NULL));
-    js->work->maps[0] = maps.global;
-    js->work->maps[1] = maps.caustic;
+    global_work_add_maps(settings->work, 2 + maps.n_lights + (maps.records != NULL));
+    settings->work->maps[0] = maps.global;
+    settings->work->maps[1] = maps.caustic;
     for (size_t l = 0; l < maps.n_lights; l++)
-        js->work->maps[2 + l] = maps.visibility[l];
+        settings->work->maps[2 + l] = maps.visibility[l];
     if (maps.records != NULL)
-        js->work->maps[2 + maps.n_lights] = maps.records;
+        settings->work->maps[2 + maps.n_lights] = maps.records;
     xfree(maps.visibility);
     return 0;
 }
 
-int borrow_photon_maps(const struct scene *scene, const struct jensen1996_settings *js,
+int borrow_photon_maps(const struct scene *scene, const struct jensen1996_settings *settings,
                        struct photon_maps *maps, struct jensen1996_stats *stats,
                        struct error *err)
 {
-    const struct global_work *work = js->work;
-    size_t n_lights = js->shadow_photons ? scene->n_lights : 0;
-    size_t n_records = js->precomputed_irradiance > 0;
+    const struct global_work *work = settings->work;
+    size_t n_lights = settings->shadow_photons ? scene->n_lights : 0;
+    size_t n_records = settings->precomputed_irradiance > 0;
     int fits = work->n_maps == 2 + n_lights + n_records && work->maps[0] != NULL &&
-               !(js->one_map && work->maps[1] != NULL) && work->illumination == NULL;
+               !(settings->one_map && work->maps[1] != NULL) && work->illumination == NULL;
     for (size_t l = 0; fits && l < n_lights + n_records; l++)
         fits = work->maps[2 + l] != NULL;
     if (!fits)
@@ -205,4 +209,23 @@ int borrow_photon_maps(const struct scene *scene, const struct jensen1996_settin
     stats->precomputed_records = maps->records != NULL ? maps->records->n_photons : 0;
     stats->bytes_precomputed = maps->records != NULL ? kdtree_bytes(maps->records) : 0;
     return 0;
+}
+
+enum visibility shadow_photon_visibility(const struct kdtree *visibility,
+                                         const struct surface *s, double max_r2,
+                                         struct nearest *nn)
+{
+    locate_photons(visibility, s->p, max_r2, J96_VISIBILITY_PHOTONS, nn);
+    size_t direct = 0, shadow = 0;
+    for (size_t i = 0; i < nn->found; i++) {
+        if (!(vec3_dot(photon_direction(nn->photon[i]), s->ng) > 0))
+            continue; /* arrived at the other side of a thin wall */
+        if (nn->photon[i]->flags & PHOTON_SHADOW)
+            shadow++;
+        else
+            direct++;
+    }
+    if (2 * (direct + shadow) < J96_VISIBILITY_PHOTONS || (direct > 0 && shadow > 0))
+        return UNDECIDED;
+    return shadow == 0 ? VISIBLE : OCCLUDED;
 }

@@ -6,7 +6,8 @@
  * stored on diffuse surfaces after specular bounces only (L S+ D), and a global map of
  * photons emitted towards everything and stored at every diffuse hit, with shadow photons
  * behind each first hit (Jensen and Christensen 1995) kept in one visibility map per
- * light. Pass 2 lives in jensen1996.c.
+ * light, which pass 2's direct light asks whether a light is seen (Sec. 4.1). Pass 2 lives
+ * in jensen1996.c.
  */
 #ifndef PHOTON_JENSEN1996_MAPS_H
 #define PHOTON_JENSEN1996_MAPS_H
@@ -15,6 +16,7 @@
 #include "../scene/scene.h"
 #include "jensen1996_settings.h"
 #include "render.h"
+#include "surface.h"
 
 /* The maps pass 2 reads, borrowed from the render's global work (jensen1996_settings.h). */
 struct photon_maps {
@@ -29,20 +31,30 @@ struct photon_maps {
                                    with precomputed_irradiance 0                          */
 };
 
-/* Pass 1 into js->work, which is empty: maps[0] the global map, maps[1] the caustic map
+/* Pass 1 into settings->work, which is empty: maps[0] the global map, maps[1] the caustic map
  * (NULL when not built), maps[2 ..] the lights' visibility maps, then the records when
- * js->precomputed_irradiance >= 1. On failure (more than
- * MAX_PHOTONS photons would be stored) -1 with *err filled, and js->work left empty. */
+ * settings->precomputed_irradiance >= 1. On failure (more than
+ * MAX_PHOTONS photons would be stored) -1 with *err filled, and settings->work left empty. */
 int build_photon_maps(const struct scene *scene, const struct render_settings *rs,
-                      const struct jensen1996_settings *js, struct jensen1996_stats *stats,
-                      struct error *err);
+                      const struct jensen1996_settings *settings,
+                      struct jensen1996_stats *stats, struct error *err);
 
-/* The maps of js->work, borrowed into *maps, after checking that they are the ones this
+/* The maps of settings->work, borrowed into *maps, after checking that they are the ones this
  * scene and these settings make (a visibility map per light with shadow photons, no
  * caustic map with one_map); the stats' map figures. -1 with *err filled when they are
  * not. */
-int borrow_photon_maps(const struct scene *scene, const struct jensen1996_settings *js,
+int borrow_photon_maps(const struct scene *scene, const struct jensen1996_settings *settings,
                        struct photon_maps *maps, struct jensen1996_stats *stats,
                        struct error *err);
+
+/* Whether a light is seen from s, as its shadow photons say (Jensen and Christensen 1995):
+ * its nearest direct and shadow photons in its visibility map, within max_r2 of s and on
+ * this side of the surface (nn the search's scratch). All direct: VISIBLE; all shadow:
+ * OCCLUDED; a mixture, or fewer than half of J96_VISIBILITY_PHOTONS within reach:
+ * UNDECIDED, for a shadow ray to settle. */
+enum visibility { VISIBLE, OCCLUDED, UNDECIDED };
+enum visibility shadow_photon_visibility(const struct kdtree *visibility,
+                                         const struct surface *s, double max_r2,
+                                         struct nearest *nn);
 
 #endif

@@ -66,7 +66,7 @@ static struct vec3 photons_radiance(const void *mode, struct ray ray, struct rng
         struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
                                                                TRANSPORT_RADIANCE);
         struct vec3 le = surface_emission(&s);
-        if (brdf_has_diffuse(s.material))
+        if (brdf_has_non_delta(s.material))
             le = vec3_add(le, estimate_at(pm, &s, &frame));
         l = vec3_add(l, vec3_mul(beta, le));
         if (!brdf_has_delta(s.material) || depth >= pm->max_depth ||

@@ -79,7 +79,7 @@
 #include "ppm_radius.h"
 #include "surface.h"
 
-#define PPM_MERGE_COS 0.9    /* hit points merge within 26 degrees (same_hit_point())   */
+#define PPM_MERGE_COS 0.9    /* hit points merge within 26 degrees (can_stand_in())   */
 #define PPM_ROULETTE_DEPTH 8 /* eye-path bounces before Russian roulette (take_lobe())  */
 
 /* An eye ray's hit merged into (or making) hit point `point`, until its pixel is done. */
@@ -95,17 +95,17 @@ struct ppm {
     const struct ppm_settings *ps;      /* borrowed                                       */
     struct render_counters *counters;   /* borrowed                                       */
     int width, height;                  /* of the window                                  */
-    struct vec3 *seen;                  /* owned: per window pixel, the sum of the emission
+    struct vec3 *emission_seen;         /* owned: per window pixel, the sum of the emission
                                            and background radiance seen along its eye rays */
-    long eye_rays;                      /* eye rays per pixel in seen so far: --spp, and
-                                           one more each photon pass                      */
+    long eye_rays;                      /* eye rays per pixel in emission_seen so far:
+                                           --spp, and one more each photon pass           */
     struct hit_point *points;           /* owned: n_points of cap_points, in the order made */
     size_t n_points, cap_points;
     struct hit_point_tree tree;         /* over points                                    */
     double footprint_per_distance;      /* a pixel's width at distance 1: 2 tan(fov/2) / H */
     const struct photon_event *photon;  /* the photon being added (Sec. 3.1)              */
-    double unnormalise;                 /* photons per pass: turns the tracer's Phi / N
-                                           back into the paper's unnormalised Phi'        */
+    double photons_per_pass;            /* turns the tracer's Phi / N back into the
+                                           paper's unnormalised Phi'                      */
     struct ppm_direct direct;           /* the direct term, unless the photons bring it   */
     long pass;                          /* the photon pass under way, from 0              */
     size_t pixel_first_point;           /* the first hit point of the pixel being traced    */
@@ -149,10 +149,13 @@ struct eye_path {
     struct vec3 beta; /* throughput of the mirror and glass bounces    */
     double distance;  /* length travelled from the camera              */
     int depth;        /* mirror and glass bounces so far               */
-    int stores;       /* 1: stores hit points (the ray tracing pass);
-                         0: a photon pass's ray: sees emission, and
-                         takes the direct light's samples              */
 };
+
+/* What an eye ray does at each surface with a non-delta part it meets: in the ray tracing
+ * pass, store a hit point (store_hit_point()); along each pass's new eye ray, a departure,
+ * take the direct light's samples (take_light_samples()). */
+typedef void at_surface_fn(struct ppm *ppm, const struct surface *s,
+                           const struct shading_frame *frame, const struct eye_path *path);
 
 /* R0 of a hit point's caustic estimate, whose global one starts at global_r0: --radius
  * if given; else ps->caustic_footprints footprints, at most global_r0 when that was fitted
@@ -179,7 +182,7 @@ static struct progressive_estimate empty_estimate(double radius)
  * pixel: the same material, within hp's disc, facing and seen the same way to within
  * PPM_MERGE_COS. Photons then reach both alike, and Eq. 13 at hp, a footprint or less
  * away inside a disc several footprints wide, is the estimate the new one would make. */
-static int same_hit_point(const struct hit_point *hp, const struct surface *s)
+static int can_stand_in(const struct hit_point *hp, const struct surface *s)
 {
     return hp->material == s->material &&
            vec3_length2(vec3_sub(hp->x, s->p)) <= hp->global.radius * hp->global.radius &&
@@ -265,20 +268,28 @@ static int makes_caustics(const struct scene *scene)
     return 0;
 }
 
-/* Stores a hit point at s, reached by the eye path; with ps->merge_hit_points, adds the
- * path's weight to a hit point of the pixel that can stand in for it instead. */
+/* The merge (--merge-hit-points, a departure): adds weight, an eye ray's at s, to a hit
+ * point of the pixel that can stand in for one at s; returns 0 when none can. */
+static int merged_into_pixel_point(struct ppm *ppm, const struct surface *s,
+                                   struct vec3 weight)
+{
+    for (size_t i = ppm->pixel_first_point; i < ppm->n_points; i++)
+        if (can_stand_in(&ppm->points[i], s)) {
+            ppm->points[i].weight = vec3_add(ppm->points[i].weight, weight);
+            if (ppm->keep_members)
+                add_member(ppm, i, s->p, weight);
+            return 1;
+        }
+    return 0;
+}
+
+/* Sec. 3.1: stores a hit point at s, reached by the eye path (unless merged). */
 static void store_hit_point(struct ppm *ppm, const struct surface *s,
                             const struct shading_frame *frame, const struct eye_path *path)
 {
     struct vec3 weight = vec3_scale(path->beta, 1.0 / ppm->rs->spp); /* the box filter's share */
-    if (ppm->ps->merge_hit_points)
-        for (size_t i = ppm->pixel_first_point; i < ppm->n_points; i++)
-            if (same_hit_point(&ppm->points[i], s)) {
-                ppm->points[i].weight = vec3_add(ppm->points[i].weight, weight);
-                if (ppm->keep_members)
-                    add_member(ppm, i, s->p, weight);
-                return;
-            }
+    if (ppm->ps->merge_hit_points && merged_into_pixel_point(ppm, s, weight))
+        return;
     if (ppm->n_points == ppm->cap_points) {
         ppm->cap_points = ppm->cap_points > 0 ? 2 * ppm->cap_points : 4096;
         ppm->points = xrealloc(ppm->points, ppm->cap_points, sizeof *ppm->points,
@@ -341,85 +352,83 @@ static int take_lobe(const struct surface *s, const struct brdf_sample *lobe,
     return 1;
 }
 
-static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct eye_path path,
-                                  struct rng *rng);
+static struct vec3 follow_eye_ray(struct ppm *ppm, struct ray ray, struct eye_path path,
+                                  at_surface_fn *at_surface, struct rng *rng);
 
-/* The radiance seen along lobe from s by an eye path of its own (a copy of path). */
-static struct vec3 trace_lobe(struct ppm *ppm, const struct surface *s,
-                              const struct brdf_sample *lobe, struct eye_path path,
-                              struct rng *rng)
+/* The emission seen along lobe from s by an eye path of its own (a copy of path). */
+static struct vec3 follow_lobe(struct ppm *ppm, const struct surface *s,
+                               const struct brdf_sample *lobe, struct eye_path path,
+                               at_surface_fn *at_surface, struct rng *rng)
 {
     struct ray ray;
     if (!take_lobe(s, lobe, &path, rng, &ray))
         return vec3_zero();
-    return trace_eye_path(ppm, ray, path, rng);
+    return follow_eye_ray(ppm, ray, path, at_surface, rng);
 }
 
 /* Follows an eye ray through mirrors and glass (every lobe; Russian roulette on long
- * chains), storing a hit point at every surface with a non-specular part if the path
- * stores them; what emitters
- * and the background show along the way goes to the pixel directly. Returns that radiance.
+ * chains), calling at_surface at every surface with a non-specular part. Returns the
+ * emission and background radiance seen along the way, which goes to the pixel directly.
  * Glass's first lobes get paths of their own (recursion) and its last one continues this
  * loop, so a chain of mirrors costs no stack. */
-static struct vec3 trace_eye_path(struct ppm *ppm, struct ray ray, struct eye_path path,
-                                  struct rng *rng)
+static struct vec3 follow_eye_ray(struct ppm *ppm, struct ray ray, struct eye_path path,
+                                  at_surface_fn *at_surface, struct rng *rng)
 {
-    struct vec3 seen = vec3_zero();
-    int sees_emission = path.stores || ppm->ps->resample_emission;
+    struct vec3 emission = vec3_zero();
     for (;;) {
         struct surface s;
         double t;
         if (!ray_surface(ppm->scene, ray, ppm->counters, &s, &t))
-            return sees_emission ? vec3_add(seen, vec3_mul(path.beta, ppm->scene->background))
-                                 : seen;
+            return vec3_add(emission, vec3_mul(path.beta, ppm->scene->background));
         path.distance += t;
         struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
                                                                TRANSPORT_RADIANCE);
-        if (sees_emission)
-            seen = vec3_add(seen, vec3_mul(path.beta, surface_emission(&s)));
-        if (path.stores && brdf_has_diffuse(s.material))
-            store_hit_point(ppm, &s, &frame, &path);
-        else if (!ppm->ps->progressive.direct_photons && brdf_has_diffuse(s.material))
-            ppm_direct_sample(&ppm->direct, path.pixel, ppm->surfaces_met++, ppm->pass, &s,
-                              &frame, path.beta, ppm->counters);
+        emission = vec3_add(emission, vec3_mul(path.beta, surface_emission(&s)));
+        if (brdf_has_non_delta(s.material))
+            at_surface(ppm, &s, &frame, &path);
         struct brdf_sample lobes[2];
         int n = path.depth < ppm->rs->max_depth ? specular_lobes(&s, &frame, rng, lobes) : 0;
         for (int k = 0; k + 1 < n; k++)
-            seen = vec3_add(seen, trace_lobe(ppm, &s, &lobes[k], path, rng));
+            emission = vec3_add(emission, follow_lobe(ppm, &s, &lobes[k], path, at_surface,
+                                                      rng));
         if (n == 0 || !take_lobe(&s, &lobes[n - 1], &path, rng, &ray))
-            return seen;
+            return emission;
     }
 }
 
-/* Eye rays number first to last through every pixel of the window: camera sample s of
- * pixel (x, y) (camera_sample(), stratified over any run of samples from 0), adding what
- * each sees directly to the pixel's seen sum; stores says whether they store hit points. */
-static void trace_eye_rays(struct ppm *ppm, int first, int last, int stores)
+/* Row-major index of image pixel (x, y) in the window. */
+static size_t window_pixel(const struct ppm *ppm, int x, int y)
+{
+    const struct render_settings *rs = ppm->rs;
+    return (size_t)(y - rs->y0) * (size_t)ppm->width + (size_t)(x - rs->x0);
+}
+
+/* Eye ray `sample` through pixel (x, y) (camera_sample(), stratified over any run of
+ * samples from 0), followed by follow_eye_ray(); returns the emission it saw. */
+static struct vec3 eye_ray(struct ppm *ppm, int x, int y, int sample, at_surface_fn *at_surface)
+{
+    struct rng rng;
+    struct ray ray = camera_sample(ppm->scene, ppm->rs->seed, x, y, sample, &rng);
+    struct eye_path path = {window_pixel(ppm, x, y), vec3(1.0, 1.0, 1.0), 0.0, 0};
+    ppm->surfaces_met = 0;
+    return follow_eye_ray(ppm, ray, path, at_surface, &rng);
+}
+
+/* rs->spp eye rays through every pixel, storing hit points and adding the emission each
+ * sees to the pixel's sum, then the hit points' tree. */
+static void ray_tracing_pass(struct ppm *ppm)
 {
     const struct render_settings *rs = ppm->rs;
     for (int y = rs->y0; y < rs->y1; y++)
         for (int x = rs->x0; x < rs->x1; x++) {
-            size_t pixel = (size_t)(y - rs->y0) * (size_t)ppm->width + (size_t)(x - rs->x0);
+            struct vec3 *emission = &ppm->emission_seen[window_pixel(ppm, x, y)];
             ppm->pixel_first_point = ppm->n_points;
-            for (int s = first; s <= last; s++) {
-                struct rng rng;
-                struct ray ray = camera_sample(ppm->scene, rs->seed, x, y, s, &rng);
-                struct eye_path path = {pixel, vec3(1.0, 1.0, 1.0), 0.0, 0, stores};
-                ppm->surfaces_met = 0;
-                ppm->seen[pixel] = vec3_add(ppm->seen[pixel],
-                                            trace_eye_path(ppm, ray, path, &rng));
-            }
-            if (stores && ppm->keep_members)
+            for (int s = 0; s < rs->spp; s++)
+                *emission = vec3_add(*emission, eye_ray(ppm, x, y, s, store_hit_point));
+            if (ppm->keep_members)
                 keep_pixel_members(ppm);
         }
-    if (stores || ppm->ps->resample_emission)
-        ppm->eye_rays += last - first + 1;
-}
-
-/* rs->spp eye rays through every pixel, storing hit points, then the hit points' tree. */
-static void ray_tracing_pass(struct ppm *ppm)
-{
-    trace_eye_rays(ppm, 0, ppm->rs->spp - 1, 1);
+    ppm->eye_rays = rs->spp;
     members_in_place(ppm);
     hit_point_tree_build(&ppm->tree, ppm->points, ppm->n_points);
 }
@@ -432,7 +441,7 @@ static void ray_tracing_pass(struct ppm *ppm)
 static void add_flux(void *context, size_t i)
 {
     struct ppm *ppm = context;
-    hit_point_add_photon(&ppm->points[i], ppm->photon, ppm->unnormalise,
+    hit_point_add_photon(&ppm->points[i], ppm->photon, ppm->photons_per_pass,
                          ppm->ps->progressive.facing_test, ppm->ps->caustic_footprints > 0);
 }
 
@@ -447,18 +456,37 @@ static void add_photon(void *context, const struct photon_event *photon)
     hit_point_tree_visit(&ppm->tree, photon->position, add_flux, ppm);
 }
 
+/* Along each pass's new eye ray (a departure): one sample of every light at s, unless the
+ * photons bring the direct light. */
+static void take_light_samples(struct ppm *ppm, const struct surface *s,
+                               const struct shading_frame *frame, const struct eye_path *path)
+{
+    if (!ppm->ps->progressive.direct_photons)
+        ppm_direct_sample(&ppm->direct, path->pixel, ppm->surfaces_met++, ppm->pass, s, frame,
+                          path->beta, ppm->counters);
+}
+
 /* After photon pass p (from 0), one more eye ray through every pixel that takes the direct
  * light, unless the photons bring it, and adds the emission it sees, unless only the ray
  * tracing pass's rays do (the departures explained at the top). */
 static void eye_ray_pass(void *context, long pass)
 {
     struct ppm *ppm = context;
+    const struct render_settings *rs = ppm->rs;
     int direct_photons = ppm->ps->progressive.direct_photons;
-    if (direct_photons && !ppm->ps->resample_emission)
+    int resample_emission = ppm->ps->resample_emission;
+    if (direct_photons && !resample_emission)
         return; /* the paper's way: the ray would bring nothing */
-    int sample = ppm->rs->spp + (int)pass;
     ppm->pass = pass;
-    trace_eye_rays(ppm, sample, sample, 0);
+    for (int y = rs->y0; y < rs->y1; y++)
+        for (int x = rs->x0; x < rs->x1; x++) {
+            struct vec3 emission = eye_ray(ppm, x, y, rs->spp + (int)pass, take_light_samples);
+            size_t pixel = window_pixel(ppm, x, y);
+            if (resample_emission)
+                ppm->emission_seen[pixel] = vec3_add(ppm->emission_seen[pixel], emission);
+        }
+    if (resample_emission)
+        ppm->eye_rays++;
     if (!direct_photons)
         ppm_direct_end_pass(&ppm->direct);
 }
@@ -529,7 +557,7 @@ static void evaluate_image(const void *context, double n_emitted, struct image *
     const struct ppm *ppm = context;
     size_t n_pixels = (size_t)ppm->width * (size_t)ppm->height;
     for (size_t i = 0; i < n_pixels; i++) {
-        image->pixels[i] = vec3_scale(ppm->seen[i], 1.0 / (double)ppm->eye_rays);
+        image->pixels[i] = vec3_scale(ppm->emission_seen[i], 1.0 / (double)ppm->eye_rays);
         if (!ppm->ps->progressive.direct_photons)
             image->pixels[i] = vec3_add(image->pixels[i], ppm_direct_radiance(&ppm->direct, i));
     }
@@ -571,9 +599,10 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     ppm.counters = counters;
     ppm.width = rs->x1 - rs->x0;
     ppm.height = rs->y1 - rs->y0;
-    ppm.seen = xcalloc((size_t)ppm.width * (size_t)ppm.height, sizeof *ppm.seen, "ppm pixels");
+    ppm.emission_seen = xcalloc((size_t)ppm.width * (size_t)ppm.height,
+                                sizeof *ppm.emission_seen, "ppm pixels");
     ppm.footprint_per_distance = camera_footprint(&scene->camera);
-    ppm.unnormalise = (double)common->photons_per_pass;
+    ppm.photons_per_pass = (double)common->photons_per_pass;
     ppm.keep_members = ps->merge_hit_points && ps->caustic_footprints > 0 &&
                        makes_caustics(scene);
     if (!common->direct_photons)
@@ -606,7 +635,7 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     xfree(ppm.members);
     xfree(ppm.pending);
     xfree(ppm.points);
-    xfree(ppm.seen);
+    xfree(ppm.emission_seen);
     return result;
 }
 

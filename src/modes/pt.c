@@ -108,7 +108,7 @@ static struct vec3 trace_path(const struct pt_mode *pt, struct ray ray, struct r
             return l;
         struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
                                                                TRANSPORT_RADIANCE);
-        if (brdf_has_diffuse(s.material))
+        if (brdf_has_non_delta(s.material))
             l = vec3_add(l, vec3_mul(beta, sample_one_light(scene, &s, &frame, rng, counters)));
         double u[3];
         for (int k = 0; k < 3; k++)

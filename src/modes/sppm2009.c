@@ -107,15 +107,15 @@ struct sppm {
     size_t n_pixels;
     struct progressive_estimate *shared; /* owned: per window pixel, S's N, R and tau; R is
                                             0 until the pixel's first hit point            */
-    struct vec3 *seen;                  /* owned: per window pixel, the sum over passes of
+    struct vec3 *emission_seen;         /* owned: per window pixel, the sum over passes of
                                            the emission and background its paths saw      */
     struct hit_point *points;           /* owned: this pass's hit points, n_points of them,
                                            room for one a pixel                            */
     size_t n_points;
     struct hit_point_grid grid;         /* over points, rebuilt each pass                  */
     const struct photon_event *photon;  /* the photon being added                          */
-    double unnormalise;                 /* photons per pass: the tracer's Phi / N back to
-                                           the paper's unnormalised Phi'                   */
+    double photons_per_pass;            /* turns the tracer's Phi / N back into the
+                                           paper's unnormalised Phi'                       */
     long passes_done;
     struct ppm_direct direct;           /* the direct term, unless the photons bring it    */
     struct brdf_split *parts;           /* owned: each scene material's diffuse and
@@ -168,10 +168,11 @@ static void store_hit_point(struct sppm *sppm, size_t pixel, const struct surfac
                             double distance)
 {
     struct progressive_estimate *shared = &sppm->shared[pixel];
+    const struct progressive_settings *common = &sppm->ps->progressive;
     if (shared->radius == 0)
-        shared->radius = ppm_initial_radius(sppm->scene, &sppm->ps->progressive,
-                                   sppm->ps->disc_coverage, sppm->counters, s, distance);
-    if (sppm->ps->disc_coverage && sppm->ps->progressive.fit_radius && sppm->ps->progressive.radius <= 0)
+        shared->radius = ppm_initial_radius(sppm->scene, common, sppm->ps->disc_coverage,
+                                            sppm->counters, s, distance);
+    if (sppm->ps->disc_coverage && common->fit_radius && common->radius <= 0)
         fit_to_surface(sppm, pixel, s, distance); /* else no fit could shorten R */
     struct hit_point *hp = &sppm->points[sppm->n_points++];
     hp->x = s->p;
@@ -223,16 +224,30 @@ static double hit_point_probability(const struct brdf_split *part,
     return d + g > 0 ? d / (d + g) : 0.5;
 }
 
+/* With light-sampled direct light (a departure, the top of the file): a glossy lobe, the
+ * k-th surface of the eye path of window pixel `pixel` at s, which the path follows with
+ * throughput beta, samples the point lights through itself: its sampled directions find
+ * every other light, never a point light's highlight (without it the sphere flake's Phong
+ * spheres are dark: src/modes/README.md). */
+static void point_lights_through_lobe(struct sppm *sppm, size_t pixel, long pass, uint64_t k,
+                                      const struct surface *s, const struct material *lobe,
+                                      const struct shading_frame *frame, struct vec3 beta)
+{
+    if (sppm->ps->progressive.direct_photons || !brdf_has_non_delta(lobe))
+        return;
+    struct surface glossy = *s;
+    glossy.material = lobe;
+    ppm_direct_point_lights(&sppm->direct, pixel, k, pass, &glossy, frame, beta,
+                            sppm->counters);
+}
+
 /* Eye path `pass` of window pixel `pixel` along ray: what emitters and the background
  * show along it goes to the pixel's seen sum; it ends at a surface's diffuse part (the
  * split of brdf.h: Lambertian terms, broad lobes), where the pass's hit point lies with
  * that part's BRDF. A specular part -- a mirror, glass, a glossy lobe -- is sampled and
  * followed instead, as a path tracer would: a photon estimate behind a narrow lobe would
  * be all noise. A surface with both chooses one by hit_point_probability() p, the
- * weight divided by the probability of the choice, so each part counts once, unbiased.
- * A glossy lobe so followed samples the point lights through itself (with light-sampled
- * direct light): its sampled directions find every other light, never a point light's
- * highlight (without it the sphere flake's Phong spheres are dark: src/modes/README.md). */
+ * weight divided by the probability of the choice, so each part counts once, unbiased. */
 static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ray ray,
                            struct rng *rng)
 {
@@ -242,12 +257,13 @@ static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ra
         struct surface s;
         double t;
         if (!ray_surface(sppm->scene, ray, sppm->counters, &s, &t)) {
-            sppm->seen[pixel] = vec3_add(sppm->seen[pixel],
-                                         vec3_mul(beta, sppm->scene->background));
+            sppm->emission_seen[pixel] = vec3_add(sppm->emission_seen[pixel],
+                                                  vec3_mul(beta, sppm->scene->background));
             return;
         }
         distance += t;
-        sppm->seen[pixel] = vec3_add(sppm->seen[pixel], vec3_mul(beta, surface_emission(&s)));
+        sppm->emission_seen[pixel] = vec3_add(sppm->emission_seen[pixel],
+                                              vec3_mul(beta, surface_emission(&s)));
         if (depth >= sppm->rs->max_depth)
             return;
         struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
@@ -260,13 +276,8 @@ static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ra
                 u[k] = rng_uniform(rng); /* one by one: an initializer's order is unspecified */
             struct brdf_sample bs;
             const struct material *lobe = part->has_diffuse ? &part->specular : s.material;
-            if (!sppm->ps->progressive.direct_photons && brdf_has_diffuse(lobe)) {
-                struct surface glossy = s;
-                glossy.material = lobe;
-                ppm_direct_point_lights(&sppm->direct, pixel, (uint64_t)depth + 1, pass,
-                                        &glossy, &frame, vec3_scale(beta, 1.0 / (1.0 - p)),
-                                        sppm->counters);
-            }
+            point_lights_through_lobe(sppm, pixel, pass, (uint64_t)depth + 1, &s, lobe, &frame,
+                                      vec3_scale(beta, 1.0 / (1.0 - p)));
             if (!brdf_sample(lobe, &frame, s.wo, u, &bs))
                 return;
             beta = vec3_scale(vec3_mul(beta, bs.weight), 1.0 / (1.0 - p));
@@ -334,7 +345,7 @@ static void add_flux(void *context, size_t i)
                                                       sppm->photon->position,
                                                       sppm->photon->normal))
         return;
-    hit_point_add_photon(&sppm->points[i], sppm->photon, sppm->unnormalise,
+    hit_point_add_photon(&sppm->points[i], sppm->photon, sppm->photons_per_pass,
                          sppm->ps->progressive.facing_test, 0);
 }
 
@@ -390,7 +401,7 @@ static void evaluate_image(const void *context, double n_emitted, struct image *
     for (size_t i = 0; i < sppm->n_pixels; i++) {
         const struct progressive_estimate *e = &sppm->shared[i];
         struct vec3 photons = ppm_radiance(e->tau, e->radius, n_emitted);
-        struct vec3 l = vec3_add(vec3_scale(sppm->seen[i], 1.0 / passes),
+        struct vec3 l = vec3_add(vec3_scale(sppm->emission_seen[i], 1.0 / passes),
                                  vec3_scale(photons, 1.0 / covered_share(sppm, i)));
         if (!sppm->ps->progressive.direct_photons)
             l = vec3_add(l, ppm_direct_radiance(&sppm->direct, i));
@@ -430,13 +441,13 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     sppm.width = rs->x1 - rs->x0;
     sppm.n_pixels = (size_t)sppm.width * (size_t)(rs->y1 - rs->y0);
     sppm.shared = xcalloc(sppm.n_pixels, sizeof *sppm.shared, "sppm statistics");
-    sppm.seen = xcalloc(sppm.n_pixels, sizeof *sppm.seen, "sppm pixels");
+    sppm.emission_seen = xcalloc(sppm.n_pixels, sizeof *sppm.emission_seen, "sppm pixels");
     sppm.points = xmalloc(sppm.n_pixels, sizeof *sppm.points, "sppm hit points");
     if (ps->disc_coverage) {
         sppm.coverage = xcalloc(sppm.n_pixels, sizeof *sppm.coverage, "sppm disc coverage");
         sppm.fitted = xcalloc(sppm.n_pixels, sizeof *sppm.fitted, "sppm fitted planes");
     }
-    sppm.unnormalise = (double)common->photons_per_pass;
+    sppm.photons_per_pass = (double)common->photons_per_pass;
     sppm.parts = xmalloc(scene->n_materials + 1, sizeof *sppm.parts, "sppm materials");
     for (size_t m = 0; m < scene->n_materials; m++)
         sppm.parts[m] = brdf_split(&scene->materials[m]);
@@ -470,7 +481,7 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     xfree(sppm.coverage);
     xfree(sppm.fitted);
     xfree(sppm.points);
-    xfree(sppm.seen);
+    xfree(sppm.emission_seen);
     xfree(sppm.shared);
     return result;
 }

@@ -222,7 +222,7 @@ static double members_holding(const struct hit_point *hp, struct vec3 p, double 
 }
 
 void hit_point_add_photon(struct hit_point *hp, const struct photon_event *photon,
-                          double unnormalise, int facing_test, int caustic_apart)
+                          double photons_per_pass, int facing_test, int caustic_apart)
 {
     if (facing_test && vec3_dot(hp->n, photon->normal) <= 0)
         return;
@@ -234,6 +234,6 @@ void hit_point_add_photon(struct hit_point *hp, const struct photon_event *photo
     if (!(share > 0))
         return; /* within the hit point's reach, not within this estimate's disc */
     struct vec3 f = brdf_eval(hp->material, &hp->frame, hp->wo, photon->wi);
-    e->tau = vec3_add(e->tau, vec3_mul(f, vec3_scale(photon->power, unnormalise * share)));
+    e->tau = vec3_add(e->tau, vec3_mul(f, vec3_scale(photon->power, photons_per_pass * share)));
     e->m_photons += share;
 }

@@ -81,15 +81,15 @@ struct photon_event;
 /* A photon within hp's reach: tau_M += f_r(x, w, w_p) Phi'_p and M += 1 (2008, Eq. 11),
  * or for the caustic estimate of a hit point with members, both times the share of its
  * members whose caustic discs hold the photon,
- * Phi' being the photon's power times unnormalise (the tracer's Phi / N turned back into
- * the paper's unnormalised flux), for the estimate it belongs to: hp's caustic one for a
+ * Phi' being the photon's power times photons_per_pass (the tracer's Phi / N turned back
+ * into the paper's unnormalised flux), for the estimate it belongs to: hp's caustic one for a
  * caustic photon when caustic_apart, else the global one. Nothing when it lies outside
  * that estimate's disc, or, with facing_test, when the two surfaces face apart (a photon
  * on the far side of a thin wall, or on the back of hp's own surface); a photon on a wall
  * at right angles is not counted either, which is why R0 stops at walls. No cosine: it
  * is in the photon's flux already. */
 void hit_point_add_photon(struct hit_point *hp, const struct photon_event *photon,
-                          double unnormalise, int facing_test, int caustic_apart);
+                          double photons_per_pass, int facing_test, int caustic_apart);
 
 /* The node whose middle is m: what a search reads. */
 struct hit_point_node {

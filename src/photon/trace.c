@@ -93,7 +93,7 @@ static struct photon_hit photon_hit_at(const struct scene *scene, const struct h
 /* Whether photons are stored at h: a non-delta part that reflects something. */
 static int holds_photons(const struct photon_hit *h)
 {
-    return brdf_has_diffuse(h->material) &&
+    return brdf_has_non_delta(h->material) &&
            vec3_max_component(brdf_albedo(h->material, &h->frame, h->wi)) > 0;
 }
 

@@ -235,7 +235,7 @@ int brdf_is_delta(const struct material *m)
     return material_is_specular(m);
 }
 
-int brdf_has_diffuse(const struct material *m)
+int brdf_has_non_delta(const struct material *m)
 {
     return !material_is_specular(m);
 }

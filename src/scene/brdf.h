@@ -114,7 +114,7 @@ int brdf_is_delta(const struct material *m);
 
 /* Whether the material has a non-delta part (lambert, phong, ward, schlick with r > 0):
  * where photon maps store photons. */
-int brdf_has_diffuse(const struct material *m);
+int brdf_has_non_delta(const struct material *m);
 
 /* Whether the material has a delta lobe (mirror, glass, Schlick with r < 1/2): where a
  * Whitted-style tracer follows ideal specular rays. */
