@@ -105,7 +105,12 @@ run: $(BIN)
 	    "open out/cornell-specular.png (linear radiance: out/cornell-specular.pfm;" \
 	    "statistics: out/cornell-specular.stats)"
 
-test: $(BIN) $(BUILD)/run_tests
+# reference/ppm-fig4.c, the program behind a figure of reference/README.md, is built with the
+# tests so that it keeps compiling against the code it calls.
+$(BUILD)/ppm-fig4: reference/ppm-fig4.c $(LIB_OBJ) $(HEADERS)
+	$(CC) $(CFLAGS) -o $@ reference/ppm-fig4.c $(LIB_OBJ) $(LDLIBS)
+
+test: $(BIN) $(BUILD)/run_tests $(BUILD)/ppm-fig4
 	PHOTON=./$(BIN) ./$(BUILD)/run_tests
 
 # Only the room spd (tests/test_spd.c), which reads the files from PHOTON_SPD.

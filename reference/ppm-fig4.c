@@ -87,9 +87,9 @@ int main(int argc, char **argv)
         rs.x1 = p->x + 1;
         rs.y1 = p->y + 1;
         struct ppm_settings ps = ppm_settings_default();
-        ps.passes = FIG4_PASSES;
-        ps.direct_photons = 1; /* every photon counts, as in the paper's Fig. 4 */
-        ps.footprints = 1;     /* R0 one footprint (shortened by walls), one estimate */
+        ps.progressive.passes = FIG4_PASSES;
+        ps.progressive.direct_photons = 1; /* every photon counts, as in the paper's Fig. 4 */
+        ps.progressive.footprints = 1; /* R0 one footprint (shortened by walls), one estimate */
         ps.caustic_footprints = 0;
         ps.observer = &observer;
         struct render_counters counters = {0, 0, 0, 0, 0};
