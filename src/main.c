@@ -41,10 +41,10 @@ struct run {
     struct render_settings rs;
     struct render_counters counters;
     struct render_result result;
-    struct photon_stats photon_stats; /* --mode photons only */
-    struct ppm_stats ppm_stats;       /* --mode 2008 and 2009 only */
-    struct jensen1994_stats j94_stats; /* --mode 1994 only */
-    struct jensen1996_stats j96_stats; /* --mode 1996 only */
+    struct photon_stats photon_stats;   /* --mode photons only */
+    struct ppm_stats ppm_stats;         /* --mode 2008 and 2009 only */
+    struct jensen1994_stats stats_1994; /* --mode 1994 only */
+    struct jensen1996_stats stats_1996; /* --mode 1996 only */
     struct global_work work;           /* the photon modes' maps and cache (and 1994's
                                           illumination maps): owned, made by the mode or
                                           read by --load-photons                       */
@@ -203,55 +203,58 @@ static void print_ppm_stats(const struct ppm_stats *ps)
             ps->mean_radius);
 }
 
-static void print_jensen1996_stats(const struct jensen1996_stats *js)
+static void print_jensen1996_stats(const struct jensen1996_stats *stats)
 {
-    unsigned long long tests = js->shadow_rays + js->shadow_rays_avoided;
-    fprintf(stderr, "photons_emitted=%zu\nphoton_rays=%llu\n", js->photons_emitted,
-            js->photon_rays);
+    unsigned long long tests = stats->shadow_rays + stats->shadow_rays_avoided;
+    fprintf(stderr, "photons_emitted=%zu\nphoton_rays=%llu\n", stats->photons_emitted,
+            stats->photon_rays);
     fprintf(stderr, "photons_global=%zu\nphotons_caustic=%zu\nphotons_shadow=%zu\n",
-            js->photons_global, js->photons_caustic, js->photons_shadow);
+            stats->photons_global, stats->photons_caustic, stats->photons_shadow);
     fprintf(stderr, "bytes_global_map=%zu\nbytes_caustic_map=%zu\nbytes_visibility_maps=%zu\n",
-            js->bytes_global_map, js->bytes_caustic_map, js->bytes_visibility_maps);
+            stats->bytes_global_map, stats->bytes_caustic_map, stats->bytes_visibility_maps);
     fprintf(stderr, "seconds_photons=%.3f\nseconds_cache=%.3f\nseconds_final_pass=%.3f\n",
-            js->seconds_photons, js->seconds_cache, js->seconds_final_pass);
-    fprintf(stderr, "shadow_rays=%llu\nshadow_rays_avoided=%llu\n", js->shadow_rays,
-            js->shadow_rays_avoided);
+            stats->seconds_photons, stats->seconds_cache, stats->seconds_final_pass);
+    fprintf(stderr, "shadow_rays=%llu\nshadow_rays_avoided=%llu\n", stats->shadow_rays,
+            stats->shadow_rays_avoided);
     fprintf(stderr, "shadow_rays_avoided_fraction=%.4f\n",
-            tests > 0 ? (double)js->shadow_rays_avoided / (double)tests : 0.0);
+            tests > 0 ? (double)stats->shadow_rays_avoided / (double)tests : 0.0);
     fprintf(stderr, "cache_records=%zu\nbytes_cache=%zu\ngathers=%llu\ngather_fallbacks=%llu\n",
-            js->cache_records, js->bytes_cache, js->gathers, js->gather_fallbacks);
-    fprintf(stderr, "gather_rays=%llu\nstrata=%dx%d\n", js->gather_rays, js->strata_theta,
-            js->strata_phi);
+            stats->cache_records, stats->bytes_cache, stats->gathers, stats->gather_fallbacks);
+    fprintf(stderr, "gather_rays=%llu\nstrata=%dx%d\n", stats->gather_rays, stats->strata_theta,
+            stats->strata_phi);
     fprintf(stderr, "precomputed_records=%zu\nbytes_precomputed=%zu\nseconds_precompute=%.3f\n",
-            js->precomputed_records, js->bytes_precomputed, js->seconds_precompute);
-    fprintf(stderr, "precomputed_reads=%llu\nglobal_estimates=%llu\n", js->precomputed_reads,
-            js->global_estimates);
+            stats->precomputed_records, stats->bytes_precomputed, stats->seconds_precompute);
+    fprintf(stderr, "precomputed_reads=%llu\nglobal_estimates=%llu\n", stats->precomputed_reads,
+            stats->global_estimates);
 }
 
 /* The paper's Fig. 9 (photons stored, light rays, irradiance-gradient rays, shadow rays,
  * times) and the rest of the render's figures. */
-static void print_jensen1994_stats(const struct jensen1994_stats *js)
+static void print_jensen1994_stats(const struct jensen1994_stats *stats)
 {
-    fprintf(stderr, "photons_emitted=%zu\nphoton_rays=%llu\n", js->photons_emitted,
-            js->photon_rays);
+    fprintf(stderr, "photons_emitted=%zu\nphoton_rays=%llu\n", stats->photons_emitted,
+            stats->photon_rays);
     fprintf(stderr, "photons_stored=%zu\nphotons_caustic=%zu\nphotons_glossy=%zu\n"
-            "bytes_photon_map=%zu\n", js->photons_stored, js->photons_caustic,
-            js->photons_glossy, js->bytes_photon_map);
-    fprintf(stderr, "bytes_caustic_photons=%zu\n", js->bytes_caustic_photons);
+            "bytes_photon_map=%zu\n", stats->photons_stored, stats->photons_caustic,
+            stats->photons_glossy, stats->bytes_photon_map);
+    fprintf(stderr, "bytes_caustic_photons=%zu\n", stats->bytes_caustic_photons);
     fprintf(stderr, "bytes_per_photon=%.1f\n",
-            js->photons_stored > 0 ? (double)js->bytes_photon_map / js->photons_stored : 0.0);
+            stats->photons_stored > 0
+                ? (double)stats->bytes_photon_map / stats->photons_stored
+                : 0.0);
     fprintf(stderr, "projection_maps=%zu\nprojection_marked=%.4f\nbytes_projection_maps=%zu\n",
-            js->projection_maps, js->projection_marked, js->bytes_projection_maps);
+            stats->projection_maps, stats->projection_marked, stats->bytes_projection_maps);
     fprintf(stderr, "illumination_maps=%zu\nillumination_di_elements=%zu\n",
-            js->illumination_maps, js->illumination_di_elements);
+            stats->illumination_maps, stats->illumination_di_elements);
     fprintf(stderr, "illumination_ci_maps=%zu\nbytes_illumination_maps=%zu\n",
-            js->illumination_ci_maps, js->bytes_illumination_maps);
+            stats->illumination_ci_maps, stats->bytes_illumination_maps);
     fprintf(stderr, "seconds_photons=%.3f\nseconds_cache=%.3f\nseconds_final_pass=%.3f\n",
-            js->seconds_photons, js->seconds_cache, js->seconds_final_pass);
+            stats->seconds_photons, stats->seconds_cache, stats->seconds_final_pass);
     fprintf(stderr, "cache_records=%zu\nbytes_cache=%zu\ngradient_rays=%llu\n",
-            js->cache_records, js->bytes_cache, js->gradient_rays);
+            stats->cache_records, stats->bytes_cache, stats->gradient_rays);
     fprintf(stderr, "gather_fallbacks=%llu\nshadow_rays=%llu\nstrata=%dx%d\n",
-            js->gather_fallbacks, js->shadow_rays, js->strata_theta, js->strata_phi);
+            stats->gather_fallbacks, stats->shadow_rays, stats->strata_theta,
+            stats->strata_phi);
 }
 
 static void print_stats(const struct run *run)
@@ -288,9 +291,9 @@ static void print_stats(const struct run *run)
     if (progressive)
         print_ppm_stats(&run->ppm_stats);
     if (run->o.mode == MODE_JENSEN1994)
-        print_jensen1994_stats(&run->j94_stats);
+        print_jensen1994_stats(&run->stats_1994);
     if (run->o.mode == MODE_JENSEN1996)
-        print_jensen1996_stats(&run->j96_stats);
+        print_jensen1996_stats(&run->stats_1996);
 }
 
 /* The settings both progressive modes read, from the options. */
@@ -324,10 +327,10 @@ static struct render_result render_mode(struct run *run, struct error *err)
     const struct checkpoint *checkpoint = run->reference != NULL ? &report : NULL;
     int want_variance = run->o.variance != NULL;
     struct photon_settings ps;
-    struct ppm_settings pp = ppm_settings_default();
-    struct sppm_settings sp = sppm_settings_default();
-    struct jensen1996_settings js = jensen1996_settings_default();
-    struct jensen1994_settings j94 = jensen1994_settings_default();
+    struct ppm_settings settings_2008 = ppm_settings_default();
+    struct sppm_settings settings_2009 = sppm_settings_default();
+    struct jensen1996_settings settings_1996 = jensen1996_settings_default();
+    struct jensen1994_settings settings_1994 = jensen1994_settings_default();
     struct checkpoint snapshot = {write_snapshot, &run->o};
     switch (run->o.mode) {
     case MODE_PT:
@@ -353,51 +356,51 @@ static struct render_result render_mode(struct run *run, struct error *err)
         return render_photons(run->scene, &run->rs, &ps, want_variance, checkpoint,
                               &run->counters, &run->photon_stats, err);
     case MODE_JENSEN1994:
-        j94.n_photons = (size_t)run->o.photons;
-        j94.gather = (size_t)run->o.gather;
-        j94.max_radius = run->o.max_radius;
-        j94.differential_run = run->o.differential_run;
-        j94.count_rim = !run->o.exclude_rim;
-        j94.caustic_radius_fraction = run->o.caustic_radius_fraction;
-        j94.gather_rays = run->o.gather_rays;
-        j94.cache_accuracy = run->o.cache_accuracy;
-        j94.light_samples = run->o.light_samples;
-        j94.both_lobes = run->o.both_lobes;
-        j94.bounded_reach = run->o.bounded_reach;
-        j94.glossy_gather = run->o.glossy_gather;
-        j94.glossy_photons = run->o.glossy_photons;
-        j94.gradient_limit = run->o.gradient_limit;
-        j94.projection_maps = run->o.projection_maps;
-        j94.illumination_maps = run->o.illumination_maps;
-        j94.work = &run->work;
-        return render_jensen1994(run->scene, &run->rs, &j94, want_variance, &run->counters,
-                                 &run->j94_stats, err);
+        settings_1994.n_photons = (size_t)run->o.photons;
+        settings_1994.gather = (size_t)run->o.gather;
+        settings_1994.max_radius = run->o.max_radius;
+        settings_1994.differential_run = run->o.differential_run;
+        settings_1994.count_rim = !run->o.exclude_rim;
+        settings_1994.caustic_radius_fraction = run->o.caustic_radius_fraction;
+        settings_1994.gather_rays = run->o.gather_rays;
+        settings_1994.cache_accuracy = run->o.cache_accuracy;
+        settings_1994.light_samples = run->o.light_samples;
+        settings_1994.both_lobes = run->o.both_lobes;
+        settings_1994.bounded_reach = run->o.bounded_reach;
+        settings_1994.glossy_gather = run->o.glossy_gather;
+        settings_1994.glossy_photons = run->o.glossy_photons;
+        settings_1994.gradient_limit = run->o.gradient_limit;
+        settings_1994.projection_maps = run->o.projection_maps;
+        settings_1994.illumination_maps = run->o.illumination_maps;
+        settings_1994.work = &run->work;
+        return render_jensen1994(run->scene, &run->rs, &settings_1994, want_variance,
+                                 &run->counters, &run->stats_1994, err);
     case MODE_JENSEN1996:
-        js.global_photons = (size_t)run->o.photons;
-        js.caustic_photons = (size_t)run->o.caustic_photons;
-        js.global_gather = (size_t)run->o.gather;
-        js.caustic_gather = (size_t)run->o.caustic_gather;
-        js.max_radius = run->o.max_radius;
-        js.cone_k = run->o.cone;
-        js.count_rim = !run->o.exclude_rim;
-        js.caustic_radius_fraction = run->o.caustic_radius_fraction;
-        js.gather_rays = run->o.gather_rays;
-        js.glossy_rays = run->o.glossy_rays;
-        js.cache_accuracy = run->o.cache_accuracy;
-        js.accurate_distance = run->o.accurate_distance;
-        js.accurate_weight = run->o.accurate_weight;
-        js.shadow_photons = !run->o.shadow_rays;
-        js.one_map = run->o.one_map;
-        js.precomputed_irradiance = run->o.precomputed_irradiance;
-        js.disc_coverage = run->o.disc_coverage;
-        js.both_lobes = run->o.both_lobes;
-        js.glossy_corner = run->o.glossy_corner;
-        js.bounded_reach = run->o.bounded_reach;
-        js.gradient_limit = run->o.gradient_limit;
-        js.report = checkpoint;
-        js.work = &run->work;
-        return render_jensen1996(run->scene, &run->rs, &js, want_variance, &run->counters,
-                                 &run->j96_stats, err);
+        settings_1996.global_photons = (size_t)run->o.photons;
+        settings_1996.caustic_photons = (size_t)run->o.caustic_photons;
+        settings_1996.global_gather = (size_t)run->o.gather;
+        settings_1996.caustic_gather = (size_t)run->o.caustic_gather;
+        settings_1996.max_radius = run->o.max_radius;
+        settings_1996.cone_k = run->o.cone;
+        settings_1996.count_rim = !run->o.exclude_rim;
+        settings_1996.caustic_radius_fraction = run->o.caustic_radius_fraction;
+        settings_1996.gather_rays = run->o.gather_rays;
+        settings_1996.glossy_rays = run->o.glossy_rays;
+        settings_1996.cache_accuracy = run->o.cache_accuracy;
+        settings_1996.accurate_distance = run->o.accurate_distance;
+        settings_1996.accurate_weight = run->o.accurate_weight;
+        settings_1996.shadow_photons = !run->o.shadow_rays;
+        settings_1996.one_map = run->o.one_map;
+        settings_1996.precomputed_irradiance = run->o.precomputed_irradiance;
+        settings_1996.disc_coverage = run->o.disc_coverage;
+        settings_1996.both_lobes = run->o.both_lobes;
+        settings_1996.glossy_corner = run->o.glossy_corner;
+        settings_1996.bounded_reach = run->o.bounded_reach;
+        settings_1996.gradient_limit = run->o.gradient_limit;
+        settings_1996.report = checkpoint;
+        settings_1996.work = &run->work;
+        return render_jensen1996(run->scene, &run->rs, &settings_1996, want_variance,
+                                 &run->counters, &run->stats_1996, err);
     case MODE_PPM2008:
         if (ppm_glossy_material(run->scene) >= 0)
             fprintf(stderr, "photon: warning: 2008's hit points estimate glossy lobes (the "
@@ -405,15 +408,17 @@ static struct render_result render_mode(struct run *run, struct error *err)
                     "lobe's peak speckle the image and fade slowly with the passes; 2009 "
                     "follows those lobes from the eye\n",
                     run->scene->materials[ppm_glossy_material(run->scene)].name);
-        pp.progressive = progressive_settings(&run->o, checkpoint, &snapshot);
-        pp.caustic_footprints = run->o.caustic_footprints;
-        pp.merge_hit_points = run->o.merge_hit_points;
-        pp.resample_emission = run->o.resample_emission;
-        return render_ppm(run->scene, &run->rs, &pp, &run->counters, &run->ppm_stats);
+        settings_2008.progressive = progressive_settings(&run->o, checkpoint, &snapshot);
+        settings_2008.caustic_footprints = run->o.caustic_footprints;
+        settings_2008.merge_hit_points = run->o.merge_hit_points;
+        settings_2008.resample_emission = run->o.resample_emission;
+        return render_ppm(run->scene, &run->rs, &settings_2008, &run->counters,
+                          &run->ppm_stats);
     case MODE_SPPM2009:
-        sp.progressive = progressive_settings(&run->o, checkpoint, &snapshot);
-        sp.disc_coverage = run->o.disc_coverage;
-        return render_sppm(run->scene, &run->rs, &sp, &run->counters, &run->ppm_stats);
+        settings_2009.progressive = progressive_settings(&run->o, checkpoint, &snapshot);
+        settings_2009.disc_coverage = run->o.disc_coverage;
+        return render_sppm(run->scene, &run->rs, &settings_2009, &run->counters,
+                           &run->ppm_stats);
     case MODE_DIRECT:
         break;
     }

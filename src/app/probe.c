@@ -31,7 +31,7 @@ struct probe_args {
     double normal[3]; /* of the surface the line lies on */
     int samples;
     uint64_t seed;
-    struct jensen1994_settings js;
+    struct jensen1994_settings settings;
 };
 
 /* Reads count numbers after argv[*i] into values, advancing *i. */
@@ -71,13 +71,13 @@ static int read_probe_option(int argc, char **argv, int *i, struct probe_args *a
         args->samples = (int)v;
     else if (strcmp(name, "--photons") == 0 &&
              (status = read_number(name, value, 1, MAX_PHOTONS, NUMBER_WHOLE, &v, err)) == 0)
-        args->js.n_photons = (size_t)v;
+        args->settings.n_photons = (size_t)v;
     else if (strcmp(name, "--gather") == 0 &&
              (status = read_number(name, value, 1, 100000, NUMBER_WHOLE, &v, err)) == 0)
-        args->js.gather = (size_t)v;
+        args->settings.gather = (size_t)v;
     else if (strcmp(name, "--differential") == 0 &&
              (status = read_number(name, value, 0, 100000, NUMBER_WHOLE, &v, err)) == 0)
-        args->js.differential_run = (int)v;
+        args->settings.differential_run = (int)v;
     else if (status == 0)
         return error_set(err, "", 0, "probe: unknown option '%s'; " PROBE_USAGE, name);
     return status;
@@ -90,9 +90,9 @@ static int parse_probe_args(int argc, char **argv, struct probe_args *args, stru
     args->scene_path = args->output = NULL;
     args->normal[1] = 1;
     args->seed = 1;
-    args->js = jensen1994_settings_default();
-    args->js.gather = PROBE_DEFAULT_GATHER;
-    args->js.n_photons = PROBE_DEFAULT_PHOTONS;
+    args->settings = jensen1994_settings_default();
+    args->settings.gather = PROBE_DEFAULT_GATHER;
+    args->settings.n_photons = PROBE_DEFAULT_PHOTONS;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             printf("%s\n\nSamples the irradiance at N points along the line from (X0, Y0, Z0) to "
@@ -227,8 +227,9 @@ static void write_profile(FILE *f, const struct scene *scene, const struct probe
     struct vec3 b = vec3(args->line[3], args->line[4], args->line[5]);
     struct vec3 n = vec3_normalize(vec3(args->normal[0], args->normal[1], args->normal[2]));
     double max_r = PHOTONS_RADIUS_FRACTION * scene_diagonal(scene);
-    struct irradiance_settings checked = {args->js.gather, max_r * max_r, PHOTON_CAUSTIC,
-                                          args->js.differential_run, args->js.count_rim};
+    const struct jensen1994_settings *settings = &args->settings;
+    struct irradiance_settings checked = {settings->gather, max_r * max_r, PHOTON_CAUSTIC,
+                                          settings->differential_run, settings->count_rim};
     struct irradiance_settings unchecked = checked, all = checked;
     unchecked.run = 0;
     all.kinds = 0;
@@ -255,7 +256,7 @@ static int write_probe(const struct scene *scene, const struct probe_stores *st,
     FILE *f = output_open(args->output, err);
     if (f == NULL)
         return -1;
-    struct nearest *nn = nearest_create(args->js.gather);
+    struct nearest *nn = nearest_create(args->settings.gather);
     write_profile(f, scene, st, args, nn);
     nearest_free(nn);
     return output_commit(f, err); /* a failed write shows in ferror(), checked there */
@@ -283,9 +284,9 @@ int probe_command(int argc, char **argv)
     memset(&stats, 0, sizeof stats);
     struct probe_stores st;
     memset(&st, 0, sizeof st);
-    struct jensen1994_settings with_maps = args.js;
+    struct jensen1994_settings with_maps = args.settings;
     with_maps.illumination_maps = 1;
-    int status = jensen1994_trace(scene, args.seed, MAX_DEPTH_LIMIT, &args.js, &st.photons,
+    int status = jensen1994_trace(scene, args.seed, MAX_DEPTH_LIMIT, &args.settings, &st.photons,
                                   &stats, &err) == 0 &&
                          jensen1994_trace(scene, args.seed, MAX_DEPTH_LIMIT, &with_maps,
                                           &st.illumination, &stats, &err) == 0 &&
