@@ -9,9 +9,10 @@
 # For each scene (scenes/SCENE.scene, against reference/SCENE-pt.pfm):
 #   1. photon --mode 2009 at its defaults: its CPU seconds T, its relmse and its worst 16 x 16
 #      block (photon compare --block 16) against the reference;
-#   2. the scene exported three times, `photon export --format pbrt --channel R|G|B`, each a
-#      grey scene whose render's luminance is that channel of ours (reference/README.md,
-#      "Colour in pbrt-v4"), its Integrator line replaced by pbrt's SPPM (SPPM_SETTINGS);
+#   2. for every pbrt render below, the scene exported, `photon export --format pbrt
+#      --channel R|G|B --spp N`, a grey scene whose render's luminance is that channel of
+#      ours (reference/README.md, "Colour in pbrt-v4"), its Integrator line replaced by
+#      pbrt's SPPM (SPPM_SETTINGS), whose iterations are the N samples a pixel;
 #   3. calibration: each channel for 4 iterations and one for 8, and the three channels'
 #      seconds taken as growing as iterations^p, p from the 4 and the 8 (an iteration grows
 #      cheaper as the radii shrink: p is about 0.85). The iteration count N gives the three
@@ -117,11 +118,20 @@ field() {
     echo "$2" | sed -n "s/.* $1=\([^ ]*\).*/\1/p"
 }
 
-# pbrt on scene $1, channel $2, $3 iterations: $dir/$1-$2-$3.pfm; seconds in $took.
+# pbrt on scene $1, channel $2, $3 iterations: the export with --spp $3 (SPPM's iterations
+# are its sampler's samples a pixel, and the export picks a sampler that keeps the count),
+# its Integrator line SPPM's; $dir/$1-$2-$3.pfm, the seconds in $took.
 pbrt_run() {
     name=$dir/$1-$2-$3
-    sed "s/\"integer pixelsamples\" \[[0-9]*\]/\"integer pixelsamples\" [$3]/" \
-        "$dir/$1-$2.pbrt" > "$name.pbrt" || exit 1
+    "$photon" export --format pbrt "scenes/$1.scene" -o "$name.pbrt" --channel $2 --spp $3 \
+        < /dev/null 2> "$name.export" || { cat "$name.export" >&2; exit 1; }
+    sed "s|^Integrator .*|Integrator \"sppm\" $SPPM_SETTINGS|" "$name.pbrt" > "$name.tmp" &&
+        mv "$name.tmp" "$name.pbrt" || exit 1
+    if ! grep -q '^Integrator "sppm"' "$name.pbrt" ||
+        ! grep -q "\"integer pixelsamples\" \[$3\]" "$name.pbrt"; then
+        echo "bench-pbrt: $name.pbrt has no Integrator line to set or no $3 samples a pixel" >&2
+        exit 1
+    fi
     timed "$name.log" "$pbrt" --quiet --nthreads 1 --outfile "$name.pfm" "$name.pbrt"
 }
 
@@ -138,17 +148,6 @@ for s in $scenes; do
     echo "pbrt.$s.photon_worst_block=$(field worst_block "$line")"
     echo "pbrt.$s.photon_worst_block_at=$(field worst_block_at "$line")"
 
-    for c in R G B; do
-        scene=$dir/$s-$c.pbrt
-        "$photon" export --format pbrt "scenes/$s.scene" -o "$scene" --channel $c --spp 1 \
-            < /dev/null 2> "$dir/$s-$c.export" || { cat "$dir/$s-$c.export" >&2; exit 1; }
-        sed "s|^Integrator .*|Integrator \"sppm\" $SPPM_SETTINGS|" "$scene" > "$scene.tmp" &&
-            mv "$scene.tmp" "$scene" || exit 1
-        if ! grep -q '^Integrator "sppm"' "$scene" || ! grep -q '"integer pixelsamples" \[1\]' "$scene"; then
-            echo "bench-pbrt: $scene has no Integrator or pixelsamples line to set" >&2
-            exit 1
-        fi
-    done
 
     echo "bench-pbrt: $s: pbrt SPPM calibration (4 iterations a channel, 8 for G)" >&2
     pbrt_run "$s" R 4; r4=$took

@@ -170,7 +170,8 @@ for part in $parts; do
         splice rays build/figures-rays.md tests/bench/README.md
         ;;
     pbrt)
-        make --no-print-directory bench-pbrt PBRT="${PBRT:-}" > build/figures-pbrt.txt
+        # ONLY= : the ONLY=pbrt of `make figures` reaches this make too, and names no scene
+        make --no-print-directory bench-pbrt PBRT="${PBRT:-}" ONLY= > build/figures-pbrt.txt
         pbrt_table build/figures-pbrt.txt > build/figures-pbrt.md
         settings=$(sed -n 's/^pbrt\.settings=//p' build/figures-pbrt.txt)
         echo "" >> build/figures-pbrt.md
