@@ -15,8 +15,8 @@
 #      pbrt's SPPM (SPPM_SETTINGS), whose iterations are the N samples a pixel;
 #   3. calibration: each channel for 4 iterations and one for 8, and the three channels'
 #      seconds taken as growing as iterations^p, p from the 4 and the 8 (an iteration grows
-#      cheaper as the radii shrink: p is about 0.85). The iteration count N gives the three
-#      together T seconds by that law;
+#      cheaper as the radii shrink: p came out 0.65 to 0.9). The iteration count N gives
+#      the three together T seconds by that law;
 #   4. the three channels for N iterations each, made into one image (build's
 #      pbrt-channels: channel c is the luminance of channel c's render) and compared like
 #      photon's. When the three took more than 10% from T (the shared machine's load moved,
@@ -24,12 +24,12 @@
 #      seconds they took, and that second run is the one reported.
 # Seconds are the user CPU seconds of the commands (the shell's `times`), never wall time.
 #
-# It prints, on stdout, lines pbrt.SCENE.KEY=VALUE: photon_seconds, photon_relmse,
+# It prints, on stdout, lines pbrt.SCENE.KEY=VALUE: radius, photon_seconds, photon_relmse,
 # photon_worst_block, photon_worst_block_at, pbrt_iterations, pbrt_seconds, pbrt_relmse,
 # pbrt_worst_block, pbrt_worst_block_at, ratio (pbrt's relmse over photon's: above 1 photon
 # is the closer at that time), seconds_ratio (pbrt's seconds over photon's: 1 is equal
 # time), calibration_seconds, calibration_exponent, pbrt_runs (1, or 2 when step 4 ran
-# again); and pbrt.settings= SPPM's parameters.
+# again); and pbrt.settings= SPPM's other parameters.
 # Progress goes to stderr. Exit 0 when every scene was measured, 2 when something is
 # missing, 1 when a render failed.
 #
@@ -46,9 +46,8 @@ pbrt=${PBRT:-}
 channels=${PBRT_CHANNELS:-build/pbrt-channels}
 dir=${BENCH_PBRT_DIR:-build/bench-pbrt}
 
-# pbrt's SPPM: 100,000 photons an iteration; an initial radius of 20 mm, the best per CPU
-# second on the Cornell box of 5, 10, 20 and 40 at 32 iterations (relmse 3.9e-3, 1.2e-3,
-# 5.1e-4, 5.3e-4 in one channel). maxdepth 248, not 1000: pbrt-v4's SPPM photon loop
+# pbrt's SPPM: 100,000 photons an iteration, and the initial radius (in mm, the scenes'
+# unit) of radius() below. maxdepth 248, not 1000: pbrt-v4's SPPM photon loop
 # (SPPMIntegrator::Render) draws four Halton dimensions a bounce, after 5 for the light,
 # from its table of 1000 primes and digit permutations and never wraps round, so a photon
 # that makes more than 248 bounces reads past the table and pbrt dies with signal 11. In
@@ -57,7 +56,18 @@ dir=${BENCH_PBRT_DIR:-build/bench-pbrt}
 # Russian roulette, which sees beta unchanged at a dielectric, never ends them (with the
 # ball made diffuse the crash goes; with the mirror made black it stays). 248 is the most
 # that stays within the table; only light past a photon's 248th bounce is lost.
-SPPM_SETTINGS='"integer photonsperiteration" [100000] "float radius" [20] "integer maxdepth" [248]'
+SPPM_SETTINGS='"integer photonsperiteration" [100000] "integer maxdepth" [248]'
+
+# The initial radius of scene $1, pbrt's best per CPU second of those tried: on the Cornell
+# box 20 of 5, 10, 20 and 40 at 32 iterations (relmse 3.9e-3, 1.2e-3, 5.1e-4, 5.3e-4 in one
+# channel); on the specular box 10 of 5, 10 and 20 at 15 to 16 iterations (4.6e-3 in 29 s,
+# 2.9e-3 in 33 s, 5.8e-3 in 56 s, the three channels), whose caustic 20 blurs.
+radius() {
+    case $1 in
+    cornell-specular) echo 10 ;;
+    *) echo 20 ;;
+    esac
+}
 
 if [ -z "$pbrt" ]; then
     echo "bench-pbrt: PBRT is not set: give pbrt-v4's pbrt program (make bench-pbrt PBRT=PATH)" >&2
@@ -125,7 +135,8 @@ pbrt_run() {
     name=$dir/$1-$2-$3
     "$photon" export --format pbrt "scenes/$1.scene" -o "$name.pbrt" --channel $2 --spp $3 \
         < /dev/null 2> "$name.export" || { cat "$name.export" >&2; exit 1; }
-    sed "s|^Integrator .*|Integrator \"sppm\" $SPPM_SETTINGS|" "$name.pbrt" > "$name.tmp" &&
+    sed "s|^Integrator .*|Integrator \"sppm\" $SPPM_SETTINGS \"float radius\" [$(radius $1)]|" \
+        "$name.pbrt" > "$name.tmp" &&
         mv "$name.tmp" "$name.pbrt" || exit 1
     if ! grep -q '^Integrator "sppm"' "$name.pbrt" ||
         ! grep -q "\"integer pixelsamples\" \[$3\]" "$name.pbrt"; then
@@ -143,6 +154,7 @@ for s in $scenes; do
         -o "$dir/$s-2009.pfm"
     t=$took
     line=$("$photon" compare "$dir/$s-2009.pfm" "$ref" --block 16) || exit 1
+    echo "pbrt.$s.radius=$(radius $s)"
     echo "pbrt.$s.photon_seconds=$t"
     echo "pbrt.$s.photon_relmse=$(field relmse "$line")"
     echo "pbrt.$s.photon_worst_block=$(field worst_block "$line")"

@@ -119,8 +119,8 @@ rays_table() {
 # bench-pbrt's pbrt.SCENE.KEY=VALUE lines as a table: a row a scene, photon's figures and
 # pbrt's, and the ratio of their errors.
 pbrt_table() {
-    echo "| scene | 2009: CPU s | 2009: relmse | 2009: worst 16 × 16 block (at) | pbrt SPPM: CPU s (3 channels) | iterations | pbrt: relmse | pbrt: worst 16 × 16 block (at) | relmse ratio (pbrt / 2009) |"
-    echo "|---|---|---|---|---|---|---|---|---|"
+    echo "| scene | 2009: CPU s | 2009: relmse | 2009: worst 16 × 16 block (at) | pbrt SPPM: CPU s (3 channels) | iterations | radius | pbrt: relmse | pbrt: worst 16 × 16 block (at) | relmse ratio (pbrt / 2009) |"
+    echo "|---|---|---|---|---|---|---|---|---|---|"
     awk -F= '/^pbrt\.[^.]+\.[a-z_]+=/ {
             split($1, part, ".")
             if (!(part[2] in seen)) { seen[part[2]] = 1; order[++n] = part[2] }
@@ -129,10 +129,10 @@ pbrt_table() {
         END {
             for (i = 1; i <= n; i++) {
                 s = order[i]
-                printf "| %s | %s | %s | %.2f%% (%s) | %s | %s | %s | %.2f%% (%s) | %s |\n", s,
+                printf "| %s | %s | %s | %.2f%% (%s) | %s | %s | %s | %s | %.2f%% (%s) | %s |\n", s,
                     value[s, "photon_seconds"], value[s, "photon_relmse"],
                     100 * value[s, "photon_worst_block"], value[s, "photon_worst_block_at"],
-                    value[s, "pbrt_seconds"], value[s, "pbrt_iterations"],
+                    value[s, "pbrt_seconds"], value[s, "pbrt_iterations"], value[s, "radius"],
                     value[s, "pbrt_relmse"], 100 * value[s, "pbrt_worst_block"],
                     value[s, "pbrt_worst_block_at"], value[s, "ratio"]
             }
@@ -175,8 +175,9 @@ for part in $parts; do
         pbrt_table build/figures-pbrt.txt > build/figures-pbrt.md
         settings=$(sed -n 's/^pbrt\.settings=//p' build/figures-pbrt.txt)
         echo "" >> build/figures-pbrt.md
-        echo "One thread each; pbrt-v4's \`Integrator \"sppm\" $settings\`; seconds are user CPU" \
-            "seconds, pbrt's the sum of its three channels' renders." >> build/figures-pbrt.md
+        echo "One thread each; pbrt-v4's \`Integrator \"sppm\" $settings\` and the radius" \
+            "(\`float radius\`, mm) of the table; seconds are user CPU seconds, pbrt's the sum" \
+            "of its three channels' renders." >> build/figures-pbrt.md
         splice pbrt build/figures-pbrt.md tests/bench/README.md
         ;;
     *)
