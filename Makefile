@@ -13,7 +13,8 @@
 #                   adds the workloads on SPD files, which are skipped without it
 #   make figures    re-measure the figures README.md states and write them into it (long;
 #                   ONLY=presets|bench for one part; bench is the tte workload's table);
-#                   ONLY=rays SPD=DIR writes bench-embree's table into tests/bench/README.md
+#                   ONLY=rays SPD=DIR writes bench-embree's table into tests/bench/README.md,
+#                   ONLY=pbrt PBRT=PATH bench-pbrt's
 #   make reference  render the converged references of reference/suite.txt and write
 #                   reference/suite.md (hours; says how long first; ONLY=NAME for one)
 #   make consistency
@@ -24,6 +25,11 @@
 #                   the rays workload cast through Embree 3 beside photon in one run: both
 #                   throughputs, their ratio, both checksums (tests/bench/embree/bench_embree.c;
 #                   needs libembree-dev, which the product never links; development)
+#   make bench-pbrt PBRT=PATH
+#                   --mode 2009 against pbrt-v4's SPPM (PATH its pbrt program), one thread,
+#                   equal CPU seconds, on both Cornell boxes: each one's seconds, relmse and
+#                   worst block, and the ratio of the errors (scripts/bench_pbrt.sh; about 6
+#                   minutes of CPU; ONLY=cornell or cornell-specular; development)
 #   make fuzz       libFuzzer targets for every reader (scene, NFF, OBJ, PFM, CSV, tile
 #                   record, work file) and the option parser, built with clang (development)
 #   make crosscheck our references against Blender's Cycles, where blender (3.4+) is
@@ -62,8 +68,8 @@ MAIN_OBJ := $(BUILD)/src/main.o
 TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)) tests/bench/tte_fit.c)
 BENCH_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/bench/*.c)))
 
-.PHONY: all run test test-spd check bench bench-embree figures reference consistency fuzz \
-        crosscheck install uninstall clean
+.PHONY: all run test test-spd check bench bench-embree bench-pbrt figures reference \
+        consistency fuzz crosscheck install uninstall clean
 
 # test-spd refuses at once, before building anything, when it has no folder of SPD files.
 ifneq ($(filter test-spd,$(MAKECMDGOALS)),)
@@ -158,7 +164,27 @@ bench-embree:
 $(BUILD)/bench-embree: tests/bench/embree/bench_embree.c $(EMBREE_OBJ) $(LIB_OBJ) $(HEADERS)
 	$(CC) $(CFLAGS) -o $@ $< $(EMBREE_OBJ) $(LIB_OBJ) $(EMBREE_LIBS) $(LDLIBS)
 
-# The figures README.md states, re-measured and written into it (ONLY=presets or bench).
+# pbrt-v4's SPPM against --mode 2009 at equal CPU seconds (scripts/bench_pbrt.sh; a
+# development tool: PBRT names pbrt-v4's pbrt, which the product never needs). Refused at
+# once when PBRT is unset or names no program.
+PBRT ?=
+bench-pbrt:
+	@[ -n '$(PBRT)' ] || { echo "make bench-pbrt needs PBRT=PATH, pbrt-v4's pbrt program" \
+	    "(github.com/mmp/pbrt-v4, built with cmake), which is not set" >&2; exit 2; }
+	@[ -f '$(PBRT)' ] && [ -x '$(PBRT)' ] || { echo "make bench-pbrt: PBRT=$(PBRT) is not" \
+	    "an executable file (pbrt-v4's pbrt program)" >&2; exit 2; }
+	@$(MAKE) --no-print-directory $(BIN) $(BUILD)/pbrt-channels
+	PHOTON=$(call here,$(BIN)) PBRT='$(PBRT)' PBRT_CHANNELS=$(call here,$(BUILD)/pbrt-channels) \
+	    sh scripts/bench_pbrt.sh $(ONLY)
+
+# A path as a command: ./NAME when NAME is relative, NAME when it is absolute.
+here = $(if $(filter /%,$(1)),$(1),./$(1))
+
+$(BUILD)/pbrt-channels: tests/bench/pbrt/pbrt_channels.c $(LIB_OBJ) $(HEADERS)
+	$(CC) $(CFLAGS) -o $@ $< $(LIB_OBJ) $(LDLIBS)
+
+# The figures README.md states, re-measured and written into it (ONLY=presets, bench, rays
+# or pbrt; rays and pbrt write into tests/bench/README.md).
 figures: $(BIN) $(BUILD)/bench
 	sh scripts/figures.sh $(ONLY)
 

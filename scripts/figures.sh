@@ -1,9 +1,9 @@
 #!/bin/sh
-# scripts/figures.sh [presets] [bench] [rays] -- re-measures the figures README.md (and, for
-# bench's phases and rays, tests/bench/README.md) states and writes them in, between the lines
-# <!-- figures:NAME --> and <!-- /figures:NAME -->. Run by `make figures` (ONLY=presets,
-# bench or rays for one part) from the top of the repository, after ./photon and build/bench
-# are built.
+# scripts/figures.sh [presets] [bench] [rays] [pbrt] -- re-measures the figures README.md
+# (and, for bench's phases, rays and pbrt, tests/bench/README.md) states and writes them in,
+# between the lines <!-- figures:NAME --> and <!-- /figures:NAME -->. Run by `make figures`
+# (ONLY=presets, bench, rays or pbrt for one part) from the top of the repository, after
+# ./photon and build/bench are built.
 #
 #   presets  scripts/presets.sh: every mode's presets on both Cornell boxes against the
 #            references (about 15 minutes of CPU; two renders run at once)
@@ -15,6 +15,9 @@
 #   rays     `make bench-embree`, photon's ray casting beside Embree 3's on the rays
 #            workload, into tests/bench/README.md (needs Embree and SPD=DIR, the folder of
 #            the SPD files; a few minutes; not part of the default parts)
+#   pbrt     `make bench-pbrt`, --mode 2009 beside pbrt-v4's SPPM at equal CPU seconds on
+#            both Cornell boxes, into tests/bench/README.md (needs PBRT=PATH, pbrt-v4's
+#            pbrt; about 6 minutes of CPU; not part of the default parts)
 #
 # Each part prints how long it took. Nothing in README.md changes unless the part succeeded.
 set -eu
@@ -114,6 +117,30 @@ rays_table() {
         }' "$1"
 }
 
+# bench-pbrt's pbrt.SCENE.KEY=VALUE lines as a table: a row a scene, photon's figures and
+# pbrt's, and the ratio of their errors.
+pbrt_table() {
+    echo "| scene | 2009: CPU s | 2009: relmse | 2009: worst 16 × 16 block (at) | pbrt SPPM: CPU s (3 channels) | iterations | radius | pbrt: relmse | pbrt: worst 16 × 16 block (at) | relmse ratio (pbrt / 2009) |"
+    echo "|---|---|---|---|---|---|---|---|---|---|"
+    awk -F= '/^pbrt\.[^.]+\.[a-z_]+=/ {
+            split($1, part, ".")
+            if (!(part[2] in seen)) { seen[part[2]] = 1; order[++n] = part[2] }
+            value[part[2], part[3]] = $2
+        }
+        END {
+            for (i = 1; i <= n; i++) {
+                s = order[i]
+                printf "| %s | %s | %s | %.2f%% (%s) | %s | %s | %s | %s | %.2f%% (%s) | %s |\n", s,
+                    value[s, "photon_seconds"], value[s, "photon_relmse"],
+                    100 * value[s, "photon_worst_block"], value[s, "photon_worst_block_at"],
+                    value[s, "pbrt_seconds"], value[s, "pbrt_iterations"], value[s, "radius"],
+                    value[s, "pbrt_relmse"], 100 * value[s, "pbrt_worst_block"],
+                    value[s, "pbrt_worst_block_at"], value[s, "ratio"]
+            }
+            exit n == 0
+        }' "$1"
+}
+
 for part in $parts; do
     start=$(date +%s)
     case $part in
@@ -143,8 +170,19 @@ for part in $parts; do
             "checksums agree with photon's on $agreed of $scenes scenes." >> build/figures-rays.md
         splice rays build/figures-rays.md tests/bench/README.md
         ;;
+    pbrt)
+        # ONLY= : the ONLY=pbrt of `make figures` reaches this make too, and names no scene
+        make --no-print-directory bench-pbrt PBRT="${PBRT:-}" ONLY= > build/figures-pbrt.txt
+        pbrt_table build/figures-pbrt.txt > build/figures-pbrt.md
+        settings=$(sed -n 's/^pbrt\.settings=//p' build/figures-pbrt.txt)
+        echo "" >> build/figures-pbrt.md
+        echo "One thread each; pbrt-v4's \`Integrator \"sppm\" $settings\` and the radius" \
+            "(\`float radius\`, mm) of the table; seconds are user CPU seconds, pbrt's the sum" \
+            "of its three channels' renders." >> build/figures-pbrt.md
+        splice pbrt build/figures-pbrt.md tests/bench/README.md
+        ;;
     *)
-        echo "figures: unknown part '$part' (presets, bench, rays)" >&2
+        echo "figures: unknown part '$part' (presets, bench, rays, pbrt)" >&2
         exit 2
         ;;
     esac

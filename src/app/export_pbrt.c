@@ -11,6 +11,9 @@
  *     distance in focus: a disc about the camera's position, aimed at the plane that far
  *     along the view direction.
  *   - Pixels. A box filter of radius 1/2: the pixel is the mean over its square.
+ *   - Samples. pbrt's "zsobol" sampler takes a count that is no power of 2 down to the
+ *     power below (37 would be 32 samples, and SPPM's iterations are its samples too):
+ *     such counts get "halton", which takes any.
  *   - Lights. pbrt normalises an RGB emitter to the luminance of its colour space's white
  *     (scale /= SpectrumToPhotometric), so "rgb L" [c c c] has luminance c: area lights are
  *     written with their radiance Le, point lights with intensity I = Phi / (4 pi).
@@ -52,6 +55,11 @@ static void film_name(const char *output, char *name, size_t size)
     snprintf(name, size, "%.*s.pfm", (int)(stem < 400 ? stem : 400), base);
 }
 
+static int is_power_of_two(int n)
+{
+    return n > 0 && (n & (n - 1)) == 0;
+}
+
 static void write_header(FILE *f, const struct export_scene *es)
 {
     const struct camera *c = &es->camera;
@@ -75,7 +83,8 @@ static void write_header(FILE *f, const struct export_scene *es)
         fprintf(f, "\n    \"float lensradius\" [%.15g] \"float focaldistance\" [%.15g]",
                 c->lens_radius, c->focus);
     fprintf(f, "\n");
-    fprintf(f, "Sampler \"zsobol\" \"integer pixelsamples\" [%d]\n", es->spp);
+    fprintf(f, "Sampler \"%s\" \"integer pixelsamples\" [%d]\n",
+            is_power_of_two(es->spp) ? "zsobol" : "halton", es->spp);
     fprintf(f, "Integrator \"path\" \"integer maxdepth\" [1000] \"bool regularize\" false\n");
     fprintf(f, "PixelFilter \"box\" \"float xradius\" [0.5] \"float yradius\" [0.5]\n");
     fprintf(f, "Film \"rgb\" \"integer xresolution\" [%d] \"integer yresolution\" [%d]\n",
