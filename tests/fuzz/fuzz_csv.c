@@ -2,7 +2,7 @@
  * tests/fuzz/fuzz_csv.c -- libFuzzer target for photon plot's CSV reader (image/csv.c),
  * built by `make fuzz`; a development tool only. Every row is read to the end of the file
  * or the first error.
- *   build/fuzz/fuzz_csv CORPUS_DIR tests/fuzz/regressions/csv
+ *   build/fuzz/fuzz_csv CORPUS_DIR tests/fuzz/seeds/csv
  */
 #include <stdint.h>
 

@@ -5,7 +5,7 @@
  * The input is a command line: its bytes cut into words at every '\n' (so that a word
  * may hold spaces, as argv's can), at most MAX_WORDS of them, after "photon". What
  * parse_options() prints for --help and --version goes to stdout, which is fine.
- *   build/fuzz/fuzz_options CORPUS_DIR tests/fuzz/regressions/options
+ *   build/fuzz/fuzz_options CORPUS_DIR tests/fuzz/seeds/options
  */
 #include <stdint.h>
 #include <stdlib.h>

@@ -2,7 +2,7 @@
  * tests/fuzz/fuzz_window.c -- libFuzzer target for the record beside a crop's PFM
  * (app/tile.c, FILE.pfm.window, read by photon merge), built by `make fuzz`; a
  * development tool only. The input becomes NAME.window for tile_record_read(NAME).
- *   build/fuzz/fuzz_window CORPUS_DIR tests/fuzz/regressions/window
+ *   build/fuzz/fuzz_window CORPUS_DIR tests/fuzz/seeds/window
  */
 #include <stdint.h>
 #include <stdio.h>

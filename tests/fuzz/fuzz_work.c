@@ -7,7 +7,7 @@
  * every input gets past the header to the maps, the cache's records and the illumination
  * maps. The checksum at the end refuses almost every input, but only after all of it has
  * been read: a crash, a sanitizer report or a leak on the way is a bug.
- *   build/fuzz/fuzz_work CORPUS_DIR tests/fuzz/regressions/work
+ *   build/fuzz/fuzz_work CORPUS_DIR tests/fuzz/seeds/work
  */
 #include <stdint.h>
 #include <string.h>
