@@ -401,19 +401,21 @@ static struct render_result render_mode(struct run *run, struct error *err)
         settings_1996.work = &run->work;
         return render_jensen1996(run->scene, &run->rs, &settings_1996, want_variance,
                                  &run->counters, &run->stats_1996, err);
-    case MODE_PPM2008:
-        if (ppm_glossy_material(run->scene) >= 0)
+    case MODE_PPM2008: {
+        int glossy = ppm_glossy_material(run->scene);
+        if (glossy >= 0)
             fprintf(stderr, "photon: warning: 2008's hit points estimate glossy lobes (the "
                     "first in material '%s') from photons, whose few hits near a narrow "
                     "lobe's peak speckle the image and fade slowly with the passes; 2009 "
                     "follows those lobes from the eye\n",
-                    run->scene->materials[ppm_glossy_material(run->scene)].name);
+                    run->scene->materials[glossy].name);
         settings_2008.progressive = progressive_settings(&run->o, checkpoint, &snapshot);
         settings_2008.caustic_footprints = run->o.caustic_footprints;
         settings_2008.merge_hit_points = run->o.merge_hit_points;
         settings_2008.resample_emission = run->o.resample_emission;
         return render_ppm(run->scene, &run->rs, &settings_2008, &run->counters,
                           &run->ppm_stats);
+    }
     case MODE_SPPM2009:
         settings_2009.progressive = progressive_settings(&run->o, checkpoint, &snapshot);
         settings_2009.disc_coverage = run->o.disc_coverage;
