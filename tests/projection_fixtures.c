@@ -24,6 +24,7 @@ void trace_into(const struct scene *scene, const struct projection_maps *pm, siz
     ts.max_depth = 100;
     ts.targets = NULL;
     ts.projection = pm;
+    ts.by_parts = 0;
     unsigned long long rays = 0;
     trace_photons_into(scene, &ts, sink, &rays);
 }

@@ -25,6 +25,7 @@ struct photon_trace trace(const struct scene *scene, size_t n, unsigned store,
     ts.max_depth = TEST_MAX_DEPTH;
     ts.targets = targets;
     ts.projection = NULL;
+    ts.by_parts = 0;
     struct photon_trace out;
     struct error err;
     if (trace_photons(scene, &ts, &out, &err) < 0)

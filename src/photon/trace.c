@@ -70,7 +70,8 @@ struct photon_hit {
 struct photon_path {
     int light;         /* the light that emitted it          */
     struct vec3 power; /* Delta Phi it carries, W per channel */
-    int specular_only; /* whether every bounce so far was a delta lobe (L S* so far) */
+    int specular_only; /* whether every bounce so far was specular (L S* so far): a
+                          delta lobe, or with by_parts the specular part f_r,s          */
 };
 
 static struct photon_hit photon_hit_at(const struct scene *scene, const struct hit *hit,
@@ -208,24 +209,59 @@ static int store_shadow_photons(const struct scene *scene, const struct trace_se
     return 0;
 }
 
+/* The part of the BRDF a photon leaves through with by_parts: f_r,s with probability
+ * *probability, the luminance of its albedo bound towards wi over the sum of both parts'
+ * (brdf_albedo()), else f_r,d. Dividing the sample's weight by the chosen part's
+ * probability keeps the expected power what the whole BRDF reflects, since f_r is the sum
+ * of the parts. A material with one part (Lambert, mirror, glass) takes it without a
+ * random number, so its photons follow the paths they would without by_parts. NULL when
+ * neither part reflects anything towards wi. */
+static const struct material *chosen_part(const struct photon_hit *h,
+                                          const struct brdf_split *split, struct rng *rng,
+                                          double *probability, int *specular)
+{
+    double a_d = split->has_diffuse
+                     ? vec3_luminance(brdf_albedo(&split->diffuse, &h->frame, h->wi)) : 0.0;
+    double a_s = split->has_specular
+                     ? vec3_luminance(brdf_albedo(&split->specular, &h->frame, h->wi)) : 0.0;
+    if (!(a_d + a_s > 0))
+        return NULL;
+    double p_s = a_s / (a_d + a_s);
+    *specular = a_d == 0 || (a_s > 0 && rng_uniform(rng) < p_s);
+    *probability = *specular ? p_s : 1.0 - p_s;
+    return *specular ? &split->specular : &split->diffuse;
+}
+
 /* Russian roulette and the next direction (see the top of the file). Returns 0 when the
- * photon is absorbed; else updates *path and sets *ray to the scattered ray. */
-static int scatter(const struct photon_hit *h, struct rng *rng, struct photon_path *path,
-                   struct ray *ray)
+ * photon is absorbed; else updates *path and sets *ray to the scattered ray. by_parts:
+ * trace_settings.by_parts. */
+static int scatter(const struct photon_hit *h, int by_parts, struct rng *rng,
+                   struct photon_path *path, struct ray *ray)
 {
     double u[3];
     for (int k = 0; k < 3; k++)
         u[k] = rng_uniform(rng);
+    const struct material *through = h->material;
+    double probability = 1.0;
+    int specular = 0;
+    struct brdf_split split;
+    if (by_parts) {
+        split = brdf_split(h->material);
+        through = chosen_part(h, &split, rng, &probability, &specular);
+        if (through == NULL)
+            return 0;
+    }
     struct brdf_sample bs;
-    if (!brdf_sample(h->material, &h->frame, h->wi, u, &bs))
+    if (!brdf_sample(through, &h->frame, h->wi, u, &bs))
         return 0; /* black, or arrived below the shading normal */
+    bs.weight = vec3_scale(bs.weight, 1.0 / probability);
     double q = fmin(1.0, vec3_max_component(bs.weight));
     if (!(rng_uniform(rng) < q))
         return 0; /* absorbed; also ends a zero or NaN weight */
     path->power = vec3_scale(vec3_mul(path->power, bs.weight), 1.0 / q); /* q > 0: u < q */
     if (!photon_power_fits(path->power))
         return 0; /* beyond the record's range: the departure at the top of the file */
-    path->specular_only = path->specular_only && bs.delta;
+    path->specular_only = path->specular_only && (by_parts ? specular : bs.delta);
     struct vec3 side = bs.transmitted ? vec3_neg(h->ng) : h->ng;
     *ray = make_ray(offset_origin(h->p, side), bs.wi);
     return 1;
@@ -270,7 +306,7 @@ static int trace_photon(const struct scene *scene, const struct trace_settings *
             if (sink->store(sink->context, &e) < 0)
                 return -1;
         }
-        if (depth >= ts->max_depth || !scatter(&h, &rng, &path, &ray) ||
+        if (depth >= ts->max_depth || !scatter(&h, ts->by_parts, &rng, &path, &ray) ||
             !can_store_later(ts->store, path.specular_only))
             return 0;
     }

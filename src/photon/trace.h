@@ -67,6 +67,11 @@ struct trace_settings {
                                                emission through these maps, built for this
                                                scene (projection_emit, Jensen and
                                                Christensen 1994), and targets is unused    */
+    int by_parts;                           /* 1: each bounce leaves through f_r,d or f_r,s
+                                               (brdf_split()), and a caustic path is one
+                                               whose every bounce took f_r,s, glossy lobes
+                                               included (Jensen 1996, Eq. 2); 0: one whose
+                                               every bounce took a delta lobe            */
 };
 
 /* The traced photons and what it took to make them. */
