@@ -179,8 +179,8 @@ static const struct option_spec specs[] = {
      "one of them, chosen by the BRDF's importance sampling (the paper's Monte Carlo)",
      FOR_1994 | FOR_1996},
     {"--glossy-corner", OPT_FLAG, FIELD(glossy_corner), 0, 0, "",
-     "surfaces seen through a glossy lobe take the global map's indirect light, no gather "
-     "(the default)", FOR_1996},
+     "surfaces seen through a glossy lobe take the global map's caustic and indirect light, "
+     "no gather (the default)", FOR_1996},
     {"--no-glossy-corner", OPT_FLAG, FIELD(glossy_corner), 0, 0, "",
      "evaluate them accurately, with a final gather (the paper's)", FOR_1996},
     {"--glossy-photons", OPT_FLAG, FIELD(glossy_photons), 0, 0, "",

@@ -3,14 +3,16 @@
  * maps", Sec. 3-5, in the paper's order.
  *
  * Pass 1 (Sec. 3) traces two photon maps: a caustic map of photons emitted towards the
- * specular objects and stored on diffuse surfaces after specular bounces only (L S+ D),
+ * specular objects and stored on diffuse surfaces after bounces through the specular part
+ * f_r,s only (L S+ D, S "highly glossy and ideal specular": a glossy lobe as well as a
+ * mirror; each photon bounce chooses its part, photon/trace.h),
  * and a global map of photons emitted towards everything and stored at every diffuse hit,
  * with shadow photons behind each first hit (Jensen and Christensen 1995); it lives in
  * jensen1996_maps.c.
  *
  * Pass 2 (Sec. 4) is distribution ray tracing of Eq. 2,
  *   Lr = int f_r L_l cos + int f_r,s (L_c + L_d) cos + int f_r,d L_c cos + int f_r,d L_d cos,
- * the light split into direct (l), caustic (c: via specular surfaces only) and soft
+ * the light split into direct (l), caustic (c: via f_r,s bounces only) and soft
  * indirect (d: reflected diffusely at least once), the BRDF into a diffuse and a specular
  * part (brdf_split(), scene/brdf.h). Where each term is evaluated accurately and where
  * approximately is Sec. 4's rule (accurate_or_approximate()); how:
@@ -22,13 +24,17 @@
  *                surfaces (4.4);
  *   corner       (at the end of a short gather ray) as accurate, except that the soft
  *                indirect light is the global map's estimate from its indirect photons;
+ *   through gloss (seen through a glossy lobe: a departure) direct light as accurate, the
+ *                caustics and soft indirect light in one estimate from the global map's
+ *                photons that are not direct;
  *   approximate  the global map's radiance estimate of the diffuse part, and still the
  *                specular part by Monte Carlo.
  *
  * Counting every path once. Direct light at accurate and corner points is light sampling
  * through the whole non-delta BRDF, so a ray sampled there by the specular part must not
  * add the emission it hits next; caustics at accurate points come from the caustic map,
- * so a gather ray must not add emission reached through delta bounces either; and the
+ * so a gather ray must not add emission reached through f_r,s bounces either, nor the
+ * direct light f_r,s reflects where it ends (direct_part()); and the
  * global estimate holds all light reflected by the diffuse part, so after an approximate
  * point only the specular part's rays continue, and what they hit counts in full. The
  * rule each ray carries (enum emission_rule) says which emission it may add. The sky is
@@ -66,21 +72,19 @@
 #include "../scene/brdf.h"
 #include "cache_pass.h"
 #include "gather_plan.h"
+#include "jensen1996_evaluation.h"
 #include "jensen1996_maps.h"
 #include "photons.h"
 #include "surface.h"
 
 /* ---- Sec. 4, pass 2: rendering ---- */
 
-/* How a surface is evaluated (the top of the file; accurate_or_approximate() decides). */
-enum evaluation { ACCURATE, CORNER, APPROXIMATE };
-
 /* Which emission a ray may add where it lands (see the top of the file). */
 enum emission_rule {
     EMISSION_COUNTED,     /* all of it: camera rays, and rays after approximate points  */
     EMISSION_SKIP_DIRECT, /* none at its first hit (light sampling had it); counted again
                              after a delta bounce (L S G: not sampled, not a caustic)   */
-    EMISSION_SKIP_ALL     /* none through any chain of delta bounces: a gather ray, whose
+    EMISSION_SKIP_ALL     /* none through any chain of f_r,s bounces: a gather ray, whose
                              L S+ paths the caustic map holds                           */
 };
 
@@ -128,45 +132,6 @@ static struct vec3 surface_radiance(const struct jensen1996 *mode, const struct 
                                     struct path path, struct rng *rng,
                                     struct render_counters *counters);
 
-/* A ray reaching a surface, as accurate_or_approximate() sees it: after a specular bounce,
- * how the surface it left was evaluated, whether by a glossy lobe (not a delta one) and
- * its throughput's luminance; after a diffuse bounce (a gather ray), its length and the
- * squared radius of the global estimate where it ends (0: none, no diffuse part). */
-enum bounce { FROM_EYE, SPECULAR_BOUNCE, DIFFUSE_BOUNCE };
-struct arrival {
-    enum bounce last; /* the bounce it comes from; FROM_EYE: none, a camera ray */
-    enum evaluation from;
-    int glossy;
-    double weight;
-    double length, radius2;
-};
-
-/* Sec. 4's rule: "We use the accurate computation if the surface is seen directly by the
- * eye or perhaps via a few specular reflections. We also use the accurate computation if
- * the distance between the ray origin and the intersection point is below a small
- * threshold value [...]. The approximate evaluation is used if the ray intersecting the
- * surface has been reflected diffusely since it left the eye or if the weight of the ray
- * is low." The few reflections: from an accurate point, with weight --accurate-weight or
- * more. The small threshold: --accurate-distance radii of the global estimate at the ray's
- * end, whose disc reaches back towards the gathering point ("colour bleeding effects in
- * corners"); that end gets the corner evaluation (the top of the file). Departure: a
- * surface seen through a glossy lobe, whose blur hides the global map's, gets it too
- * (glossy_corner; off, the paper's: glossy lobes count as specular), sparing a gather for
- * every glossy ray. */
-static enum evaluation accurate_or_approximate(const struct jensen1996 *mode,
-                                               const struct arrival *a)
-{
-    if (a->last == FROM_EYE)
-        return ACCURATE;
-    if (a->last == DIFFUSE_BOUNCE) {
-        double reach = mode->settings->accurate_distance;
-        return a->length * a->length < reach * reach * a->radius2 ? CORNER : APPROXIMATE;
-    }
-    if (a->from != ACCURATE || a->weight < mode->settings->accurate_weight)
-        return APPROXIMATE;
-    return a->glossy && mode->settings->glossy_corner ? CORNER : ACCURATE;
-}
-
 static struct vec3 emitted(const struct surface *s, enum emission_rule rule)
 {
     return rule == EMISSION_COUNTED ? surface_emission(s) : vec3_zero();
@@ -192,9 +157,20 @@ static struct vec3 photon_estimate(const struct jensen1996 *mode, const struct k
 
 /* -- 4.1 direct illumination -- */
 
+/* The BRDF that direct light is sampled through: the whole non-delta BRDF, except at the
+ * end of a gather ray (rule EMISSION_SKIP_ALL), which takes only light reflected
+ * diffusely (L_i,d, Sec. 4.4): the light f_r,s reflects there is L S D at the gathering
+ * point, a caustic, which the caustic map holds. */
+static const struct material *direct_part(const struct surface *s,
+                                          const struct brdf_split *split, struct path path)
+{
+    return path.rule == EMISSION_SKIP_ALL ? &split->diffuse : s->material;
+}
+
 /* The first term of Eq. 2 at an accurate point: one sample of each light through the
  * whole non-delta BRDF; a shadow ray only where the shadow photons leave it open. */
 static struct vec3 direct_illumination(const struct jensen1996 *mode, const struct surface *s,
+                                       const struct material *through,
                                        const struct shading_frame *frame, struct rng *rng,
                                        struct render_counters *counters)
 {
@@ -204,7 +180,7 @@ static struct vec3 direct_illumination(const struct jensen1996 *mode, const stru
         struct light_sample ls;
         struct vec3 contribution;
         double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
-        if (!light_contribution(&mode->scene->lights[i], s, s->material, frame, u1, u2, &ls,
+        if (!light_contribution(&mode->scene->lights[i], s, through, frame, u1, u2, &ls,
                                 &contribution))
             continue;
         enum visibility v = UNDECIDED;
@@ -244,9 +220,11 @@ static struct vec3 follow_specular(const struct jensen1996 *mode, const struct s
         return vec3_zero();
     struct arrival bounce = {.last = SPECULAR_BOUNCE, .from = path.eval, .glossy = !bs->delta,
                              .weight = vec3_luminance(next.beta)};
-    next.eval = accurate_or_approximate(mode, &bounce);
-    if (bs->delta)
-        next.rule = path.rule == EMISSION_SKIP_DIRECT ? EMISSION_COUNTED : path.rule;
+    next.eval = accurate_or_approximate(mode->settings, &bounce);
+    if (path.rule == EMISSION_SKIP_ALL)
+        next.rule = EMISSION_SKIP_ALL; /* still on a gather ray's chain through f_r,s */
+    else if (bs->delta)
+        next.rule = EMISSION_COUNTED;
     else
         next.rule = path.eval == APPROXIMATE ? EMISSION_COUNTED : EMISSION_SKIP_DIRECT;
     next.beta = vec3_scale(next.beta, share / q);
@@ -329,6 +307,19 @@ static struct vec3 global_estimate(const struct jensen1996 *mode, const struct s
                            r2);
 }
 
+/* At a surface seen through a glossy lobe (the departure in accurate_or_approximate()):
+ * the caustics and the soft indirect light of Eq. 2 through f_r,d in one estimate, from
+ * the global map's photons that are not direct, the blur of the lobe hiding the map's. */
+static struct vec3 all_but_direct(const struct jensen1996 *mode, const struct surface *s,
+                                  const struct brdf_split *split,
+                                  const struct shading_frame *frame)
+{
+    struct estimate_settings es = mode->global_es;
+    es.kinds = PHOTON_CAUSTIC | PHOTON_INDIRECT;
+    double r2;
+    return photon_estimate(mode, mode->maps.global, &es, s, &split->diffuse, frame, &r2);
+}
+
 /* Radiance arriving along a gather ray that hit s at distance d, evaluated as
  * accurate_or_approximate() says: in the corner way, or the global map's estimate. */
 static struct vec3 gathered_radiance(const struct jensen1996 *mode, const struct surface *s,
@@ -342,7 +333,7 @@ static struct vec3 gathered_radiance(const struct jensen1996 *mode, const struct
     if (split.has_diffuse)
         estimate = global_estimate(mode, s, &split, &frame, &r2);
     struct arrival bounce = {.last = DIFFUSE_BOUNCE, .length = d, .radius2 = r2};
-    path.eval = accurate_or_approximate(mode, &bounce);
+    path.eval = accurate_or_approximate(mode->settings, &bounce);
     if (path.eval == CORNER)
         return surface_radiance(mode, s, path, rng, counters);
     struct vec3 l = vec3_add(emitted(s, path.rule), estimate);
@@ -502,8 +493,11 @@ static struct vec3 surface_radiance(const struct jensen1996 *mode, const struct 
             l = vec3_add(l, global_estimate(mode, s, &split, &frame, &r2));
     } else {
         if (brdf_has_non_delta(s->material))
-            l = vec3_add(l, direct_illumination(mode, s, &frame, rng, counters));
-        if (split.has_diffuse) {
+            l = vec3_add(l, direct_illumination(mode, s, direct_part(s, &split, path), &frame,
+                                                rng, counters));
+        if (split.has_diffuse && path.eval == THROUGH_GLOSS) {
+            l = vec3_add(l, all_but_direct(mode, s, &split, &frame));
+        } else if (split.has_diffuse) {
             l = vec3_add(l, caustics(mode, s, &split, &frame));
             if (path.eval == ACCURATE) {
                 l = vec3_add(l, soft_indirect(mode, s, &split, &frame, path, rng, counters));
@@ -533,8 +527,9 @@ static struct vec3 trace(const struct jensen1996 *mode, struct ray ray, struct p
 static struct path camera_path(const struct jensen1996 *mode)
 {
     struct arrival from_eye = {.last = FROM_EYE};
-    struct path path = {vec3(1.0, 1.0, 1.0), 0, accurate_or_approximate(mode, &from_eye),
-                        EMISSION_COUNTED, 0};
+    struct path path = {vec3(1.0, 1.0, 1.0), 0,
+                        accurate_or_approximate(mode->settings, &from_eye), EMISSION_COUNTED,
+                        0};
     return path;
 }
 

@@ -71,6 +71,7 @@ static struct trace_settings photon_pass(const struct render_settings *rs, uint6
     ts.max_depth = rs->max_depth;
     ts.targets = NULL;
     ts.projection = NULL;
+    ts.by_parts = 1; /* Eq. 2's split: caustics are light through f_r,s, glossy lobes too */
     return ts;
 }
 

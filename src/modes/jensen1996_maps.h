@@ -3,7 +3,8 @@
  * maps, traced into the render's global work or borrowed from it.
  *
  * Two maps are traced: a caustic map of photons emitted towards the specular objects and
- * stored on diffuse surfaces after specular bounces only (L S+ D), and a global map of
+ * stored on diffuse surfaces after bounces through the specular part f_r,s only (L S+ D, S
+ * a delta or a glossy lobe: Eq. 2's "highly glossy and ideal specular"), and a global map of
  * photons emitted towards everything and stored at every diffuse hit, with shadow photons
  * behind each first hit (Jensen and Christensen 1995) kept in one visibility map per
  * light, which pass 2's direct light asks whether a light is seen (Sec. 4.1). Pass 2 lives

@@ -45,7 +45,7 @@ size_t specular_targets(const struct scene *scene, struct bounding_sphere *spher
 {
     size_t n = 0;
     for (size_t i = 0; i < scene->n_materials; i++) {
-        if (!brdf_has_delta(&scene->materials[i]))
+        if (!brdf_split(&scene->materials[i]).has_specular)
             continue;
         struct aabb box = geometry_material_bounds(scene->geometry, (int)i);
         if (!(box.lo.x <= box.hi.x))

@@ -56,8 +56,9 @@ struct emission {
 struct scene;
 
 /* The targets of a caustic map's directed emission (Jensen 1996, Sec. 3: "emitting
- * photons towards the specular objects"): one sphere per material with a delta lobe
- * (brdf_has_delta) around the box of the primitives made of it. spheres has room for
+ * photons towards the specular objects"): one sphere per material with a specular part
+ * f_r,s (brdf_split(): a delta or a glossy lobe, Eq. 2's "highly glossy and ideal
+ * specular") around the box of the primitives made of it. spheres has room for
  * scene->n_materials; returns how many it filled, 0 when nothing in the scene is
  * specular (then no caustic map is needed). One sphere per material rather than per
  * primitive keeps emission cheap for meshes; two far-apart objects of one material get

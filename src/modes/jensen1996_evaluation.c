@@ -1,0 +1,31 @@
+/*
+ * modes/jensen1996_evaluation.c -- Sec. 4's choice between the accurate and the
+ * approximate evaluation (jensen1996_evaluation.h).
+ */
+#include "jensen1996_evaluation.h"
+
+/* Sec. 4's rule: "We use the accurate computation if the surface is seen directly by the
+ * eye or perhaps via a few specular reflections. We also use the accurate computation if
+ * the distance between the ray origin and the intersection point is below a small
+ * threshold value [...]. The approximate evaluation is used if the ray intersecting the
+ * surface has been reflected diffusely since it left the eye or if the weight of the ray
+ * is low." The few reflections: from an accurate point, with weight --accurate-weight or
+ * more. The small threshold: --accurate-distance radii of the global estimate at the ray's
+ * end, whose disc reaches back towards the gathering point ("colour bleeding effects in
+ * corners"); that end gets the corner evaluation (the top of jensen1996.c). Departure: a
+ * surface seen through a glossy lobe, whose blur hides the global map's, gets the
+ * through-gloss evaluation (glossy_corner; off, the paper's: glossy lobes count as
+ * specular), sparing a gather and a search of the caustic map for every glossy ray. */
+enum evaluation accurate_or_approximate(const struct jensen1996_settings *settings,
+                                        const struct arrival *a)
+{
+    if (a->last == FROM_EYE)
+        return ACCURATE;
+    if (a->last == DIFFUSE_BOUNCE) {
+        double reach = settings->accurate_distance;
+        return a->length * a->length < reach * reach * a->radius2 ? CORNER : APPROXIMATE;
+    }
+    if (a->from != ACCURATE || a->weight < settings->accurate_weight)
+        return APPROXIMATE;
+    return a->glossy && settings->glossy_corner ? THROUGH_GLOSS : ACCURATE;
+}
