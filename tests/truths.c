@@ -4,6 +4,7 @@
 #include "truths.h"
 
 #include "files.h"
+#include "../src/modes/pt.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -155,6 +156,28 @@ double mean_luminance(const struct image *img)
     for (size_t i = 0; i < n; i++)
         sum += vec3_luminance(img->pixels[i]);
     return sum / (double)n;
+}
+
+void write_glossy_panel(const char *path)
+{
+    write_text_file(path, "image 16 16\n"
+                          "camera 0 0.5 -4  0 -1 0  0 1 0  40\n"
+                          "material floor lambert 0.5 0.5 0.5\n"
+                          "material panel ward 0 0 0 0.8 0.8 0.8 0.1 0.1\n"
+                          "quad -100 0 -100 -100 0 100 100 0 100 100 0 -100 floor\n"
+                          "quad -0.5 2 -0.5 0.5 2 -0.5 0.5 2 0.5 -0.5 2 0.5 panel\n"
+                          "light point 0 1 0 1000 1000 1000\n");
+}
+
+double pt_mean_luminance(const struct scene *scene, int spp)
+{
+    struct render_settings rs = render_settings_whole(scene, 1, spp, MAX_DEPTH_LIMIT);
+    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct error err;
+    struct image *img = rendered_image(render_pt(scene, &rs, 0, NULL, &counters), &err);
+    double mean = img != NULL ? mean_luminance(img) : -1.0;
+    image_free(img);
+    return mean;
 }
 
 /* Whether every channel of every pixel is finite and not negative. */

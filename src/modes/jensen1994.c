@@ -10,7 +10,8 @@
  * deposited"; Russian roulette decides whether it is absorbed or reflected
  * (photon/trace.h). Every deposit is a photon (Sec. 3.3) holding position, normal,
  * energy and a bit saying whether it is part of a caustic (CP: only specular reflections
- * since the light) or not (DP); with --irradiance-store illumination, a deposit on a
+ * since the light, glossy lobes among them: each bounce chooses f_r,s or f_r,d) or not
+ * (DP); with --irradiance-store illumination, a deposit on a
  * quad or sphere goes to its illumination maps instead (Sec. 3.2: DI, and CI sub-maps
  * where caustics land, photon/illumination_map.h).
  *
@@ -69,8 +70,8 @@ struct path {
     int depth;        /* bounces so far                                                  */
     int secondary;    /* 1: surfaces read the photon map (a gather ray, or with
                          glossy_photons a path through a glossy lobe) instead of gathering */
-    int emission;     /* 1: it adds the emission it reaches (the eye's rays, and any ray
-                         after a glossy bounce: no caustic photon holds that light)       */
+    int emission;     /* 1: it adds the emission it reaches (the eye's rays; a gather
+                         ray's light through f_r,s is CP's)                               */
 };
 
 struct jensen1994 {
@@ -191,11 +192,12 @@ static struct vec3 caustic_light(const struct jensen1994 *mode, const struct sur
 
 /* -- L_r,s: the specular-like part by recursive Monte Carlo ray tracing -- */
 
-/* The path after a bounce off lobe bs of f_r,s. A glossy lobe is not a specular one: the
- * light it brings is no caustic (CP photons follow delta bounces only), so the path adds
- * the emission it reaches from here on. Departs from Sec. 4's recursion there
- * (glossy_photons; off, the paper's: every surface seen from the eye is evaluated in
- * full): a surface seen through a glossy lobe, whose blur hides the photon map's, reads
+/* The path after a bounce off lobe bs of f_r,s. A glossy lobe is as specular as a mirror
+ * here: the light it brings from a light source is a caustic, which CP photons hold (each
+ * photon bounce chooses f_r,s or f_r,d, photon/trace.h), so a gather ray still adds no
+ * emission after one; the eye's rays add all they reach. Departs from Sec. 4's recursion
+ * at a glossy bounce (glossy_photons; off, the paper's: every surface seen from the eye
+ * is evaluated in full): a surface seen through a glossy lobe, whose blur hides the photon map's, reads
  * the photon map as a gather ray's end does, instead of a final gather for every ray of
  * every glossy bounce (on the sphere flake, whose Phong spheres see each other, half the
  * camera samples fell outside the cache's records and gathered on the spot). */
@@ -203,10 +205,8 @@ static struct path after_bounce(const struct jensen1994 *mode, const struct brdf
                                 struct path path)
 {
     path.depth++;
-    if (!bs->delta) {
-        path.emission = 1;
+    if (!bs->delta)
         path.secondary = path.secondary || mode->settings->glossy_photons;
-    }
     return path;
 }
 
@@ -391,7 +391,7 @@ static struct vec3 eye_radiance(const struct jensen1994 *mode, const struct surf
 
 /* Radiance leaving s towards s->wo on a gather ray (Sec. 4.0.3): the diffuse-like part
  * reflects the irradiance of all photons, read from the photon map; the specular-like
- * part is followed on; emission only on a path that has taken a glossy bounce. */
+ * part is followed on; emission only on a path from the eye (glossy_photons). */
 static struct vec3 secondary_radiance(const struct jensen1994 *mode, const struct surface *s,
                                       struct path path, struct rng *rng,
                                       struct render_counters *counters)

@@ -174,6 +174,7 @@ int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
     ts.max_depth = max_depth;
     ts.targets = NULL;
     ts.projection = NULL;
+    ts.by_parts = 1; /* CP: "only specular reflections", f_r,s's glossy lobes among them */
     struct deposits d;
     memset(&d, 0, sizeof d);
     d.photons.photons = NULL;
