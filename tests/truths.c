@@ -158,7 +158,7 @@ double mean_luminance(const struct image *img)
     return sum / (double)n;
 }
 
-void write_glossy_panel(const char *path)
+double glossy_panel(const char *path)
 {
     write_text_file(path, "image 16 16\n"
                           "camera 0 0.5 -4  0 -1 0  0 1 0  40\n"
@@ -167,16 +167,16 @@ void write_glossy_panel(const char *path)
                           "quad -100 0 -100 -100 0 100 100 0 100 100 0 -100 floor\n"
                           "quad -0.5 2 -0.5 0.5 2 -0.5 0.5 2 0.5 -0.5 2 0.5 panel\n"
                           "light point 0 1 0 1000 1000 1000\n");
-}
-
-double pt_mean_luminance(const struct scene *scene, int spp)
-{
-    struct render_settings rs = render_settings_whole(scene, 1, spp, MAX_DEPTH_LIMIT);
+    struct scene *scene = load_test_scene(path, 0, 0);
+    if (scene == NULL)
+        return -1.0;
+    struct render_settings rs = render_settings_whole(scene, 1, 16384, MAX_DEPTH_LIMIT);
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct error err;
     struct image *img = rendered_image(render_pt(scene, &rs, 0, NULL, &counters), &err);
     double mean = img != NULL ? mean_luminance(img) : -1.0;
     image_free(img);
+    scene_free(scene);
     return mean;
 }
 

@@ -84,16 +84,14 @@ struct image *reference_window(const char *path, int factor, const int *window);
 double mean_luminance(const struct image *img);
 
 /* The glossy panel of test_jensen1994.c's and test_jensen1996.c's glossy caustic, written
- * to path (16 x 16): a point light of 1000 W at (0, 1, 0) lights a Lambertian floor
+ * to path (16 x 16), and its truth: the path tracer's image mean (luminance) at 16,384
+ * samples, whose standard error is 0.1%; -1 when it cannot be rendered. The caller
+ * renders path too and removes it. A point light of 1000 W at (0, 1, 0) lights a Lambertian floor
  * (rho 0.5) directly and through a 1 x 1 panel of Ward's glossy lobe alone (rho_s 0.8,
  * alpha 0.1) facing down at height 2; the camera sees the floor, neither the light nor the
  * panel. No ray can hit a point light, so only photons find the panel's light, as the
  * caustic it is: about 12% of the image mean. */
-void write_glossy_panel(const char *path);
-
-/* The path tracer's image mean (luminance) of scene at spp samples, seed 1; -1 when the
- * render fails. The truth for a scene too small to keep a reference of. */
-double pt_mean_luminance(const struct scene *scene, int spp);
+double glossy_panel(const char *path);
 
 /* Whether every channel of every pixel is finite and not negative. */
 int finite_and_positive(const struct image *img);
