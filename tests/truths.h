@@ -86,11 +86,11 @@ double mean_luminance(const struct image *img);
 /* The glossy panel of test_jensen1994.c's and test_jensen1996.c's glossy caustic, written
  * to path (16 x 16), and its truth: the path tracer's image mean (luminance) at 16,384
  * samples, whose standard error is 0.1%; -1 when it cannot be rendered. The caller
- * renders path too and removes it. A point light of 1000 W at (0, 1, 0) lights a Lambertian floor
- * (rho 0.5) directly and through a 1 x 1 panel of Ward's glossy lobe alone (rho_s 0.8,
- * alpha 0.1) facing down at height 2; the camera sees the floor, neither the light nor the
- * panel. No ray can hit a point light, so only photons find the panel's light, as the
- * caustic it is: about 12% of the image mean. */
+ * renders path too and removes it. A point light of 1000 W at (0, 1, 0) lights a
+ * Lambertian floor (rho 0.5) directly and through a 1 x 1 panel of Ward's glossy lobe
+ * alone (rho_s 0.8, alpha 0.1) facing down at height 2; the camera sees the floor, neither
+ * the light nor the panel. No ray can hit a point light, so only photons find the panel's
+ * light, as the caustic it is: about 12% of the image mean. */
 double glossy_panel(const char *path);
 
 /* Whether every channel of every pixel is finite and not negative. */
