@@ -220,14 +220,16 @@ static const struct material *chosen_part(const struct photon_hit *h,
                                           const struct brdf_split *split, struct rng *rng,
                                           double *probability, int *specular)
 {
-    double a_d = split->has_diffuse
-                     ? vec3_luminance(brdf_albedo(&split->diffuse, &h->frame, h->wi)) : 0.0;
-    double a_s = split->has_specular
-                     ? vec3_luminance(brdf_albedo(&split->specular, &h->frame, h->wi)) : 0.0;
+    *probability = 1.0;
+    *specular = split->has_specular;
+    if (!split->has_diffuse || !split->has_specular)
+        return *specular ? &split->specular : &split->diffuse;
+    double a_d = vec3_luminance(brdf_albedo(&split->diffuse, &h->frame, h->wi));
+    double a_s = vec3_luminance(brdf_albedo(&split->specular, &h->frame, h->wi));
     if (!(a_d + a_s > 0))
         return NULL;
     double p_s = a_s / (a_d + a_s);
-    *specular = a_d == 0 || (a_s > 0 && rng_uniform(rng) < p_s);
+    *specular = rng_uniform(rng) < p_s;
     *probability = *specular ? p_s : 1.0 - p_s;
     return *specular ? &split->specular : &split->diffuse;
 }
