@@ -66,10 +66,23 @@ static void export_scene(struct exported *e, const char *what, const char *scene
     e->text = read_text_file(e->out);
 }
 
+/* The name of Mitsuba's k-th mesh file beside the output of a ".xml" export. */
+static void mesh_file(char *name, size_t size, const struct exported *e, int k)
+{
+    snprintf(name, size, "%.*s-mesh%d.obj", (int)(strlen(e->out) - 4), e->out, k);
+}
+
+/* Removes what export_scene() made, Mitsuba's mesh files included. */
 static void exported_free(struct exported *e)
 {
+    char mesh[NAME_BYTES];
     free(e->text);
     remove(e->scene);
+    for (int k = 0;; k++) {
+        mesh_file(mesh, sizeof mesh, e, k);
+        if (remove(mesh) != 0)
+            break;
+    }
     remove(e->out);
     remove(e->log);
 }
@@ -201,7 +214,7 @@ static void test_mitsuba(struct check *t)
     /* The white quad's mesh: its two triangles, in our winding. */
     const char *base = strrchr(e.out, '/') + 1;
     char mesh[NAME_BYTES], line[NAME_BYTES];
-    snprintf(mesh, sizeof mesh, "%.*s-mesh0.obj", (int)(strlen(e.out) - 4), e.out);
+    mesh_file(mesh, sizeof mesh, &e, 0);
     snprintf(line, sizeof line, "<string name=\"filename\" value=\"%.*s-mesh0.obj\"/>",
              (int)(strlen(base) - 4), base);
     CHECK(t, has(&e, line));
@@ -217,17 +230,12 @@ static void test_mitsuba(struct check *t)
     struct exported r;
     export_scene(&r, "again", again, "--format mitsuba", ".xml");
     char mesh_again[NAME_BYTES];
-    snprintf(mesh_again, sizeof mesh_again, "%.*s-mesh0.obj", (int)(strlen(r.out) - 4), r.out);
+    mesh_file(mesh_again, sizeof mesh_again, &r, 0);
     CHECK(t, r.status == 0);
     char *first = read_text_file(mesh), *second = read_text_file(mesh_again);
     CHECK(t, first != NULL && second != NULL && strcmp(first, second) == 0);
     free(first);
     free(second);
-    for (int k = 0; k < 8; k++) {
-        snprintf(mesh, sizeof mesh, "%.*s-mesh%d.obj", (int)(strlen(e.out) - 4), e.out, k);
-        remove(mesh);
-    }
-    remove(mesh_again);
     exported_free(&r);
     exported_free(&e);
 }
