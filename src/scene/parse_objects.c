@@ -217,6 +217,8 @@ int parse_sphereflake(struct parser *ps, struct error *err)
     int expand = read_expand(ps, err);
     if (expand < 0)
         return -1;
+    if (params.levels > ps->scene->sphereflake_levels)
+        ps->scene->sphereflake_levels = params.levels;
     struct error inner;
     struct sphereflake *flake = sphereflake_create(&params, &inner);
     if (flake == NULL)

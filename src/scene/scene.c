@@ -26,6 +26,7 @@ struct scene *scene_create(void)
     scene->height = 256;
     scene->background = vec3_zero();
     scene->sky = -1;
+    scene->sphereflake_levels = -1;
     scene->light_power = vec3_zero();
     scene->geometry = geometry_create();
     scene->source_hash = FNV1A_OFFSET_BASIS;

@@ -47,6 +47,8 @@ struct scene {
     int background_line;                  /* sky's power limit (scene_add_sky())       */
     int sky;                     /* index of the sky among the lights, or -1: a black
                                     background lights nothing and is no light           */
+    int sphereflake_levels;      /* LEVELS of the deepest sphere flake, -1 for none:
+                                    how far below the flake's radius its spheres go      */
     struct material *materials;  /* owned; n_materials of them                          */
     size_t n_materials;
     struct light *lights;        /* owned; n_lights of them                             */
