@@ -316,6 +316,24 @@ static struct progressive_settings progressive_settings(const struct options *o,
     return ps;
 }
 
+/* A density estimate divides the photons within its radius by one disc's area, so where
+ * many small surfaces share that radius it counts the neighbours' photons as the surface's
+ * own: a sphere flake's spheres go down to a 3^LEVELS-th of its radius, and from
+ * FINE_FLAKE_LEVELS on the modes that read photon maps render it and what it lights too
+ * bright at their defaults, by more as the flake deepens and less as the photons grow
+ * (reference/suite.md's consistency table). The progressive modes' radii shrink below any
+ * sphere, and pt has no radius. */
+#define FINE_FLAKE_LEVELS 4
+static void warn_fine_flake(const struct scene *scene, const char *mode)
+{
+    if (scene->sphereflake_levels >= FINE_FLAKE_LEVELS)
+        fprintf(stderr, "photon: warning: %s's photon estimates span many of a sphere "
+                "flake's spheres (%d levels, down to 1/%.0f of its radius) and count their "
+                "photons against one disc's area: the flake and what it lights render too "
+                "bright; 2008, 2009 and pt converge there\n",
+                mode, scene->sphereflake_levels, pow(3.0, scene->sphereflake_levels));
+}
+
 /* Renders with the chosen mode; the image is NULL (and *err filled) on failure. The
  * options name a departure by its default side (--exclude-rim-photon, --shadow-rays,
  * --direct-light-samples), the modes' settings the switches count_rim, shadow_photons and
@@ -347,6 +365,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
                 "estimate directly (Jensen 1996, Fig. 4): blurred by its %d nearest photons "
                 "and noisy at any photon count, it is a look at the map, not a converged "
                 "image; use 1996 or 2009 for one\n", run->o.gather);
+        warn_fine_flake(run->scene, "photons");
         ps.n_photons = (size_t)run->o.photons;
         ps.gather = (size_t)run->o.gather;
         ps.max_radius = run->o.max_radius;
@@ -356,6 +375,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         return render_photons(run->scene, &run->rs, &ps, want_variance, checkpoint,
                               &run->counters, &run->photon_stats, err);
     case MODE_JENSEN1994:
+        warn_fine_flake(run->scene, "1994");
         settings_1994.n_photons = (size_t)run->o.photons;
         settings_1994.gather = (size_t)run->o.gather;
         settings_1994.max_radius = run->o.max_radius;
@@ -376,6 +396,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         return render_jensen1994(run->scene, &run->rs, &settings_1994, want_variance,
                                  &run->counters, &run->stats_1994, err);
     case MODE_JENSEN1996:
+        warn_fine_flake(run->scene, "1996");
         settings_1996.global_photons = (size_t)run->o.photons;
         settings_1996.caustic_photons = (size_t)run->o.caustic_photons;
         settings_1996.global_gather = (size_t)run->o.gather;
