@@ -330,7 +330,7 @@ static void warn_fine_flake(const struct scene *scene, const char *mode)
         fprintf(stderr, "photon: warning: %s's photon estimates span many of a sphere "
                 "flake's spheres (%d levels, down to 1/%.0f of its radius) and count their "
                 "photons against one disc's area: the flake and what it lights render too "
-                "bright; 2008, 2009 and pt converge there\n",
+                "bright; pt has no radius, and 2008's and 2009's shrink below its spheres\n",
                 mode, scene->sphereflake_levels, pow(3.0, scene->sphereflake_levels));
 }
 

@@ -209,8 +209,8 @@ static int warns(const char *mode, const char *scene, const char *text)
  *   where 2008 converges: reference/suite.md) have no such lobe.
  *   The photon map's estimates on a sphere flake of four levels or more count the photons
  *   of many spheres against one disc's area, bright in photons, 1994 and 1996 (the
- *   consistency table of reference/suite.md: sphereflake, sphereflake-6), where 2008, 2009
- *   and pt converge; three levels render within 1% (measured when the warning was made).
+ *   consistency table of reference/suite.md: sphereflake, sphereflake-6), where pt has no
+ *   radius and 2008's and 2009's shrink; three levels render within 1% of pt in 1996.
  * tolerance: none: the warning is there or not.
  * catches: an image silently missing its caustics, a warning for area lights' caustics, or
  *   for point lights in a scene with nothing specular; a photon map shown as if it were a
