@@ -98,13 +98,6 @@ static struct vec3 trace_from(const struct jensen1994 *mode, const struct surfac
                               struct path path, struct rng *rng,
                               struct render_counters *counters);
 
-/* Radiance that the diffuse-like part reflects from irradiance e: albedo / pi times e. */
-static struct vec3 diffuse_reflection(const struct surface *s, const struct material *diffuse,
-                                      const struct shading_frame *frame, struct vec3 e)
-{
-    return vec3_mul(brdf_albedo(diffuse, frame, s->wo), vec3_scale(e, 1.0 / PI));
-}
-
 /* -- 4.0.1 L_r,d,l: direct light -- */
 
 /* Light `light` sampled on a k x k grid of jittered strata of its sample space, through

@@ -439,7 +439,8 @@ static struct irradiance_record gathered_record(const struct jensen1996 *mode,
 }
 
 /* The fourth term of Eq. 2 at an accurate point. Lambertian: rho / pi times the
- * irradiance, interpolated from the cache where a record is usable (Ward 1988), else
+ * irradiance (diffuse_reflection(): none, and no gather, where wo lies below the shading
+ * normal), interpolated from the cache where a record is usable (Ward 1988), else
  * gathered: in the pre-pass into a new record, without a cache as one too; in the final
  * pass (a point no record covers, seen through glass or a curved mirror, say) with the
  * camera sample's share of the rays, kept nowhere. Not Lambertian: no cache can hold
@@ -455,13 +456,15 @@ static struct vec3 soft_indirect(const struct jensen1996 *mode, const struct sur
                      counters);
         return strata_integral(&mode->per_sample, mode->scratch->summand);
     }
+    if (vec3_max_component(brdf_albedo(&split->diffuse, frame, s->wo)) <= 0)
+        return vec3_zero();
     struct vec3 e;
     /* The pre-pass asks with a stricter a than the final pass reads with, so that the
      * final pass's camera samples find the records made at pixel centres. */
     double a =
         mode->settings->cache_accuracy * (mode->filling_cache ? CACHE_FILL_STRICTNESS : 1.0);
     if (mode->cache != NULL && irradiance_cache_lookup(mode->cache, s->p, frame->n, a, &e))
-        return vec3_scale(vec3_mul(split->diffuse.rho, e), 1.0 / PI);
+        return diffuse_reflection(s, &split->diffuse, frame, e);
     if (mode->cache == NULL || mode->filling_cache) {
         struct irradiance_record record =
             gathered_record(mode, s, &split->diffuse, frame, path, rng, counters);
@@ -474,7 +477,7 @@ static struct vec3 soft_indirect(const struct jensen1996 *mode, const struct sur
                      counters);
         e = strata_integral(&mode->per_sample, mode->scratch->summand);
     }
-    return vec3_scale(vec3_mul(split->diffuse.rho, e), 1.0 / PI);
+    return diffuse_reflection(s, &split->diffuse, frame, e);
 }
 
 /* -- a surface, term by term -- */

@@ -64,6 +64,16 @@ static inline struct vec3 surface_emission(const struct surface *s)
     return s->front || s->material->two_sided ? s->material->emission : vec3_zero();
 }
 
+/* Radiance that a Lambertian part (or one taken as Lambertian) reflects towards s->wo from
+ * irradiance e: albedo / pi times e, and zero where s->wo lies below the shading normal,
+ * where the BRDF reflects nothing (brdf_eval(); pt sees such a point black). */
+static inline struct vec3 diffuse_reflection(const struct surface *s,
+                                             const struct material *diffuse,
+                                             const struct shading_frame *frame, struct vec3 e)
+{
+    return vec3_mul(brdf_albedo(diffuse, frame, s->wo), vec3_scale(e, 1.0 / PI));
+}
+
 /* The ray leaving s in unit direction wi: from the side of the surface wi goes to, so it
  * does not hit the surface it starts on (through it, when transmitted). */
 static inline struct ray surface_ray(const struct surface *s, struct vec3 wi, int transmitted)
