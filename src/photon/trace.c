@@ -29,20 +29,30 @@
  * choice of light folded into the weight (projection_map.h). Photons go only where they
  * can hit something, so N photons carry the marked share of the lights' power.
  *
+ * On a smooth-shaded surface (a shading normal n_s other than the geometric n_g) the
+ * BRDF integrates against |w . n_s| where a photon's power is flux through the geometric
+ * surface: the stored power and the scattering weight take shading_share()'s factors
+ * (scene/brdf.h; Veach 1997, Sec. 5.3), which are exactly 1 on flat-shaded surfaces.
+ * Without them a surface whose shading normal tilts towards the light renders in the
+ * photon map as dark as its geometric cosine says, where pt's light sample takes the
+ * shading normal's (tests/test_shading.c).
+ *
  * Departs from Sec. 3: a surface whose albedo is zero in every channel (the black
  * emitter the `light` keyword makes) holds no photons: they could add nothing to its own
  * estimates and would only join a neighbour's (the Cornell light hangs 0.1 mm below the
  * ceiling).
  *
  * Departs from Sec. 3: a photon whose power leaves the range of the 20-byte record
- * (photon_power_fits(): below 2^127 W per channel, not NaN) is not emitted or ends where
- * it scatters. Under the scene's limit on the lights' power (MAX_LIGHT_POWER, scene.h)
- * every photon leaves within range; only a BRDF weight above 1 (glossy lobes at grazing
- * angles), repeated over dozens of bounces, could carry one out of it.
+ * (photon_power_fits(): below 2^127 W per channel, not NaN) is not emitted, stored or
+ * followed past where it scatters. Under the scene's limit on the lights' power
+ * (MAX_LIGHT_POWER, scene.h) every photon leaves within range; only a BRDF weight above 1
+ * (glossy lobes at grazing angles, or a shading normal's share), repeated over dozens of
+ * bounces, could carry one out of it.
  */
 #include "trace.h"
 
 #include <assert.h>
+#include <math.h>
 #include <string.h>
 
 #include "../base/alloc.h"
@@ -256,7 +266,11 @@ static int scatter(const struct photon_hit *h, int by_parts, struct rng *rng,
     struct brdf_sample bs;
     if (!brdf_sample(through, &h->frame, h->wi, u, &bs))
         return 0; /* black, or arrived below the shading normal */
-    bs.weight = vec3_scale(bs.weight, 1.0 / probability);
+    double adjoint = shading_share(&h->frame, h->ng, h->wi) /
+                     shading_share(&h->frame, h->ng, bs.wi);
+    if (!isfinite(adjoint))
+        return 0; /* scattered along the geometric plane */
+    bs.weight = vec3_scale(bs.weight, adjoint / probability);
     double q = fmin(1.0, vec3_max_component(bs.weight));
     if (!(rng_uniform(rng) < q))
         return 0; /* absorbed; also ends a zero or NaN weight */
@@ -303,8 +317,9 @@ static int trace_photon(const struct scene *scene, const struct trace_settings *
             return -1;
         unsigned kind = depth == 0 ? PHOTON_DIRECT
                                    : path.specular_only ? PHOTON_CAUSTIC : PHOTON_INDIRECT;
-        if ((ts->store & kind) && holds_photons(&h)) {
-            struct photon_event e = photon_event_at(&h, path.power, kind, path.light);
+        struct vec3 stored = vec3_scale(path.power, shading_share(&h.frame, h.ng, h.wi));
+        if ((ts->store & kind) && holds_photons(&h) && photon_power_fits(stored)) {
+            struct photon_event e = photon_event_at(&h, stored, kind, path.light);
             if (sink->store(sink->context, &e) < 0)
                 return -1;
         }

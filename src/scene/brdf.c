@@ -31,6 +31,12 @@ struct shading_frame shading_frame_from_normal(struct vec3 n, int front,
     return f;
 }
 
+double shading_share(const struct shading_frame *f, struct vec3 ng, struct vec3 w)
+{
+    double geometric = fabs(vec3_dot(w, ng));
+    return geometric > 0 ? fabs(vec3_dot(w, f->n)) / geometric : 0.0;
+}
+
 static struct vec3 to_local(const struct shading_frame *f, struct vec3 w)
 {
     return vec3(vec3_dot(w, f->t), vec3_dot(w, f->b), vec3_dot(w, f->n));

@@ -51,6 +51,15 @@ struct shading_frame {
 struct shading_frame shading_frame_from_normal(struct vec3 n, int front,
                                                enum transport transport);
 
+/* |w . n_s| / |w . n_g| for unit direction w, f->n the shading normal and ng the geometric
+ * one; 0 where w lies in the geometric plane. Exactly 1 where n_s = n_g. A photon arriving
+ * along w carries flux through the geometric surface, L |w . n_g| dw dA, where the BRDF's
+ * integral takes L |w . n_s| dw: the photon is stored with its power times this, so that
+ * every density estimate sees the shading normal's cosine, and it scatters with this for
+ * its incoming direction over this for its outgoing one (Veach 1997, Sec. 5.3: the adjoint
+ * BSDF with shading normals). */
+double shading_share(const struct shading_frame *f, struct vec3 ng, struct vec3 w);
+
 /* The non-delta part of f_r(wo, wi), per channel, in 1/sr; mirror and glass give 0.
  * Reciprocal: brdf_eval(m, f, wo, wi) == brdf_eval(m, f, wi, wo). */
 struct vec3 brdf_eval(const struct material *m, const struct shading_frame *f, struct vec3 wo,
