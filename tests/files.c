@@ -13,6 +13,7 @@
 #include <time.h>
 
 #include "../src/base/rng.h"
+#include "../src/image/image.h"
 #include "check.h"
 
 #define TEXT_MAX_BYTES (1 << 20) /* larger than any file these tests read as text */
@@ -125,4 +126,23 @@ int photon_logged(const char *subcommand, const char *args, const char *log)
                  args, log) >= (int)sizeof command)
         return -1;
     return run_command(command);
+}
+
+struct image *photon_render(const char *group, const char *options, const char *scene)
+{
+    char out[256], png[256], log[256], args[1024];
+    temp_name(out, sizeof out, group, "render.pfm");
+    temp_name(png, sizeof png, group, "render.png");
+    temp_name(log, sizeof log, group, "render.log");
+    struct image *img = NULL;
+    if (snprintf(args, sizeof args, "%s --no-progress %s -o %s", options, scene, out) <
+            (int)sizeof args &&
+        photon_logged("", args, log) == 0) {
+        struct error err;
+        img = pfm_read(out, &err);
+    }
+    remove(out);
+    remove(png);
+    remove(log);
+    return img;
 }

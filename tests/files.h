@@ -10,6 +10,8 @@
 
 #include <stddef.h>
 
+struct image;
+
 /* Puts "/tmp/photon_test_GROUP_RUN_WHAT" in out (size bytes), RUN unique to this process. */
 void temp_name(char *out, size_t size, const char *group, const char *what);
 
@@ -36,5 +38,10 @@ double file_stat(const char *log, const char *key);
 /* Runs "PHOTON subcommand args" (subcommand may be "") with stdout and stderr captured in
  * log; the exit status, or -1 if the command is too long or did not exit. */
 int photon_logged(const char *subcommand, const char *args, const char *log);
+
+/* Renders scene with photon's options (a --mode and its settings) and --no-progress into
+ * temporary files of group: the image it wrote (the caller frees it with image_free()),
+ * or NULL when photon failed or wrote none. Its output, PNG and log are removed. */
+struct image *photon_render(const char *group, const char *options, const char *scene);
 
 #endif

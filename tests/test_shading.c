@@ -77,15 +77,9 @@ static void test_turned_away_normal_in_every_mode(struct check *t)
     struct scene *scene = load_test_scene(path, 0, 0);
     REQUIRE(t, scene != NULL);
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
-        char out[256], png[256], log[256], args[1024];
-        temp_name(out, sizeof out, "shading", "render.pfm");
-        temp_name(png, sizeof png, "shading", "render.png");
-        temp_name(log, sizeof log, "shading", "render.log");
-        snprintf(args, sizeof args, "--mode %s %s --no-progress %s -o %s", modes[m].mode,
-                 modes[m].options, path, out);
-        CHECK(t, photon_logged("", args, log) == 0);
-        struct error err;
-        struct image *img = pfm_read(out, &err);
+        char options[256];
+        snprintf(options, sizeof options, "--mode %s %s", modes[m].mode, modes[m].options);
+        struct image *img = photon_render("shading", options, path);
         CHECK(t, img != NULL);
         if (img != NULL) {
             int covered = 0, lit = 0;
@@ -108,9 +102,6 @@ static void test_turned_away_normal_in_every_mode(struct check *t)
             CHECK(t, rest / lit > 0.3);
             image_free(img);
         }
-        remove(out);
-        remove(png);
-        remove(log);
     }
     scene_free(scene);
 }
@@ -142,16 +133,8 @@ static void test_tilted_normal_in_the_photon_map(struct check *t)
     const char *path = "scenes/analytic/tilted-normal.scene";
     struct scene *scene = load_test_scene(path, 0, 0);
     REQUIRE(t, scene != NULL);
-    char out[256], png[256], log[256], args[1024];
-    temp_name(out, sizeof out, "shading", "tilt.pfm");
-    temp_name(png, sizeof png, "shading", "tilt.png");
-    temp_name(log, sizeof log, "shading", "tilt.log");
-    snprintf(args, sizeof args,
-             "--mode photons --photons 2000000 --gather 400 --spp 4 --no-progress %s -o %s",
-             path, out);
-    CHECK(t, photon_logged("", args, log) == 0);
-    struct error err;
-    struct image *img = pfm_read(out, &err);
+    struct image *img = photon_render(
+        "shading", "--mode photons --photons 2000000 --gather 400 --spp 4", path);
     CHECK(t, img != NULL);
     if (img != NULL) {
         double sum = 0.0, truth_sum = 0.0, worst = 0.0;
@@ -178,9 +161,6 @@ static void test_tilted_normal_in_the_photon_map(struct check *t)
         CHECK(t, worst <= 0.03);
         image_free(img);
     }
-    remove(out);
-    remove(png);
-    remove(log);
     scene_free(scene);
 }
 
