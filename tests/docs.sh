@@ -4,6 +4,9 @@
 #
 #  1. Every file a document names (a path under scenes/, reference/, src/, tests/, scripts/)
 #     exists. Placeholders (NAME, FILE, *, $VAR) are not files and are passed over.
+#  1b. Every `name()` a document shows is a function or macro of src/ or tests/.
+#  1c. Every section of a mode's paper that a document or a source file cites is one the
+#     paper has (tests/data/paper-sections.txt).
 #  2. Every option a document shows on a `./photon` command line is one that photon's
 #     --help (or its subcommand's usage) lists.
 #  3. The README's commands work as shown: every line of its ```sh blocks that starts with
@@ -57,6 +60,55 @@ for doc in $docs tests/data/README.md; do
 done > docs-functions.tmp
 while read -r line; do problem "$line"; done < docs-functions.tmp
 rm -f docs-functions.tmp
+
+# 1c. Sections cited: every "Sec. N" of a mode's paper that a document or a source file
+# cites is a section of that paper (tests/data/paper-sections.txt). A citation belongs to
+# the paper named last before it in its paragraph ("Jensen 1996", "Jensen and
+# Christensen 1994", "... Jensen 2008"); with none named, to the paper of the mode file
+# (src/modes/jensen1994*, jensen1996*, photons.*, ppm2008*, ppm_*) or of the README part
+# (## `--mode 1994` ...). A paragraph ends at an empty line, a comment's end or a heading.
+# Citations of other works (Veach 1997, RFC 1951) are not checked.
+for file in $docs $(find src -name '*.[ch]' | sort); do
+    [ -f "$file" ] && printf '%s\n' "$file"
+done | xargs awk '
+FNR == 1 && !outlines_read {
+    while ((getline line < "tests/data/paper-sections.txt") > 0) {
+        if (line ~ /^#/ || line == "") continue
+        n = split(line, word, " ")
+        listed[word[1]] = 1
+        for (i = 2; i <= n; i++) section[word[1], word[i]] = 1
+    }
+    outlines_read = 1
+}
+FNR == 1 {
+    home = ""
+    if (FILENAME ~ /src\/modes\/jensen1994/) home = "1994"
+    else if (FILENAME ~ /src\/modes\/(jensen1996|photons\.)/) home = "1996"
+    else if (FILENAME ~ /src\/modes\/(ppm2008|ppm_)/) home = "2008"
+    paper = home
+}
+/^#/ && FILENAME ~ /\.md$/ {
+    if ($0 ~ /^## /) home = match($0, /--mode (1994|1996|2008|2009)/) ? substr($0, RSTART + 7, 4) : ""
+    paper = home
+}
+{
+    text = $0
+    while (match(text, /(Jensen (and|&) Christensen 1994|Jensen 1996|Jensen 2008|Jensen 2009|[A-Z][a-z]+ (19|20)[0-9][0-9]|RFC [0-9]+|Secs?\.? ?[0-9]+(\.[0-9]+)*)/)) {
+        token = substr(text, RSTART, RLENGTH); text = substr(text, RSTART + RLENGTH)
+        if (token ~ /^Sec/) {
+            number = token; sub(/^Secs?\.? ?/, "", number)
+            if (paper == "" || paper == "other") continue
+            if (!(paper in listed)) print FILENAME ":" FNR ": cites Sec. " number " of " paper ", a paper tests/data/paper-sections.txt does not outline"
+            else if (!((paper, number) in section)) print FILENAME ":" FNR ": cites Sec. " number " of the " paper " paper, which has no such section"
+        } else if (token ~ /1994$/ && token ~ /Christensen/) paper = "1994"
+        else if (token ~ /^Jensen (1996|2008|2009)$/) paper = substr(token, 8)
+        else paper = "other"
+    }
+}
+/^[ \t]*$/ || /\*\// { paper = home }
+' > docs-sections.tmp
+while read -r line; do problem "$line"; done < docs-sections.tmp
+rm -f docs-sections.tmp
 
 # 2. Options shown on command lines.
 usage=$("$photon" --help 2>&1)

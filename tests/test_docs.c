@@ -1,7 +1,8 @@
 /*
  * tests/test_docs.c -- the documentation against the product: tests/docs.sh checks that
  * every file the documents name exists, that every option their command lines show is one
- * photon takes, and that src/'s includes close no circle between modules, and runs the
+ * photon takes, that every section cited of a mode's paper is one the paper has, and
+ * that src/'s includes close no circle between modules, and runs the
  * README's commands as shown.
  */
 #include <stdio.h>
@@ -14,11 +15,13 @@
 
 #define LINE_MAX_BYTES 2048 /* longer than any line of --help */
 
-/* truth: the files in the tree, photon's own --help, and the exit status of each README
+/* truth: the files in the tree, photon's own --help, the papers' section numbers
+ *   (tests/data/paper-sections.txt), and the exit status of each README
  *   command run as a user would (with --quality preview appended to renders).
  * catches: a document naming a file that was moved or never committed, an option renamed
  *   or removed under the README's feet, a command whose output directory or input is
- *   missing in a fresh clone, an include that closes a circle between modules. */
+ *   missing in a fresh clone, a banner citing a section the paper does not have (2008's
+ *   "Sec. 4.4"), an include that closes a circle between modules. */
 static void test_documented_commands_work(struct check *t)
 {
     char command[1024];
