@@ -179,8 +179,9 @@ static struct photon *set_photons(enum point_set set, size_t n)
 }
 
 /* |p - x|^2 exactly as kdtree.c computes it: float to double, then in axis order. */
-static double photon_d2(const struct photon *p, struct vec3 x, double delta[3])
+static double photon_d2(const struct photon *p, struct vec3 x)
 {
+    double delta[3];
     delta[0] = (double)p->pos[0] - x.x;
     delta[1] = (double)p->pos[1] - x.y;
     delta[2] = (double)p->pos[2] - x.z;
@@ -193,25 +194,21 @@ static int compare_doubles(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* The filters as kdtree.h defines them; max_plane_distance 0 and kinds 0 keep all. */
-static int in_filters(const struct photon_query *q, const struct photon *p,
-                      const double delta[3])
+/* The kind filter as kdtree.h defines it; kinds 0 keeps all. */
+static int in_filter(const struct photon_query *q, const struct photon *p)
 {
-    double h = delta[0] * q->normal.x + delta[1] * q->normal.y + delta[2] * q->normal.z;
-    return (q->max_plane_distance == 0 || fabs(h) <= q->max_plane_distance) &&
-           (q->kinds == 0 || (p->flags & q->kinds) != 0);
+    return q->kinds == 0 || (p->flags & q->kinds) != 0;
 }
 
-/* The linear scan: the squared distances of photons[] from q->x that pass q's disc
+/* The linear scan: the squared distances of photons[] from q->x that pass q's kind
  * filter, ascending, into scan[]; returns how many. max_r2 and k are applied later. */
 static size_t scan_d2(const struct photon *photons, size_t n, const struct photon_query *q,
                       double *scan)
 {
     size_t count = 0;
     for (size_t i = 0; i < n; i++) {
-        double delta[3];
-        double d2 = photon_d2(&photons[i], q->x, delta);
-        if (in_filters(q, &photons[i], delta))
+        double d2 = photon_d2(&photons[i], q->x);
+        if (in_filter(q, &photons[i]))
             scan[count++] = d2;
     }
     qsort(scan, count, sizeof *scan, compare_doubles);
@@ -226,11 +223,10 @@ static int found_photons_consistent(const struct kdtree *map, const struct neare
     memset(seen, 0, map->n_photons + 1);
     for (size_t i = 0; i < nn->found; i++) {
         ptrdiff_t at = nn->photon[i] - map->photons;
-        double delta[3];
         if (at < 1 || (size_t)at > map->n_photons || seen[at])
             return 0;
         seen[at] = 1;
-        ok = ok && photon_d2(nn->photon[i], x, delta) == nn->d2[i];
+        ok = ok && photon_d2(nn->photon[i], x) == nn->d2[i];
     }
     return ok;
 }
@@ -320,7 +316,7 @@ static int nearest_first(const struct nearest *nn)
 static int search_matches_scan(struct test_map *m, const struct photon_query *q,
                                size_t n_scan)
 {
-    locate_photons_in_disc(m->map, q, m->nn);
+    locate_photons_of_kinds(m->map, q, m->nn);
     int ok = matches_scan(m->nn, q, m->scan_d2, n_scan, m->sorted) &&
              found_photons_consistent(m->map, m->nn, q->x, m->seen);
     nearest_sort(m->nn);
@@ -491,7 +487,7 @@ static int all_searches_match(struct test_map *m, uint64_t j)
     static const double max_r2s[] = {HUGE_VAL, 0, 0.01, 0.25};
     size_t ks[] = {1, 7, 50, m->n + 3};  /* the last: k > n */
     struct photon_query q;
-    memset(&q, 0, sizeof q);  /* disc filter off */
+    memset(&q, 0, sizeof q);  /* kind filter off */
     q.x = query_point(m->scan, m->n, j);
     size_t n_scan = scan_d2(m->scan, m->n, &q, m->scan_d2);
     int ok = 1;
@@ -526,38 +522,30 @@ static void test_locate_photons_matches_linear_scan(struct check *t)
     }
 }
 
-/* Searches with the disc filter at query j of m (normal: a wall's, or random); 1 when
- * all match the scan with the same filter. */
-static int disc_searches_match(struct test_map *m, uint64_t j)
+/* Searches with the kind filter at query j of m; 1 when all match the scan with the same
+ * filter. */
+static int kind_searches_match(struct test_map *m, uint64_t j)
 {
-    static const double heights[] = {0.02, 0.3};
-    struct rng r = rng_stream(3, STREAM_TEST, 301, j);
     struct photon_query q;
     q.x = query_point(m->scan, m->n, j);
-    q.normal = j % 3 == 0 ? vec3(0, 1, 0) : j % 3 == 1 ? vec3(1, 0, 0)
-               : vec3_normalize(vec3(rng_uniform(&r) - 0.5, rng_uniform(&r) - 0.5, 0.3));
     q.kinds = (unsigned)(j % 4) * 3u; /* 0 (all kinds), then three different pairs */
+    size_t n_scan = scan_d2(m->scan, m->n, &q, m->scan_d2);
     int ok = 1;
-    for (size_t ih = 0; ih < sizeof heights / sizeof heights[0]; ih++) {
-        q.max_plane_distance = heights[ih];
-        size_t n_scan = scan_d2(m->scan, m->n, &q, m->scan_d2);
-        for (size_t k = 1; k <= 50; k += 49) {
-            q.k = k;
-            q.max_r2 = HUGE_VAL;
-            ok = ok && search_matches_scan(m, &q, n_scan);
-            q.max_r2 = 0.04;
-            ok = ok && search_matches_scan(m, &q, n_scan);
-        }
+    for (size_t k = 1; k <= 50; k += 49) {
+        q.k = k;
+        q.max_r2 = HUGE_VAL;
+        ok = ok && search_matches_scan(m, &q, n_scan);
+        q.max_r2 = 0.04;
+        ok = ok && search_matches_scan(m, &q, n_scan);
     }
     return ok;
 }
 
-/* truth: brute force, a linear scan applying the same disc filter (|(p - x) . n| <= h)
- * and kind filter (flags & kinds).
+/* truth: brute force, a linear scan applying the same kind filter (flags & kinds).
  * tolerance: none (same doubles on both sides).
- * catches: the filter ignored, applied to pruning (which would lose photons), the wrong
- *   sign of the plane distance, r2 counted over rejected photons. */
-static void test_locate_photons_in_disc_matches_linear_scan(struct check *t)
+ * catches: the filter ignored, applied to pruning (which would lose photons), r2
+ *   counted over rejected photons. */
+static void test_locate_photons_of_kinds_matches_linear_scan(struct check *t)
 {
     static const enum point_set sets[] = {UNIFORM, CORNELL_WALLS, DUPLICATES};
     static const size_t sizes[] = {0, 1, 3, 1000};
@@ -565,7 +553,7 @@ static void test_locate_photons_in_disc_matches_linear_scan(struct check *t)
         for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
             struct test_map m = test_map_create(sets[set], sizes[s]);
             for (uint64_t j = 0; j < N_QUERIES; j++)
-                CHECK(t, disc_searches_match(&m, j));
+                CHECK(t, kind_searches_match(&m, j));
             test_map_free(&m);
         }
     }
@@ -589,7 +577,7 @@ static int radius_searches_match(struct test_map *m, uint64_t j, double *d2)
 {
     static const double r2s[] = {0, 1e-3, 0.01, 0.3, HUGE_VAL};
     struct photon_query q;
-    memset(&q, 0, sizeof q);  /* disc filter off */
+    memset(&q, 0, sizeof q);  /* kind filter off */
     q.x = query_point(m->scan, m->n, j);
     size_t n_scan = scan_d2(m->scan, m->n, &q, m->scan_d2);
     int ok = 1;
@@ -635,6 +623,6 @@ void test_photon(struct check *t)
     RUN_TEST(t, test_balance_kdtree_in_place_is_the_specified_tree);
     RUN_TEST(t, test_kdtree_check_detects_broken_trees);
     RUN_TEST(t, test_locate_photons_matches_linear_scan);
-    RUN_TEST(t, test_locate_photons_in_disc_matches_linear_scan);
+    RUN_TEST(t, test_locate_photons_of_kinds_matches_linear_scan);
     RUN_TEST(t, test_for_each_photon_within_matches_linear_scan);
 }

@@ -27,10 +27,8 @@ struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_po
     q.x = at->x;
     q.max_r2 = es->max_r2;
     q.k = es->k;
-    q.normal = vec3_zero();
-    q.max_plane_distance = 0;
     q.kinds = es->kinds;
-    locate_photons_in_disc(map, &q, nn); /* sets found, photon[], d2[], r2 */
+    locate_photons_of_kinds(map, &q, nn); /* sets found, photon[], d2[], r2 */
     if (nn->found == 0 || !(nn->r2 > 0))
         return vec3_zero(); /* no photons, or all exactly at x: no area */
     struct vec3 sum = vec3_zero();
@@ -76,10 +74,8 @@ struct vec3 irradiance_estimate(const struct kdtree *map, struct vec3 x, struct 
     q.x = x;
     q.max_r2 = is->max_r2;
     q.k = is->n;
-    q.normal = vec3_zero();
-    q.max_plane_distance = 0;
     q.kinds = is->kinds;
-    locate_photons_in_disc(map, &q, nn);
+    locate_photons_of_kinds(map, &q, nn);
     nearest_sort(nn);
     struct vec3 sum = vec3_zero(), e = vec3_zero();
     double previous = 0.0; /* luminance of E_{j-1}; 0 before the first with area */

@@ -295,26 +295,23 @@ static void sift_down(struct nearest *nn, size_t i, size_t count)
 /* What a search looks for; the bound on d2 changes as it goes, so it is passed apart. */
 struct search {
     double x[3];                /* the query point                            */
-    double normal[3];           /* disc filter's plane normal                 */
-    double max_plane_distance;  /* 0: no disc filter                          */
     unsigned kinds;             /* 0: no kind filter                          */
     size_t k;                   /* photons wanted                             */
     struct nearest *nn;         /* results so far                             */
 };
 
-static double squared_distance(const double x[3], const struct photon *p, double delta[3])
+static double squared_distance(const double x[3], const struct photon *p)
 {
+    double delta[3];
     for (int a = 0; a < 3; a++)
         delta[a] = (double)p->pos[a] - x[a];
     return delta[0] * delta[0] + delta[1] * delta[1] + delta[2] * delta[2];
 }
 
-/* Whether the filters keep photon p at offset delta from x. */
-static int selected(const struct search *s, const struct photon *p, const double delta[3])
+/* Whether the kind filter keeps photon p. */
+static int selected(const struct search *s, const struct photon *p)
 {
-    double h = delta[0] * s->normal[0] + delta[1] * s->normal[1] + delta[2] * s->normal[2];
-    return (s->max_plane_distance == 0 || fabs(h) <= s->max_plane_distance) &&
-           (s->kinds == 0 || (p->flags & s->kinds) != 0);
+    return s->kinds == 0 || (p->flags & s->kinds) != 0;
 }
 
 /* Offers photon p to the search. bound is exclusive: p is wanted iff d2 < bound. Until
@@ -322,9 +319,8 @@ static int selected(const struct search *s, const struct photon *p, const double
  * bound the heap's top, which a nearer photon then replaces. Returns the new bound. */
 static double offer_photon(const struct search *s, const struct photon *p, double bound)
 {
-    double delta[3];
-    double d2 = squared_distance(s->x, p, delta);
-    if (!(d2 < bound) || !selected(s, p, delta))
+    double d2 = squared_distance(s->x, p);
+    if (!(d2 < bound) || !selected(s, p))
         return bound;
     struct nearest *nn = s->nn;
     if (nn->found < s->k) {
@@ -391,19 +387,15 @@ static double largest_d2(const struct nearest *nn)
     return r2;
 }
 
-void locate_photons_in_disc(const struct kdtree *map, const struct photon_query *q,
+void locate_photons_of_kinds(const struct kdtree *map, const struct photon_query *q,
                             struct nearest *nn)
 {
     assert(q->k >= 1 && q->k <= nn->k_max);
-    assert(q->max_r2 >= 0 && q->max_plane_distance >= 0); /* also refuse NaN */
+    assert(q->max_r2 >= 0); /* also refuses NaN */
     struct search s;
     s.x[0] = q->x.x;
     s.x[1] = q->x.y;
     s.x[2] = q->x.z;
-    s.normal[0] = q->normal.x;
-    s.normal[1] = q->normal.y;
-    s.normal[2] = q->normal.z;
-    s.max_plane_distance = q->max_plane_distance;
     s.kinds = q->kinds;
     s.k = q->k;
     s.nn = nn;
@@ -423,10 +415,8 @@ void locate_photons(const struct kdtree *map, struct vec3 x, double max_r2, size
     q.x = x;
     q.max_r2 = max_r2;
     q.k = k;
-    q.normal = vec3_zero();
-    q.max_plane_distance = 0;
     q.kinds = 0;
-    locate_photons_in_disc(map, &q, nn);
+    locate_photons_of_kinds(map, &q, nn);
 }
 
 void nearest_sort(struct nearest *nn)
@@ -466,8 +456,7 @@ static size_t visit_within(const struct kdtree *map, size_t node, const double x
         if (far <= n && delta * delta < bound)
             count += visit_within(map, far, x, bound, visit, context);
     }
-    double offsets[3];
-    double d2 = squared_distance(x, p, offsets);
+    double d2 = squared_distance(x, p);
     if (d2 < bound) {
         visit(context, p, d2);
         count++;
@@ -484,6 +473,6 @@ size_t for_each_photon_within(const struct kdtree *map, struct vec3 x, double r2
     if (map->n_photons == 0)
         return 0;
     double xs[3] = {x.x, x.y, x.z};
-    /* d2 <= r2 is d2 < the next double above r2, as in locate_photons_in_disc() */
+    /* d2 <= r2 is d2 < the next double above r2, as in locate_photons_of_kinds() */
     return visit_within(map, 1, xs, nextafter(r2, HUGE_VAL), visit, context);
 }

@@ -60,21 +60,15 @@ struct nearest {
 struct nearest *nearest_create(size_t k_max); /* k_max >= 1 */
 void nearest_free(struct nearest *nn);        /* NULL is a no-op */
 
-/* A k-nearest search with every option. The kind filter keeps only photons with one of
- * the given PHOTON_* flags (photon.h), so one map can answer for a class of light
+/* A k-nearest search of one class of light. The kind filter keeps only photons with one
+ * of the given PHOTON_* flags (photon.h), so one map can answer for a class of light
  * (Jensen 1996: the indirect photons of the global map; a single map's caustic photons).
- * The disc filter (Jensen 2001, Realistic Image
- * Synthesis Using Photon Mapping: the search sphere compressed to a disc) keeps only
- * photons within max_plane_distance of the plane through x with the given unit normal,
- * so that photons on a nearby surface behind x do not join an estimate at an edge or
- * corner, or on a thin wall. It selects photons; the search itself is unchanged. */
+ * It selects photons; the search itself is unchanged. */
 struct photon_query {
     struct vec3 x;             /* the query point                                    */
     double max_r2;             /* photons with |p - x|^2 <= max_r2 qualify; HUGE_VAL
                                   for no maximum radius; >= 0, not NaN               */
     size_t k;                  /* photons wanted, 1 <= k <= the scratch's k_max      */
-    struct vec3 normal;        /* unit normal of the disc's plane (filter on only)   */
-    double max_plane_distance; /* keep |(p - x) . normal| <= this; 0 turns it off    */
     unsigned kinds;            /* keep photons with (flags & kinds) != 0; 0 keeps all */
 };
 
@@ -86,9 +80,8 @@ struct photon_query {
 void locate_photons(const struct kdtree *map, struct vec3 x, double max_r2, size_t k,
                     struct nearest *nn);
 
-/* locate_photons() with the filters of q (the disc filter off when q->max_plane_distance
- * is 0, the kind filter when q->kinds is 0). */
-void locate_photons_in_disc(const struct kdtree *map, const struct photon_query *q,
+/* locate_photons() with the kind filter of q (off when q->kinds is 0). */
+void locate_photons_of_kinds(const struct kdtree *map, const struct photon_query *q,
                             struct nearest *nn);
 
 /* Puts the last search's photons in order of distance, nearest first (photon[] moved
