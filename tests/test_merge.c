@@ -57,6 +57,7 @@ static const char *const same_pixels_options[] = {
     "--mode 1996 --disc-coverage" /* the default */, "--mode 1994 --both-lobes" /* the default */,
     "--mode 1994 --glossy-gather" /* the default */,
     "--mode 1994 --glossy-photons" /* the default */,
+    "--mode 1994 --lobe-lights" /* the default */,
     "--mode 1996 --glossy-corner" /* the default */, "--mode 1994 --bounded-reach" /* the default */,
     "--mode 1996 --gradient-limit" /* the default */,
     "--mode 2008 --fit-radius --merge-hit-points --resample-emission --facing-test" /* the
@@ -77,6 +78,7 @@ static const char *const other_pixels_options[] = {
     "--mode 1996 --no-glossy-corner", "--mode 1994 --no-bounded-reach",
     "--mode 1996 --no-bounded-reach", "--mode 1994 --no-gradient-limit",
     "--mode 1994 --no-glossy-gather", "--mode 1994 --no-glossy-photons",
+    "--mode 1994 --no-lobe-lights",
     "--mode 1994 --differential 3", "--mode 1994 --light-samples 9",
     "--mode 1994 --irradiance-store illumination", "--mode 1994 --no-projection-maps",
     "--mode 2008 --passes 3", "--mode 2008 --photons-per-pass 7", "--mode 2008 --alpha 0.5",

@@ -167,10 +167,15 @@ double glossy_panel(const char *path)
                           "quad -100 0 -100 -100 0 100 100 0 100 100 0 -100 floor\n"
                           "quad -0.5 2 -0.5 0.5 2 -0.5 0.5 2 0.5 -0.5 2 0.5 panel\n"
                           "light point 0 1 0 1000 1000 1000\n");
+    return pt_mean_luminance(path, 16384);
+}
+
+double pt_mean_luminance(const char *path, int spp)
+{
     struct scene *scene = load_test_scene(path, 0, 0);
     if (scene == NULL)
         return -1.0;
-    struct render_settings rs = render_settings_whole(scene, 1, 16384, MAX_DEPTH_LIMIT);
+    struct render_settings rs = render_settings_whole(scene, 1, spp, MAX_DEPTH_LIMIT);
     struct render_counters counters = {0, 0, 0, 0, 0};
     struct error err;
     struct image *img = rendered_image(render_pt(scene, &rs, 0, NULL, &counters), &err);

@@ -93,6 +93,10 @@ double mean_luminance(const struct image *img);
  * light, as the caustic it is: about 12% of the image mean. */
 double glossy_panel(const char *path);
 
+/* The path tracer's image mean (luminance) of the scene file at path, at its own size,
+ * seed 1, spp samples a pixel; -1 when it cannot be rendered. */
+double pt_mean_luminance(const char *path, int spp);
+
 /* Whether every channel of every pixel is finite and not negative. */
 int finite_and_positive(const struct image *img);
 

@@ -166,6 +166,7 @@ void option_defaults(struct options *o)
     o->projection_maps = j94.projection_maps;
     o->glossy_gather = j94.glossy_gather;
     o->glossy_photons = j94.glossy_photons;
+    o->lobe_lights = j94.lobe_lights;
 }
 
 void mode_defaults(struct options *o)

@@ -188,6 +188,12 @@ static const struct option_spec specs[] = {
      "final gather (the default)", FOR_1994},
     {"--no-glossy-photons", OPT_FLAG, FIELD(glossy_photons), 0, 0, "",
      "evaluate them in full, with a final gather (the paper's)", FOR_1994},
+    {"--lobe-lights", OPT_FLAG, FIELD(lobe_lights), 0, 0, "",
+     "area lights and the sky are sampled through a glossy lobe of a surface the eye sees, "
+     "weighted against the lobe's own ray by the power heuristic (the default)", FOR_1994},
+    {"--no-lobe-lights", OPT_FLAG, FIELD(lobe_lights), 0, 0, "",
+     "the lobe's ray alone finds them (the paper's; point lights are sampled either way)",
+     FOR_1994},
     {"--glossy-gather", OPT_FLAG, FIELD(glossy_gather), 0, 0, "",
      "a diffuse-like part that is not Lambertian (Schlick's model, r >= 1/2) reflects what "
      "each camera sample gathers through its BRDF (the default)", FOR_1994},

@@ -92,8 +92,8 @@ static const struct {
 } as_written[] = {
     {MODE_PHOTONS, "--no-exclude-rim-photon"},
     {MODE_JENSEN1994, "--no-exclude-rim-photon --caustic-radius-fraction 1 --no-both-lobes "
-                       "--no-glossy-gather --no-glossy-photons --no-bounded-reach "
-                       "--no-gradient-limit"},
+                       "--no-glossy-gather --no-glossy-photons --no-lobe-lights "
+                       "--no-bounded-reach --no-gradient-limit"},
     {MODE_JENSEN1996, "--no-exclude-rim-photon --no-shadow-rays --no-precomputed-irradiance "
                        "--no-disc-coverage --caustic-radius-fraction 1 --no-both-lobes "
                        "--no-glossy-corner --no-bounded-reach --no-gradient-limit"},

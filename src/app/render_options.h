@@ -81,6 +81,7 @@ struct options {
     int bounded_reach;            /* 1994, 1996: cache records' R from the camera  */
     int glossy_gather;            /* 1994: non-Lambertian diffuse parts gather      */
     int glossy_photons;           /* 1994: seen through glossy lobes: photon map    */
+    int lobe_lights;              /* 1994: lights sampled through glossy lobes      */
     int gradient_limit;           /* 1994, 1996: cache records' R <= E / |grad E|  */
     double adaptive;              /* camera modes: adaptive sampling's relative error;
                                      0 = off                                       */

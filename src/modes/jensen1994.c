@@ -64,6 +64,15 @@
 
 /* ---- Sec. 4, pass 2: Monte Carlo ray tracing ---- */
 
+/* Where the last bounce left from, when it was a glossy lobe's ray whose lights were
+ * also sampled through that lobe (lights_through_lobe()): the emission it finds is
+ * weighted against those samples. */
+struct lobe_origin {
+    int weighted;     /* 1: the last bounce sampled lights through its lobe too          */
+    struct vec3 p, n; /* the point it left and its shading normal                        */
+    double pdf;       /* solid-angle pdf of the lobe's direction                         */
+};
+
 /* A path from the eye, or from a gather (whose surfaces read the irradiance stores). */
 struct path {
     struct vec3 beta; /* throughput since the eye or the gathering point                */
@@ -72,7 +81,9 @@ struct path {
                          glossy_photons a path through a glossy lobe) instead of gathering */
     int emission;     /* 1: it adds the emission it reaches (the eye's rays; a gather
                          ray's light through f_r,s is CP's)                               */
+    struct lobe_origin lobe; /* NO_LOBE but right after a glossy bounce from the eye    */
 };
+#define NO_LOBE {0, {0, 0, 0}, {0, 0, 0}, 0.0}
 
 struct jensen1994 {
     const struct scene *scene;
@@ -100,16 +111,24 @@ static struct vec3 trace_from(const struct jensen1994 *mode, const struct surfac
 
 /* -- 4.0.1 L_r,d,l: direct light -- */
 
+/* The k of the k x k strata add_light_samples() samples a light on: a point light, whose
+ * every sample is the same, 1. */
+static int light_strata_of(const struct jensen1994 *mode, const struct light *light)
+{
+    return light->kind == LIGHT_POINT ? 1 : mode->light_strata;
+}
+
 /* Light `light` sampled on a k x k grid of jittered strata of its sample space, through
- * `part`, with a shadow ray per sample; a point light, whose every sample is the same,
- * once. Adds the samples' mean to *sum. */
+ * `part`, with a shadow ray per sample. Adds the samples' mean to *sum, each weighted by
+ * the power heuristic against the ray a glossy lobe `lobe` samples (NULL: weight 1). */
 static void add_light_samples(const struct jensen1994 *mode, const struct light *light,
                               const struct surface *s, const struct material *part,
-                              const struct shading_frame *frame, struct rng *rng,
-                              struct render_counters *counters, struct vec3 *sum)
+                              const struct material *lobe, const struct shading_frame *frame,
+                              struct rng *rng, struct render_counters *counters,
+                              struct vec3 *sum)
 {
-    int k = light->kind == LIGHT_POINT ? 1 : mode->light_strata;
-    for (int j = 0; j < k * k; j++) {
+    int k = light_strata_of(mode, light), n = k * k;
+    for (int j = 0; j < n; j++) {
         double u1 = (j % k + rng_uniform(rng)) / k, u2 = (j / k + rng_uniform(rng)) / k;
         struct light_sample ls;
         struct vec3 contribution;
@@ -117,8 +136,12 @@ static void add_light_samples(const struct jensen1994 *mode, const struct light 
             continue;
         mode->stats->shadow_rays++;
         counters->rays++;
-        if (!light_blocked(mode->scene, s, &ls))
-            *sum = vec3_add(*sum, vec3_scale(contribution, 1.0 / (k * k)));
+        if (light_blocked(mode->scene, s, &ls))
+            continue;
+        double w = lobe == NULL ? 1.0
+                                : power_heuristic(n * ls.pdf,
+                                                  brdf_pdf(lobe, frame, s->wo, ls.wi));
+        *sum = vec3_add(*sum, vec3_scale(contribution, w / n));
     }
 }
 
@@ -130,27 +153,55 @@ static struct vec3 direct_light(const struct jensen1994 *mode, const struct surf
 {
     struct vec3 sum = vec3_zero();
     for (size_t i = 0; i < mode->scene->n_lights; i++)
-        add_light_samples(mode, &mode->scene->lights[i], s, diffuse, frame, rng, counters,
+        add_light_samples(mode, &mode->scene->lights[i], s, diffuse, NULL, frame, rng, counters,
                           &sum);
     return sum;
 }
 
-/* A departure without a switch: L_r,s is traced, and a traced ray never meets a point
- * light, a delta, so a glossy lobe's highlight of one would be lost (the sphere flake's
- * Phong spheres would be dark: src/modes/README.md); the point lights are sampled
- * through the glossy lobe too. */
-static struct vec3 point_lights_through_lobe(const struct jensen1994 *mode,
-                                             const struct surface *s,
-                                             const struct material *glossy,
-                                             const struct shading_frame *frame, struct rng *rng,
-                                             struct render_counters *counters)
+/* L_r,s is traced, and a traced ray never meets a point light, a delta, so a glossy
+ * lobe's highlight of one would be lost (the sphere flake's Phong spheres would be dark:
+ * src/modes/README.md); a departure without a switch samples the point lights through
+ * the glossy lobe too. Another, with lobe_lights (off: the paper's), samples every other
+ * light through it, each sample weighted by the power heuristic against the lobe's own
+ * ray, which finds the same light weighted the other way (emission_found()): a small
+ * light seen through a broad lobe is found by its samples, where the lobe's ray alone
+ * meets it rarely and brightly. */
+static struct vec3 lights_through_lobe(const struct jensen1994 *mode, const struct surface *s,
+                                       const struct material *glossy,
+                                       const struct shading_frame *frame, struct rng *rng,
+                                       struct render_counters *counters)
 {
     struct vec3 sum = vec3_zero();
-    for (size_t i = 0; i < mode->scene->n_lights; i++)
-        if (mode->scene->lights[i].kind == LIGHT_POINT)
-            add_light_samples(mode, &mode->scene->lights[i], s, glossy, frame, rng, counters,
-                              &sum);
+    for (size_t i = 0; i < mode->scene->n_lights; i++) {
+        const struct light *light = &mode->scene->lights[i];
+        if (light->kind == LIGHT_POINT)
+            add_light_samples(mode, light, s, glossy, NULL, frame, rng, counters, &sum);
+        else if (mode->settings->lobe_lights)
+            add_light_samples(mode, light, s, glossy, glossy, frame, rng, counters, &sum);
+    }
     return sum;
+}
+
+/* Emission le of light `light` (-1: none), found at q along unit wi by the ray of the
+ * path's last bounce: weighted against the light's samples through that bounce's lobe
+ * when it took them (lights_through_lobe()), else all of it. */
+static struct vec3 emission_found(const struct jensen1994 *mode, int light, struct vec3 le,
+                                  struct vec3 q, struct vec3 wi, const struct path *path)
+{
+    if (!path->lobe.weighted || light < 0 || vec3_max_component(le) <= 0)
+        return le;
+    const struct light *l = &mode->scene->lights[light];
+    int k = light_strata_of(mode, l);
+    double pdf_light = k * k * light_pdf(l, path->lobe.p, path->lobe.n, q, wi);
+    return vec3_scale(le, power_heuristic(path->lobe.pdf, pdf_light));
+}
+
+/* The emission a path finds at s. */
+static struct vec3 surface_emission_found(const struct jensen1994 *mode,
+                                          const struct surface *s, const struct path *path)
+{
+    return emission_found(mode, mode->scene->light_of_prim[s->prim], surface_emission(s), s->p,
+                          vec3_neg(s->wo), path);
 }
 
 /* The radiance the diffuse-like part reflects from the photons of estimate `is`: albedo
@@ -194,10 +245,15 @@ static struct vec3 caustic_light(const struct jensen1994 *mode, const struct sur
  * the photon map as a gather ray's end does, instead of a final gather for every ray of
  * every glossy bounce (on the sphere flake, whose Phong spheres see each other, half the
  * camera samples fell outside the cache's records and gathered on the spot). */
-static struct path after_bounce(const struct jensen1994 *mode, const struct brdf_sample *bs,
-                                struct path path)
+static struct path after_bounce(const struct jensen1994 *mode, const struct surface *s,
+                                const struct brdf_sample *bs, struct path path)
 {
     path.depth++;
+    /* on a path from the eye, lights_through_lobe() sampled the lights through this lobe */
+    path.lobe.weighted = !bs->delta && !path.secondary && mode->settings->lobe_lights;
+    path.lobe.p = s->p;
+    path.lobe.n = s->ns;
+    path.lobe.pdf = bs->pdf;
     if (!bs->delta)
         path.secondary = path.secondary || mode->settings->glossy_photons;
     return path;
@@ -214,7 +270,7 @@ static struct vec3 follow_lobe(const struct jensen1994 *mode, const struct surfa
     if (q < 1 && !(rng_uniform(rng) < q))
         return vec3_zero(); /* absorbed (always when q = 0) */
     path.beta = vec3_scale(path.beta, 1.0 / q);
-    path = after_bounce(mode, bs, path);
+    path = after_bounce(mode, s, bs, path);
     struct vec3 li = trace(mode, surface_ray(s, bs->wi, bs->transmitted), path, rng, counters);
     return vec3_mul(vec3_scale(bs->weight, 1.0 / q), li);
 }
@@ -285,7 +341,7 @@ static struct irradiance_record gather_record(const struct jensen1994 *mode,
                                               struct path path, struct rng *rng,
                                               struct render_counters *counters)
 {
-    struct path gather = {vec3(1, 1, 1), path.depth + 1, 1, 0};
+    struct path gather = {vec3(1, 1, 1), path.depth + 1, 1, 0, NO_LOBE};
     for (int j = 0; j < mode->strata_theta; j++)
         for (int k = 0; k < mode->strata_phi; k++) {
             struct vec3 wi;
@@ -309,7 +365,7 @@ static struct vec3 sample_gather(const struct jensen1994 *mode, const struct sur
                                  const struct shading_frame *frame, struct path path,
                                  struct rng *rng, struct render_counters *counters)
 {
-    struct path gather = {vec3(1, 1, 1), path.depth + 1, 1, 0};
+    struct path gather = {vec3(1, 1, 1), path.depth + 1, 1, 0, NO_LOBE};
     struct vec3 sum = vec3_zero();
     for (int j = 0; j < mode->sample_theta; j++)
         for (int k = 0; k < mode->sample_phi; k++) {
@@ -356,7 +412,7 @@ static struct vec3 eye_radiance(const struct jensen1994 *mode, const struct surf
 {
     struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
     struct brdf_split split = brdf_split(s->material);
-    struct vec3 l = surface_emission(s);
+    struct vec3 l = surface_emission_found(mode, s, &path);
     if (split.has_diffuse) {
         l = vec3_add(l, direct_light(mode, s, &split.diffuse, &frame, rng, counters));
         l = vec3_add(l, caustic_light(mode, s, &split.diffuse, &frame));
@@ -376,8 +432,8 @@ static struct vec3 eye_radiance(const struct jensen1994 *mode, const struct surf
     if (split.has_specular) {
         l = vec3_add(l, specular_light(mode, s, &split.specular, &frame, path, rng, counters));
         if (brdf_has_non_delta(&split.specular))
-            l = vec3_add(l, point_lights_through_lobe(mode, s, &split.specular, &frame, rng,
-                                                      counters));
+            l = vec3_add(l, lights_through_lobe(mode, s, &split.specular, &frame, rng,
+                                                counters));
     }
     return l;
 }
@@ -391,7 +447,7 @@ static struct vec3 secondary_radiance(const struct jensen1994 *mode, const struc
 {
     struct shading_frame frame = shading_frame_from_normal(s->ns, s->front, TRANSPORT_RADIANCE);
     struct brdf_split split = brdf_split(s->material);
-    struct vec3 l = path.emission ? surface_emission(s) : vec3_zero();
+    struct vec3 l = path.emission ? surface_emission_found(mode, s, &path) : vec3_zero();
     if (split.has_diffuse)
         l = vec3_add(l, stored_reflection(mode, s, &split.diffuse, &frame, &mode->all_photons));
     if (split.has_specular)
@@ -413,14 +469,16 @@ static struct vec3 trace(const struct jensen1994 *mode, struct ray ray, struct p
     struct surface s;
     double t;
     if (!ray_surface(mode->scene, ray, counters, &s, &t)) /* the sky, emission as any other */
-        return path.emission ? mode->scene->background : vec3_zero();
+        return path.emission ? emission_found(mode, mode->scene->sky, mode->scene->background,
+                                              ray.origin, ray.dir, &path)
+                             : vec3_zero();
     return trace_from(mode, &s, path, rng, counters);
 }
 
 static struct vec3 camera_ray_radiance(const void *mode, struct ray ray, struct rng *rng,
                                 struct render_counters *counters)
 {
-    struct path eye = {vec3(1, 1, 1), 0, 0, 1};
+    struct path eye = {vec3(1, 1, 1), 0, 0, 1, NO_LOBE};
     return trace(mode, ray, eye, rng, counters);
 }
 

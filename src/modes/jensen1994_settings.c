@@ -22,6 +22,7 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.both_lobes = 1;
     js.glossy_gather = 1;
     js.glossy_photons = 1;
+    js.lobe_lights = 1;
     js.bounded_reach = 1;
     js.gradient_limit = 1;
     js.projection_maps = 1;

@@ -53,6 +53,10 @@ struct jensen1994_settings {
                               "recursive Monte Carlo ray tracing"                       */
     int glossy_photons;    /* 1: surfaces seen through a glossy lobe read the photon map
                               (a departure); 0: evaluated in full, the paper's            */
+    int lobe_lights;       /* 1: area lights and the sky are sampled through a glossy lobe
+                              of f_r,s too, weighted against the lobe's traced ray by the
+                              power heuristic (a departure); 0: the traced ray alone finds
+                              them, the paper's                                         */
     int glossy_gather;     /* 1: a diffuse-like part that is not Lambertian reflects the
                               light each camera sample gathers through it (a departure);
                               0: albedo / pi times the cache's irradiance, the paper's   */

@@ -34,13 +34,6 @@ struct path_vertex {
     int delta;      /* whether it was a delta lobe (or the camera): no MIS         */
 };
 
-/* Veach 1997 Eq. 9.13 with beta = 2: the weight of strategy a against strategy b. */
-static double power_heuristic(double pdf_a, double pdf_b)
-{
-    double a2 = pdf_a * pdf_a, b2 = pdf_b * pdf_b;
-    return a2 + b2 > 0 ? a2 / (a2 + b2) : 0.0;
-}
-
 /* Next-event estimation: reflected radiance from one light sample, MIS-weighted. */
 static struct vec3 sample_one_light(const struct scene *scene, const struct surface *s,
                                     const struct shading_frame *frame, struct rng *rng,

@@ -122,6 +122,14 @@ static inline int light_contribution(const struct light *l, const struct surface
     return 1;
 }
 
+/* Veach 1997 Eq. 9.13 with beta = 2: the weight of strategy a against strategy b, each
+ * given as its number of samples times its solid-angle pdf of the same direction. */
+static inline double power_heuristic(double pdf_a, double pdf_b)
+{
+    double a2 = pdf_a * pdf_a, b2 = pdf_b * pdf_b;
+    return a2 + b2 > 0 ? a2 / (a2 + b2) : 0.0;
+}
+
 /* Whether the shadow ray of light sample ls from s is blocked (the sky's, of infinite
  * length, by anything). */
 static inline int light_blocked(const struct scene *scene, const struct surface *s,
