@@ -458,6 +458,18 @@ static double highlight_truth(const char *path, double alpha, double radius)
     return pt_mean_luminance(path, 8192);
 }
 
+/* Writes to path a floor of a Phong lobe alone (rho_s 0.6, exponent 20) under a white
+ * sky, nothing else; pt's image mean there, at 8,192 samples a pixel. */
+static double sky_lobe_truth(const char *path)
+{
+    write_text_file(path, "image 32 24\n"
+                          "background 1 1 1\n"
+                          "camera 0 3.4 -2.0  0 0 0.5  0 1 0  40\n"
+                          "material m phong 0 0 0  0.6 0.6 0.6  20\n"
+                          "quad -4 0 -4  -4 0 4  4 0 4  4 0 -4  m\n");
+    return pt_mean_luminance(path, 8192);
+}
+
 static double sample_sd(const double *x, int n)
 {
     struct tally tl = {0, 0, n};
@@ -477,13 +489,14 @@ static double sample_sd(const double *x, int n)
  *   1.0056, 1.0009, 1.0037, 0.9962, 0.9970 (sd 0.0039); without 0.971, 1.151, 0.621,
  *   0.803, 1.349, 1.060 (sd 0.26). A large light (0.6) under a sharp lobe (0.05), where
  *   the lobe's ray carries it: with lobe_lights mean 1.0046 (sd 0.021; without 1.0091, sd
- *   0.014), and 1.46 with the light samples at weight 1.
+ *   0.014), and 1.46 with the light samples at weight 1. A Phong lobe under a white sky,
+ *   which is sampled and found as a light too: seeds 1-4, 0.9988 to 1.0030.
  * tolerance: the small light, each seed within 2% (three times the largest deviation
  *   measured), and the spread over the seeds at most a tenth of that without (66 times
  *   smaller measured); the large light, the mean of the seeds within 3% (3.5 standard
- *   errors).
+ *   errors); the sky, each seed within 1% (three times the largest deviation).
  * catches: a light counted by both strategies at full weight (2x on the small light,
- *   1.46 on the large), lobe_lights ignored. */
+ *   1.46 on the large), the sky's escaping ray left unweighted, lobe_lights ignored. */
 static void test_lobe_lights(struct check *t)
 {
     char path[256];
@@ -507,6 +520,11 @@ static void test_lobe_lights(struct check *t)
             mean += with[i] / LOBE_SEEDS;
         CHECK_CLOSE(t, mean, 1.0, 0.03);
     }
+    truth = sky_lobe_truth(path);
+    ok = truth > 0 && lobe_ratios(path, truth, 1, with) == LOBE_SEEDS;
+    CHECK(t, ok);
+    for (int i = 0; ok && i < LOBE_SEEDS; i++)
+        CHECK_CLOSE(t, with[i], 1.0, 0.01);
     remove(path);
 }
 
