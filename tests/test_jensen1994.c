@@ -470,6 +470,7 @@ static double sky_lobe_truth(const char *path)
     return pt_mean_luminance(path, 8192);
 }
 
+/* The sample standard deviation of x[0..n-1] (tally_se() is sqrt(n) times it). */
 static double sample_sd(const double *x, int n)
 {
     struct tally tl = {0, 0, n};
