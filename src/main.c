@@ -23,6 +23,7 @@
 #include "base/alloc.h"
 #include "base/output.h"
 #include "image/compare.h"
+#include "image/error_image.h"
 #include "image/plot.h"
 #include "modes/direct.h"
 #include "modes/jensen1994.h"
@@ -105,6 +106,7 @@ static int prepare_run(struct run *run, struct error *err)
     run->rs.progress = show_progress(o->progress);
     run->rs.adaptive_error = o->adaptive;
     run->rs.min_spp = ADAPTIVE_MIN_SPP;
+    run->rs.error_confidence = o->error != NULL ? o->confidence : 0.0;
     if (choose_window(o, width, height, &run->rs, err) < 0)
         return -1;
     double eye_rays = (double)(run->rs.x1 - run->rs.x0) * (run->rs.y1 - run->rs.y0) * o->spp;
@@ -155,6 +157,8 @@ static int write_outputs(struct run *run, struct error *err)
     if (image_write_pair(o->output, o->display, run->result.image, o->exposure, err) < 0)
         return -1;
     if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
+        return -1;
+    if (o->error != NULL && pfm_write(o->error, run->result.error, err) < 0)
         return -1;
     if (o->has_crop && write_tile_record(run, err) < 0)
         return -1;
@@ -257,6 +261,19 @@ static void print_jensen1994_stats(const struct jensen1994_stats *stats)
             stats->strata_phi);
 }
 
+/* What the error image states (image/error_image.h): the relmse it expects against the
+ * truth, and the share of ERROR_BLOCK-wide blocks, dark ones aside, whose bound at the
+ * confidence is within 1% and 3% of their mean. */
+static void print_error_stats(const struct render_result *result, double confidence)
+{
+    struct error_summary s = error_summary(result->image, result->error, confidence);
+    fprintf(stderr, "confidence=%.6g\nestimated_relmse=%.6g\nbounded_blocks=%d\n",
+            confidence, s.relmse, s.n_blocks);
+    fprintf(stderr, "blocks_within_1pct=%.4f\nblocks_within_3pct=%.4f\n",
+            s.n_blocks > 0 ? (double)s.within_1 / s.n_blocks : 0.0,
+            s.n_blocks > 0 ? (double)s.within_3 / s.n_blocks : 0.0);
+}
+
 static void print_stats(const struct run *run)
 {
     const struct scene *scene = run->scene;
@@ -294,6 +311,8 @@ static void print_stats(const struct run *run)
         print_jensen1994_stats(&run->stats_1994);
     if (run->o.mode == MODE_JENSEN1996)
         print_jensen1996_stats(&run->stats_1996);
+    if (run->result.error != NULL)
+        print_error_stats(&run->result, run->o.confidence);
 }
 
 /* The settings both progressive modes read, from the options. */
@@ -352,6 +371,13 @@ static struct render_result render_mode(struct run *run, struct error *err)
     struct checkpoint snapshot = {write_snapshot, &run->o};
     switch (run->o.mode) {
     case MODE_PT:
+        if (pt_unreachable_light(run->scene) >= 0 && run->o.error != NULL) {
+            struct render_result none = {NULL, NULL, NULL, 0.0};
+            error_set(err, run->o.scene_path, 0, "--error: pt cannot find the caustics of "
+                      "this scene's point lights, and its bound cannot state light it never "
+                      "samples; 1996 and 2009 render them");
+            return none;
+        }
         if (pt_unreachable_light(run->scene) >= 0) {
             struct vec3 at = run->scene->lights[pt_unreachable_light(run->scene)].position;
             fprintf(stderr, "photon: warning: pt cannot find the caustics of point lights "
@@ -456,6 +482,8 @@ static int check_outputs(const struct options *o, struct error *err)
                        o->display == DISPLAY_PPM ? "the PPM beside -o" : "the PNG beside -o");
     if (o->variance != NULL)
         output_declare(o->variance, "--variance");
+    if (o->error != NULL)
+        output_declare(o->error, "--error");
     if (o->report != NULL)
         output_declare(o->report, "--report");
     if (o->save_photons != NULL)
@@ -516,6 +544,7 @@ int main(int argc, char **argv)
     run.reference = NULL;
     run.result.image = NULL;
     run.result.variance = NULL;
+    run.result.error = NULL;
     run.work.maps = NULL;
     run.work.records = NULL;
     run.work.illumination = NULL;

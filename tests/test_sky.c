@@ -14,29 +14,6 @@
 #include "tests.h"
 #include "truths.h"
 
-#define SKY_RHO 0.5   /* the floor's albedo                                   */
-#define SKY_LE 1.0    /* the sky's radiance                                   */
-#define SKY_A 0.5     /* the black sphere's radius ...                        */
-#define SKY_X 0.9     /* ... its centre's x ...                               */
-#define SKY_H 1.0     /* ... and its height over the floor                    */
-
-/* The closed form along camera ray r: 0 where it meets the black sphere (when there is
- * one), else the floor's radiance where it meets y = 0, else the sky's. */
-static double sky_truth(struct ray r, int sphere)
-{
-    struct vec3 oc = vec3_sub(r.origin, vec3(SKY_X, SKY_H, 0));
-    double b = vec3_dot(oc, r.dir), c = vec3_length2(oc) - SKY_A * SKY_A;
-    if (sphere && b * b - c >= 0 && -b - sqrt(b * b - c) > 0)
-        return 0.0;
-    if (!(r.dir.y < 0))
-        return SKY_LE;
-    struct vec3 x = vec3_madd(r.origin, r.dir, -r.origin.y / r.dir.y);
-    if (!sphere)
-        return SKY_RHO * SKY_LE;
-    double d = vec3_length(vec3_sub(x, vec3(SKY_X, SKY_H, 0)));
-    return SKY_RHO * SKY_LE * (1.0 - SKY_A * SKY_A * SKY_H / (d * d * d));
-}
-
 /* The closed form of pixel (x, y): the mean over its square, an 8 x 8 midpoint rule
  * (the sphere's outline is the only place it is not smooth). */
 static double pixel_truth(const struct scene *scene, int x, int y, int sphere)
@@ -44,8 +21,8 @@ static double pixel_truth(const struct scene *scene, int x, int y, int sphere)
     double sum = 0.0;
     for (int j = 0; j < 8; j++)
         for (int i = 0; i < 8; i++)
-            sum += sky_truth(camera_ray(&scene->camera, x + (i + 0.5) / 8, y + (j + 0.5) / 8),
-                             sphere);
+            sum += sky_over_floor(camera_ray(&scene->camera, x + (i + 0.5) / 8,
+                                             y + (j + 0.5) / 8), sphere);
     return sum / 64.0;
 }
 

@@ -55,6 +55,7 @@ void test_export_blender(struct check *t); /* test_export_blender.c: the Blender
 void test_outputs(struct check *t); /* test_outputs.c: outputs and inputs of a command */
 void test_numbers(struct check *t); /* test_numbers.c: numbers, ranges, messages       */
 void test_sky(struct check *t);     /* test_sky.c: the background as a light, every mode */
+void test_error(struct check *t);   /* test_error.c: error images against closed forms */
 void test_shading(struct check *t); /* test_shading.c: shading normals, every mode */
 void test_lens(struct check *t);    /* test_lens.c: the thin lens, its sequence, the defocused edge */
 

@@ -32,7 +32,24 @@ double area_over_floor(struct ray r)
         return fabs(q.x) <= 0.5 && fabs(q.z) <= 0.5 ? 10.0 : 0.0;
     }
     struct vec3 x = ray_at(r, -r.origin.y / r.dir.y);
+    if (fabs(x.x) > 50 || fabs(x.z) > 50)
+        return 0.0; /* past the floor's edge */
     return 0.5 * polygon_irradiance(light, 4, x, vec3(0, 1, 0), 10.0) / PI;
+}
+
+double sky_over_floor(struct ray r, int sphere)
+{
+    struct vec3 oc = vec3_sub(r.origin, vec3(SKY_X, SKY_H, 0));
+    double b = vec3_dot(oc, r.dir), c = vec3_length2(oc) - SKY_A * SKY_A;
+    if (sphere && b * b - c >= 0 && -b - sqrt(b * b - c) > 0)
+        return 0.0;
+    if (!(r.dir.y < 0))
+        return SKY_LE;
+    struct vec3 x = vec3_madd(r.origin, r.dir, -r.origin.y / r.dir.y);
+    if (!sphere)
+        return SKY_RHO * SKY_LE;
+    double d = vec3_length(vec3_sub(x, vec3(SKY_X, SKY_H, 0)));
+    return SKY_RHO * SKY_LE * (1.0 - SKY_A * SKY_A * SKY_H / (d * d * d));
 }
 
 struct scene *load_test_scene(const char *path, int width, int height)

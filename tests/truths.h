@@ -19,8 +19,22 @@ double polygon_irradiance(const struct vec3 *v, int count, struct vec3 p, struct
 
 /* The closed-form radiance camera ray r sees in scenes/analytic/area-over-floor.scene:
  * the light's Le where r meets the light square first, else rho E / pi of the floor
- * (E by polygon_irradiance()) (test_pt.c, test_ppm.c). */
+ * (E by polygon_irradiance()), 0 past the floor's edge (test_pt.c, test_ppm.c,
+ * test_error.c). */
 double area_over_floor(struct ray r);
+
+/* scenes/analytic/sky-plane.scene (sphere 0) and sky-over-floor.scene (sphere 1): a floor
+ * of albedo SKY_RHO under a sky of radiance SKY_LE, and in sky-over-floor a black sphere
+ * of radius SKY_A whose centre is SKY_H above the floor's point (SKY_X, 0, 0). The closed
+ * form along camera ray r: 0 where it meets the sphere (when there is one), else the
+ * floor's radiance where it meets y = 0, rho Le (1 - a^2 h / d^3) with the sphere (the
+ * scene file derives it), else the sky's (test_sky.c, test_error.c). */
+#define SKY_RHO 0.5
+#define SKY_LE 1.0
+#define SKY_A 0.5
+#define SKY_X 0.9
+#define SKY_H 1.0
+double sky_over_floor(struct ray r, int sphere);
 
 /* Whether every pixel of image, a render of scenes/analytic/point-over-plane.scene
  * (finished, same size), lies within the closed form L = rho Phi h / (4 pi^2 d^3) over its

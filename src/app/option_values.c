@@ -128,6 +128,7 @@ void option_defaults(struct options *o)
     o->max_depth = -1;
     o->progress = -1;
     o->exposure = 1.0;
+    o->confidence = 0.95;
     o->display = DISPLAY_PNG;
     o->photons = 0; /* the mode's default, set after parsing */
     o->gather = 0; /* the mode's default, set after parsing */

@@ -104,6 +104,12 @@ static const struct option_spec specs[] = {
      "write seconds,work,rmse,relmse at work 1, 2, 4, ... and at the end", FOR_ALL},
     {"--variance", OPT_FILE, FIELD(variance), 0, 0, "FILE.pfm",
      "also write each pixel's variance of the mean (needs --spp >= 2)", FOR_SAMPLES},
+    {"--error", OPT_FILE, FIELD(error), 0, 0, "FILE.pfm",
+     "also write each pixel's bound on |pixel - truth| at --confidence, from its samples' "
+     "and its 5 x 5 neighbours' spread (needs --spp >= 16)", FOR_PT},
+    {"--confidence", OPT_REAL_BETWEEN, FIELD(confidence), 0, 1, "C",
+     "the confidence of --error's bound: the truth is within it in a fraction C of the "
+     "pixels (default 0.95)", FOR_PT},
     {"--save-photons", OPT_FILE, FIELD(save_photons), 0, 0, "FILE",
      "also write the global work (photon maps, 1994's illumination "
      "maps, irradiance cache) to FILE, for --load-photons", FOR_PHOTON_MAPS},
@@ -613,7 +619,8 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
  * are hashed themselves: a preset and its words spelled out make the same tiles. */
 static const char *const outside_pixels[] = {
     "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure", "--reference",
-    "--report", "--variance", "--checkpoint", "--time-limit", "--save-photons",
+    "--report", "--variance", "--error", "--confidence", "--checkpoint", "--time-limit",
+    "--save-photons",
     "--load-photons", "--quality", "--paper",
 };
 

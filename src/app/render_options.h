@@ -52,6 +52,8 @@ struct options {
     const char *reference;        /* --reference REF.pfm, or NULL (borrowed)        */
     const char *report;           /* --report FILE.csv, or NULL (borrowed)          */
     const char *variance;         /* --variance FILE.pfm, or NULL (borrowed)        */
+    const char *error;            /* --error FILE.pfm, or NULL (borrowed)           */
+    double confidence;            /* --error's confidence, 0 < c < 1                */
     const char *save_photons;     /* --save-photons FILE, or NULL (borrowed)        */
     const char *load_photons;     /* --load-photons FILE, or NULL (borrowed)        */
     int photons;                  /* photon modes: photons emitted                 */

@@ -614,7 +614,7 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     stats->bytes_per_hit_point = sizeof(struct hit_point) + HIT_POINT_TREE_BYTES_PER_POINT;
     stats->hit_members = ppm.n_members;
     stats->initial_mean_radius = mean_radius(&ppm);
-    struct render_result result = {NULL, NULL, 0.0};
+    struct render_result result = {NULL, NULL, NULL, 0.0};
     result.image = image_create(ppm.width, ppm.height);
 
     /* The photon tracing passes, each followed by the new eye ray a pixel. */

@@ -20,6 +20,7 @@
 
 #include "../base/alloc.h"
 #include "../base/sequence02.h"
+#include "pixel_error.h"
 #include "surface.h"
 
 #define SPECULAR_PROBES 16     /* a pixel's probe rays: 16 x 16, 1/16 of a pixel apart, finds
@@ -28,7 +29,10 @@
                                   in a mirror ball is three                                */
 
 struct accumulator {
-    int width, height;       /* of the window                                            */
+    int x0, y0;              /* the window's top left pixel in the whole image           */
+    int width, height;       /* of the window: rs's, grown for an error image's pool     */
+    int out_x0, out_y0;      /* rs's window, the one written, within this one ...       */
+    int out_width, out_height; /* ... and its size                                      */
     double *sum;             /* owned: 3 per pixel, row-major                            */
     double *sum2;            /* owned or NULL: squares, for the variance image           */
     double *lum;             /* owned, or NULL when adaptive sampling is off: 2 per pixel,
@@ -147,9 +151,9 @@ static void set_targets(const struct scene *scene, const struct render_settings 
     acc->most = rs->spp;
     acc->n_specular = 0;
     acc->n_target = 0;
-    for (int y = rs->y0; y < rs->y1; y++)
-        for (int x = rs->x0; x < rs->x1; x++) {
-            size_t i = (size_t)(y - rs->y0) * (size_t)acc->width + (size_t)(x - rs->x0);
+    for (int y = acc->y0; y < acc->y0 + acc->height; y++)
+        for (int x = acc->x0; x < acc->x0 + acc->width; x++) {
+            size_t i = (size_t)(y - acc->y0) * (size_t)acc->width + (size_t)(x - acc->x0);
             acc->target[i] = rs->spp;
             if (rs->specular_spp > rs->spp &&
                 pixel_sees_light_through_specular(scene, x, y, counters)) {
@@ -190,9 +194,9 @@ static void render_pass(const struct scene *scene, const struct render_settings 
                         struct render_counters *counters)
 {
     acc->n_active = 0;
-    for (int y = rs->y0; y < rs->y1; y++)
-        for (int x = rs->x0; x < rs->x1; x++) {
-            size_t i = (size_t)(y - rs->y0) * (size_t)acc->width + (size_t)(x - rs->x0);
+    for (int y = acc->y0; y < acc->y0 + acc->height; y++)
+        for (int x = acc->x0; x < acc->x0 + acc->width; x++) {
+            size_t i = (size_t)(y - acc->y0) * (size_t)acc->width + (size_t)(x - acc->x0);
             /* n[i] < s: stopped earlier (the rule, reading the same sums, would say so
              * again; this test is cheaper), or its target is reached, or the rule stops
              * it now. */
@@ -209,23 +213,32 @@ static void render_pass(const struct scene *scene, const struct render_settings 
         }
 }
 
-/* Each pixel's mean over its own n[i] samples; n[i] >= 1 once a pass has run, because no
- * pixel stops before min_spp >= 2 samples. */
+/* The index in acc of pixel k of the window written (rs's), row-major. */
+static size_t written_pixel(const struct accumulator *acc, size_t k)
+{
+    size_t x = k % (size_t)acc->out_width, y = k / (size_t)acc->out_width;
+    return (y + (size_t)acc->out_y0) * (size_t)acc->width + x + (size_t)acc->out_x0;
+}
+
+/* Each written pixel's mean over its own n[i] samples; n[i] >= 1 once a pass has run,
+ * because no pixel stops before min_spp >= 2 samples. */
 static void mean_image(const struct accumulator *acc, struct image *mean)
 {
-    for (size_t i = 0; i < (size_t)acc->width * (size_t)acc->height; i++) {
+    for (size_t k = 0; k < (size_t)acc->out_width * (size_t)acc->out_height; k++) {
+        size_t i = written_pixel(acc, k);
         int n = acc->n[i];
-        mean->pixels[i] = vec3(acc->sum[3 * i] / n, acc->sum[3 * i + 1] / n,
+        mean->pixels[k] = vec3(acc->sum[3 * i] / n, acc->sum[3 * i + 1] / n,
                                acc->sum[3 * i + 2] / n);
     }
 }
 
-/* The variance of each pixel's mean of its n = n[i] samples: s^2 / n,
+/* The variance of each written pixel's mean of its n = n[i] samples: s^2 / n,
  * s^2 = (sum2 - n mean^2) / (n - 1); 0 where n < 2. */
 static struct image *variance_image(const struct accumulator *acc)
 {
-    struct image *var = image_create(acc->width, acc->height);
-    for (size_t i = 0; i < (size_t)acc->width * (size_t)acc->height; i++) {
+    struct image *var = image_create(acc->out_width, acc->out_height);
+    for (size_t k = 0; k < (size_t)acc->out_width * (size_t)acc->out_height; k++) {
+        size_t i = written_pixel(acc, k);
         int n = acc->n[i];
         if (n < 2)
             continue;
@@ -235,9 +248,17 @@ static struct image *variance_image(const struct accumulator *acc)
             double s2 = (acc->sum2[3 * i + c] - n * mean * mean) / (n - 1.0);
             v[c] = fmax(0.0, s2) / n; /* rounding can make s2 slightly negative */
         }
-        var->pixels[i] = vec3(v[0], v[1], v[2]);
+        var->pixels[k] = vec3(v[0], v[1], v[2]);
     }
     return var;
+}
+
+/* The error image of the written window (pixel_error.h), from all of acc's pixels. */
+static struct image *error_image(const struct accumulator *acc, double confidence)
+{
+    struct pixel_sums sums = {acc->width, acc->height, acc->sum, acc->sum2, acc->n};
+    return pooled_error_image(&sums, acc->out_x0, acc->out_y0, acc->out_x0 + acc->out_width,
+                              acc->out_y0 + acc->out_height, confidence);
 }
 
 /* The checkpoint's work (render.h): samples per pixel of the window, rounded to nearest. */
@@ -283,9 +304,13 @@ static int run_passes(const struct scene *scene, const struct render_settings *r
 {
     double excluded = 0.0, last_shown = 0.0;
     int passes = 0, checked = 0;
-    struct image *mean = checkpoint != NULL ? image_create(acc->width, acc->height) : NULL;
+    struct image *mean = checkpoint != NULL ? image_create(acc->out_width, acc->out_height)
+                                            : NULL;
+    /* an error image needs ERROR_MIN_SPP samples of every pixel, time limit or not */
+    int first_passes = rs->error_confidence > 0 ? ERROR_MIN_SPP : 1;
     while (passes < acc->most &&
-           !(passes > 0 && rs->time_limit > 0 && cpu_seconds(start) - excluded >= rs->time_limit)) {
+           !(passes >= first_passes && rs->time_limit > 0 &&
+             cpu_seconds(start) - excluded >= rs->time_limit)) {
         render_pass(scene, rs, est, passes, acc, counters);
         if (acc->n_active == 0)
             break; /* the adaptive rule has stopped every pixel still below its target */
@@ -296,7 +321,7 @@ static int run_passes(const struct scene *scene, const struct render_settings *r
             last_shown = *seconds;
         }
         int last = passes == acc->most ||
-                   (rs->time_limit > 0 && *seconds >= rs->time_limit);
+                   (passes >= first_passes && rs->time_limit > 0 && *seconds >= rs->time_limit);
         if (mean != NULL && (is_power_of_two(passes) || last)) {
             mean_image(acc, mean);
             excluded += checkpoint->at(checkpoint->context, mean, samples_per_pixel(acc),
@@ -322,12 +347,22 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
     int adaptive = rs->adaptive_error > 0;
     assert(!adaptive || (isfinite(rs->adaptive_error) && rs->min_spp >= 2 &&
                          is_power_of_two(rs->min_spp)));
+    int want_error = rs->error_confidence > 0;
+    assert(!want_error || (rs->error_confidence < 1 && rs->spp >= ERROR_MIN_SPP && !adaptive));
     struct accumulator acc;
-    acc.width = rs->x1 - rs->x0;
-    acc.height = rs->y1 - rs->y0;
+    int margin = want_error ? ERROR_POOL_RADIUS : 0; /* the pool's pixels beyond rs's window */
+    acc.x0 = rs->x0 > margin ? rs->x0 - margin : 0;
+    acc.y0 = rs->y0 > margin ? rs->y0 - margin : 0;
+    acc.width = (rs->x1 + margin < scene->width ? rs->x1 + margin : scene->width) - acc.x0;
+    acc.height = (rs->y1 + margin < scene->height ? rs->y1 + margin : scene->height) - acc.y0;
+    acc.out_x0 = rs->x0 - acc.x0;
+    acc.out_y0 = rs->y0 - acc.y0;
+    acc.out_width = rs->x1 - rs->x0;
+    acc.out_height = rs->y1 - rs->y0;
     size_t n = (size_t)acc.width * (size_t)acc.height;
     acc.sum = xcalloc(3 * n, sizeof *acc.sum, "pixel sums");
-    acc.sum2 = want_variance ? xcalloc(3 * n, sizeof *acc.sum2, "pixel squares") : NULL;
+    acc.sum2 = want_variance || want_error ? xcalloc(3 * n, sizeof *acc.sum2, "pixel squares")
+                                           : NULL;
     acc.lum = adaptive ? xcalloc(2 * n, sizeof *acc.lum, "pixel luminance sums") : NULL;
     acc.n = xcalloc(n, sizeof *acc.n, "pixel sample counts");
     acc.target = xcalloc(n, sizeof *acc.target, "pixel sample targets");
@@ -341,9 +376,10 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
                                   &result.seconds);
     counters->samples += acc.n_samples;
     counters->specular_pixels = acc.n_specular;
-    result.image = image_create(acc.width, acc.height);
+    result.image = image_create(acc.out_width, acc.out_height);
     mean_image(&acc, result.image);
     result.variance = want_variance ? variance_image(&acc) : NULL;
+    result.error = want_error ? error_image(&acc, rs->error_confidence) : NULL;
     xfree(acc.target);
     xfree(acc.n);
     xfree(acc.lum);
@@ -356,6 +392,8 @@ void render_result_free(struct render_result *result)
 {
     image_free(result->image);
     image_free(result->variance);
+    image_free(result->error);
     result->image = NULL;
     result->variance = NULL;
+    result->error = NULL;
 }

@@ -84,6 +84,10 @@ struct render_settings {
     int specular_spp;   /* when more than spp: the samples, in place of spp, of a pixel
                            in which the camera sees a light through mirrors or glass;
                            otherwise those take spp too                                  */
+    double error_confidence; /* 0: no error image; else its confidence c, 0 < c < 1, with
+                                spp >= ERROR_MIN_SPP and adaptive sampling off
+                                (pixel_error.h); every pixel then takes at least
+                                ERROR_MIN_SPP samples, whatever the time limit            */
 };
 
 /* Radiance arriving at the camera along ray, estimated by a mode from its own state. */
@@ -124,7 +128,8 @@ struct checkpoint {
     void *context;
 };
 
-/* What a render produces: the mean and, optionally, the variance of that mean. */
+/* What a render produces: the mean and, optionally, the variance of that mean and a bound
+ * on its error. */
 struct render_result {
     struct image *image;    /* owned: mean radiance over each pixel                       */
     struct image *variance; /* owned or NULL: per pixel and channel, the variance of the
@@ -132,6 +137,8 @@ struct render_result {
                                pixel's own sample count (0 when n < 2); it treats the
                                stratified camera points as independent, so at edges it
                                is typically an over-estimate                               */
+    struct image *error;    /* owned or NULL: with rs->error_confidence, each pixel's bound
+                               on |image - truth| at that confidence (pixel_error.h)      */
     double seconds;         /* CPU seconds rendering, checkpoint work excluded            */
 };
 

@@ -454,7 +454,7 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     hit_point_grid_build(&sppm.grid, sppm.points, 0);
     if (!common->direct_photons)
         ppm_direct_create(&sppm.direct, scene, rs);
-    struct render_result result = {NULL, NULL, 0.0};
+    struct render_result result = {NULL, NULL, NULL, 0.0};
     result.image = image_create(sppm.width, rs->y1 - rs->y0);
 
     /* Each pass: the distributed ray tracing pass, the photon tracing pass, the update. */

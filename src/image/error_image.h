@@ -1,0 +1,43 @@
+/*
+ * image/error_image.h -- what an error image states of a block of pixels and of the
+ * whole image: the bounds --stats reports and --target-error renders to.
+ *
+ * An error image holds, per pixel and channel, a bound B on |pixel - truth| at a
+ * confidence c, of noise alone: B = z_c sigma, sigma the standard error of the pixel's
+ * mean, independent from pixel to pixel (pt: modes/pixel_error.h). A pixel's luminance
+ * (vec3_luminance's weights w) is bounded by sum_c w_c B_c, its channels being one
+ * estimate's and so correlated; the mean of a block of n pixels by
+ *     B_block = sqrt(sum over the pixels of (sum_c w_c B_c)^2) / n,
+ * their noise adding in quadrature (z_c sigma_block, the same confidence). A block is
+ * within E when B_block <= E times its mean luminance; blocks whose mean luminance is
+ * below ERROR_DARK_FLOOR are left out, as dark as the adaptive rule's floor
+ * (modes/render.h), where no one sees a relative error.
+ */
+#ifndef PHOTON_ERROR_IMAGE_H
+#define PHOTON_ERROR_IMAGE_H
+
+#include "image.h"
+
+#define ERROR_BLOCK 16         /* the side of the blocks --stats and --target-error judge */
+#define ERROR_DARK_FLOOR 1e-3  /* mean luminance below which a block is left out          */
+
+/* Block (x0, y0) of size ERROR_BLOCK (smaller at the right and bottom edges) of image
+ * and error (same size): its mean luminance and the bound on it. */
+struct block_bound {
+    double mean, bound;
+};
+struct block_bound block_bound(const struct image *image, const struct image *error, int x0,
+                               int y0);
+
+/* What --stats says of an error image at confidence c. */
+struct error_summary {
+    double relmse;       /* estimated: the mean over pixels and channels of
+                            sigma^2 / (pixel^2 + 1e-2), sigma = B / z_c: what `photon
+                            compare`'s relmse against the truth would be, in expectation */
+    int n_blocks;        /* blocks at or above ERROR_DARK_FLOOR                          */
+    int within_1, within_3; /* of them, those within 1% and 3% of their mean             */
+};
+struct error_summary error_summary(const struct image *image, const struct image *error,
+                                   double confidence);
+
+#endif

@@ -1,0 +1,196 @@
+/*
+ * tests/test_error.c -- the error image (--error) against closed forms: how often the
+ * truth lies within the stated bound (coverage) and how much wider than the error the
+ * bound is (sharpness: rms(bound) / rms(image - truth)), the words of the README's "How
+ * far from the truth"; a crop's error image; the refusals.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "../src/base/alloc.h"
+#include "../src/modes/pixel_error.h"
+#include "../src/modes/pt.h"
+#include "files.h"
+#include "tests.h"
+#include "truths.h"
+
+#define OUT "/tmp/photon_test_error"
+
+static double sky_over_floor_with_sphere(struct ray r)
+{
+    return sky_over_floor(r, 1);
+}
+
+/* The truth of pixel (x, y): the mean of along() over its square, a 16 x 16 midpoint
+ * rule. */
+static double pixel_truth(const struct scene *scene, int x, int y, double (*along)(struct ray))
+{
+    double sum = 0.0;
+    for (int j = 0; j < 16; j++)
+        for (int i = 0; i < 16; i++)
+            sum += along(camera_ray(&scene->camera, x + (i + 0.5) / 16, y + (j + 0.5) / 16));
+    return sum / 256.0;
+}
+
+#define SHARPNESS_BLOCK 8
+
+struct coverage {
+    double covered;   /* fraction of pixels and channels with |image - truth| <= bound */
+    double sharpness; /* median over SHARPNESS_BLOCK-wide blocks of rms(bound) /
+                         rms(image - truth) in the block (ERROR.md): rms over the whole
+                         image weighs the brightest pixels alone                        */
+    double rms_ratio; /* rms(bound) / rms(image - truth) over the whole image           */
+};
+
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* pt's image and error image at 0.95 of the scene at path, width x height, against the
+ * closed form along(); pixels whose truth is 0 (the black sphere, where pt's samples are
+ * all exactly 0 too) say nothing and are left out. */
+static struct coverage pt_coverage(const char *path, int width, int height, int spp,
+                                   uint64_t seed, double (*along)(struct ray))
+{
+    struct coverage cover = {0.0, 0.0, 0.0};
+    struct scene *scene = load_test_scene(path, width, height);
+    if (scene == NULL)
+        return cover;
+    struct render_settings rs = render_settings_whole(scene, seed, spp, MAX_DEPTH_LIMIT);
+    rs.error_confidence = 0.95;
+    struct render_counters counters = {0};
+    struct render_result result = render_pt(scene, &rs, 0, NULL, &counters);
+    int bw = (width + SHARPNESS_BLOCK - 1) / SHARPNESS_BLOCK;
+    int bh = (height + SHARPNESS_BLOCK - 1) / SHARPNESS_BLOCK;
+    double *block_b2 = xcalloc((size_t)(2 * bw * bh), sizeof *block_b2, "test blocks");
+    double *block_e2 = block_b2 + bw * bh;
+    double n = 0, within = 0, bound2 = 0, error2 = 0;
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++) {
+            double truth = pixel_truth(scene, x, y, along);
+            if (truth == 0)
+                continue;
+            int k = y / SHARPNESS_BLOCK * bw + x / SHARPNESS_BLOCK;
+            for (int c = 0; c < 3; c++) {
+                double e = vec3_get(image_get(result.image, x, y), c) - truth;
+                double b = vec3_get(image_get(result.error, x, y), c);
+                n++;
+                within += fabs(e) <= b;
+                bound2 += b * b;
+                error2 += e * e;
+                block_b2[k] += b * b;
+                block_e2[k] += e * e;
+            }
+        }
+    int n_blocks = 0;
+    for (int k = 0; k < bw * bh; k++)
+        if (block_e2[k] > 0)
+            block_b2[n_blocks++] = sqrt(block_b2[k] / block_e2[k]);
+    qsort(block_b2, (size_t)n_blocks, sizeof *block_b2, by_value);
+    cover.covered = within / n;
+    cover.sharpness = block_b2[n_blocks / 2];
+    cover.rms_ratio = sqrt(bound2 / error2);
+    xfree(block_b2);
+    render_result_free(&result);
+    scene_free(scene);
+    return cover;
+}
+
+/* truth: the closed forms of sky-over-floor (the sky's light, a sliver of which the sphere
+ *   hides: rare samples) and area-over-floor (a square light over a floor, seen in the
+ *   top rows), pixel means by a 16 x 16 midpoint rule; seeds the bound was not measured
+ *   on (pixel_error.h's figures are seeds 1-11).
+ * tolerance: the truth within the 95% bound in at least 0.95 of the pixels and channels,
+ *   and the bound at most 3 times the error's rms (ERROR.md: a bound a user can use).
+ * catches: a bound from the pixel's own samples alone (0.57 of sky-over-floor's pixels at
+ *   16 samples, 0.83 at 64), pooled over 3 x 3 pixels (0.95, borderline), a missing
+ *   sqrt or 1/n (coverage near 1 and sharpness far above 3, or near 0), a standard
+ *   error without z_c (coverage ~0.68). */
+static void test_pt_bound_covers_closed_forms(struct check *t)
+{
+    static const struct {
+        const char *path;
+        double (*along)(struct ray);
+        int width, height, spp;
+        uint64_t seed;
+    } cases[] = {
+        {"scenes/analytic/sky-over-floor.scene", sky_over_floor_with_sphere, 64, 48, 16, 101},
+        {"scenes/analytic/sky-over-floor.scene", sky_over_floor_with_sphere, 64, 48, 64, 102},
+        {"scenes/analytic/sky-over-floor.scene", sky_over_floor_with_sphere, 32, 24, 256, 103},
+        {"scenes/analytic/area-over-floor.scene", area_over_floor, 48, 48, 16, 104},
+        {"scenes/analytic/area-over-floor.scene", area_over_floor, 48, 48, 64, 105},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        struct coverage c = pt_coverage(cases[k].path, cases[k].width, cases[k].height,
+                                        cases[k].spp, cases[k].seed, cases[k].along);
+        printf("  error: pt %s, %d spp: truth within the 95%% bound in %.3f; "
+               "rms(bound)/rms(error) %.2f, median over 8 x 8 blocks %.2f\n", cases[k].path,
+               cases[k].spp, c.covered, c.rms_ratio, c.sharpness);
+        CHECK(t, c.covered >= 0.95);
+        CHECK(t, c.sharpness <= 3.0);
+    }
+}
+
+/* truth: the whole image's error image, rendered apart.
+ * tolerance: none: the crop's is its window, bit for bit (render.h's promise, which the
+ *   pool of pixel_error.h must keep by sampling the pixels beyond the crop's edge).
+ * catches: a pool cut at the crop's edge (its border pixels pool over fewer
+ *   neighbours), a margin sampled with the wrong pixel's streams. */
+static void test_crop_error_is_window(struct check *t)
+{
+    struct scene *scene = load_test_scene("scenes/analytic/sky-over-floor.scene", 40, 30);
+    REQUIRE(t, scene != NULL);
+    static const int window[4] = {7, 5, 26, 21};
+    struct render_settings whole = render_settings_whole(scene, 5, ERROR_MIN_SPP,
+                                                         MAX_DEPTH_LIMIT);
+    whole.error_confidence = 0.9;
+    struct render_settings crop = case_settings(scene, 5, ERROR_MIN_SPP, window);
+    crop.error_confidence = 0.9;
+    struct render_counters counters = {0};
+    struct render_result a = render_pt(scene, &whole, 0, NULL, &counters);
+    struct render_result b = render_pt(scene, &crop, 0, NULL, &counters);
+    CHECK(t, crop_is_window(a.image, b.image, window));
+    CHECK(t, crop_is_window(a.error, b.error, window));
+    render_result_free(&a);
+    render_result_free(&b);
+    scene_free(scene);
+}
+
+/* truth: the README's rules for --error and --confidence.
+ * tolerance: exit status 2, the message, and no file left.
+ * catches: a bound stated where the samples are too few to see rare values, where a
+ *   rule or a depth limit biases the pixel, for a mode that states none, or a
+ *   --confidence that nothing reads. */
+static void test_error_refusals(struct check *t)
+{
+    static const char *const bad[][2] = {
+        {"--spp 8 --error " OUT "_e.pfm", "--error: needs --spp >= 16"},
+        {"--spp 16 --adaptive 0.1 --error " OUT "_e.pfm", "--error: not with --adaptive"},
+        {"--spp 16 --max-depth 3 --error " OUT "_e.pfm", "--error: not with --max-depth 3"},
+        {"--spp 16 --confidence 0.9", "--confidence: does nothing with no --error"},
+        {"--spp 16 --error " OUT "_e.pfm --confidence 1", "--confidence"},
+    };
+    CHECK(t, refuses_options("pt", bad, sizeof bad / sizeof bad[0], OUT) == 0);
+    static const char *const not_pt[][2] = {
+        {"--error " OUT "_e.pfm", "--error: only for --mode pt"},
+    };
+    CHECK(t, refuses_options("2009", not_pt, 1, OUT) == 0);
+    CHECK(t, !file_exists(OUT "_e.pfm"));
+    /* a point light's caustic pt never samples: no bound can state it */
+    CHECK(t, photon_logged("", "--mode pt --spp 16 --width 8 --height 8 --error " OUT
+                           "_e.pfm -o " OUT ".pfm scenes/mirror-caustic.scene",
+                           OUT ".log") == 2);
+    CHECK(t, file_contains(OUT ".log", "--error: pt cannot find the caustics"));
+    CHECK(t, !file_exists(OUT "_e.pfm") && !file_exists(OUT ".pfm"));
+    remove(OUT ".log");
+}
+
+void test_error(struct check *t)
+{
+    RUN_TEST(t, test_pt_bound_covers_closed_forms);
+    RUN_TEST(t, test_crop_error_is_window);
+    RUN_TEST(t, test_error_refusals);
+}
