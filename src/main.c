@@ -106,7 +106,8 @@ static int prepare_run(struct run *run, struct error *err)
     run->rs.progress = show_progress(o->progress);
     run->rs.adaptive_error = o->adaptive;
     run->rs.min_spp = ADAPTIVE_MIN_SPP;
-    run->rs.error_confidence = o->error != NULL ? o->confidence : 0.0;
+    run->rs.error_confidence = o->error != NULL || o->target_error > 0 ? o->confidence : 0.0;
+    run->rs.target_error = o->target_error;
     if (choose_window(o, width, height, &run->rs, err) < 0)
         return -1;
     double eye_rays = (double)(run->rs.x1 - run->rs.x0) * (run->rs.y1 - run->rs.y0) * o->spp;
@@ -264,9 +265,10 @@ static void print_jensen1994_stats(const struct jensen1994_stats *stats)
 /* What the error image states (image/error_image.h): the relmse it expects against the
  * truth, and the share of ERROR_BLOCK-wide blocks, dark ones aside, whose bound at the
  * confidence is within 1% and 3% of their mean. */
-static void print_error_stats(const struct render_result *result, double confidence)
+static void print_error_stats(const struct render_result *result, double confidence, int x0,
+                              int y0)
 {
-    struct error_summary s = error_summary(result->image, result->error, confidence);
+    struct error_summary s = error_summary(result->image, result->error, confidence, x0, y0);
     fprintf(stderr, "confidence=%.6g\nestimated_relmse=%.6g\nbounded_blocks=%d\n",
             confidence, s.relmse, s.n_blocks);
     fprintf(stderr, "blocks_within_1pct=%.4f\nblocks_within_3pct=%.4f\n",
@@ -312,7 +314,10 @@ static void print_stats(const struct run *run)
     if (run->o.mode == MODE_JENSEN1996)
         print_jensen1996_stats(&run->stats_1996);
     if (run->result.error != NULL)
-        print_error_stats(&run->result, run->o.confidence);
+        print_error_stats(&run->result, run->o.confidence, run->rs.x0, run->rs.y0);
+    if (run->o.target_error > 0)
+        fprintf(stderr, "target_blocks=%d\ntarget_blocks_within=%d\n", c->target_blocks,
+                c->target_within);
 }
 
 /* The settings both progressive modes read, from the options. */
@@ -371,11 +376,12 @@ static struct render_result render_mode(struct run *run, struct error *err)
     struct checkpoint snapshot = {write_snapshot, &run->o};
     switch (run->o.mode) {
     case MODE_PT:
-        if (pt_unreachable_light(run->scene) >= 0 && run->o.error != NULL) {
+        if (pt_unreachable_light(run->scene) >= 0 && run->rs.error_confidence > 0) {
             struct render_result none = {NULL, NULL, NULL, 0.0};
-            error_set(err, run->o.scene_path, 0, "--error: pt cannot find the caustics of "
-                      "this scene's point lights, and its bound cannot state light it never "
-                      "samples; 1996 and 2009 render them");
+            error_set(err, run->o.scene_path, 0, "%s: pt cannot find the caustics of this "
+                      "scene's point lights, and its bound cannot state light it never "
+                      "samples; 1996 and 2009 render them",
+                      run->o.error != NULL ? "--error" : "--target-error");
             return none;
         }
         if (pt_unreachable_light(run->scene) >= 0) {
@@ -493,6 +499,19 @@ static int check_outputs(const struct options *o, struct error *err)
     return outputs_check(err);
 }
 
+/* With --target-error: the blocks that ended short of it (the time limit or --spp came
+ * first), named by the first. */
+static void report_target(const struct run *run)
+{
+    const struct render_counters *c = &run->counters;
+    if (run->o.target_error == 0 || c->target_within == c->target_blocks)
+        return;
+    fprintf(stderr, "photon: --target-error %g: %d of %d blocks not within it after %d "
+            "samples per pixel, the first at (%d, %d)\n", run->o.target_error,
+            c->target_blocks - c->target_within, c->target_blocks, c->passes,
+            c->target_missed_x, c->target_missed_y);
+}
+
 static int render_command(struct run *run, struct error *err)
 {
     if (check_outputs(&run->o, err) < 0 || prepare_run(run, err) < 0)
@@ -505,6 +524,7 @@ static int render_command(struct run *run, struct error *err)
     run->result = render_mode(run, err);
     if (run->result.image == NULL)
         return 2;
+    report_target(run);
     if (write_outputs(run, err) < 0 ||
         (run->reference != NULL && report_close(&run->report, err) < 0) ||
         outputs_publish(err) < 0 || (!run->o.has_crop && tile_record_remove(run->o.output,

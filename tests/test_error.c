@@ -9,6 +9,7 @@
 #include <stdlib.h>
 
 #include "../src/base/alloc.h"
+#include "../src/image/error_image.h"
 #include "../src/modes/pixel_error.h"
 #include "../src/modes/pt.h"
 #include "files.h"
@@ -159,6 +160,73 @@ static void test_crop_error_is_window(struct check *t)
     scene_free(scene);
 }
 
+/* Renders sky-over-floor at 128 x 96 (seed 201) to target error e at most 4096 samples;
+ * the fraction of its 16 x 16 blocks whose mean is within e of the closed form's, and the
+ * passes it took in *passes. */
+static double target_render(double e, int *passes, int *all_within)
+{
+    struct scene *scene = load_test_scene("scenes/analytic/sky-over-floor.scene", 128, 96);
+    if (scene == NULL)
+        return 0.0;
+    struct render_settings rs = render_settings_whole(scene, 201, 4096, MAX_DEPTH_LIMIT);
+    rs.error_confidence = 0.95;
+    rs.target_error = e;
+    struct render_counters counters = {0};
+    struct render_result result = render_pt(scene, &rs, 0, NULL, &counters);
+    int blocks = 0, within = 0;
+    for (int by = 0; by < 96; by += 16)
+        for (int bx = 0; bx < 128; bx += 16) {
+            double mean = 0.0, truth = 0.0;
+            for (int y = by; y < by + 16; y++)
+                for (int x = bx; x < bx + 16; x++) {
+                    mean += vec3_luminance(image_get(result.image, x, y));
+                    truth += pixel_truth(scene, x, y, sky_over_floor_with_sphere);
+                }
+            if (truth < 256 * ERROR_DARK_FLOOR)
+                continue; /* inside the sphere's image: left out as the render does */
+            blocks++;
+            within += fabs(mean - truth) <= e * truth;
+        }
+    *passes = counters.passes;
+    *all_within = counters.target_within == counters.target_blocks &&
+                  counters.target_blocks == blocks && counters.target_missed_x == -1;
+    render_result_free(&result);
+    scene_free(scene);
+    return (double)within / blocks;
+}
+
+/* truth: sky-over-floor's closed form, block by block; and a looser target against a
+ *   tighter one.
+ * tolerance: at least 95% of the blocks within the target of the truth (the bound's
+ *   confidence), every block judged within it, the tighter target taking more passes and
+ *   the looser fewer than the 4096 allowed.
+ * catches: passes that stop before the blocks reach the target (a block's bound taken
+ *   per pixel rather than in quadrature over its pixels would stop late; one divided by n
+ *   twice, early), a target that never stops the render, a tally left at its first
+ *   judgement. */
+static void test_target_error(struct check *t)
+{
+    int passes_5, passes_1, all_5, all_1;
+    double within_5 = target_render(0.05, &passes_5, &all_5);
+    double within_1 = target_render(0.01, &passes_1, &all_1);
+    printf("  error: --target-error 0.05: %d passes, %.3f of blocks within 5%% of the truth; "
+           "0.01: %d passes, %.3f within 1%%\n", passes_5, within_5, passes_1, within_1);
+    CHECK(t, all_5 && all_1);
+    CHECK(t, within_5 >= 0.95 && within_1 >= 0.95);
+    CHECK(t, ERROR_MIN_SPP <= passes_5 && passes_5 < passes_1 && passes_1 < 4096);
+    /* cut short by --spp: the blocks that missed are named */
+    CHECK(t, photon_logged("", "--mode pt --target-error 0.001 --spp 16 --width 32 --height "
+                           "24 --no-progress --stats -o " OUT ".pfm "
+                           "scenes/analytic/sky-over-floor.scene", OUT ".log") == 0);
+    CHECK(t, file_contains(OUT ".log", "blocks not within it after 16 samples per pixel, "
+                           "the first at (0, 0)"));
+    CHECK(t, file_stat(OUT ".log", "target_blocks") == 4 &&
+             file_stat(OUT ".log", "target_blocks_within") == 0);
+    remove(OUT ".log");
+    remove(OUT ".pfm");
+    remove(OUT ".png");
+}
+
 /* truth: the README's rules for --error and --confidence.
  * tolerance: exit status 2, the message, and no file left.
  * catches: a bound stated where the samples are too few to see rare values, where a
@@ -171,6 +239,7 @@ static void test_error_refusals(struct check *t)
         {"--spp 16 --adaptive 0.1 --error " OUT "_e.pfm", "--error: not with --adaptive"},
         {"--spp 16 --max-depth 3 --error " OUT "_e.pfm", "--error: not with --max-depth 3"},
         {"--spp 16 --confidence 0.9", "--confidence: does nothing with no --error"},
+        {"--spp 8 --target-error 0.1", "--target-error: needs --spp >= 16"},
         {"--spp 16 --error " OUT "_e.pfm --confidence 1", "--confidence"},
     };
     CHECK(t, refuses_options("pt", bad, sizeof bad / sizeof bad[0], OUT) == 0);
@@ -192,5 +261,6 @@ void test_error(struct check *t)
 {
     RUN_TEST(t, test_pt_bound_covers_closed_forms);
     RUN_TEST(t, test_crop_error_is_window);
+    RUN_TEST(t, test_target_error);
     RUN_TEST(t, test_error_refusals);
 }

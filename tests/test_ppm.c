@@ -87,7 +87,7 @@ static struct image *seeded_image(const struct scene *scene, uint64_t seed,
     struct render_settings rs = render_settings_whole(scene, seed, 1, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(photons_per_pass, passes);
     ps.progressive.direct_photons = direct_photons;
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct ppm_stats stats;
     return render_ppm(scene, &rs, &ps, &counters, &stats).image;
 }
@@ -122,7 +122,7 @@ static void converge(const char *path, int width, long passes, size_t photons_pe
     ps.progressive.footprints = 1;
     ps.progressive.fit_radius = 0;
     struct checkpoint checkpoint = {error_curve_record, &c->curve};
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct ppm_stats stats;
     ps.progressive.report = &checkpoint;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
@@ -250,7 +250,7 @@ static void test_first_hits_not_counted(struct check *t)
         struct ppm_settings ps = ppm_defaults(4000, 8);
         ps.progressive.direct_photons = direct_photons;
         ps.observer = &observer;
-        struct render_counters counters = {0, 0, 0, 0, 0};
+        struct render_counters counters = {0};
         struct ppm_stats stats;
         struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
         int exact = within_point_over_plane(scene, result.image);
@@ -331,7 +331,7 @@ static struct image *small_cornell(const char *path, uint64_t seed, int spp, con
         return NULL;
     struct render_settings rs = case_settings(scene, seed, spp, window);
     struct ppm_settings ps = ppm_defaults(20000, 16);
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct ppm_stats stats;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
     scene_free(scene);
@@ -402,7 +402,7 @@ static void test_paper_way_unchanged(struct check *t)
         ps.merge_hit_points = 0;
         ps.resample_emission = 0;
         ps.progressive.facing_test = 0;
-        struct render_counters counters = {0, 0, 0, 0, 0};
+        struct render_counters counters = {0};
         struct ppm_stats stats;
         struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
         CHECK(t, image_hash(result.image) == recorded[i]);
@@ -564,7 +564,7 @@ static void test_checkpoints(struct check *t)
     struct ppm_settings ps = ppm_defaults(100, 5);
     ps.progressive.snapshot_every = 2;
     ps.progressive.snapshot = &at_snapshot;
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct ppm_stats stats;
     ps.progressive.report = &at_report;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
@@ -615,7 +615,7 @@ static void test_tracked_hit_points(struct check *t)
     struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(5000, 24);
     ps.observer = &observer;
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct ppm_stats stats;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
     CHECK(t, tr.passes == 24 && tr.shrinking && tr.growing && tr.moved);

@@ -17,7 +17,7 @@ static struct image *render(const struct scene *scene, int spp, const struct ppm
                             struct ppm_stats *stats)
 {
     struct render_settings rs = render_settings_whole(scene, 1, spp, MAX_DEPTH_LIMIT);
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     return render_ppm(scene, &rs, ps, &counters, stats).image;
 }
 
@@ -202,7 +202,7 @@ static double caustic_window_error(int merge)
         ps.progressive.passes = 32;
         ps.merge_hit_points = merge;
         struct render_settings rs = case_settings(scene, 1, PPM_DEFAULT_SPP, window);
-        struct render_counters counters = {0, 0, 0, 0, 0};
+        struct render_counters counters = {0};
         struct ppm_stats stats;
         struct image *image = render_ppm(scene, &rs, &ps, &counters, &stats).image;
         error = image_compare(image, ref).relmse;

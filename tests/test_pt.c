@@ -17,7 +17,7 @@ static struct render_result render_seed(const struct scene *scene, int pt, int s
 {
     struct render_settings rs = render_settings_whole(scene, seed, spp,
                                                       pt ? MAX_DEPTH_LIMIT : DIRECT_MAX_DEPTH);
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     if (pt)
         return render_pt(scene, &rs, 1, NULL, &counters);
     return render_direct(scene, &rs, 1, NULL, &counters);

@@ -15,7 +15,7 @@
 
 static struct image *render(const struct scene *scene, const struct render_settings *rs)
 {
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     return render_direct(scene, rs, 0, NULL, &counters).image;
 }
 
@@ -235,7 +235,7 @@ static struct pixel_value render_one_pixel(const struct fixture *f, int x, int y
     one.rs.y0 = y;
     one.rs.x1 = x + 1;
     one.rs.y1 = y + 1;
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct render_result r = render_synthetic(&one, NULL, &counters);
     struct pixel_value p = {image_get(r.image, 0, 0), image_get(r.variance, 0, 0),
                             (int)counters.samples};
@@ -320,7 +320,7 @@ static void test_adaptive_off_takes_every_sample(struct check *t)
     for (int k = 0; k < 4; k++) {
         f.rs.min_spp = k % 2 == 0 ? 0 : 4;
         f.mode.a = k < 2 ? 1.0 : 0.0;
-        struct render_counters counters = {0, 0, 0, 0, 0};
+        struct render_counters counters = {0};
         struct render_result r = render_synthetic(&f, NULL, &counters);
         CHECK(t, counters.passes == 6 && counters.samples == 6 * 12 * 9);
         for (int y = 0; y < 9; y++)
@@ -356,7 +356,7 @@ static void test_adaptive_constant_pixel_stops_at_min_spp(struct check *t)
             f.mode.c = values[i];
             f.rs.min_spp = min_spps[j];
             int expected = min_spps[j] < 32 ? min_spps[j] : 32;
-            struct render_counters counters = {0, 0, 0, 0, 0};
+            struct render_counters counters = {0};
             struct render_result r = render_synthetic(&f, NULL, &counters);
             CHECK(t, counters.passes == expected);
             CHECK(t, counters.samples == (unsigned long long)expected * 8 * 6);
@@ -380,7 +380,7 @@ static int check_predicted_counts(struct check *t, const struct fixture *f, int 
             predicted_total += (unsigned long long)predicted;
             with_n += predicted == n;
         }
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct render_result r = render_synthetic(f, NULL, &counters);
     CHECK(t, counters.samples == predicted_total);
     render_result_free(&r);
@@ -434,7 +434,7 @@ static void test_adaptive_crop_matches_whole_image(struct check *t)
         return;
     f.rs.min_spp = 4;
     f.rs.adaptive_error = 0.05;
-    struct render_counters whole_counters = {0, 0, 0, 0, 0}, crop_counters = {0, 0, 0, 0, 0};
+    struct render_counters whole_counters = {0}, crop_counters = {0};
     struct render_result whole = render_synthetic(&f, NULL, &whole_counters);
     CHECK(t, whole_counters.samples > 4 * 24 * 16 && whole_counters.samples < 64 * 24 * 16);
     struct fixture crop = f;
@@ -472,7 +472,7 @@ static void test_adaptive_pixel_is_mean_of_own_samples(struct check *t)
         return;
     f.rs.min_spp = 2;
     f.rs.adaptive_error = 0.05;
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct render_result r = render_synthetic(&f, NULL, &counters);
     int seen[MAX_TEST_SPP + 1] = {0}, distinct = 0;
     for (int y = 0; y < 12; y++)
@@ -525,7 +525,7 @@ static void test_adaptive_checkpoint_mean_and_work(struct check *t)
         return;
     struct checkpoint_log log = {{0}, 0, NULL};
     struct checkpoint checkpoint = {log_checkpoint, &log};
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     f.rs.spp = 6;
     struct render_result r = render_synthetic(&f, &checkpoint, &counters);
     CHECK(t, log.n_calls == 4 && log.work[0] == 1 && log.work[1] == 2 && log.work[2] == 4 &&
@@ -614,7 +614,7 @@ static void test_specular_pixels_take_specular_spp(struct check *t)
     f.rs = render_settings_whole(f.scene, 7, 2, 1);
     f.rs.specular_spp = 8;
     f.mode = mode;
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct render_result whole = render_synthetic(&f, NULL, &counters);
     CHECK(t, counters.passes == 8);
     int boosted = 0, plain = 0;

@@ -67,7 +67,7 @@ static void converge(const char *path, int width, long passes, size_t photons_pe
     struct sppm_settings ps = sppm_settings(photons_per_pass, passes, direct_photons);
     struct checkpoint checkpoint = {error_curve_record, c};
     ps.progressive.report = &checkpoint;
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct ppm_stats stats;
     struct render_result result = render_sppm(scene, &rs, &ps, &counters, &stats);
     render_result_free(&result);
@@ -159,7 +159,7 @@ static double error_at_edge(const char *path, int disc_coverage, int fit_radius,
     ps.progressive.direct_photons = 1;
     ps.progressive.fit_radius = fit_radius;
     ps.disc_coverage = disc_coverage;
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct ppm_stats stats;
     struct render_result r = render_sppm(scene, &rs, &ps, &counters, &stats);
     double error = error_before_edge_2009(scene, r.image, n);
@@ -252,7 +252,7 @@ static void test_light_outline(struct check *t)
     struct scene *scene = load_test_scene("scenes/analytic/area-over-floor.scene", EDGE_WIDTH,
                                           EDGE_WIDTH);
     REQUIRE(t, scene != NULL);
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct ppm_stats stats;
     struct render_settings rs = render_settings_whole(scene, 1, 256, MAX_DEPTH_LIMIT);
     struct sppm_settings sps = sppm_settings(1000, 256, 0);
@@ -285,7 +285,7 @@ static const char glossy_floor[] =
 static double paper_relmse(const struct scene *scene, const struct image *truth, int sppm,
                            int spp)
 {
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct ppm_stats stats;
     struct sppm_settings sps = sppm_settings(4000, 1024, 1);
     struct ppm_settings pps = ppm_paper_settings(4000, 1024, 1);
@@ -319,7 +319,7 @@ static void test_glossy_floor(struct check *t)
     remove(path);
     REQUIRE(t, scene != NULL);
     struct render_settings rs = render_settings_whole(scene, 1, 16384, MAX_DEPTH_LIMIT);
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct render_result truth = render_pt(scene, &rs, 0, NULL, &counters);
     double sppm = paper_relmse(scene, truth.image, 1, 0);
     double ppm = paper_relmse(scene, truth.image, 0, 1);
@@ -361,7 +361,7 @@ static void test_crop_is_window(struct check *t)
 {
     struct scene *scene = load_test_scene("scenes/cornell-specular.scene", 32, 32);
     REQUIRE(t, scene != NULL);
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct ppm_stats stats;
     struct sppm_settings ps = sppm_settings_default(); /* the disc probes' streams too */
     ps.progressive.photons_per_pass = 5000;

@@ -42,7 +42,7 @@ static void test_photons_mode_cornell(struct check *t)
     }
     struct render_settings rs = render_settings_whole(scene, 3, 16, TEST_MAX_DEPTH);
     struct photon_settings ps = {100000, 100, 0, 0, 0, NULL};
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct photon_stats stats;
     struct render_result r = render_photons(scene, &rs, &ps, 0, NULL, &counters, &stats, &err);
     CHECK(t, r.image != NULL && counters.nonfinite_samples == 0);
@@ -170,7 +170,7 @@ static void test_photons_mode_mirror(struct check *t)
     struct scene *scene = mirror_view_scene();
     struct render_settings rs = render_settings_whole(scene, 5, 4, TEST_MAX_DEPTH);
     struct photon_settings ps = {400000, 200, 0, 0, 0, NULL};
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct photon_stats stats;
     struct error err;
     struct render_result r = render_photons(scene, &rs, &ps, 0, NULL, &counters, &stats, &err);

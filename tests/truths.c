@@ -193,7 +193,7 @@ double pt_mean_luminance(const char *path, int spp)
     if (scene == NULL)
         return -1.0;
     struct render_settings rs = render_settings_whole(scene, 1, spp, MAX_DEPTH_LIMIT);
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct error err;
     struct image *img = rendered_image(render_pt(scene, &rs, 0, NULL, &counters), &err);
     double mean = img != NULL ? mean_luminance(img) : -1.0;

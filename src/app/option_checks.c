@@ -24,7 +24,7 @@
  *     only at that many samples or more, short of the pixel's target (render_pass()).
  *   --checkpoint K with K >= --passes (2008, 2009): the first write would follow pass K,
  *     and the image is written after the last pass anyway.
- *   --confidence without --error: only the error image reads it.
+ *   --confidence without --error or --target-error: only the error bound reads it.
  * Not refused, since they do something: --caustic-footprints K with --radius, which
  * still turns 2008's caustic estimate on (at --radius, as --help says), and --alpha with
  * --passes 1, whose Eq. 12 and Eq. 9 cancel in the estimate only up to rounding.
@@ -185,29 +185,33 @@ static int check_idle(const struct options *o, const struct command_words *words
         if (refuse_idle(words, adaptive, 1, with, why, err) < 0)
             return -1;
     }
-    if (o->error == NULL &&
-        refuse_idle(words, confidence, 1, "no --error", "whose bound alone it sets", err) < 0)
+    if (o->error == NULL && o->target_error == 0 &&
+        refuse_idle(words, confidence, 1, "no --error or --target-error",
+                    "whose bound alone it sets", err) < 0)
         return -1;
     return 0;
 }
 
-/* --error's bound (modes/pixel_error.h) holds for the pixel's expected value only where
- * that is the truth and its samples are many enough to see their rare values. */
-static int check_error_image(const struct options *o, struct error *err)
+/* The bound of --error and --target-error (modes/pixel_error.h) holds for the pixel's
+ * expected value only where that is the truth and its samples are many enough to see
+ * their rare values. */
+static int check_error_bound(const struct options *o, struct error *err)
 {
-    if (o->error == NULL || o->mode != MODE_PT) /* check_modes() refuses the others */
-        return 0;
+    if ((o->error == NULL && o->target_error == 0) || o->mode != MODE_PT)
+        return 0; /* check_modes() refuses the other modes */
+    const char *name = o->error != NULL ? "--error" : "--target-error";
     if (o->spp < ERROR_MIN_SPP)
-        return error_set(err, "", 0, "--error: needs --spp >= %d (with %d, even the spread "
+        return error_set(err, "", 0, "%s: needs --spp >= %d (with %d, even the spread "
                          "pooled over 5 x 5 pixels misses the rare bright samples, and the "
-                         "bound with it)", ERROR_MIN_SPP, o->spp);
+                         "bound with it)", name, ERROR_MIN_SPP, o->spp);
     if (o->adaptive > 0)
-        return error_set(err, "", 0, "--error: not with --adaptive, whose rule stops a "
-                         "pixel by its own samples and so biases it by an amount no spread "
-                         "states");
+        return error_set(err, "", 0, "%s: not with --adaptive, whose rule stops a pixel by "
+                         "its own samples and so biases it by an amount no spread states",
+                         name);
     if (o->max_depth >= 0 && o->max_depth < MAX_DEPTH_LIMIT)
-        return error_set(err, "", 0, "--error: not with --max-depth %d, which leaves out "
-                         "the light of longer paths, a bias no spread states", o->max_depth);
+        return error_set(err, "", 0, "%s: not with --max-depth %d, which leaves out the "
+                         "light of longer paths, a bias no spread states", name,
+                         o->max_depth);
     return 0;
 }
 
@@ -239,7 +243,7 @@ int check_combinations(const struct options *o, const struct command_words *word
         return error_set(err, "", 0, "--variance: not available with --mode %s, whose "
                                      "pixels are not means of independent samples",
                          mode_name(o->mode));
-    if (check_error_image(o, err) < 0)
+    if (check_error_bound(o, err) < 0)
         return -1;
     return check_idle(o, words, err);
 }

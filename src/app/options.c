@@ -110,6 +110,10 @@ static const struct option_spec specs[] = {
     {"--confidence", OPT_REAL_BETWEEN, FIELD(confidence), 0, 1, "C",
      "the confidence of --error's bound: the truth is within it in a fraction C of the "
      "pixels (default 0.95)", FOR_PT},
+    {"--target-error", OPT_REAL_ABOVE, FIELD(target_error), 0, 1, "E",
+     "sample until every 16 x 16 block's bound at --confidence is at most E times its mean "
+     "(blocks darker than 1e-3 aside), --spp at most (default with it: 1048576), or the "
+     "time limit", FOR_PT},
     {"--save-photons", OPT_FILE, FIELD(save_photons), 0, 0, "FILE",
      "also write the global work (photon maps, 1994's illumination "
      "maps, irradiance cache) to FILE, for --load-photons", FOR_PHOTON_MAPS},
@@ -595,6 +599,8 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         default_output(o->scene_path, o->output);
     if ((o->reference == NULL) != (o->report == NULL))
         return error_set(err, "", 0, "--reference and --report go together");
+    if (o->target_error > 0 && o->spp == 0)
+        o->spp = MAX_SPP; /* the target ends the render, or the time limit */
     mode_defaults(o);
     if (o->cone > 0 && o->cone < 1)
         return error_set(err, "", 0, "--cone: k must be 0 (no filter) or at least 1");
@@ -619,8 +625,8 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
  * are hashed themselves: a preset and its words spelled out make the same tiles. */
 static const char *const outside_pixels[] = {
     "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure", "--reference",
-    "--report", "--variance", "--error", "--confidence", "--checkpoint", "--time-limit",
-    "--save-photons",
+    "--report", "--variance", "--error", "--confidence", "--target-error", "--checkpoint",
+    "--time-limit", "--save-photons",
     "--load-photons", "--quality", "--paper",
 };
 

@@ -54,6 +54,7 @@ struct options {
     const char *variance;         /* --variance FILE.pfm, or NULL (borrowed)        */
     const char *error;            /* --error FILE.pfm, or NULL (borrowed)           */
     double confidence;            /* --error's confidence, 0 < c < 1                */
+    double target_error;          /* --target-error E, 0 = none                     */
     const char *save_photons;     /* --save-photons FILE, or NULL (borrowed)        */
     const char *load_photons;     /* --load-photons FILE, or NULL (borrowed)        */
     int photons;                  /* photon modes: photons emitted                 */

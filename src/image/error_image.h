@@ -11,7 +11,9 @@
  * their noise adding in quadrature (z_c sigma_block, the same confidence). A block is
  * within E when B_block <= E times its mean luminance; blocks whose mean luminance is
  * below ERROR_DARK_FLOOR are left out, as dark as the adaptive rule's floor
- * (modes/render.h), where no one sees a relative error.
+ * (modes/render.h), where no one sees a relative error. The blocks are the squares of
+ * ERROR_BLOCK pixels whose corners lie at multiples of ERROR_BLOCK in the whole image, cut
+ * by the image's edges: a crop's blocks are the whole image's, where it holds them whole.
  */
 #ifndef PHOTON_ERROR_IMAGE_H
 #define PHOTON_ERROR_IMAGE_H
@@ -21,15 +23,18 @@
 #define ERROR_BLOCK 16         /* the side of the blocks --stats and --target-error judge */
 #define ERROR_DARK_FLOOR 1e-3  /* mean luminance below which a block is left out          */
 
-/* Block (x0, y0) of size ERROR_BLOCK (smaller at the right and bottom edges) of image
- * and error (same size): its mean luminance and the bound on it. */
-struct block_bound {
-    double mean, bound;
+/* How many of the blocks of image and error (same size; image's top left pixel is (x0,
+ * y0) of the whole image) are judged, dark ones aside, and how many of those are within
+ * e; the first block (in rows from the top) that is not, by its top left pixel in the
+ * whole image, or (-1, -1). */
+struct block_count {
+    int n_blocks, within;
+    int missed_x, missed_y;
 };
-struct block_bound block_bound(const struct image *image, const struct image *error, int x0,
-                               int y0);
+struct block_count blocks_within(const struct image *image, const struct image *error, int x0,
+                                 int y0, double e);
 
-/* What --stats says of an error image at confidence c. */
+/* What --stats says of an error image at confidence c (image at (x0, y0) as above). */
 struct error_summary {
     double relmse;       /* estimated: the mean over pixels and channels of
                             sigma^2 / (pixel^2 + 1e-2), sigma = B / z_c: what `photon
@@ -38,6 +43,6 @@ struct error_summary {
     int within_1, within_3; /* of them, those within 1% and 3% of their mean             */
 };
 struct error_summary error_summary(const struct image *image, const struct image *error,
-                                   double confidence);
+                                   double confidence, int x0, int y0);
 
 #endif

@@ -20,6 +20,7 @@
 
 #include "../base/alloc.h"
 #include "../base/sequence02.h"
+#include "../image/error_image.h"
 #include "pixel_error.h"
 #include "surface.h"
 
@@ -268,15 +269,51 @@ static long long samples_per_pixel(const struct accumulator *acc)
     return (long long)((2 * acc->n_samples + pixels) / (2 * pixels));
 }
 
+/* Whether the target error is judged after pass p (render.h). */
+static int target_judged_after(int p)
+{
+    if (p < ERROR_MIN_SPP)
+        return 0;
+    int step = 1;
+    while (step * 16 <= p)
+        step *= 2;
+    return p % step == 0;
+}
+
+/* Judges the window's blocks against rs->target_error, the tally into counters; whether
+ * every block is within it. */
+static int target_reached(const struct accumulator *acc, const struct render_settings *rs,
+                          struct render_counters *counters)
+{
+    struct image *mean = image_create(acc->out_width, acc->out_height);
+    mean_image(acc, mean);
+    struct image *error = error_image(acc, rs->error_confidence);
+    struct block_count count = blocks_within(mean, error, rs->x0, rs->y0, rs->target_error);
+    image_free(error);
+    image_free(mean);
+    counters->target_blocks = count.n_blocks;
+    counters->target_within = count.within;
+    counters->target_missed_x = count.missed_x;
+    counters->target_missed_y = count.missed_y;
+    return count.within == count.n_blocks;
+}
+
 /* Without adaptive sampling: passes and the time left at the rate so far per sample (shown
  * after a pass, so n_samples > 0); the pixels that see a light through mirrors or glass,
  * when there are any, are named with their own count, so that theirs is not taken for
  * every pixel's. With it: passes, and how many pixels the last pass sampled, since the
- * time left cannot be foreseen. */
-static void show_progress(const struct accumulator *acc, int passes, double seconds, int done)
+ * time left cannot be foreseen. With a target error: passes, and the blocks within it at
+ * the last judgement (none before ERROR_MIN_SPP). */
+static void show_progress(const struct accumulator *acc, const struct render_settings *rs,
+                          const struct render_counters *counters, int passes, double seconds,
+                          int done)
 {
     double left = seconds * (double)(acc->n_target - acc->n_samples) / acc->n_samples;
-    if (acc->lum == NULL && acc->n_specular == 0) {
+    if (rs->target_error > 0) {
+        fprintf(stderr, "\rphoton: %d samples per pixel, %d of %d blocks within %g, %.1f s   ",
+                passes, counters->target_within, counters->target_blocks, rs->target_error,
+                seconds);
+    } else if (acc->lum == NULL && acc->n_specular == 0) {
         fprintf(stderr, "\rphoton: %d/%d samples per pixel, %.1f s, about %.0f s left   ",
                 passes, acc->most, seconds, left);
     } else if (acc->lum == NULL) {
@@ -293,8 +330,9 @@ static void show_progress(const struct accumulator *acc, int passes, double seco
     fflush(stderr);
 }
 
-/* Takes sample passes until every pixel has reached its target or stopped, or the time
- * limit has passed, calling the checkpoint after passes 1, 2, 4, ... and after the last.
+/* Takes sample passes until every pixel has reached its target or stopped, the time limit
+ * has passed or the target error is reached, calling the checkpoint after passes 1, 2, 4,
+ * ... and after the last.
  * Returns the passes that sampled a pixel and the rendering seconds since start
  * (checkpoint work excluded) in *seconds. */
 static int run_passes(const struct scene *scene, const struct render_settings *rs,
@@ -303,7 +341,7 @@ static int run_passes(const struct scene *scene, const struct render_settings *r
                       double *seconds)
 {
     double excluded = 0.0, last_shown = 0.0;
-    int passes = 0, checked = 0;
+    int passes = 0, checked = 0, judged = 0, reached = 0;
     struct image *mean = checkpoint != NULL ? image_create(acc->out_width, acc->out_height)
                                             : NULL;
     /* an error image needs ERROR_MIN_SPP samples of every pixel, time limit or not */
@@ -315,22 +353,30 @@ static int run_passes(const struct scene *scene, const struct render_settings *r
         if (acc->n_active == 0)
             break; /* the adaptive rule has stopped every pixel still below its target */
         passes++;
+        if (rs->target_error > 0 && target_judged_after(passes)) {
+            reached = target_reached(acc, rs, counters);
+            judged = passes;
+        }
         *seconds = cpu_seconds(start) - excluded;
-        if (rs->progress && (passes == acc->most || *seconds - last_shown >= 0.5)) {
-            show_progress(acc, passes, *seconds, passes == acc->most);
+        int last = passes == acc->most || reached ||
+                   (passes >= first_passes && rs->time_limit > 0 && *seconds >= rs->time_limit);
+        if (rs->progress && (last || *seconds - last_shown >= 0.5)) {
+            show_progress(acc, rs, counters, passes, *seconds, passes == acc->most || reached);
             last_shown = *seconds;
         }
-        int last = passes == acc->most ||
-                   (passes >= first_passes && rs->time_limit > 0 && *seconds >= rs->time_limit);
         if (mean != NULL && (is_power_of_two(passes) || last)) {
             mean_image(acc, mean);
             excluded += checkpoint->at(checkpoint->context, mean, samples_per_pixel(acc),
                                        *seconds);
             checked = passes;
         }
+        if (reached)
+            break;
     }
-    if (rs->progress && passes != acc->most)
-        show_progress(acc, passes, *seconds, 1); /* ended early: end the line */
+    if (rs->target_error > 0 && judged != passes)
+        target_reached(acc, rs, counters); /* the tally of the image as it ends */
+    if (rs->progress && passes != acc->most && !reached)
+        show_progress(acc, rs, counters, passes, *seconds, 1); /* ended early: end the line */
     if (mean != NULL && checked != passes) {
         mean_image(acc, mean);
         checkpoint->at(checkpoint->context, mean, samples_per_pixel(acc), *seconds);
@@ -349,6 +395,7 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
                          is_power_of_two(rs->min_spp)));
     int want_error = rs->error_confidence > 0;
     assert(!want_error || (rs->error_confidence < 1 && rs->spp >= ERROR_MIN_SPP && !adaptive));
+    assert(rs->target_error == 0 || want_error);
     struct accumulator acc;
     int margin = want_error ? ERROR_POOL_RADIUS : 0; /* the pool's pixels beyond rs's window */
     acc.x0 = rs->x0 > margin ? rs->x0 - margin : 0;

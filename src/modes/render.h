@@ -88,6 +88,12 @@ struct render_settings {
                                 spp >= ERROR_MIN_SPP and adaptive sampling off
                                 (pixel_error.h); every pixel then takes at least
                                 ERROR_MIN_SPP samples, whatever the time limit            */
+    double target_error; /* 0: none; > 0 (with error_confidence): the passes end once every
+                            block of image/error_image.h is within it, judged after pass
+                            p >= ERROR_MIN_SPP whenever p is a multiple of the largest power
+                            of two <= p / 8 (16, 18, ..., 32, 36, ...: the error image is
+                            made about 8 times a doubling, and at most 1/8 more passes run
+                            than were needed); counters then hold the blocks' tally        */
 };
 
 /* Radiance arriving at the camera along ray, estimated by a mode from its own state. */

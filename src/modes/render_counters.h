@@ -25,6 +25,11 @@ struct render_counters {
     size_t specular_pixels;               /* pixels of the window that take specular_spp
                                              samples: the camera sees a light through
                                              mirrors or glass in them (set, not added)  */
+    int target_blocks, target_within;     /* with a target error (render.h): the blocks
+                                             judged at the last pass, and those within
+                                             it (set, not added)                        */
+    int target_missed_x, target_missed_y; /* the first block not within, by its top
+                                             left pixel in the whole image; -1 if none  */
 };
 
 #endif

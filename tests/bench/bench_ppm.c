@@ -24,7 +24,7 @@ void bench_ppm(void)
     double hit_points_per_s[BENCH_REPEATS], photons_per_s[BENCH_REPEATS], sum = 0;
     struct ppm_stats stats;
     for (int r = 0; r < BENCH_REPEATS; r++) {
-        struct render_counters counters = {0, 0, 0, 0, 0};
+        struct render_counters counters = {0};
         struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
         hit_points_per_s[r] = stats.seconds_ray_pass > 0
                                   ? (double)stats.hit_points / stats.seconds_ray_pass : 0;

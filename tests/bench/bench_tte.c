@@ -142,7 +142,7 @@ static struct render_result render_1994(const struct scene *scene, int trial, st
         js.n_photons /= TRIAL_SHRINK;
         js.gather_rays = TRIAL_GATHER_RAYS;
     }
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct jensen1994_stats stats;
     struct render_result result = render_jensen1994(scene, &rs, &js, 0, &counters, &stats, err);
     phase(ph, "seconds_photons", stats.seconds_photons);
@@ -162,7 +162,7 @@ static struct render_result render_1996(const struct scene *scene, int trial, st
         js.caustic_photons /= TRIAL_SHRINK;
         js.gather_rays = TRIAL_GATHER_RAYS;
     }
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct jensen1996_stats stats;
     struct render_result result = render_jensen1996(scene, &rs, &js, 0, &counters, &stats, err);
     phase(ph, "seconds_photons", stats.seconds_photons);
@@ -181,7 +181,7 @@ static struct render_result render_2008(const struct scene *scene, int trial, st
         ps.progressive.photons_per_pass /= TRIAL_SHRINK;
         ps.progressive.passes = TRIAL_PASSES;
     }
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct ppm_stats stats;
     struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
     phase(ph, "seconds_ray_pass", stats.seconds_ray_pass);
@@ -199,7 +199,7 @@ static struct render_result render_2009(const struct scene *scene, int trial, st
         ps.progressive.passes = TRIAL_PASSES;
     }
     struct render_settings rs = settings_at(scene, (int)ps.progressive.passes, trial);
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct ppm_stats stats;
     struct render_result result = render_sppm(scene, &rs, &ps, &counters, &stats);
     phase(ph, "seconds_ray_pass", stats.seconds_ray_pass);
@@ -303,7 +303,7 @@ static void run_pt(const struct scene *scene, const struct mode_run *runs, int n
     rs.time_limit = PT_TIME_FACTOR * longest;
     fprintf(stderr, "bench: tte: %s: rendering --mode pt for %.1f s\n", name, rs.time_limit);
     struct checkpoint at = {record, pt};
-    struct render_counters counters = {0, 0, 0, 0, 0};
+    struct render_counters counters = {0};
     struct render_result result = render_pt(scene, &rs, 0, &at, &counters);
     render_result_free(&result);
     fprintf(stderr, "bench: tte: %s: --mode pt: relmse %g after %d samples, %.1f s\n", name,
