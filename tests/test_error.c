@@ -109,7 +109,8 @@ static struct coverage pt_coverage(const char *path, int width, int height, int 
  * catches: a bound from the pixel's own samples alone (0.57 of sky-over-floor's pixels at
  *   16 samples, 0.83 at 64), pooled over 3 x 3 pixels (0.95, borderline), a missing
  *   sqrt or 1/n (coverage near 1 and sharpness far above 3, or near 0), a standard
- *   error without z_c (coverage ~0.68). */
+ *   error without z_c (coverage ~0.68), batches merged out of order (their spread then
+ *   mixes batch sizes). */
 static void test_pt_bound_covers_closed_forms(struct check *t)
 {
     static const struct {

@@ -3,28 +3,38 @@
  * samples (pt): each pixel's bound on |pixel - truth| at a confidence c, from the spread
  * of its samples and its neighbours'.
  *
- * A pixel's mean of n samples has the variance s^2 / n, s^2 the variance of one sample.
- * Estimated from the pixel's own n samples alone, s^2 is unbiased but mostly too small
+ * Batch means. A pixel keeps its samples in ERROR_BATCHES batches of m consecutive ones,
+ * m the least power of two with ERROR_BATCHES m >= n (error_batches_add()). Its mean of n
+ * samples has the variance s^2 / n, where s^2, the variance of one sample's worth, is
+ * estimated from the spread of the k = n / m full batches' means times m. Batches, not
+ * single samples, because the camera points are stratified (render.h): a batch of m
+ * consecutive points of the (0,2)-sequence is itself stratified over the pixel, so the
+ * batches' spread sees the stratified estimate's error, which on a sharp outline falls
+ * far faster than independent samples' would (on area-over-floor's light at 64 samples
+ * the bound from single samples is 4.7 times the error's rms, from batches 2.8); the
+ * whole mean, a finer stratification still, errs no more than the batches say.
+ *
+ * Pooling. Estimated from the pixel's own samples alone, s^2 is unbiased but mostly too small
  * where rare samples carry much of the light (a sphere hiding a sliver of the sky, a
  * small light found by a bounce): most pixels never draw one, state a small spread and
  * miss the truth. Neighbouring pixels draw from nearly the same distribution, so the
  * bound takes the larger of the pixel's own s^2 and the pooled s^2 of the pixels within
- * ERROR_POOL_RADIUS of it (5 x 5; each weighted by its n - 1 degrees of freedom), which
+ * ERROR_POOL_RADIUS of it (5 x 5; each weighted by its k - 1 degrees of freedom), which
  * has seen the rare samples up to 25 times as often; the larger, so that a pixel on an
  * edge, noisier than its neighbours, keeps its own. A neighbour joins the pool only if
  * its mean agrees with the pixel's, within POOL_AGREEMENT_Z standard errors of their
  * difference, so that a pixel inside a light seen directly (every sample the same) does
  * not take the spread of the light's outline. The bound is then
  *     B = z_c sqrt(max(s^2_own, s^2_pooled) / n),   z_c: P(|Z| <= z_c) = c,
- * a normal quantile: the pooled spread has at least 15 and mostly 375 (25 (ERROR_MIN_SPP
- * - 1)) degrees of freedom, where Student's t and the normal differ by 1% or less.
- * Measured at c = 0.95 against closed forms (tests/test_error.c, other seeds than these):
- * on scenes/analytic/sky-over-floor.scene the truth within B in 0.99 of the floor's
- * pixels at 16 and 64 samples and 0.98 at 256, rms(B) / rms(error) 2.1-2.3; the pixel's
- * own s^2 alone gives 0.57, 0.83 and 0.93, pooling over 3 x 3 pixels 0.95, 0.98 and 0.97.
- * On area-over-floor.scene 0.97, and the bound is loosest on the light's outline, where
- * the stratified camera points (render.h) err far less than independent ones would:
- * rms(B) / rms(error) 4.7 over the image, 2.1-2.3 the median over 8 x 8 blocks. Below
+ * a normal quantile: the pooled spread has at least 7 and mostly 25 times that many
+ * degrees of freedom (k - 1 >= 7 a pixel), where Student's t and the normal differ by
+ * under 1%. Measured at c = 0.95 against closed forms (tests/test_error.c prints them):
+ * on scenes/analytic/sky-over-floor.scene the truth within B in 0.99, 0.98 and 0.97 of the
+ * floor's pixels at 16, 64 and 256 samples, rms(B) / rms(error) 2.1-2.4 (an exact bound
+ * gives 1.96); the pixel's own s^2 alone gives 0.57, 0.83 and 0.93, pooling over 3 x 3
+ * pixels 0.95, 0.98 and 0.97. On area-over-floor.scene 0.97 and 0.96 at 16 and 64
+ * samples; its light's outline, where at 16 samples every batch is one sample, makes
+ * rms(B) / rms(error) 4.7 there (2.8 at 64), 2.1-2.3 the median over 8 x 8 blocks. Below
  * ERROR_MIN_SPP samples even the pooled spread misses the rare values (0.89 at 4
  * samples), so the command line asks for at least that many.
  *
@@ -39,16 +49,23 @@
 
 #define ERROR_POOL_RADIUS 2 /* pixels each side whose samples a pixel's spread pools     */
 #define ERROR_MIN_SPP 16    /* samples a pixel needs for an error image (above)            */
+#define ERROR_BATCHES 16    /* the batches a pixel's samples are kept in (above)            */
 #define POOL_AGREEMENT_Z 3  /* a neighbour joins the pool when its mean and the pixel's
                                differ by at most this many standard errors of the
                                difference (above)                                          */
 
-/* The sums of a window of pixels: width x height, row-major, 3 per pixel for sum and sum2
- * (the samples' sum and sum of squares, per channel), n the samples of each. */
+/* Adds sample v (per channel) to a pixel's 3 ERROR_BATCHES batch sums (zero before its
+ * first sample), after the n it has taken: the batches of m samples (above) in sample
+ * order, m doubling, and pairs of batches becoming one, whenever every batch is full. */
+void error_batches_add(double *batches, int n, const double v[3]);
+
+/* The sums of a window of pixels: width x height, row-major, 3 per pixel for sum (the
+ * samples' sum per channel) and 3 ERROR_BATCHES for batches (error_batches_add()), n the
+ * samples of each. */
 struct pixel_sums {
     int width, height;
-    const double *sum, *sum2; /* borrowed */
-    const int *n;             /* borrowed */
+    const double *sum, *batches; /* borrowed */
+    const int *n;                /* borrowed */
 };
 
 /* The error image of the pixels [x0, x1) x [y0, y1) of the sums' window, at confidence c

@@ -36,6 +36,8 @@ struct accumulator {
     int out_width, out_height; /* ... and its size                                      */
     double *sum;             /* owned: 3 per pixel, row-major                            */
     double *sum2;            /* owned or NULL: squares, for the variance image           */
+    double *batches;         /* owned or NULL: 3 ERROR_BATCHES per pixel, for the error
+                                image (pixel_error.h)                                    */
     double *lum;             /* owned, or NULL when adaptive sampling is off: 2 per pixel,
                                 the mean m of the samples' luminance y, and the sum of
                                 their (y - m)^2                                          */
@@ -175,6 +177,8 @@ static void add_sample(struct accumulator *acc, size_t i, struct vec3 l)
         if (acc->sum2 != NULL)
             acc->sum2[3 * i + c] += v[c] * v[c];
     }
+    if (acc->batches != NULL)
+        error_batches_add(acc->batches + (size_t)3 * ERROR_BATCHES * i, acc->n[i], v);
     if (acc->lum != NULL) {
         /* Welford's update of the luminance's mean m and M2 = sum of (y - m)^2: it does not
          * cancel as sum y^2 - n m^2 would, and leaves M2 exactly 0 while all y are equal. */
@@ -257,7 +261,7 @@ static struct image *variance_image(const struct accumulator *acc)
 /* The error image of the written window (pixel_error.h), from all of acc's pixels. */
 static struct image *error_image(const struct accumulator *acc, double confidence)
 {
-    struct pixel_sums sums = {acc->width, acc->height, acc->sum, acc->sum2, acc->n};
+    struct pixel_sums sums = {acc->width, acc->height, acc->sum, acc->batches, acc->n};
     return pooled_error_image(&sums, acc->out_x0, acc->out_y0, acc->out_x0 + acc->out_width,
                               acc->out_y0 + acc->out_height, confidence);
 }
@@ -408,8 +412,10 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
     acc.out_height = rs->y1 - rs->y0;
     size_t n = (size_t)acc.width * (size_t)acc.height;
     acc.sum = xcalloc(3 * n, sizeof *acc.sum, "pixel sums");
-    acc.sum2 = want_variance || want_error ? xcalloc(3 * n, sizeof *acc.sum2, "pixel squares")
-                                           : NULL;
+    acc.sum2 = want_variance ? xcalloc(3 * n, sizeof *acc.sum2, "pixel squares") : NULL;
+    acc.batches = want_error ? xcalloc(3 * ERROR_BATCHES * n, sizeof *acc.batches,
+                                       "pixel batches")
+                             : NULL;
     acc.lum = adaptive ? xcalloc(2 * n, sizeof *acc.lum, "pixel luminance sums") : NULL;
     acc.n = xcalloc(n, sizeof *acc.n, "pixel sample counts");
     acc.target = xcalloc(n, sizeof *acc.target, "pixel sample targets");
@@ -430,6 +436,7 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
     xfree(acc.target);
     xfree(acc.n);
     xfree(acc.lum);
+    xfree(acc.batches);
     xfree(acc.sum2);
     xfree(acc.sum);
     return result;
