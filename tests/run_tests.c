@@ -20,6 +20,7 @@ struct room {
 
 static const struct room rooms[] = {
     {"base", test_base, 0},       {"image", test_image, 0},         {"compare", test_compare, 0},
+    {"compare_verdict", test_compare_verdict, 0},
     {"png", test_png, 0},
     {"plot", test_plot, 0},       {"geom", test_geom, 0},
     {"geom_primitives", test_geom_primitives, 0}, {"bvh", test_bvh, 0},

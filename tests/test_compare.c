@@ -1,9 +1,11 @@
 /*
- * tests/test_compare.c -- the statistical test of `photon compare` (image_consistency):
- * normal critical values against tabulated quantiles, the Sidak level, synthetic images
- * with Gaussian noise of known variance, variance images that must be refused, and the
- * command's output line on the built binary. The metrics themselves (rmse, psnr, ...)
- * are tested in test_image.c.
+ * tests/test_compare.c -- the statistical tests of `photon compare`: normal critical
+ * values against tabulated quantiles, the per-pixel test (image_consistency, the block
+ * test with blocks of one pixel, which tests/test_pt.c uses) on synthetic images with
+ * Gaussian noise of known variance, variance images that must be refused, the command's
+ * output line on the built binary, and the block figures of --block. The block test
+ * (image_block_test), the command's verdict, is tested in test_compare_verdict.c; the
+ * metrics themselves (rmse, psnr, ...) in test_image.c.
  *
  * Noise is drawn from the test stream by Box-Muller, keyed by (seed, pixel, channel), so
  * every image here is the same on every run and platform.
@@ -319,7 +321,8 @@ static void make_cli_files(struct cli_files *files)
 }
 
 /* truth: the output contract in compare.c: without variance options the line is exactly
- *   what it always was; with one, the same line goes on with the test's three fields;
+ *   what it always was; with one, the same line goes on with the block test's fields (one
+ *   block of 2x2 pixels: m = 3 tests at alpha 0.01, critical 2.9342 by mpmath);
  *   bad options or variance files exit 2 with a message and print nothing on stdout.
  * tolerance: none; whole lines.
  * catches: the old line changed (scripts parse it), a second line, --alpha outside
@@ -335,7 +338,9 @@ static void test_compare_command_line(struct check *t)
     CHECK(t, photon_compare(args, f.log) == 0 && file_equals_text(f.log, plain));
     snprintf(args, sizeof args, "%s %s --ref-variance %s", f.image, f.image, f.var);
     CHECK(t, photon_compare(args, f.log) == 0 && file_equals_text(f.log, "rmse=0 relmse=0 psnr=inf "
-          "maxerr=0 pass_fraction=1.000000 consistent=yes alpha=0.01\n"));
+          "maxerr=0 blocks_tested=1 blocks_untestable=0 test_block=16 z_critical=2.9342 "
+          "worst_z=0 worst_z_block=0,0 worst_z_channel=r worst_z_reldiff=0 blocks_failed=0 "
+          "failed_blocks=none consistent=yes alpha=0.01\n"));
     snprintf(args, sizeof args, "%s %s --test-variance %s --alpha 0.05", f.image, f.image,
              f.var);
     CHECK(t, photon_compare(args, f.log) == 0 && file_contains(f.log, " alpha=0.05\n"));

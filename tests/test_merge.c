@@ -50,7 +50,7 @@ static uint64_t photons_hash_of(const char *words)
  * and is compared with that mode's hash (base_of). */
 static const char *const same_pixels_options[] = {
     "-o build/x.pfm", "--crop 0 0 4 4", "--time-limit 5", "--reference r.pfm --report r.csv",
-    "--variance v.pfm", "--mode 2008 --checkpoint 3", "--exposure 2", "--stats", "--progress",
+    "--variance v.pfm", "--mode pt --error e.pfm", "--mode 2008 --checkpoint 3", "--exposure 2", "--stats", "--progress",
     "--no-progress", "--save-photons w.work", "--load-photons w.work", "--quality default",
     "--mode pt --paper", "--exclude-rim-photon" /* the default */,
     "--mode 1996 --shadow-rays" /* the default */,
@@ -87,6 +87,7 @@ static const char *const other_pixels_options[] = {
     "--mode 2008 --no-fit-radius", "--mode 2008 --no-merge-hit-points",
     "--mode 2008 --no-resample-emission", "--mode 2008 --no-facing-test",
     "--mode 2008 --caustic-footprints 2", "--mode 2008 --no-caustic-footprints",
+    "--mode pt --target-error 0.1", "--mode pt --target-error 0.1 --confidence 0.9",
 };
 
 /* The hash words are compared with: that of their leading "--mode M" alone when more

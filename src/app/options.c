@@ -356,8 +356,10 @@ static void print_help(enum help_format format)
         help_section(format, "synopsis");
     help_lines(format, "usage: photon [options] SCENE       render SCENE: a scene file, or an NFF file by its\n"
            "                                    .nff name (see README: Scene files)\n"
-           "       photon compare A.pfm B.pfm [--diff OUT.png|.ppm] [--ref-variance VB.pfm]\n"
-           "                      [--test-variance VA.pfm] [--alpha ALPHA] [--block N]\n"
+           "       photon compare A.pfm B.pfm [--diff OUT.png|.ppm] [--block N] [--alpha ALPHA]\n"
+           "                      [--ref-variance VB.pfm | --ref-error EB.pfm] [--confidence C]\n"
+           "                      [--test-variance VA.pfm | --test-error EA.pfm] [--exit-status]\n"
+           "                      (photon compare --help: the test and every field it prints)\n"
            "       photon plot A.csv [B.csv ...] -o PLOT.svg      (relmse against seconds)\n"
            "       photon plot --linear --x COL --y COL [--y COL]... [--x-title T]\n"
            "                   [--y-title T] A.csv [B.csv ...] -o PLOT.svg\n"
@@ -625,8 +627,7 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
  * are hashed themselves: a preset and its words spelled out make the same tiles. */
 static const char *const outside_pixels[] = {
     "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure", "--reference",
-    "--report", "--variance", "--error", "--confidence", "--target-error", "--checkpoint",
-    "--time-limit", "--save-photons",
+    "--report", "--variance", "--error", "--checkpoint", "--time-limit", "--save-photons",
     "--load-photons", "--quality", "--paper",
 };
 

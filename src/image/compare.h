@@ -1,7 +1,7 @@
 /*
- * image/compare.h -- error metrics between a test image and a reference, a per-pixel
- * statistical test of their agreement given variance images, and the `photon compare`
- * command built on them.
+ * image/compare.h -- error metrics between a test image and a reference, the statistical
+ * test of their agreement on block means given variance or error images, and the
+ * `photon compare` command built on them.
  */
 #ifndef PHOTON_COMPARE_H
 #define PHOTON_COMPARE_H
@@ -58,7 +58,9 @@ int block_is_noisy(const struct image *b, const struct image *var_b, int x0, int
 struct block_error image_worst_block(const struct image *a, const struct image *b,
                                      const struct image *var_b, int size);
 
-/* The per-pixel test of image_consistency(); definitions in compare.c. */
+/* The per-pixel test of image_consistency(); definitions in compare.c. `photon compare`
+ * no longer uses it (it cries wolf and is blind to block errors: image_block_test() is
+ * the verdict); tests/test_pt.c still does. */
 struct consistency {
     double alpha;         /* family-wise level asked for, 0 < alpha < 1                    */
     double alpha_channel; /* Sidak level of one channel's test: 1 - (1 - alpha)^(1/(3 n))  */
@@ -88,9 +90,51 @@ struct consistency image_consistency(const struct image *a, const struct image *
  * values are all >= 0 (pfm_read refuses non-finite ones). NULL with *err filled. */
 struct image *variance_read(const char *name, const struct image *like, struct error *err);
 
-/* `photon compare A.pfm B.pfm [--diff OUT.ppm] [--ref-variance VB.pfm]
- * [--test-variance VA.pfm] [--alpha ALPHA] [--block N]`: argv[0] is "compare". Returns the exit
- * status: 0, or 2 for bad input (messages on stderr). */
+/* Reads an error image for comparison with image like: a PFM of like's size holding a
+ * bound B >= 0 on |image - truth| per pixel and channel at the given confidence
+ * (0 < confidence < 1, 1 - confidence > 0 as a double), or +Inf where the renderer cannot
+ * bound the pixel; NaN and negative values are refused. Returned as the variance image
+ * the block test takes: (B / z)^2 with z the two-sided normal quantile of 1 - confidence
+ * (1.96 at 0.95), +Inf kept. NULL with *err filled. */
+struct image *error_image_read(const char *name, const struct image *like, double confidence,
+                               struct error *err);
+
+/* The whole-image test of image_block_test(); definitions in compare.c's header. */
+#define BLOCK_TEST_LISTED 10 /* failed blocks named in block_verdict, the first in row order */
+struct block_verdict {
+    double alpha;          /* family-wise level asked for, 0 < alpha < 1                  */
+    int size;              /* side of the blocks, >= 1                                   */
+    int n_tested;          /* blocks whose variances are all finite                      */
+    int n_untestable;      /* blocks with a pixel of variance +Inf (an unbounded error)  */
+    double alpha_one;      /* Sidak level of one channel of one block:
+                              1 - (1 - alpha)^(1/(3 n_tested)); 0 when n_tested is 0     */
+    double z_critical;     /* two-sided critical |z| at alpha_one; 0 when n_tested is 0   */
+    int n_failed;          /* tested blocks with some channel's |z| >= z_critical         */
+    int failed_x0[BLOCK_TEST_LISTED], failed_y0[BLOCK_TEST_LISTED]; /* the first of them */
+    double worst_z;        /* largest |z| of a tested block's channel (0 when none; +Inf
+                              for a difference where the variances are 0)                */
+    int worst_x0, worst_y0; /* that block's top-left pixel                                */
+    int worst_channel;     /* and channel, 0 1 2 for R G B; -1 when nothing was tested   */
+    double worst_relative; /* that block and channel's (mean_a - mean_b) / mean_b, signed;
+                              +-Inf when mean_b is 0 and mean_a is not, 0 when equal      */
+    int consistent;        /* 1: no tested block failed; 0: some did; -1: none tested     */
+};
+
+/* Tests whether test image a and reference b have the same expected block means, per
+ * size x size block (from the top left; those at the right and bottom edges may be
+ * smaller) and channel, given the variances of the pixels' estimates (var_a or var_b
+ * NULL: an exact image), at family-wise level alpha (compare.c's header). Caller
+ * guarantees: same sizes, finite a and b, variances >= 0 or +Inf (no NaN), size >= 1,
+ * 0 < alpha < 1 with a positive Sidak level (compare.c's ALPHA_MIN). */
+struct block_verdict image_block_test(const struct image *a, const struct image *b,
+                                      const struct image *var_a, const struct image *var_b,
+                                      int size, double alpha);
+
+/* `photon compare A.pfm B.pfm [--diff OUT.png|.ppm] [--ref-variance VB.pfm | --ref-error
+ * EB.pfm] [--test-variance VA.pfm | --test-error EA.pfm] [--confidence C] [--alpha ALPHA]
+ * [--block N] [--exit-status]`: argv[0] is "compare". Returns the exit status: 0, or 2 for
+ * bad input (messages on stderr), 1 for a --diff that could not be written; with
+ * --exit-status 0 consistent, 1 inconsistent, 2 bad input or no block testable. */
 int compare_command(int argc, char **argv);
 
 #endif

@@ -37,8 +37,12 @@ static inline void image_set(struct image *img, int x, int y, struct vec3 value)
  * through output_open()/output_commit(). Each double is rounded to the nearest float; an
  * image with a value beyond the float range is refused (-1, *err a failed write). */
 int pfm_write(const char *name, const struct image *img, struct error *err);
-/* Reads a colour PFM of either byte order. NULL with *err filled for anything malformed. */
+/* Reads a colour PFM of either byte order. NULL with *err filled for anything malformed,
+ * and for a value that is NaN or infinite. */
 struct image *pfm_read(const char *name, struct error *err);
+/* pfm_read() for an error image (modes/pixel_error.h), which may hold +Inf: a bound that
+ * cannot be stated. NaN and -Inf are refused still. */
+struct image *pfm_read_bounds(const char *name, struct error *err);
 
 /* The value a PFM keeps of v: v rounded to the nearest binary32 (clamped to +-FLT_MAX). */
 double pfm_stored_value(double v);

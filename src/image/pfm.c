@@ -238,8 +238,10 @@ static double decode_float(const unsigned char *b, int little_endian)
     return float_value(bits);
 }
 
+/* The pixels after the header; a value that is NaN or infinite is refused, but for +Inf
+ * when plus_infinity is set. */
 static int read_pixels(FILE *f, const char *name, const struct pfm_header *h,
-                       struct image *img, struct error *err)
+                       struct image *img, int plus_infinity, struct error *err)
 {
     int little_endian = h->scale < 0;
     double magnitude = fabs(h->scale);
@@ -251,16 +253,20 @@ static int read_pixels(FILE *f, const char *name, const struct pfm_header *h,
             struct vec3 v = vec3_scale(vec3(decode_float(b, little_endian),
                                             decode_float(b + 4, little_endian),
                                             decode_float(b + 8, little_endian)), magnitude);
-            if (!vec3_is_finite(v))
+            int allowed = vec3_is_finite(v) ||
+                          (plus_infinity && !isnan(v.x + v.y + v.z) &&
+                           v.x != -HUGE_VAL && v.y != -HUGE_VAL && v.z != -HUGE_VAL);
+            if (!allowed)
                 return error_set(err, name, 0, "pixel (%d, %d) from the top left is NaN or "
-                                               "infinite: photon reads only finite images", x, y);
+                                 "infinite: photon reads only finite images%s", x, y,
+                                 plus_infinity ? " and +Inf bounds" : "");
             image_set(img, x, y, v);
         }
     }
     return 0;
 }
 
-struct image *pfm_read(const char *name, struct error *err)
+static struct image *read_pfm(const char *name, int plus_infinity, struct error *err)
 {
     struct pfm_header h;
     struct image *img = NULL;
@@ -270,7 +276,7 @@ struct image *pfm_read(const char *name, struct error *err)
     if (read_header(in.f, name, &h, err) != 0 || check_data_size(in.f, name, &h, err) != 0)
         goto fail;
     img = image_create(h.width, h.height);
-    if (read_pixels(in.f, name, &h, img, err) != 0)
+    if (read_pixels(in.f, name, &h, img, plus_infinity, err) != 0)
         goto fail;
     input_close(&in);
     return img;
@@ -278,4 +284,14 @@ fail:
     image_free(img);
     input_close(&in);
     return NULL;
+}
+
+struct image *pfm_read(const char *name, struct error *err)
+{
+    return read_pfm(name, 0, err);
+}
+
+struct image *pfm_read_bounds(const char *name, struct error *err)
+{
+    return read_pfm(name, 1, err);
 }
