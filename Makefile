@@ -21,6 +21,10 @@
 #                   every photon mode on every shipped scene against its reference, the
 #                   table written into reference/suite.md (hours; says how long first;
 #                   ONLY=NAME for some scenes, MODES="1996 2009", QUALITY=reference)
+#   make calibration
+#                   whether each mode's stated error (--error) holds on every shipped scene,
+#                   at its defaults and at --target-error 0.02, against the references: the
+#                   table written into reference/suite.md (hours; ONLY=NAME for some scenes)
 #   make bench-embree SPD=DIR
 #                   the rays workload cast through Embree 3 beside photon in one run: both
 #                   throughputs, their ratio, both checksums (tests/bench/embree/bench_embree.c;
@@ -69,7 +73,7 @@ TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)) tests/benc
 BENCH_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/bench/*.c)))
 
 .PHONY: all run test test-spd check bench bench-embree bench-pbrt figures reference \
-        consistency fuzz crosscheck install uninstall clean
+        consistency calibration fuzz crosscheck install uninstall clean
 
 # test-spd refuses at once, before building anything, when it has no folder of SPD files.
 ifneq ($(filter test-spd,$(MAKECMDGOALS)),)
@@ -197,6 +201,11 @@ reference: $(BIN)
 # QUALITY=preset), the table into reference/suite.md.
 consistency: $(BIN)
 	PHOTON=./$(BIN) MODES='$(MODES)' QUALITY='$(QUALITY)' sh scripts/consistency.sh $(ONLY)
+
+# Whether the stated error holds: each mode that states one on the scenes of
+# reference/consistency.txt (ONLY=NAME ..., MODES=...), the table into reference/suite.md.
+calibration: $(BIN)
+	PHOTON=./$(BIN) MODES='$(MODES)' sh scripts/calibration.sh $(ONLY)
 
 # Fuzz targets (a development tool, not part of the product build): one per reader and
 # the option parser. Run

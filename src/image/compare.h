@@ -6,6 +6,7 @@
 #ifndef PHOTON_COMPARE_H
 #define PHOTON_COMPARE_H
 
+#include "../base/normal.h"
 #include "image.h"
 
 /* The metrics `photon compare` prints; definitions in compare.c and the README. */
@@ -72,11 +73,6 @@ struct consistency {
     size_t worst_pixel;   /* index y * width + x of the largest |z| (0 when all z are 0)   */
     double worst_z;       /* that |z|; +Inf for a difference where both variances are 0    */
 };
-
-/* Two-sided standard normal critical value: the z >= 0 with P(|Z| >= z) = p, that is
- * erfc(z / sqrt(2)) = p, for 0 < p <= 1 (z < 38.5 for every double p; accuracy in
- * compare.c: ~1e-15 for z < 7, 1.4e-14 at z = 37). */
-double normal_critical_two_sided(double p);
 
 /* Tests, per pixel and channel, whether test image a and reference b have the same mean
  * given the variances of their estimates: z = (a - b) / sqrt(var_a + var_b). var_a or

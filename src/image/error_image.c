@@ -5,8 +5,10 @@
 
 #include <assert.h>
 #include <math.h>
+#include <stdlib.h>
 
-#include "compare.h"
+#include "../base/alloc.h"
+#include "../base/normal.h"
 
 /* The mean luminance of image over [x0, x1) x [y0, y1) and the bound on it. */
 static void block_bound(const struct image *image, const struct image *error, int x0, int y0,
@@ -49,6 +51,73 @@ struct block_count blocks_within(const struct image *image, const struct image *
             }
         }
     return count;
+}
+
+/* The luminance standard error of a pixel whose channels' means have variances var:
+ * sum_c w_c sqrt(var_c), its channels being one estimate's. */
+static double luminance_sigma(struct vec3 var)
+{
+    return vec3_luminance(vec3(sqrt(var.x), sqrt(var.y), sqrt(var.z)));
+}
+
+/* Block [x0, x1) x [y0, y1): the means of a's and b's luminance and the standard errors
+ * of those means by var_a and var_b (NULL: 0), pixels independent. */
+static void block_means(const struct image *a, const struct image *var_a,
+                        const struct image *b, const struct image *var_b, int x0, int y0,
+                        int x1, int y1, double out[4])
+{
+    double sa = 0.0, sb = 0.0, va = 0.0, vb = 0.0;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            double ea = var_a != NULL ? luminance_sigma(image_get(var_a, x, y)) : 0.0;
+            double eb = var_b != NULL ? luminance_sigma(image_get(var_b, x, y)) : 0.0;
+            sa += vec3_luminance(image_get(a, x, y));
+            sb += vec3_luminance(image_get(b, x, y));
+            va += ea * ea;
+            vb += eb * eb;
+        }
+    double n = (double)(x1 - x0) * (double)(y1 - y0);
+    out[0] = sa / n;
+    out[1] = sb / n;
+    out[2] = sqrt(va) / n;
+    out[3] = sqrt(vb) / n;
+}
+
+static int by_value(const void *p, const void *q)
+{
+    double x = *(const double *)p, y = *(const double *)q;
+    return (x > y) - (x < y);
+}
+
+struct bound_check bound_check(const struct image *a, const struct image *var_a,
+                               const struct image *b, const struct image *var_b, double z)
+{
+    struct bound_check check = {0, 0, 0.0, 0.0};
+    int columns = (a->width + ERROR_BLOCK - 1) / ERROR_BLOCK;
+    int rows = (a->height + ERROR_BLOCK - 1) / ERROR_BLOCK;
+    double *ratio = xcalloc((size_t)columns * (size_t)rows, sizeof *ratio, "block ratios");
+    double bound2 = 0.0, error2 = 0.0;
+    for (int y0 = 0; y0 < a->height; y0 += ERROR_BLOCK)
+        for (int x0 = 0; x0 < a->width; x0 += ERROR_BLOCK) {
+            double m[4];
+            int x1 = x0 + ERROR_BLOCK < a->width ? x0 + ERROR_BLOCK : a->width;
+            int y1 = y0 + ERROR_BLOCK < a->height ? y0 + ERROR_BLOCK : a->height;
+            block_means(a, var_a, b, var_b, x0, y0, x1, y1, m);
+            if (m[1] < ERROR_DARK_FLOOR)
+                continue;
+            double d = fabs(m[0] - m[1]), bound = z * m[2];
+            check.covered += d <= sqrt(bound * bound + z * m[3] * z * m[3]);
+            ratio[check.n_blocks++] = d > 0 ? bound / d : HUGE_VAL;
+            bound2 += bound * bound;
+            error2 += d * d;
+        }
+    if (check.n_blocks > 0) {
+        qsort(ratio, (size_t)check.n_blocks, sizeof *ratio, by_value);
+        check.median_ratio = ratio[check.n_blocks / 2];
+        check.rms_ratio = error2 > 0 ? sqrt(bound2 / error2) : HUGE_VAL;
+    }
+    xfree(ratio);
+    return check;
 }
 
 struct error_summary error_summary(const struct image *image, const struct image *error,

@@ -34,6 +34,23 @@ struct block_count {
 struct block_count blocks_within(const struct image *image, const struct image *error, int x0,
                                  int y0, double e);
 
+/* How an error image's statement held against a reference (ERROR.md's words), block by
+ * block (the grid above, of the whole image the images are): a block's statement holds
+ * when |mean a - mean b| of its luminance is at most sqrt(B^2 + (z_c sigma_b)^2), B its
+ * bound by the rule above and sigma_b the reference's block standard error (0 without
+ * its variance), so that the reference's own noise is not counted against a. Blocks whose
+ * reference mean is below ERROR_DARK_FLOOR are left out. The images hold variances of
+ * the pixels' means (an error image's (B / z_c)^2, as compare reads it). */
+struct bound_check {
+    int n_blocks, covered; /* blocks judged and those whose statement held            */
+    double median_ratio;   /* the median over blocks of B / |mean a - mean b| (+Inf for
+                              equal means); an exact normal bound at 0.95 gives 2.91   */
+    double rms_ratio;      /* rms(B) / rms(mean a - mean b) over the blocks; an exact
+                              bound gives z_c, 1.96 at 0.95                            */
+};
+struct bound_check bound_check(const struct image *a, const struct image *var_a,
+                               const struct image *b, const struct image *var_b, double z);
+
 /* What --stats says of an error image at confidence c (image at (x0, y0) as above). */
 struct error_summary {
     double relmse;       /* estimated: the mean over pixels and channels of

@@ -8,7 +8,7 @@
 #include <math.h>
 
 #include "../base/alloc.h"
-#include "../image/compare.h"
+#include "../base/normal.h"
 
 /* The samples of one batch once a pixel has taken n: the least power of two m with
  * ERROR_BATCHES m >= n. */

@@ -1,0 +1,159 @@
+#!/bin/sh
+# scripts/calibration.sh [NAME ...] -- whether each mode's stated error holds: renders every
+# shipped scene of reference/consistency.txt with each mode that states a bound (--error),
+# at its defaults and at --target-error 0.02, compares each image with the scene's
+# reference (photon compare --test-error: the reference's own noise allowed for by its
+# variance image, where it has one) and writes the table into reference/suite.md (between
+# its <!-- calibration --> markers, before the consistency table). Run by
+# `make calibration` (ONLY=NAME ... for some scenes, MODES=... for some modes) from the top
+# of the repository after ./photon is built; PHOTON=PATH runs another binary.
+# `scripts/calibration.sh --rewrite` renders nothing and writes the table again from
+# build/calibration/.
+#
+# The renders take seed 7, which no bound was measured on. A --target-error render stops
+# at CALIBRATION_LIMIT CPU seconds (default 600) if it has not reached the target, and the
+# cell says how many blocks had. A mode that refuses --error on a scene (pt where a point
+# light's caustic needs a path it cannot find) is marked so.
+set -eu
+cd "$(dirname "$0")/.."
+photon=${PHOTON:-./photon}
+table=reference/consistency.txt
+out=reference/suite.md
+work=build/calibration
+modes=${MODES:-pt}
+limit=${CALIBRATION_LIMIT:-600}
+target=0.02
+mkdir -p "$work"
+
+rows() { sed -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' "$table"; }
+field() {
+    printf '%s\n' "$1" | awk -F'|' -v i="$2" '{ f = $i; gsub(/^[ \t]+|[ \t]+$/, "", f); print f }'
+}
+stat_of() { sed -n "s/^$2=//p" "$1" | tail -n 1; }
+key() { printf '%s\n' "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
+line_of() { rows | awk -F'|' -v n="$1" '{ f = $1; gsub(/[ \t]/, "", f) } f == n'; }
+
+all=$(rows | awk -F'|' '{ gsub(/[ \t]/, "", $1); print $1 }')
+rewrite=
+if [ "${1:-}" = --rewrite ]; then
+    rewrite=yes
+    shift
+fi
+names=${*:-$all}
+for name in $names; do
+    printf '%s\n' "$all" | grep -qx "$name" || {
+        echo "calibration: no scene named '$name' in $table" >&2
+        exit 2
+    }
+done
+
+# cell NAME MODE KIND: the table's cell from build/calibration/NAME-MODE-KIND.*.
+cell() {
+    base=$work/$1-$2-$3
+    [ -f "$base.log" ] || { echo "not run"; return; }
+    if [ ! -f "$base.compare" ]; then
+        echo "refuses --error"
+        return
+    fi
+    line=$(cat "$base.compare")
+    covered=$(key "$line" bound_covered)
+    verdict=$(awk -v c="$covered" -v m="$(key "$line" bound_median_ratio)" \
+        'BEGIN { print (c >= 0.95 && m <= 3) ? "holds" : (c >= 0.95 ? "loose" : "**misses**") }')
+    printf '%s: %s of %s blocks, ratio %s (rms %s), %s s' "$verdict" \
+        "$(awk -v c="$covered" 'BEGIN { printf "%.3f", c }')" "$(key "$line" bound_blocks)" \
+        "$(key "$line" bound_median_ratio)" "$(key "$line" bound_rms_ratio)" \
+        "$(awk -v s="$(stat_of "$base.log" seconds_total)" 'BEGIN { printf "%.0f", s }')"
+    if [ "$3" = target ]; then
+        within=$(stat_of "$base.log" target_blocks_within)
+        blocks=$(stat_of "$base.log" target_blocks)
+        [ "$within" = "$blocks" ] || printf ', stopped with %s of %s blocks at %s' \
+            "$within" "$blocks" "$target"
+        printf ', %s samples' "$(stat_of "$base.log" spp)"
+    fi
+}
+
+# write_table: the calibration section of reference/suite.md, in place of the old one or
+# before the consistency section.
+write_table() {
+    section=$work/section.md
+    {
+        echo "<!-- calibration -->"
+        echo "## Calibration: whether the stated error holds"
+        echo
+        echo "Written by \`make calibration\` (\`scripts/calibration.sh\`, the scenes of"
+        echo "\`reference/consistency.txt\`): each mode that states a bound (\`--error\`), at its"
+        echo "defaults and at \`--target-error $target\`, seed 7, against the scene's reference. A cell"
+        echo "gives the share of 16 × 16 blocks whose mean lies within the stated 95% bound of the"
+        echo "reference's (its own noise allowed for where it has a variance image), the median"
+        echo "over blocks of bound / error (and the ratio of their rms), and the CPU seconds. It"
+        echo "\"holds\" at a share of 0.95 or more and a median ratio of 3 or less (an exact normal"
+        echo "bound gives 2.91, and 1.96 for the rms); \"loose\" is a bound that holds with a larger"
+        echo "ratio. A target render stops at $limit CPU seconds."
+        echo
+        printf '| scene |'
+        for mode in $modes; do printf ' %s, defaults | %s, --target-error %s |' "$mode" "$mode" \
+            "$target"; done
+        echo
+        printf '|---|'
+        for mode in $modes; do printf -- '---|---|'; done
+        echo
+        for name in $all; do
+            printf '| `%s` |' "$name"
+            for mode in $modes; do
+                printf ' %s | %s |' "$(cell "$name" "$mode" defaults)" \
+                    "$(cell "$name" "$mode" target)"
+            done
+            echo
+        done
+        echo "<!-- /calibration -->"
+    } > "$section"
+    if grep -q '^<!-- calibration -->$' "$out"; then
+        awk -v f="$section" '
+            /^<!-- calibration -->$/ { while ((getline l < f) > 0) print l; skip = 1; next }
+            /^<!-- \/calibration -->$/ { skip = 0; next }
+            !skip' "$out" > "$out.tmp"
+    else
+        awk -v f="$section" '
+            /^<!-- consistency -->$/ { while ((getline l < f) > 0) print l; print "" }
+            { print }' "$out" > "$out.tmp"
+    fi
+    mv "$out.tmp" "$out"
+}
+
+if [ -n "$rewrite" ]; then
+    write_table
+    echo "calibration: the table is in $out, written again from $work"
+    exit 0
+fi
+
+for name in $names; do
+    line=$(line_of "$name")
+    scene=$(field "$line" 2)
+    reference=reference/$(field "$line" 3).pfm
+    options=$(field "$line" 4)
+    variance=reference/$(field "$line" 3)-var.pfm
+    noise=
+    [ ! -f "$variance" ] || noise="--ref-variance $variance"
+    for mode in $modes; do
+        for kind in defaults target; do
+            base=$work/$name-$mode-$kind
+            rm -f "$base.compare"
+            how=
+            [ "$kind" = defaults ] || how="--target-error $target --time-limit $limit"
+            echo "calibration: $name, --mode $mode $how $options"
+            # shellcheck disable=SC2086 # the options are words
+            if "$photon" --mode "$mode" $how $options --seed 7 --stats --no-progress "$scene" \
+                -o "$base.pfm" --error "$base-error.pfm" 2> "$base.log"; then
+                # shellcheck disable=SC2086
+                "$photon" compare "$base.pfm" "$reference" --test-error "$base-error.pfm" \
+                    $noise > "$base.compare"
+            elif ! grep -q -- '--error' "$base.log"; then
+                echo "calibration: --mode $mode failed on $scene: $(tail -n 1 "$base.log")" >&2
+                exit 1
+            fi
+            echo "calibration: $name, $mode, $kind: $(cell "$name" "$mode" "$kind")"
+        done
+    done
+    write_table
+done
+echo "calibration: the table is in $out"
