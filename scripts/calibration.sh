@@ -24,28 +24,8 @@ modes=${MODES:-pt}
 limit=${CALIBRATION_LIMIT:-600}
 target=0.02
 mkdir -p "$work"
-
-rows() { sed -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' "$table"; }
-field() {
-    printf '%s\n' "$1" | awk -F'|' -v i="$2" '{ f = $i; gsub(/^[ \t]+|[ \t]+$/, "", f); print f }'
-}
-stat_of() { sed -n "s/^$2=//p" "$1" | tail -n 1; }
-key() { printf '%s\n' "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
-line_of() { rows | awk -F'|' -v n="$1" '{ f = $1; gsub(/[ \t]/, "", f) } f == n'; }
-
-all=$(rows | awk -F'|' '{ gsub(/[ \t]/, "", $1); print $1 }')
-rewrite=
-if [ "${1:-}" = --rewrite ]; then
-    rewrite=yes
-    shift
-fi
-names=${*:-$all}
-for name in $names; do
-    printf '%s\n' "$all" | grep -qx "$name" || {
-        echo "calibration: no scene named '$name' in $table" >&2
-        exit 2
-    }
-done
+. scripts/suite-lib.sh
+suite_names calibration "$@"
 
 # cell NAME MODE KIND: the table's cell from build/calibration/NAME-MODE-KIND.*.
 cell() {
@@ -127,13 +107,7 @@ if [ -n "$rewrite" ]; then
 fi
 
 for name in $names; do
-    line=$(line_of "$name")
-    scene=$(field "$line" 2)
-    reference=reference/$(field "$line" 3).pfm
-    options=$(field "$line" 4)
-    variance=reference/$(field "$line" 3)-var.pfm
-    noise=
-    [ ! -f "$variance" ] || noise="--ref-variance $variance"
+    scene_of "$name"
     for mode in $modes; do
         for kind in defaults target; do
             base=$work/$name-$mode-$kind

@@ -27,29 +27,8 @@ work=build/consistency
 modes=${MODES:-photons 1994 1996 2008 2009}
 quality=${QUALITY:-default}
 mkdir -p "$work"
-
-rows() { sed -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' "$table"; }
-field() {
-    printf '%s\n' "$1" | awk -F'|' -v i="$2" '{ f = $i; gsub(/^[ \t]+|[ \t]+$/, "", f); print f }'
-}
-stat_of() { sed -n "s/^$2=//p" "$1" | tail -n 1; }
-key() { printf '%s\n' "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
-
-all=$(rows | awk -F'|' '{ gsub(/[ \t]/, "", $1); print $1 }')
-rewrite=
-if [ "${1:-}" = --rewrite ]; then
-    rewrite=yes
-    shift
-fi
-names=${*:-$all}
-for name in $names; do
-    printf '%s\n' "$all" | grep -qx "$name" || {
-        echo "consistency: no scene named '$name' in $table; the names are:" \
-            "$(printf '%s\n' "$all" | tr '\n' ' ')" >&2
-        exit 2
-    }
-done
-line_of() { rows | awk -F'|' -v n="$1" '{ f = $1; gsub(/[ \t]/, "", f) } f == n'; }
+. scripts/suite-lib.sh
+suite_names consistency "$@"
 
 # The plan: the table's estimate of each scene's CPU seconds for all five modes.
 if [ -z "$rewrite" ]; then
@@ -133,13 +112,7 @@ if [ -n "$rewrite" ]; then
 fi
 
 for name in $names; do
-    line=$(line_of "$name")
-    scene=$(field "$line" 2)
-    reference=reference/$(field "$line" 3).pfm
-    options=$(field "$line" 4)
-    variance=reference/$(field "$line" 3)-var.pfm
-    noise=
-    [ ! -f "$variance" ] || noise="--ref-variance $variance"
+    scene_of "$name"
     for mode in $modes; do
         base=$work/$name-$mode
         echo "consistency: $name, --mode $mode $options"

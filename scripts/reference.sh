@@ -33,20 +33,7 @@ table=reference/suite.txt
 out=reference/suite.md
 work=build/reference
 mkdir -p "$work"
-
-# The table's lines without comments or blank lines.
-rows() { sed -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' "$table"; }
-
-# field LINE I: the I-th `|`-separated field of LINE, trimmed.
-field() {
-    printf '%s\n' "$1" | awk -F'|' -v i="$2" '{ f = $i; gsub(/^[ \t]+|[ \t]+$/, "", f); print f }'
-}
-
-# stat_of LOG KEY: the value of KEY=VALUE among photon's --stats lines in LOG.
-stat_of() { sed -n "s/^$2=//p" "$1" | tail -n 1; }
-
-# key LINE KEY: the value of KEY=VALUE in one line of photon compare.
-key() { printf '%s\n' "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
+. scripts/suite-lib.sh
 
 # run LOG COMMAND...: runs a render with photon's stderr (the progress line, then --stats)
 # shown and kept in LOG; fails when the render does.
@@ -61,21 +48,7 @@ run() {
 }
 
 # Which references: the names given, each of which must be in the table, or all.
-all=$(rows | awk -F'|' '{ gsub(/[ \t]/, "", $1); print $1 }')
-rewrite=
-if [ "${1:-}" = "--rewrite" ]; then
-    rewrite=yes
-    shift
-fi
-names=${*:-$all}
-for name in $names; do
-    printf '%s\n' "$all" | grep -qx "$name" || {
-        echo "reference: no reference named '$name' in $table; the names are:" \
-            "$(printf '%s\n' "$all" | tr '\n' ' ')" >&2
-        exit 2
-    }
-done
-line_of() { rows | awk -F'|' -v n="$1" '{ f = $1; gsub(/[ \t]/, "", f) } f == n'; }
+suite_names reference "$@"
 
 # percent FRACTION: 0.0123 as 1.2%.
 percent() { awk -v f="$1" 'BEGIN { printf "%.1f%%", 100 * f }'; }
