@@ -11,8 +11,10 @@
  * consecutive points of the (0,2)-sequence is itself stratified over the pixel, so the
  * batches' spread sees the stratified estimate's error, which on a sharp outline falls
  * far faster than independent samples' would (on area-over-floor's light at 64 samples
- * the bound from single samples is 4.7 times the error's rms, from batches 2.8); the
- * whole mean, a finer stratification still, errs no more than the batches say.
+ * the bound from single samples is 4.7 times the error's rms, from 16 batches 2.8, from
+ * 8 batches 2.5); the whole mean, a finer stratification still, errs no more than the
+ * batches say. Fewer batches are tighter on outlines but each pixel's own spread is then
+ * noisier: 8 (4 to 8 full ones) is the count the figures below were measured at.
  *
  * Pooling. Estimated from the pixel's own samples alone, s^2 is unbiased but mostly too small
  * where rare samples carry much of the light (a sphere hiding a sliver of the sky, a
@@ -26,15 +28,16 @@
  * difference, so that a pixel inside a light seen directly (every sample the same) does
  * not take the spread of the light's outline. The bound is then
  *     B = z_c sqrt(max(s^2_own, s^2_pooled) / n),   z_c: P(|Z| <= z_c) = c,
- * a normal quantile: the pooled spread has at least 7 and mostly 25 times that many
- * degrees of freedom (k - 1 >= 7 a pixel), where Student's t and the normal differ by
- * under 1%. Measured at c = 0.95 against closed forms (tests/test_error.c prints them):
- * on scenes/analytic/sky-over-floor.scene the truth within B in 0.99, 0.98 and 0.97 of the
- * floor's pixels at 16, 64 and 256 samples, rms(B) / rms(error) 2.1-2.4 (an exact bound
- * gives 1.96); the pixel's own s^2 alone gives 0.57, 0.83 and 0.93, pooling over 3 x 3
- * pixels 0.95, 0.98 and 0.97. On area-over-floor.scene 0.97 and 0.96 at 16 and 64
- * samples; its light's outline, where at 16 samples every batch is one sample, makes
- * rms(B) / rms(error) 4.7 there (2.8 at 64), 2.1-2.3 the median over 8 x 8 blocks. Below
+ * a normal quantile: the pooled spread has at least 27 degrees of freedom (k - 1 >= 3 a
+ * pixel, 9 pixels in an image's corner) and mostly 175, where Student's t exceeds the
+ * normal by 5% and 0.6%. Measured at c = 0.95 against closed forms (tests/test_error.c
+ * prints them): on scenes/analytic/sky-over-floor.scene the truth within B in 0.99, 0.98
+ * and 0.97 of the floor's pixels at 16, 64 and 256 samples, rms(B) / rms(error) 2.2-2.3
+ * (an exact bound gives 1.96); the pixel's own s^2 alone gives 0.57, 0.83 and 0.93,
+ * pooling over 3 x 3 pixels 0.95, 0.98 and 0.97, the pooled s^2 alone without the own
+ * 0.96, 0.95 and 0.96. On area-over-floor.scene 0.97 at 16 and 64 samples; its light's
+ * outline makes rms(B) / rms(error) 4.2 there at 16 samples (2.5 at 64), 2.2-2.4 the
+ * median over 8 x 8 blocks. Below
  * ERROR_MIN_SPP samples even the pooled spread misses the rare values (0.89 at 4
  * samples), so the command line asks for at least that many.
  *
@@ -49,7 +52,7 @@
 
 #define ERROR_POOL_RADIUS 2 /* pixels each side whose samples a pixel's spread pools     */
 #define ERROR_MIN_SPP 16    /* samples a pixel needs for an error image (above)            */
-#define ERROR_BATCHES 16    /* the batches a pixel's samples are kept in (above)            */
+#define ERROR_BATCHES 8     /* the batches a pixel's samples are kept in (above)            */
 #define POOL_AGREEMENT_Z 3  /* a neighbour joins the pool when its mean and the pixel's
                                differ by at most this many standard errors of the
                                difference (above)                                          */
@@ -73,5 +76,11 @@ struct pixel_sums {
  * has no spread to state: the caller guarantees n >= 2 everywhere (asserted). */
 struct image *pooled_error_image(const struct pixel_sums *sums, int x0, int y0, int x1, int y1,
                                  double confidence);
+
+/* For each pixel of the sums' window and each channel, the mean over its pool (the
+ * pixels within ERROR_POOL_RADIUS whose means agree with its own, as pooled_error_image()
+ * pools their spreads) of another series' batches, batches (3 ERROR_BATCHES per pixel,
+ * kept as the sums' are: the same n), into pooled (as many). */
+void pooled_batch_means(const struct pixel_sums *sums, const double *batches, double *pooled);
 
 #endif
