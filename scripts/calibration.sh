@@ -38,7 +38,7 @@ cell() {
     line=$(cat "$base.compare")
     covered=$(key "$line" bound_covered)
     verdict=$(awk -v c="$covered" -v m="$(key "$line" bound_median_ratio)" \
-        'BEGIN { print (c >= 0.95 && m <= 3) ? "holds" : (c >= 0.95 ? "loose" : "**misses**") }')
+        'BEGIN { print (c >= 0.95 && m <= 4.4) ? "holds" : (c >= 0.95 ? "loose" : "**misses**") }')
     printf '%s: %s of %s blocks, ratio %s (rms %s), %s s' "$verdict" \
         "$(awk -v c="$covered" 'BEGIN { printf "%.3f", c }')" "$(key "$line" bound_blocks)" \
         "$(key "$line" bound_median_ratio)" "$(key "$line" bound_rms_ratio)" \
@@ -65,10 +65,11 @@ write_table() {
         echo "defaults and at \`--target-error $target\`, seed 7, against the scene's reference. A cell"
         echo "gives the share of 16 × 16 blocks whose mean lies within the stated 95% bound of the"
         echo "reference's (its own noise allowed for where it has a variance image), the median"
-        echo "over blocks of bound / error (and the ratio of their rms), and the CPU seconds. It"
-        echo "\"holds\" at a share of 0.95 or more and a median ratio of 3 or less (an exact normal"
-        echo "bound gives 2.91, and 1.96 for the rms); \"loose\" is a bound that holds with a larger"
-        echo "ratio. A target render stops at $limit CPU seconds."
+        echo "over blocks of bound / error (and the ratio of their rms), and the CPU seconds. An"
+        echo "exact normal bound has a median ratio of 2.91 and an rms ratio of 1.96; a cell"
+        echo "\"holds\" at a share of 0.95 or more and a median ratio of 4.4 or less (1.5 times the"
+        echo "exact bound's, as an rms ratio of 3 is of 1.96), and is \"loose\" with a larger one."
+        echo "A target render stops at $limit CPU seconds."
         echo
         printf '| scene |'
         for mode in $modes; do printf ' %s, defaults | %s, --target-error %s |' "$mode" "$mode" \
