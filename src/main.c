@@ -268,7 +268,8 @@ static void print_jensen1994_stats(const struct jensen1994_stats *stats)
 static void print_error_stats(const struct render_result *result, double confidence, int x0,
                               int y0)
 {
-    struct error_summary s = error_summary(result->image, result->error, confidence, x0, y0);
+    struct stated_error stated = {result->error, result->bias, result->block_noise};
+    struct error_summary s = error_summary(result->image, &stated, confidence, x0, y0);
     fprintf(stderr, "confidence=%.6g\nestimated_relmse=%.6g\nbounded_blocks=%d\n",
             confidence, s.relmse, s.n_blocks);
     fprintf(stderr, "blocks_within_1pct=%.4f\nblocks_within_3pct=%.4f\n",
@@ -377,7 +378,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
     switch (run->o.mode) {
     case MODE_PT:
         if (pt_unreachable_light(run->scene) >= 0 && run->rs.error_confidence > 0) {
-            struct render_result none = {NULL, NULL, NULL, 0.0};
+            struct render_result none = {NULL, NULL, NULL, NULL, NULL, 0.0};
             error_set(err, run->o.scene_path, 0, "%s: pt cannot find the caustics of this "
                       "scene's point lights, and its bound cannot state light it never "
                       "samples; 1996 and 2009 render them",
@@ -507,9 +508,10 @@ static void report_target(const struct run *run)
     if (run->o.target_error == 0 || c->target_within == c->target_blocks)
         return;
     fprintf(stderr, "photon: --target-error %g: %d of %d blocks not within it after %d "
-            "samples per pixel, the first at (%d, %d)\n", run->o.target_error,
+            "%s, the first at (%d, %d)\n", run->o.target_error,
             c->target_blocks - c->target_within, c->target_blocks, c->passes,
-            c->target_missed_x, c->target_missed_y);
+            run->o.mode == MODE_SPPM2009 ? "passes" : "samples per pixel", c->target_missed_x,
+            c->target_missed_y);
 }
 
 static int render_command(struct run *run, struct error *err)
@@ -565,6 +567,8 @@ int main(int argc, char **argv)
     run.result.image = NULL;
     run.result.variance = NULL;
     run.result.error = NULL;
+    run.result.bias = NULL;
+    run.result.block_noise = NULL;
     run.work.maps = NULL;
     run.work.records = NULL;
     run.work.illumination = NULL;

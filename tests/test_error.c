@@ -6,9 +6,7 @@
  */
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 
-#include "../src/base/alloc.h"
 #include "../src/image/error_image.h"
 #include "../src/modes/pixel_error.h"
 #include "../src/modes/pt.h"
@@ -23,36 +21,8 @@ static double sky_over_floor_with_sphere(struct ray r)
     return sky_over_floor(r, 1);
 }
 
-/* The truth of pixel (x, y): the mean of along() over its square, a 16 x 16 midpoint
- * rule. */
-static double pixel_truth(const struct scene *scene, int x, int y, double (*along)(struct ray))
-{
-    double sum = 0.0;
-    for (int j = 0; j < 16; j++)
-        for (int i = 0; i < 16; i++)
-            sum += along(camera_ray(&scene->camera, x + (i + 0.5) / 16, y + (j + 0.5) / 16));
-    return sum / 256.0;
-}
-
-#define SHARPNESS_BLOCK 8
-
-struct coverage {
-    double covered;   /* fraction of pixels and channels with |image - truth| <= bound */
-    double sharpness; /* median over SHARPNESS_BLOCK-wide blocks of rms(bound) /
-                         rms(image - truth) in the block (ERROR.md): rms over the whole
-                         image weighs the brightest pixels alone                        */
-    double rms_ratio; /* rms(bound) / rms(image - truth) over the whole image           */
-};
-
-static int by_value(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* pt's image and error image at 0.95 of the scene at path, width x height, against the
- * closed form along(); pixels whose truth is 0 (the black sphere, where pt's samples are
- * all exactly 0 too) say nothing and are left out. */
+ * closed form along() (coverage_of()). */
 static struct coverage pt_coverage(const char *path, int width, int height, int spp,
                                    uint64_t seed, double (*along)(struct ray))
 {
@@ -64,37 +34,7 @@ static struct coverage pt_coverage(const char *path, int width, int height, int 
     rs.error_confidence = 0.95;
     struct render_counters counters = {0};
     struct render_result result = render_pt(scene, &rs, 0, NULL, &counters);
-    int bw = (width + SHARPNESS_BLOCK - 1) / SHARPNESS_BLOCK;
-    int bh = (height + SHARPNESS_BLOCK - 1) / SHARPNESS_BLOCK;
-    double *block_b2 = xcalloc((size_t)(2 * bw * bh), sizeof *block_b2, "test blocks");
-    double *block_e2 = block_b2 + bw * bh;
-    double n = 0, within = 0, bound2 = 0, error2 = 0;
-    for (int y = 0; y < height; y++)
-        for (int x = 0; x < width; x++) {
-            double truth = pixel_truth(scene, x, y, along);
-            if (truth == 0)
-                continue;
-            int k = y / SHARPNESS_BLOCK * bw + x / SHARPNESS_BLOCK;
-            for (int c = 0; c < 3; c++) {
-                double e = vec3_get(image_get(result.image, x, y), c) - truth;
-                double b = vec3_get(image_get(result.error, x, y), c);
-                n++;
-                within += fabs(e) <= b;
-                bound2 += b * b;
-                error2 += e * e;
-                block_b2[k] += b * b;
-                block_e2[k] += e * e;
-            }
-        }
-    int n_blocks = 0;
-    for (int k = 0; k < bw * bh; k++)
-        if (block_e2[k] > 0)
-            block_b2[n_blocks++] = sqrt(block_b2[k] / block_e2[k]);
-    qsort(block_b2, (size_t)n_blocks, sizeof *block_b2, by_value);
-    cover.covered = within / n;
-    cover.sharpness = block_b2[n_blocks / 2];
-    cover.rms_ratio = sqrt(bound2 / error2);
-    xfree(block_b2);
+    cover = coverage_of(scene, result.image, result.error, NULL, along);
     render_result_free(&result);
     scene_free(scene);
     return cover;
@@ -181,7 +121,7 @@ static double target_render(double e, int *passes, int *all_within)
             for (int y = by; y < by + 16; y++)
                 for (int x = bx; x < bx + 16; x++) {
                     mean += vec3_luminance(image_get(result.image, x, y));
-                    truth += pixel_truth(scene, x, y, sky_over_floor_with_sphere);
+                    truth += pixel_closed_form(scene, x, y, sky_over_floor_with_sphere);
                 }
             if (truth < 256 * ERROR_DARK_FLOOR)
                 continue; /* inside the sphere's image: left out as the render does */
@@ -228,6 +168,37 @@ static void test_target_error(struct check *t)
     remove(OUT ".png");
 }
 
+/* truth: four 16 x 16 blocks worked by hand: every pixel of a has variance 0.16^2 in each
+ *   channel, so a block's luminance standard error is 0.16 / 16 = 0.01 and its 95% bound
+ *   B = 0.0196; a's block means exceed b's by 0.01, 0.019, 0.021 and 0.05.
+ * tolerance: exact counts; the ratios to 1e-12.
+ * catches: a bound taken per pixel rather than in quadrature over the block (0.16 z),
+ *   the reference's noise ignored or counted against a, the median of the wrong order. */
+static void test_bound_check(struct check *t)
+{
+    static const double d[4] = {0.01, 0.019, 0.021, 0.05};
+    struct image *a = image_create(32, 32), *b = image_create(32, 32);
+    struct image *var = image_create(32, 32);
+    for (int y = 0; y < 32; y++)
+        for (int x = 0; x < 32; x++) {
+            double v = 0.5 + d[y / 16 * 2 + x / 16];
+            image_set(a, x, y, vec3(v, v, v));
+            image_set(b, x, y, vec3(0.5, 0.5, 0.5));
+            image_set(var, x, y, vec3(0.0256, 0.0256, 0.0256));
+        }
+    double z = 1.959963984540054, bound = z * 0.01;
+    struct bound_check c = bound_check(a, var, b, NULL, z);
+    CHECK(t, c.n_blocks == 4 && c.covered == 2);
+    CHECK(t, fabs(c.median_ratio - bound / 0.019) < 1e-12);
+    double rms_error = sqrt((0.01 * 0.01 + 0.019 * 0.019 + 0.021 * 0.021 + 0.05 * 0.05) / 4);
+    CHECK(t, fabs(c.rms_ratio - bound / rms_error) < 1e-12);
+    c = bound_check(a, var, b, var, z); /* the reference as noisy: sqrt(2) B allowed */
+    CHECK(t, c.n_blocks == 4 && c.covered == 3);
+    image_free(var);
+    image_free(b);
+    image_free(a);
+}
+
 /* truth: the README's rules for --error and --confidence.
  * tolerance: exit status 2, the message, and no file left.
  * catches: a bound stated where the samples are too few to see rare values, where a
@@ -245,9 +216,9 @@ static void test_error_refusals(struct check *t)
     };
     CHECK(t, refuses_options("pt", bad, sizeof bad / sizeof bad[0], OUT) == 0);
     static const char *const not_pt[][2] = {
-        {"--error " OUT "_e.pfm", "--error: only for --mode pt"},
+        {"--error " OUT "_e.pfm", "--error: only for --mode pt or 2009"},
     };
-    CHECK(t, refuses_options("2009", not_pt, 1, OUT) == 0);
+    CHECK(t, refuses_options("2008", not_pt, 1, OUT) == 0);
     CHECK(t, !file_exists(OUT "_e.pfm"));
     /* a point light's caustic pt never samples: no bound can state it */
     CHECK(t, photon_logged("", "--mode pt --spp 16 --width 8 --height 8 --error " OUT
@@ -263,5 +234,6 @@ void test_error(struct check *t)
     RUN_TEST(t, test_pt_bound_covers_closed_forms);
     RUN_TEST(t, test_crop_error_is_window);
     RUN_TEST(t, test_target_error);
+    RUN_TEST(t, test_bound_check);
     RUN_TEST(t, test_error_refusals);
 }

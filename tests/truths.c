@@ -4,10 +4,12 @@
 #include "truths.h"
 
 #include "files.h"
+#include "../src/base/alloc.h"
 #include "../src/modes/pt.h"
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 double polygon_irradiance(const struct vec3 *v, int count, struct vec3 p, struct vec3 n,
@@ -72,6 +74,70 @@ static double plane_radiance(const struct scene *scene, double px, double py)
     struct vec3 x = ray_at(r, -r.origin.y / r.dir.y); /* where the ray meets y = 0 */
     double d = vec3_length(vec3_sub(x, vec3(0, 1, 0)));
     return 0.5 * 1000 * 1.0 / (4 * PI * PI * d * d * d);
+}
+
+double point_over_plane(struct ray r)
+{
+    struct vec3 x = ray_at(r, -r.origin.y / r.dir.y);
+    double d = vec3_length(vec3_sub(x, vec3(0, 1, 0)));
+    return 0.5 * 1000 / (4 * PI * PI * d * d * d);
+}
+
+double pixel_closed_form(const struct scene *scene, int x, int y, double (*along)(struct ray))
+{
+    double sum = 0.0;
+    for (int j = 0; j < 16; j++)
+        for (int i = 0; i < 16; i++)
+            sum += along(camera_ray(&scene->camera, x + (i + 0.5) / 16, y + (j + 0.5) / 16));
+    return sum / 256.0;
+}
+
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+struct coverage coverage_of(const struct scene *scene, const struct image *image,
+                            const struct image *error, const struct image *without,
+                            double (*along)(struct ray))
+{
+    struct coverage cover = {0.0, 0.0, 0.0};
+    int width = image->width, height = image->height;
+    int bw = (width + COVERAGE_BLOCK - 1) / COVERAGE_BLOCK;
+    int bh = (height + COVERAGE_BLOCK - 1) / COVERAGE_BLOCK;
+    double *block_b2 = xcalloc((size_t)(2 * bw * bh), sizeof *block_b2, "test blocks");
+    double *block_e2 = block_b2 + bw * bh;
+    double n = 0, within = 0, bound2 = 0, error2 = 0;
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++) {
+            double truth = pixel_closed_form(scene, x, y, along);
+            if (truth == 0)
+                continue;
+            int k = y / COVERAGE_BLOCK * bw + x / COVERAGE_BLOCK;
+            for (int c = 0; c < 3; c++) {
+                double e = vec3_get(image_get(image, x, y), c) - truth;
+                double b = vec3_get(image_get(error, x, y), c);
+                if (without != NULL)
+                    b -= fabs(vec3_get(image_get(without, x, y), c));
+                n++;
+                within += fabs(e) <= b;
+                bound2 += b * b;
+                error2 += e * e;
+                block_b2[k] += b * b;
+                block_e2[k] += e * e;
+            }
+        }
+    int n_blocks = 0;
+    for (int k = 0; k < bw * bh; k++)
+        if (block_e2[k] > 0)
+            block_b2[n_blocks++] = sqrt(block_b2[k] / block_e2[k]);
+    qsort(block_b2, (size_t)n_blocks, sizeof *block_b2, by_value);
+    cover.covered = n > 0 ? within / n : 0.0;
+    cover.sharpness = n_blocks > 0 ? block_b2[n_blocks / 2] : 0.0;
+    cover.rms_ratio = error2 > 0 ? sqrt(bound2 / error2) : 0.0;
+    xfree(block_b2);
+    return cover;
 }
 
 double point_over_plane_sample(const struct scene *scene, int x, int y)

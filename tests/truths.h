@@ -36,6 +36,34 @@ double area_over_floor(struct ray r);
 #define SKY_H 1.0
 double sky_over_floor(struct ray r, int sphere);
 
+/* scenes/analytic/point-over-plane.scene's closed form along camera ray r: where r meets
+ * the plane y = 0, L = rho Phi h / (4 pi^2 d^3) (test_error_2009.c). */
+double point_over_plane(struct ray r);
+
+/* The truth of pixel (x, y): the mean of along() over its square, a 16 x 16 midpoint
+ * rule (test_error.c, test_error_2009.c). */
+double pixel_closed_form(const struct scene *scene, int x, int y, double (*along)(struct ray));
+
+/* How an error image (--error) states the error of its image against a closed form, in
+ * ERROR.md's words (test_error.c, test_error_2009.c). */
+struct coverage {
+    double covered;   /* fraction of pixels and channels with |image - truth| <= bound */
+    double sharpness; /* median over COVERAGE_BLOCK-wide blocks of rms(bound) /
+                         rms(image - truth) in the block (ERROR.md): rms over the whole
+                         image weighs the brightest pixels alone                        */
+    double rms_ratio; /* rms(bound) / rms(image - truth) over the whole image           */
+};
+#define COVERAGE_BLOCK 8
+
+/* The coverage of image (a render of scene, finished, same size) by its error image
+ * against the closed form along(), pixel_closed_form() per pixel; with without != NULL, of the
+ * bound less |without| (a part of it, to show what that part adds). Pixels whose truth is
+ * 0 (a black sphere, where the samples are all exactly 0 too) say nothing and are left
+ * out. */
+struct coverage coverage_of(const struct scene *scene, const struct image *image,
+                            const struct image *error, const struct image *without,
+                            double (*along)(struct ray));
+
 /* Whether every pixel of image, a render of scenes/analytic/point-over-plane.scene
  * (finished, same size), lies within the closed form L = rho Phi h / (4 pi^2 d^3) over its
  * square: a pixel is the mean of L there, so it must lie between the least and the

@@ -192,18 +192,22 @@ static int check_idle(const struct options *o, const struct command_words *words
     return 0;
 }
 
-/* The bound of --error and --target-error (modes/pixel_error.h) holds for the pixel's
- * expected value only where that is the truth and its samples are many enough to see
- * their rare values. */
+/* The bound of --error and --target-error (modes/pixel_error.h; 2009:
+ * modes/sppm_error.h) holds for the pixel's expected value only where that is the truth
+ * (or its bias is stated) and its samples (2009: passes) are many enough to see their
+ * rare values. */
 static int check_error_bound(const struct options *o, struct error *err)
 {
-    if ((o->error == NULL && o->target_error == 0) || o->mode != MODE_PT)
+    if ((o->error == NULL && o->target_error == 0) ||
+        (o->mode != MODE_PT && o->mode != MODE_SPPM2009))
         return 0; /* check_modes() refuses the other modes */
     const char *name = o->error != NULL ? "--error" : "--target-error";
-    if (o->spp < ERROR_MIN_SPP)
-        return error_set(err, "", 0, "%s: needs --spp >= %d (with %d, even the spread "
+    int passes = o->mode == MODE_SPPM2009, n = passes ? o->passes : o->spp;
+    if (n < ERROR_MIN_SPP)
+        return error_set(err, "", 0, "%s: needs %s >= %d (with %d, even the spread "
                          "pooled over 5 x 5 pixels misses the rare bright samples, and the "
-                         "bound with it)", name, ERROR_MIN_SPP, o->spp);
+                         "bound with it)", name, passes ? "--passes" : "--spp", ERROR_MIN_SPP,
+                         n);
     if (o->adaptive > 0)
         return error_set(err, "", 0, "%s: not with --adaptive, whose rule stops a pixel by "
                          "its own samples and so biases it by an amount no spread states",

@@ -10,36 +10,74 @@
 #include "../base/alloc.h"
 #include "../base/normal.h"
 
-/* The mean luminance of image over [x0, x1) x [y0, y1) and the bound on it. */
-static void block_bound(const struct image *image, const struct image *error, int x0, int y0,
-                        int x1, int y1, double *mean, double *bound)
+void error_block_grid(int x0, int y0, int width, int height, int *columns, int *rows)
 {
-    double sum = 0.0, bound2 = 0.0;
-    for (int y = y0; y < y1; y++)
-        for (int x = x0; x < x1; x++) {
-            double b = vec3_luminance(image_get(error, x, y));
-            sum += vec3_luminance(image_get(image, x, y));
-            bound2 += b * b;
-        }
-    double n = (double)(x1 - x0) * (double)(y1 - y0);
-    *mean = sum / n;
-    *bound = sqrt(bound2) / n;
+    /* the grid's first row and column start at or before the window's top left pixel */
+    *columns = (x0 % ERROR_BLOCK + width + ERROR_BLOCK - 1) / ERROR_BLOCK;
+    *rows = (y0 % ERROR_BLOCK + height + ERROR_BLOCK - 1) / ERROR_BLOCK;
 }
 
-struct block_count blocks_within(const struct image *image, const struct image *error, int x0,
-                                 int y0, double e)
+void error_block_window(int x0, int y0, int width, int height, int column, int row, int *u0,
+                        int *v0, int *u1, int *v1)
 {
-    assert(image->width == error->width && image->height == error->height);
+    int bx = x0 - x0 % ERROR_BLOCK + column * ERROR_BLOCK;
+    int by = y0 - y0 % ERROR_BLOCK + row * ERROR_BLOCK;
+    *u0 = bx > x0 ? bx - x0 : 0;
+    *v0 = by > y0 ? by - y0 : 0;
+    *u1 = bx + ERROR_BLOCK - x0 < width ? bx + ERROR_BLOCK - x0 : width;
+    *v1 = by + ERROR_BLOCK - y0 < height ? by + ERROR_BLOCK - y0 : height;
+}
+
+/* Pixel (x, y)'s estimated bias b (signed, per channel) and its bound's noise part
+ * B - |b|: b = 0 without a bias image. */
+static void bound_parts(const struct stated_error *stated, int x, int y, struct vec3 *b,
+                        struct vec3 *noise)
+{
+    *b = stated->bias != NULL ? image_get(stated->bias, x, y) : vec3_zero();
+    struct vec3 bound = image_get(stated->error, x, y);
+    *noise = vec3(bound.x - fabs(b->x), bound.y - fabs(b->y), bound.z - fabs(b->z));
+}
+
+/* The mean luminance of image over block (column, row)'s pixels [u0, u1) x [v0, v1) and
+ * the bound on it (error_image.h). */
+static void block_bound(const struct image *image, const struct stated_error *stated,
+                        int column, int row, int u0, int v0, int u1, int v1, double *mean,
+                        double *bound)
+{
+    double sum = 0.0, bias_sum = 0.0, noise2 = 0.0;
+    for (int y = v0; y < v1; y++)
+        for (int x = u0; x < u1; x++) {
+            struct vec3 b, noise;
+            bound_parts(stated, x, y, &b, &noise);
+            double s = vec3_luminance(noise);
+            sum += vec3_luminance(image_get(image, x, y));
+            bias_sum += vec3_luminance(b);
+            noise2 += s * s;
+        }
+    double n = (double)(u1 - u0) * (double)(v1 - v0);
+    double noise = stated->block_noise != NULL
+                       ? vec3_luminance(image_get(stated->block_noise, column, row))
+                       : sqrt(noise2) / n;
+    *mean = sum / n;
+    *bound = fabs(bias_sum) / n + noise;
+}
+
+struct block_count blocks_within(const struct image *image, const struct stated_error *stated,
+                                 int x0, int y0, double e)
+{
+    assert(image->width == stated->error->width && image->height == stated->error->height);
     struct block_count count = {0, 0, -1, -1};
-    /* the grid's first row and column start at or before the image's top left pixel */
-    for (int by = y0 - y0 % ERROR_BLOCK; by < y0 + image->height; by += ERROR_BLOCK)
-        for (int bx = x0 - x0 % ERROR_BLOCK; bx < x0 + image->width; bx += ERROR_BLOCK) {
-            int u0 = bx > x0 ? bx - x0 : 0, v0 = by > y0 ? by - y0 : 0;
-            int u1 = bx + ERROR_BLOCK - x0 < image->width ? bx + ERROR_BLOCK - x0 : image->width;
-            int v1 = by + ERROR_BLOCK - y0 < image->height ? by + ERROR_BLOCK - y0
-                                                           : image->height;
+    int columns, rows;
+    error_block_grid(x0, y0, image->width, image->height, &columns, &rows);
+    assert(stated->block_noise == NULL || (stated->block_noise->width == columns &&
+                                           stated->block_noise->height == rows));
+    for (int row = 0; row < rows; row++)
+        for (int column = 0; column < columns; column++) {
+            int u0, v0, u1, v1;
+            error_block_window(x0, y0, image->width, image->height, column, row, &u0, &v0,
+                               &u1, &v1);
             double mean, bound;
-            block_bound(image, error, u0, v0, u1, v1, &mean, &bound);
+            block_bound(image, stated, column, row, u0, v0, u1, v1, &mean, &bound);
             if (mean < ERROR_DARK_FLOOR)
                 continue;
             count.n_blocks++;
@@ -120,20 +158,23 @@ struct bound_check bound_check(const struct image *a, const struct image *var_a,
     return check;
 }
 
-struct error_summary error_summary(const struct image *image, const struct image *error,
+struct error_summary error_summary(const struct image *image, const struct stated_error *stated,
                                    double confidence, int x0, int y0)
 {
     struct error_summary s = {0.0, 0, 0, 0};
     double z = normal_critical_two_sided(1.0 - confidence);
-    size_t n = (size_t)image->width * (size_t)image->height;
-    for (size_t i = 0; i < n; i++)
-        for (int c = 0; c < 3; c++) {
-            double sigma = vec3_get(error->pixels[i], c) / z, v = vec3_get(image->pixels[i], c);
-            s.relmse += sigma * sigma / (v * v + 1e-2);
+    for (int y = 0; y < image->height; y++)
+        for (int x = 0; x < image->width; x++) {
+            struct vec3 b, noise;
+            bound_parts(stated, x, y, &b, &noise);
+            for (int c = 0; c < 3; c++) {
+                double sigma = vec3_get(noise, c) / z, v = vec3_get(image_get(image, x, y), c);
+                s.relmse += (vec3_get(b, c) * vec3_get(b, c) + sigma * sigma) / (v * v + 1e-2);
+            }
         }
-    s.relmse /= 3.0 * (double)n;
-    struct block_count one = blocks_within(image, error, x0, y0, 0.01);
-    struct block_count three = blocks_within(image, error, x0, y0, 0.03);
+    s.relmse /= 3.0 * (double)image->width * (double)image->height;
+    struct block_count one = blocks_within(image, stated, x0, y0, 0.01);
+    struct block_count three = blocks_within(image, stated, x0, y0, 0.03);
     s.n_blocks = one.n_blocks;
     s.within_1 = one.within;
     s.within_3 = three.within;

@@ -10,9 +10,7 @@
 #include "../base/alloc.h"
 #include "../base/normal.h"
 
-/* The samples of one batch once a pixel has taken n: the least power of two m with
- * ERROR_BATCHES m >= n. */
-static int batch_size(int n)
+int error_batch_size(int n)
 {
     int m = 1;
     while (ERROR_BATCHES * m < n)
@@ -22,7 +20,7 @@ static int batch_size(int n)
 
 void error_batches_add(double *batches, int n, const double v[3])
 {
-    int m = batch_size(n + 1);
+    int m = error_batch_size(n + 1);
     if (m > 1 && n == ERROR_BATCHES * (m / 2)) { /* every batch full: pairs become one */
         for (int k = 0; k < ERROR_BATCHES; k++)
             for (int c = 0; c < 3; c++)
@@ -39,7 +37,7 @@ void error_batches_add(double *batches, int n, const double v[3])
  * k - 1 (*freedom) it estimates the variance of one sample's worth, s^2. */
 static double batch_deviations(const struct pixel_sums *sums, size_t i, int c, double *freedom)
 {
-    int n = sums->n[i], m = batch_size(n), k = n / m;
+    int n = sums->n[i], m = error_batch_size(n), k = n / m;
     const double *b = sums->batches + (size_t)3 * ERROR_BATCHES * i;
     double mean = 0.0, deviations = 0.0;
     for (int j = 0; j < k; j++)

@@ -57,6 +57,10 @@
                                differ by at most this many standard errors of the
                                difference (above)                                          */
 
+/* The samples of one batch once a pixel has taken n: the least power of two m with
+ * ERROR_BATCHES m >= n (n / m of the batches are full). */
+int error_batch_size(int n);
+
 /* Adds sample v (per channel) to a pixel's 3 ERROR_BATCHES batch sums (zero before its
  * first sample), after the n it has taken: the batches of m samples (above) in sample
  * order, m doubling, and pairs of batches becoming one, whenever every batch is full. */

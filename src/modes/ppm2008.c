@@ -614,12 +614,12 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     stats->bytes_per_hit_point = sizeof(struct hit_point) + HIT_POINT_TREE_BYTES_PER_POINT;
     stats->hit_members = ppm.n_members;
     stats->initial_mean_radius = mean_radius(&ppm);
-    struct render_result result = {NULL, NULL, NULL, 0.0};
+    struct render_result result = {NULL, NULL, NULL, NULL, NULL, 0.0};
     result.image = image_create(ppm.width, ppm.height);
 
     /* The photon tracing passes, each followed by the new eye ray a pixel. */
     struct progressive_steps steps = {&ppm, NULL, add_photon, eye_ray_pass, progressive_update,
-                                      evaluate_image, mean_radius};
+                                      evaluate_image, mean_radius, NULL, NULL};
     struct progressive_run run = progressive_passes(&steps, scene, rs, common,
                                                     stats->seconds_ray_pass, result.image,
                                                     &stats->photon_rays);

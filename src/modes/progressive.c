@@ -8,6 +8,10 @@
  * eye ray a pixel) and the update; between passes come the checkpoints and the progress
  * line, whose time is not counted.
  *
+ * With a target error (2009's --target-error) the mode judges its image after the passes
+ * target_judged_after() names, pt's schedule, and the loop ends once it is reached; with
+ * an error image no time limit ends it before ERROR_MIN_SPP passes, which the image needs.
+ *
  * The photon tracing pass is the same in both modes: ps->photons_per_pass photons with
  * the shared tracer, each stored photon handed to the mode at once (no photon is kept
  * after it has been added); photon i of pass p draws from rng_stream(seed,
@@ -20,6 +24,7 @@
 #include <time.h>
 
 #include "../photon/trace.h"
+#include "pixel_error.h"
 
 /* The photons that reach hit points when a light sample takes the direct light: those
  * after a diffuse bounce, and caustics (L S+ D), which no shadow ray sees the light by. */
@@ -56,12 +61,21 @@ static size_t photon_tracing_pass(const struct progressive_steps *steps,
     return ts.n_emit;
 }
 
-static void show_progress(long pass, long passes, double photons, double mean_radius,
-                          double seconds, int done)
+/* The progress line; with a target error, the blocks within it at the last judgement
+ * (none before ERROR_MIN_SPP passes) in place of the time left. */
+static void show_progress(const struct progressive_steps *steps,
+                          const struct render_settings *rs, long pass, long passes,
+                          double photons, double seconds, int done)
 {
     double left = seconds * (double)(passes - pass) / (double)pass;
-    fprintf(stderr, "\rphoton: pass %ld/%ld, %.3g photons, mean radius %.3g, %.1f s, "
-            "about %.0f s left   ", pass, passes, photons, mean_radius, seconds, left);
+    double mean_radius = steps->mean_radius(steps->mode);
+    if (steps->target_reached != NULL)
+        fprintf(stderr, "\rphoton: pass %ld, %d of %d blocks within %g, %.3g photons, mean "
+                "radius %.3g, %.1f s   ", pass, steps->tally->target_within,
+                steps->tally->target_blocks, rs->target_error, photons, mean_radius, seconds);
+    else
+        fprintf(stderr, "\rphoton: pass %ld/%ld, %.3g photons, mean radius %.3g, %.1f s, "
+                "about %.0f s left   ", pass, passes, photons, mean_radius, seconds, left);
     if (done)
         fputc('\n', stderr);
     fflush(stderr);
@@ -86,8 +100,10 @@ struct progressive_run progressive_passes(const struct progressive_steps *steps,
     double limit = rs->time_limit;
     clock_t start = clock();
     double excluded = 0.0, last_shown = 0.0;
-    while (run.passes < ps->passes &&
-           !(run.passes > 0 && limit > 0 && offset + run.seconds >= limit)) {
+    long first_passes = rs->error_confidence > 0 ? ERROR_MIN_SPP : 1, judged = 0;
+    int reached = 0;
+    while (run.passes < ps->passes && !reached &&
+           !(run.passes >= first_passes && limit > 0 && offset + run.seconds >= limit)) {
         long pass = run.passes;
         if (steps->before_photons != NULL)
             steps->before_photons(steps->mode, pass);
@@ -96,20 +112,27 @@ struct progressive_run progressive_passes(const struct progressive_steps *steps,
             steps->after_photons(steps->mode, pass);
         steps->update(steps->mode, pass);
         run.passes++;
+        if (steps->target_reached != NULL && target_judged_after(run.passes)) {
+            reached = steps->target_reached(steps->mode, (double)run.photons_emitted);
+            judged = run.passes;
+        }
         run.seconds = cpu_seconds(start) - excluded;
         double at = offset + run.seconds;
-        int last = run.passes == ps->passes || (limit > 0 && at >= limit);
+        int last = run.passes == ps->passes || reached ||
+                   (run.passes >= first_passes && limit > 0 && at >= limit);
         if (ps->report != NULL && (is_power_of_two(run.passes) || last))
             excluded += call_checkpoint(steps, ps->report, run.photons_emitted, image, at);
         if (ps->snapshot != NULL && ps->snapshot_every > 0 &&
             run.passes % ps->snapshot_every == 0)
             excluded += call_checkpoint(steps, ps->snapshot, run.photons_emitted, image, at);
         if (rs->progress && (last || run.seconds - last_shown >= 0.5)) {
-            show_progress(run.passes, ps->passes, (double)run.photons_emitted,
-                          steps->mean_radius(steps->mode), run.seconds, last);
+            show_progress(steps, rs, run.passes, ps->passes, (double)run.photons_emitted,
+                          run.seconds, last);
             last_shown = run.seconds;
         }
     }
+    if (steps->target_reached != NULL && judged != run.passes)
+        steps->target_reached(steps->mode, (double)run.photons_emitted); /* the last tally */
     steps->evaluate(steps->mode, (double)run.photons_emitted, image);
     return run;
 }

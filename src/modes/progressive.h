@@ -69,6 +69,12 @@ struct progressive_steps {
     void (*evaluate)(const void *mode, double photons_emitted, struct image *image);
     /* the mean radius, for the progress line */
     double (*mean_radius)(const void *mode);
+    /* with rs->target_error (2009), or NULL: judges the image so far, photons_emitted
+     * photons in all, against the target (target_tally()), after the passes
+     * target_judged_after() names and after the last; whether every block is within it */
+    int (*target_reached)(void *mode, double photons_emitted);
+    const struct render_counters *tally; /* with target_reached: the counters it tallies
+                                            into, which the progress line shows         */
 };
 
 /* What progressive_passes() did. */
@@ -78,8 +84,9 @@ struct progressive_run {
     double seconds;         /* CPU seconds of the passes, checkpoints excluded */
 };
 
-/* Passes until ps->passes are done or rs->time_limit has passed (no pass starts after
- * it; the first always runs), then evaluates image. Checkpoints and the time limit count
+/* Passes until ps->passes are done, rs->time_limit has passed (no pass starts after
+ * it; the first always runs, and with rs->error_confidence the first ERROR_MIN_SPP, which
+ * an error image needs) or steps->target_reached says so, then evaluates image. Checkpoints and the time limit count
  * seconds from `offset`, the CPU seconds spent before the first pass; checkpoint time is
  * excluded. Adds the photon tracer's rays to *photon_rays. */
 struct progressive_run progressive_passes(const struct progressive_steps *steps,

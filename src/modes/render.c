@@ -273,15 +273,25 @@ static long long samples_per_pixel(const struct accumulator *acc)
     return (long long)((2 * acc->n_samples + pixels) / (2 * pixels));
 }
 
-/* Whether the target error is judged after pass p (render.h). */
-static int target_judged_after(int p)
+int target_judged_after(long p)
 {
     if (p < ERROR_MIN_SPP)
         return 0;
-    int step = 1;
+    long step = 1;
     while (step * 16 <= p)
         step *= 2;
     return p % step == 0;
+}
+
+int target_tally(const struct image *mean, const struct stated_error *stated,
+                 const struct render_settings *rs, struct render_counters *counters)
+{
+    struct block_count count = blocks_within(mean, stated, rs->x0, rs->y0, rs->target_error);
+    counters->target_blocks = count.n_blocks;
+    counters->target_within = count.within;
+    counters->target_missed_x = count.missed_x;
+    counters->target_missed_y = count.missed_y;
+    return count.within == count.n_blocks;
 }
 
 /* Judges the window's blocks against rs->target_error, the tally into counters; whether
@@ -292,14 +302,11 @@ static int target_reached(const struct accumulator *acc, const struct render_set
     struct image *mean = image_create(acc->out_width, acc->out_height);
     mean_image(acc, mean);
     struct image *error = error_image(acc, rs->error_confidence);
-    struct block_count count = blocks_within(mean, error, rs->x0, rs->y0, rs->target_error);
+    struct stated_error stated = {error, NULL, NULL};
+    int reached = target_tally(mean, &stated, rs, counters);
     image_free(error);
     image_free(mean);
-    counters->target_blocks = count.n_blocks;
-    counters->target_within = count.within;
-    counters->target_missed_x = count.missed_x;
-    counters->target_missed_y = count.missed_y;
-    return count.within == count.n_blocks;
+    return reached;
 }
 
 /* Without adaptive sampling: passes and the time left at the rate so far per sample (shown
@@ -433,6 +440,8 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
     mean_image(&acc, result.image);
     result.variance = want_variance ? variance_image(&acc) : NULL;
     result.error = want_error ? error_image(&acc, rs->error_confidence) : NULL;
+    result.bias = NULL; /* the mean of independent samples is unbiased */
+    result.block_noise = NULL;
     xfree(acc.target);
     xfree(acc.n);
     xfree(acc.lum);
@@ -447,7 +456,11 @@ void render_result_free(struct render_result *result)
     image_free(result->image);
     image_free(result->variance);
     image_free(result->error);
+    image_free(result->bias);
+    image_free(result->block_noise);
     result->image = NULL;
     result->variance = NULL;
     result->error = NULL;
+    result->bias = NULL;
+    result->block_noise = NULL;
 }

@@ -144,7 +144,14 @@ struct render_result {
                                stratified camera points as independent, so at edges it
                                is typically an over-estimate                               */
     struct image *error;    /* owned or NULL: with rs->error_confidence, each pixel's bound
-                               on |image - truth| at that confidence (pixel_error.h)      */
+                               on |image - truth| at that confidence (pixel_error.h;
+                               2009: sppm_error.h)                                         */
+    struct image *bias;     /* owned or NULL: the estimated bias b whose |b| error includes
+                               (2009), adding linearly over a block (image/error_image.h);
+                               NULL: error is all noise                                    */
+    struct image *block_noise; /* owned or NULL: the bound on the noise of each block's
+                               mean (image/error_image.h, stated_error), where the pixels'
+                               noise is not independent (2009); NULL: it is            */
     double seconds;         /* CPU seconds rendering, checkpoint work excluded            */
 };
 
@@ -178,5 +185,18 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
                                    struct render_counters *counters);
 
 void render_result_free(struct render_result *result);
+
+/* Whether the target error is judged after pass p (rs->target_error above: p >=
+ * ERROR_MIN_SPP and a multiple of the largest power of two <= p / 8); pt's sample passes
+ * and 2009's photon passes alike. */
+int target_judged_after(long p);
+
+struct stated_error;
+
+/* The blocks of mean (rs's window) judged by what the mode states of its error
+ * (image/error_image.h, blocks_within()) against rs->target_error, the tally into
+ * counters' target fields; whether every block is within it. */
+int target_tally(const struct image *mean, const struct stated_error *stated,
+                 const struct render_settings *rs, struct render_counters *counters);
 
 #endif

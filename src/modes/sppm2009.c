@@ -63,6 +63,13 @@
  *   the disc coverage (--disc-coverage), above;
  *   the facing test (--facing-test): a photon counts only where the surfaces face alike.
  *
+ * The error image (--error, --target-error; sppm_error.h): each pass also hands every
+ * pixel's pass value y_i and the value y'_i over the inner disc of radius R_i / sqrt(2)
+ * (add_pass_values(), before the update) to the pixel's batches; the window kept grows
+ * by SPPM_ERROR_MARGIN pixels each side (inside the image), which the bound of a pixel
+ * near the edge reads, so that a crop's error image is its window of the whole's; the
+ * image is the written window's alone (kept_pixel()).
+ *
  * Determinism: eye path p of pixel (x, y) is camera sample p (render.h: its stream is
  * keyed by the pixel and p), its light samples are keyed by the pixel and the pass
  * (ppm_direct.h), its disc probes by the pixel and the pass, photon i of pass p by
@@ -71,18 +78,22 @@
  */
 #include "sppm2009.h"
 
+#include <float.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
 
 #include "../base/alloc.h"
 #include "../base/sequence02.h"
+#include "../image/error_image.h"
 #include "../photon/disc_coverage.h"
 #include "../photon/hit_point_grid.h"
 #include "../photon/hit_points.h"
 #include "../photon/trace.h"
+#include "pixel_error.h"
 #include "ppm_direct.h"
 #include "ppm_radius.h"
+#include "sppm_error.h"
 #include "surface.h"
 
 /* The probes of one pixel's discs, one a pass, and how many found the surface. */
@@ -99,11 +110,17 @@ struct fitted_plane {
 
 struct sppm {
     const struct scene *scene;          /* borrowed                                        */
-    const struct render_settings *rs;   /* borrowed                                        */
+    const struct render_settings *rs;   /* &grown                                          */
+    const struct render_settings *asked; /* borrowed: the caller's, whose window is written */
+    struct render_settings grown;       /* asked, its window grown by SPPM_ERROR_MARGIN
+                                           with an error image (inside the image): the
+                                           pixels kept                                     */
+    int out_x0, out_y0;                 /* asked's window within the kept one ...          */
+    int out_width, out_height;          /* ... and its size                               */
     const struct sppm_settings *ps;     /* borrowed                                        */
     struct render_counters *counters;   /* borrowed                                        */
     struct ppm_stats *stats;            /* borrowed: gets the eye paths' seconds, mean R0   */
-    int width;                          /* of the window                                   */
+    int width;                          /* of the window kept                              */
     size_t n_pixels;
     struct progressive_estimate *shared; /* owned: per window pixel, S's N, R and tau; R is
                                             0 until the pixel's first hit point            */
@@ -124,7 +141,16 @@ struct sppm {
                                            its probes of its hit points' discs            */
     struct fitted_plane *fitted;        /* owned, with ps->disc_coverage: per window pixel,
                                            the plane its radius was fitted on             */
+    int want_error;                     /* rs->error_confidence > 0                        */
+    struct sppm_error error;            /* with want_error                                 */
 };
+
+/* Pixel k (row-major) of the window written, as an index of the window kept. */
+static size_t kept_pixel(const struct sppm *sppm, size_t k)
+{
+    size_t x = k % (size_t)sppm->out_width, y = k / (size_t)sppm->out_width;
+    return (y + (size_t)sppm->out_y0) * (size_t)sppm->width + x + (size_t)sppm->out_x0;
+}
 
 /* ---- the distributed ray tracing pass ----------------------------------------------- */
 
@@ -174,6 +200,10 @@ static void store_hit_point(struct sppm *sppm, size_t pixel, const struct surfac
                                             sppm->counters, s, distance);
     if (sppm->ps->disc_coverage && common->fit_radius && common->radius <= 0)
         fit_to_surface(sppm, pixel, s, distance); /* else no fit could shorten R */
+    if (sppm->want_error) {
+        sppm->error.point[pixel] = sppm->n_points;
+        sppm->error.inner_tau[sppm->n_points] = vec3_zero();
+    }
     struct hit_point *hp = &sppm->points[sppm->n_points++];
     hp->x = s->p;
     hp->n = s->ng;
@@ -203,9 +233,14 @@ static void probe_disc(struct sppm *sppm, size_t pixel, long pass, const struct 
     sequence02_point(sequence02_shuffled((uint32_t)pass, (uint32_t)rng_next(&order)),
                      (uint32_t)shift, (uint32_t)(shift >> 32), &u, &v);
     struct disc_share *share = &sppm->coverage[pixel];
+    int covered = disc_probe(sppm->scene, s->p, s->ng, sppm->shared[pixel].radius, u,
+                             2 * PI * v);
     share->probes++;
-    share->covered += (uint32_t)disc_probe(sppm->scene, s->p, s->ng,
-                                           sppm->shared[pixel].radius, u, 2 * PI * v);
+    share->covered += (uint32_t)covered;
+    if (sppm->want_error && u < 0.5) { /* within R / sqrt(2): the inner disc's probe too */
+        sppm->error.inner_probes[2 * pixel]++;
+        sppm->error.inner_probes[2 * pixel + 1] += (uint32_t)covered;
+    }
 }
 
 /* The probability that an eye path at a surface with these parts ends there, in a hit
@@ -299,18 +334,28 @@ static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ra
     }
 }
 
-/* The mean R over the pixels that have one: the progress line's and --stats's. */
+/* The mean R over the written pixels that have one: the progress line's and --stats's. */
 static double mean_radius(const void *context)
 {
     const struct sppm *sppm = context;
     double sum = 0.0;
     size_t n = 0;
-    for (size_t i = 0; i < sppm->n_pixels; i++)
-        if (sppm->shared[i].radius > 0) {
-            sum += sppm->shared[i].radius;
+    for (size_t k = 0; k < (size_t)sppm->out_width * (size_t)sppm->out_height; k++) {
+        double r = sppm->shared[kept_pixel(sppm, k)].radius;
+        if (r > 0) {
+            sum += r;
             n++;
         }
+    }
     return n > 0 ? sum / (double)n : 0.0;
+}
+
+/* What pixel i's eye paths saw and its direct term, summed over the passes so far. */
+static struct vec3 seen_so_far(const struct sppm *sppm, size_t i)
+{
+    struct vec3 seen = sppm->emission_seen[i];
+    return sppm->ps->progressive.direct_photons ? seen
+                                                : vec3_add(seen, sppm->direct.sum[i]);
 }
 
 /* Pass `pass`: one eye path through every pixel of the window, then the hit points' grid;
@@ -321,6 +366,10 @@ static void distributed_ray_tracing_pass(void *context, long pass)
     const struct render_settings *rs = sppm->rs;
     clock_t start = clock();
     sppm->n_points = 0;
+    for (size_t i = 0; sppm->want_error && i < sppm->n_pixels; i++) {
+        sppm->error.before[i] = seen_so_far(sppm, i);
+        sppm->error.point[i] = SPPM_NO_POINT;
+    }
     for (int y = rs->y0; y < rs->y1; y++)
         for (int x = rs->x0; x < rs->x1; x++) {
             size_t pixel = (size_t)(y - rs->y0) * (size_t)sppm->width + (size_t)(x - rs->x0);
@@ -345,8 +394,12 @@ static void add_flux(void *context, size_t i)
                                                       sppm->photon->position,
                                                       sppm->photon->normal))
         return;
-    hit_point_add_photon(&sppm->points[i], sppm->photon, sppm->photons_per_pass,
-                         sppm->ps->progressive.facing_test, 0);
+    struct vec3 added = hit_point_add_photon(&sppm->points[i], sppm->photon,
+                                             sppm->photons_per_pass,
+                                             sppm->ps->progressive.facing_test, 0);
+    double r = hp->global.radius;
+    if (sppm->want_error && 2 * vec3_length2(vec3_sub(sppm->photon->position, hp->x)) <= r * r)
+        sppm->error.inner_tau[i] = vec3_add(sppm->error.inner_tau[i], added);
 }
 
 /* Each photon a photon tracing pass stores (2008's pass) goes to the hit points around
@@ -360,13 +413,59 @@ static void add_photon(void *context, const struct photon_event *photon)
 
 /* ---- the progressive update of the shared statistics ---------------------------------- */
 
+/* The mean covered share of pixel i's discs, by its probes (1 without them), never below
+ * DISC_COVERAGE_FLOOR, which bounds how far a few unlucky probes can brighten it. */
+static double covered_share(const struct sppm *sppm, size_t i)
+{
+    if (!sppm->ps->disc_coverage || sppm->coverage[i].probes == 0)
+        return 1.0;
+    const struct disc_share *share = &sppm->coverage[i];
+    return fmax(DISC_COVERAGE_FLOOR, (double)share->covered / share->probes);
+}
+
+/* As covered_share(), the inner disc's (radius R / sqrt(2)), by the probes that fell in
+ * it; the whole disc's while none has. */
+static double inner_share(const struct sppm *sppm, size_t i)
+{
+    const uint32_t *probes = &sppm->error.inner_probes[2 * i];
+    if (!sppm->ps->disc_coverage || probes[0] == 0)
+        return covered_share(sppm, i);
+    return fmax(DISC_COVERAGE_FLOOR, (double)probes[1] / probes[0]);
+}
+
+/* With an error image, before the update: each pixel's pass values (sppm_error.h), y_i
+ * = what its eye path saw and its direct light + P_i / c, P_i = beta Phi_i / (pi R_i^2 M)
+ * its photon estimate (the pass's share of Eq. 13: tau / (pi R^2) is the sum over the
+ * passes of Phi_i / (pi R_i^2), Eq. 12 keeping it, the top of the file), c its covered
+ * share so far; y'_i the same over the inner disc of radius R_i / sqrt(2). */
+static void add_pass_values(struct sppm *sppm, long pass)
+{
+    struct sppm_error *e = &sppm->error;
+    for (size_t i = 0; i < sppm->n_pixels; i++) {
+        struct vec3 y = vec3_sub(seen_so_far(sppm, i), e->before[i]), y_inner = y;
+        const struct hit_point *hp = e->point[i] != SPPM_NO_POINT ? &sppm->points[e->point[i]]
+                                                                  : NULL;
+        double area = hp != NULL ? PI * hp->global.radius * hp->global.radius : 0.0;
+        if (area * sppm->photons_per_pass >= DBL_MIN) {
+            double scale = 1.0 / (area * sppm->photons_per_pass);
+            struct vec3 p = vec3_scale(vec3_mul(hp->weight, hp->global.tau), scale);
+            struct vec3 p_inner = vec3_scale(vec3_mul(hp->weight, e->inner_tau[e->point[i]]),
+                                             2 * scale);
+            y = vec3_add(y, vec3_scale(p, 1.0 / covered_share(sppm, i)));
+            y_inner = vec3_add(y_inner, vec3_scale(p_inner, 1.0 / inner_share(sppm, i)));
+        }
+        sppm_error_add_pass(e, i, pass, y, y_inner);
+    }
+}
+
 /* Each hit point's Phi = beta (sum of f_r Phi') goes to its pixel's tau, and its M to the
  * update (ppm_update_estimate(): N, R, tau); a pixel without a hit point this pass found
  * no photon (M = 0) and keeps its values. */
 static void progressive_update(void *context, long pass)
 {
     struct sppm *sppm = context;
-    (void)pass;
+    if (sppm->want_error)
+        add_pass_values(sppm, pass);
     for (size_t i = 0; i < sppm->n_points; i++) {
         const struct hit_point *hp = &sppm->points[i];
         struct progressive_estimate *shared = &sppm->shared[hp->pixel];
@@ -381,16 +480,6 @@ static void progressive_update(void *context, long pass)
 
 /* ---- the image ---------------------------------------------------------------------- */
 
-/* The mean covered share of pixel i's discs, by its probes (1 without them), never below
- * DISC_COVERAGE_FLOOR, which bounds how far a few unlucky probes can brighten it. */
-static double covered_share(const struct sppm *sppm, size_t i)
-{
-    if (!sppm->ps->disc_coverage || sppm->coverage[i].probes == 0)
-        return 1.0;
-    const struct disc_share *share = &sppm->coverage[i];
-    return fmax(DISC_COVERAGE_FLOOR, (double)share->covered / share->probes);
-}
-
 /* The image so far: per pixel, the photons' tau / (pi R^2 N_emitted), over the covered
  * share of its discs, plus the mean of what the eye paths saw directly and, unless
  * photons bring it, of their direct light. */
@@ -398,7 +487,8 @@ static void evaluate_image(const void *context, double n_emitted, struct image *
 {
     const struct sppm *sppm = context;
     double passes = sppm->passes_done > 0 ? (double)sppm->passes_done : 1.0;
-    for (size_t i = 0; i < sppm->n_pixels; i++) {
+    for (size_t k = 0; k < (size_t)sppm->out_width * (size_t)sppm->out_height; k++) {
+        size_t i = kept_pixel(sppm, k);
         const struct progressive_estimate *e = &sppm->shared[i];
         struct vec3 photons = ppm_radiance(e->tau, e->radius, n_emitted);
         struct vec3 l = vec3_add(vec3_scale(sppm->emission_seen[i], 1.0 / passes),
@@ -409,8 +499,38 @@ static void evaluate_image(const void *context, double n_emitted, struct image *
             sppm->counters->nonfinite_samples++;
             l = vec3_zero();
         }
-        image->pixels[i] = l;
+        image->pixels[k] = l;
     }
+}
+
+/* ---- the error image ---------------------------------------------------------------- */
+
+/* The error image of the written window, its bias and its blocks' noise
+ * (sppm_error.h). */
+static struct image *error_image(const struct sppm *sppm, struct image **bias,
+                                 struct image **block_noise)
+{
+    return sppm_error_image(&sppm->error, sppm->passes_done, sppm->out_x0, sppm->out_y0,
+                            sppm->out_x0 + sppm->out_width, sppm->out_y0 + sppm->out_height,
+                            sppm->asked->x0, sppm->asked->y0, sppm->rs->error_confidence,
+                            bias, block_noise);
+}
+
+/* --target-error's judgement (progressive.h): the image so far and its error image. */
+static int target_reached(void *context, double n_emitted)
+{
+    struct sppm *sppm = context;
+    struct image *mean = image_create(sppm->out_width, sppm->out_height);
+    evaluate_image(sppm, n_emitted, mean);
+    struct image *bias, *block_noise;
+    struct image *error = error_image(sppm, &bias, &block_noise);
+    struct stated_error stated = {error, bias, block_noise};
+    int reached = target_tally(mean, &stated, sppm->asked, sppm->counters);
+    image_free(block_noise);
+    image_free(bias);
+    image_free(error);
+    image_free(mean);
+    return reached;
 }
 
 /* ---- the passes -------------------------------------------------------------------- */
@@ -434,12 +554,24 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     memset(&sppm, 0, sizeof sppm);
     memset(stats, 0, sizeof *stats);
     sppm.scene = scene;
-    sppm.rs = rs;
+    sppm.asked = rs;
+    sppm.want_error = rs->error_confidence > 0;
+    int margin = sppm.want_error ? SPPM_ERROR_MARGIN : 0; /* the pixels its pools read */
+    sppm.grown = *rs;
+    sppm.grown.x0 = rs->x0 > margin ? rs->x0 - margin : 0;
+    sppm.grown.y0 = rs->y0 > margin ? rs->y0 - margin : 0;
+    sppm.grown.x1 = rs->x1 + margin < scene->width ? rs->x1 + margin : scene->width;
+    sppm.grown.y1 = rs->y1 + margin < scene->height ? rs->y1 + margin : scene->height;
+    sppm.rs = &sppm.grown;
+    sppm.out_x0 = rs->x0 - sppm.grown.x0;
+    sppm.out_y0 = rs->y0 - sppm.grown.y0;
+    sppm.out_width = rs->x1 - rs->x0;
+    sppm.out_height = rs->y1 - rs->y0;
     sppm.ps = ps;
     sppm.counters = counters;
     sppm.stats = stats;
-    sppm.width = rs->x1 - rs->x0;
-    sppm.n_pixels = (size_t)sppm.width * (size_t)(rs->y1 - rs->y0);
+    sppm.width = sppm.grown.x1 - sppm.grown.x0;
+    sppm.n_pixels = (size_t)sppm.width * (size_t)(sppm.grown.y1 - sppm.grown.y0);
     sppm.shared = xcalloc(sppm.n_pixels, sizeof *sppm.shared, "sppm statistics");
     sppm.emission_seen = xcalloc(sppm.n_pixels, sizeof *sppm.emission_seen, "sppm pixels");
     sppm.points = xmalloc(sppm.n_pixels, sizeof *sppm.points, "sppm hit points");
@@ -453,16 +585,25 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
         sppm.parts[m] = brdf_split(&scene->materials[m]);
     hit_point_grid_build(&sppm.grid, sppm.points, 0);
     if (!common->direct_photons)
-        ppm_direct_create(&sppm.direct, scene, rs);
-    struct render_result result = {NULL, NULL, NULL, 0.0};
-    result.image = image_create(sppm.width, rs->y1 - rs->y0);
+        ppm_direct_create(&sppm.direct, scene, sppm.rs);
+    if (sppm.want_error)
+        sppm_error_create(&sppm.error, sppm.width, sppm.grown.y1 - sppm.grown.y0);
+    struct render_result result = {NULL, NULL, NULL, NULL, NULL, 0.0};
+    result.image = image_create(sppm.out_width, sppm.out_height);
 
     /* Each pass: the distributed ray tracing pass, the photon tracing pass, the update. */
     struct progressive_steps steps = {&sppm, distributed_ray_tracing_pass, add_photon, NULL,
-                                      progressive_update, evaluate_image, mean_radius};
+                                      progressive_update, evaluate_image, mean_radius,
+                                      rs->target_error > 0 ? target_reached : NULL, counters};
     struct progressive_run run = progressive_passes(&steps, scene, rs, common, 0.0,
                                                     result.image, &stats->photon_rays);
     result.seconds = run.seconds;
+    if (sppm.want_error) {
+        clock_t start = clock();
+        result.error = error_image(&sppm, &result.bias, &result.block_noise);
+        result.seconds += cpu_seconds(start);
+        sppm_error_free(&sppm.error);
+    }
     stats->passes = run.passes;
     stats->seconds_photons = run.seconds - stats->seconds_ray_pass;
     stats->hit_points = sppm.n_points;

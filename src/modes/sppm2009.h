@@ -26,9 +26,12 @@ struct sppm_settings {
 struct sppm_settings sppm_settings_default(void);
 
 /* Renders the window of rs: the passes of ps->progressive (fewer when rs->time_limit
- * passes first), each one eye path through every pixel and a photon tracing pass, calling
- * its report and snapshot as 2008 does. stats->hit_points is the last pass's;
- * result.variance is NULL. */
+ * passes first, or, with rs->target_error, the target is reached), each one eye path
+ * through every pixel and a photon tracing pass, calling its report and snapshot as 2008
+ * does. stats->hit_points is the last pass's (with an error image, those of the pixels
+ * kept beyond the window too); result.variance is NULL; with rs->error_confidence (and
+ * ps->progressive.passes >= ERROR_MIN_SPP), result.error, .bias and .block_noise are the
+ * error image and what it states of blocks (sppm_error.h). */
 struct render_result render_sppm(const struct scene *scene, const struct render_settings *rs,
                                  const struct sppm_settings *ps,
                                  struct render_counters *counters, struct ppm_stats *stats);

@@ -221,19 +221,21 @@ static double members_holding(const struct hit_point *hp, struct vec3 p, double 
     return share;
 }
 
-void hit_point_add_photon(struct hit_point *hp, const struct photon_event *photon,
-                          double photons_per_pass, int facing_test, int caustic_apart)
+struct vec3 hit_point_add_photon(struct hit_point *hp, const struct photon_event *photon,
+                                 double photons_per_pass, int facing_test, int caustic_apart)
 {
     if (facing_test && vec3_dot(hp->n, photon->normal) <= 0)
-        return;
+        return vec3_zero();
     struct progressive_estimate *e =
         photon->kind == PHOTON_CAUSTIC && caustic_apart ? &hp->caustic : &hp->global;
     double share = e == &hp->caustic && hp->n_members > 0
                        ? members_holding(hp, photon->position, e->radius)
                        : vec3_length2(vec3_sub(photon->position, hp->x)) <= e->radius * e->radius;
     if (!(share > 0))
-        return; /* within the hit point's reach, not within this estimate's disc */
+        return vec3_zero(); /* within the hit point's reach, not within this estimate's disc */
     struct vec3 f = brdf_eval(hp->material, &hp->frame, hp->wo, photon->wi);
-    e->tau = vec3_add(e->tau, vec3_mul(f, vec3_scale(photon->power, photons_per_pass * share)));
+    struct vec3 added = vec3_mul(f, vec3_scale(photon->power, photons_per_pass * share));
+    e->tau = vec3_add(e->tau, added);
     e->m_photons += share;
+    return added;
 }

@@ -87,9 +87,9 @@ struct photon_event;
  * that estimate's disc, or, with facing_test, when the two surfaces face apart (a photon
  * on the far side of a thin wall, or on the back of hp's own surface); a photon on a wall
  * at right angles is not counted either, which is why R0 stops at walls. No cosine: it
- * is in the photon's flux already. */
-void hit_point_add_photon(struct hit_point *hp, const struct photon_event *photon,
-                          double photons_per_pass, int facing_test, int caustic_apart);
+ * is in the photon's flux already. Returns what it added to tau (zero for nothing). */
+struct vec3 hit_point_add_photon(struct hit_point *hp, const struct photon_event *photon,
+                                 double photons_per_pass, int facing_test, int caustic_apart);
 
 /* The node whose middle is m: what a search reads. */
 struct hit_point_node {

@@ -1,0 +1,123 @@
+/*
+ * modes/sppm_error.h -- the error image of `--mode 2009` (sppm2009.c): each pixel's bound
+ * on |pixel - truth| at a confidence c, of the noise of its passes and of the bias of its
+ * photon density estimate (ERROR.md's words).
+ *
+ * The pass values. A pixel's value is the mean over its n passes of
+ *     y_i = e_i + P_i / c,   P_i = beta Phi_i / (pi R_i^2 M),
+ * e_i what pass i's eye path saw (emission, background) and its light sample found, Phi_i
+ * the f_r Phi' of the pass's photons within R_i of its hit point, M the photons a pass, c
+ * the covered share of the pixel's discs: tau / (pi R^2) is the sum over the passes of
+ * Phi_i / (pi R_i^2), which Eq. 12 keeps (Hachisuka, Ogaki and Jensen 2008; sppm2009.c),
+ * so Eq. 13's tau / (pi R^2 N_emitted) is the mean of the P_i. A pixel keeps its y_i in
+ * batches as pt keeps its samples (pixel_error.h, error_batches_add(), n the pass): the
+ * passes' photons are independent, their eye paths consecutive points of the pixel's
+ * stratified sequence. c is the share so far (1 away from edges and corners, where the
+ * image's own c stays 1 too).
+ *
+ * The bias. A density estimate over a uniform disc of radius R errs on average by about
+ * (1/2) m2 Lap(L) = Lap(L) R^2 / 8 (m2 = R^2 / 4, the disc's second moment along an
+ * axis; Hachisuka, Jarosz and Jensen 2010 bound progressive photon mapping's error by
+ * this bias plus a noise bound, with Lap(L) from a smooth kernel's derivatives; the text
+ * of the paper we could search shows no equation numbers, so the estimator below, two
+ * nested discs, and its formulas are ours). Each pass also sums the f_r Phi' of its
+ * photons within R_i / sqrt(2) (inner_tau), y'_i the value over that disc, of half the
+ * area: its bias is Lap(L) R_i^2 / 16, so
+ *     b_i = 2 (y_i - y'_i)
+ * estimates y_i's (and y_i - b_i = 2 y'_i - y_i is Richardson's extrapolation to R = 0).
+ * Half the area is the best split: with a share a inside, b = (y - y') / (1 - a) has a
+ * variance proportional to 1 / (a (1 - a)). With the disc coverage, y'_i divides by the
+ * inner disc's own covered share, from the same probes: a probe uniform on the disc
+ * falls within R / sqrt(2) half the time (u < 1/2, disc_probe()), and is then uniform on
+ * the inner disc, so no probe is added.
+ *
+ * Smoothing. A pixel's own b_i is noise twice y_i's, which would double the bound where
+ * the bias is small; the bias itself, a Laplacian seen through discs a few pixels wide,
+ * changes slowly from pixel to pixel. So a pixel's b~ is the mean of the b_i of the 5 x 5
+ * pixels around it (SPPM_BIAS_RADIUS, inside the kept window), batch by batch, and its
+ * corrected values are s_i = y_i - b~_i: the pixel = mean(s) + b~ exactly, so
+ *     |pixel - truth| <= |b~| + |mean(s) - truth|,
+ * and mean(s), unbiased to the second order where Lap(L) is smooth over the 5 x 5 pixels,
+ * has its noise (b~'s included) bounded as pt's mean is: z_c sigma, sigma from the
+ * batches of s pooled over the agreeing 5 x 5 pixels (pooled_error_image()). The bound
+ * is B = |b~| + z_c sigma per channel, and b~ the bias render_result hands on. Smoothed
+ * over the pool's agreeing pixels instead, b~ is noisier (a steep but smooth gradient
+ * keeps the neighbours out) and the bound looser (point-over-plane 3.6 where 2.6).
+ *
+ * Blocks. The pixels share photons over discs a few pixels wide, so their noise is not
+ * independent and a block's does not shrink as the square root of its pixels: in
+ * quadrature, 0.41-0.70 of 16 x 16 blocks hold their truth. A block's noise bound is
+ * from the block's own batch means of s (the spread of its k full batches, at Student's
+ * t for k - 1 degrees of freedom, 4 <= k <= 8), its bias the sum of its pixels' b~ with
+ * their signs (image/error_image.h): 0.97-1.00 hold, the bound 3.4-4.6 times the error
+ * (median over blocks; sky-over-floor, point-over-plane, area-over-floor at 64 and 256
+ * passes).
+ *
+ * Measured (tests/test_error_2009.c prints them; 20,000 photons a pass, the direct light
+ * from the photons, the paper's way, so that the density estimate carries the light the
+ * closed form knows): the truth within the 95% bound in 0.95-0.99 of the pixels and
+ * channels of point-over-plane at 32 x 32 (64 and 256 passes), sky-over-floor and
+ * area-over-floor (seeds 11-14, 21-26, 31-38, 41-44, 301-304), 0.83-0.93 without the
+ * bias term on point-over-plane, 0.91-0.94 on area-over-floor, 0.96-0.99 on
+ * sky-over-floor, whose soft shadow is nearly flat; the median over 8 x 8 blocks of
+ * rms(B) / rms(error) 2.0-3.0, up to 3.3 on sky-over-floor at 64 passes of 48 x 36, where
+ * the bias is small and b~'s noise adds to both terms. Richardson's values 2 y'_i - y_i in place of s_i
+ * (b unsmoothed) cover 0.998-1.000 at 4.4-7.0 times the error; each pixel's own b_i, 2.7-4.2.
+ * Where the disc is not small against the light's changes the expansion fails:
+ * point-over-plane at 24 x 24, R0 = 4 footprints = 0.58 of the light's height, 0.90-0.91.
+ * With the direct light by light samples (the default) the light samples and eye paths
+ * are stratified over the passes, whose mean then errs far less than the batches' spread
+ * says: point-over-plane covered 1.000 at 5.8 times the error.
+ */
+#ifndef PHOTON_SPPM_ERROR_H
+#define PHOTON_SPPM_ERROR_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "../base/vec3.h"
+#include "../image/image.h"
+
+#include "pixel_error.h"
+
+#define SPPM_NO_POINT ((size_t)-1) /* a pixel whose eye path made no hit point this pass */
+#define SPPM_BIAS_RADIUS 2         /* pixels each side whose bias a pixel's b~ averages   */
+/* The pixels beyond a window its error image reads: the pool of pixel_error.h around
+ * each, and the bias of SPPM_BIAS_RADIUS around each of those. */
+#define SPPM_ERROR_MARGIN (ERROR_POOL_RADIUS + SPPM_BIAS_RADIUS)
+
+/* What 2009 keeps for its error image, per pixel of the window it renders (the written
+ * one grown by the pool's margin, pixel_error.h), and per pass. */
+struct sppm_error {
+    int width, height;      /* of the window kept                                          */
+    double *batches;        /* owned: 3 ERROR_BATCHES per pixel, the batches of the pass
+                               values y_i (error_batches_add(), n = the pass)             */
+    double *bias_batches;   /* owned: the same, of b_i = 2 (y_i - y'_i)                    */
+    uint32_t *inner_probes; /* owned: 2 per pixel, the disc probes that fell in the inner
+                               disc and those of them that found the surface              */
+    struct vec3 *before;    /* owned: per pixel, what its eye paths saw and its direct term
+                               summed before this pass                                    */
+    size_t *point;          /* owned: per pixel, its hit point this pass or SPPM_NO_POINT */
+    struct vec3 *inner_tau; /* owned: per hit point, this pass's f_r Phi' of the photons
+                               within R / sqrt(2) of it                                   */
+};
+
+/* Room for a window of width x height pixels, every sum zero. */
+void sppm_error_create(struct sppm_error *e, int width, int height);
+
+/* Pass `pass` (from 0) of pixel i: its value y and the inner disc's y'. */
+void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 y,
+                         struct vec3 y_inner);
+
+/* The error image of the pixels [x0, x1) x [y0, y1) of the kept window after `passes`
+ * passes (>= ERROR_MIN_SPP) at confidence c, by the rule above, which reads the pixels
+ * up to SPPM_ERROR_MARGIN beyond them; *bias: their b~, *block: the noise bound of each
+ * block's mean (render_result's bias and block_noise), (wx0, wy0) being the window's top
+ * left pixel in the whole image. */
+struct image *sppm_error_image(const struct sppm_error *e, long passes, int x0, int y0,
+                               int x1, int y1, int wx0, int wy0, double confidence,
+                               struct image **bias, struct image **block);
+
+void sppm_error_free(struct sppm_error *e);
+
+#endif
