@@ -10,6 +10,10 @@
 # `scripts/calibration.sh --rewrite` renders nothing and writes the table again from
 # build/calibration/.
 #
+# MODES is pt by default: compare judges a block's bound from its pixels', their noise in
+# quadrature, which holds for pt's independent pixels but not for 2009's, whose pixels
+# share photons and whose block statement (src/image/error_image.h) no file carries yet.
+#
 # The renders take seed 7, which no bound was measured on. A --target-error render stops
 # at CALIBRATION_LIMIT CPU seconds (default 600) if it has not reached the target, and the
 # cell says how many blocks had. A mode that refuses --error on a scene (pt where a point
