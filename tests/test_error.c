@@ -203,7 +203,8 @@ static void test_bound_check(struct check *t)
  * tolerance: exit status 2, the message, and no file left.
  * catches: a bound stated where the samples are too few to see rare values, where a
  *   rule or a depth limit biases the pixel, for a mode that states none, or a
- *   --confidence that nothing reads. */
+ *   --confidence that nothing reads; a bound stated without a word where pt finds
+ *   caustics only by chance (the calibration's misses), or that word where it does not. */
 static void test_error_refusals(struct check *t)
 {
     static const char *const bad[][2] = {
@@ -226,6 +227,19 @@ static void test_error_refusals(struct check *t)
                            OUT ".log") == 2);
     CHECK(t, file_contains(OUT ".log", "--error: pt cannot find the caustics"));
     CHECK(t, !file_exists(OUT "_e.pfm") && !file_exists(OUT ".pfm"));
+    static const char *const warned[2] = {"scenes/cornell.scene",
+                                          "scenes/cornell-specular.scene"};
+    for (int specular = 0; specular < 2; specular++) {
+        char args[512];
+        snprintf(args, sizeof args, "--mode pt --spp 16 --width 8 --height 8 --no-progress "
+                 "--error " OUT "_e.pfm -o " OUT ".pfm %s", warned[specular]);
+        CHECK(t, photon_logged("", args, OUT ".log") == 0);
+        CHECK(t, file_contains(OUT ".log", "light through mirrors and glass only by chance") ==
+                     specular);
+    }
+    remove(OUT "_e.pfm");
+    remove(OUT ".pfm");
+    remove(OUT ".png");
     remove(OUT ".log");
 }
 

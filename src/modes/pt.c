@@ -126,11 +126,17 @@ static struct vec3 pt_radiance(const void *mode, struct ray ray, struct rng *rng
     return trace_path(mode, ray, rng, counters);
 }
 
-int pt_unreachable_light(const struct scene *scene)
+int pt_finds_caustics_by_chance(const struct scene *scene)
 {
     int specular = 0;
     for (size_t i = 0; i < scene->n_materials; i++)
         specular = specular || brdf_has_delta(&scene->materials[i]);
+    return specular;
+}
+
+int pt_unreachable_light(const struct scene *scene)
+{
+    int specular = pt_finds_caustics_by_chance(scene);
     for (size_t i = 0; specular && i < scene->n_lights; i++)
         if (scene->lights[i].kind == LIGHT_POINT)
             return (int)i;

@@ -6,6 +6,13 @@
 
 #include "render.h"
 
+/* Whether the scene has something specular (a material with a delta lobe), so that light
+ * reaching a diffuse surface by way of mirrors or glass (caustics) is found only when a
+ * path sampled from that surface happens to meet an area light through them: rarely, and
+ * at a few dozen samples a pixel so rarely that no spread of them states it (the error
+ * bound misses there: reference/suite.md's calibration). */
+int pt_finds_caustics_by_chance(const struct scene *scene);
+
 /* The first point light whose caustics pt cannot find, or -1: with something specular in
  * the scene (a material with a delta lobe), light from a point light that reaches a
  * diffuse surface only by way of mirrors or glass is found neither by a light sample
