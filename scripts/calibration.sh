@@ -48,7 +48,8 @@ cell() {
             k = n - int(c * n + 0.5); pmf = 0.95 ^ n; below = 0
             for (i = 0; i < k; i++) { below += pmf; pmf *= (n - i) / (i + 1) * 0.05 / 0.95 }
             if (1 - below < 0.01) print "**misses**"
-            else print m <= 4.4 ? "holds" : "loose" }')
+            else if (m == "none") print "holds, exact"
+            else print m + 0 <= 4.4 ? "holds" : "loose" }')
     printf '%s: %s of %s blocks, ratio %s (rms %s), %s s' "$verdict" \
         "$(awk -v c="$covered" 'BEGIN { printf "%.3f", c }')" "$(key "$line" bound_blocks)" \
         "$(key "$line" bound_median_ratio)" "$(key "$line" bound_rms_ratio)" \

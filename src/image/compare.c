@@ -550,8 +550,12 @@ static void print_results(const struct image_error *e, const struct compare_inpu
                                            normal_critical_two_sided(1.0 - args->confidence));
         printf(" bound_blocks=%d bound_covered=%.4f", c.n_blocks,
                c.n_blocks > 0 ? (double)c.covered / c.n_blocks : 0.0);
-        print_number("bound_median_ratio", c.median_ratio);
-        print_number("bound_rms_ratio", c.rms_ratio);
+        if (c.median_ratio < 0) /* every block exact and stated so */
+            printf(" bound_median_ratio=none bound_rms_ratio=none");
+        else {
+            print_number("bound_median_ratio", c.median_ratio);
+            print_number("bound_rms_ratio", c.rms_ratio);
+        }
     }
     putchar('\n');
 }

@@ -135,6 +135,7 @@ struct bound_check bound_check(const struct image *a, const struct image *var_a,
     int rows = (a->height + ERROR_BLOCK - 1) / ERROR_BLOCK;
     double *ratio = xcalloc((size_t)columns * (size_t)rows, sizeof *ratio, "block ratios");
     double bound2 = 0.0, error2 = 0.0;
+    int n_ratios = 0;
     for (int y0 = 0; y0 < a->height; y0 += ERROR_BLOCK)
         for (int x0 = 0; x0 < a->width; x0 += ERROR_BLOCK) {
             double m[4];
@@ -144,14 +145,18 @@ struct bound_check bound_check(const struct image *a, const struct image *var_a,
             if (m[1] < ERROR_DARK_FLOOR)
                 continue;
             double d = fabs(m[0] - m[1]), bound = z * m[2];
+            check.n_blocks++;
             check.covered += d <= sqrt(bound * bound + z * m[3] * z * m[3]);
-            ratio[check.n_blocks++] = d > 0 ? bound / d : HUGE_VAL;
+            if (d > 0 || bound > 0) /* else exact, and stated so: no ratio to take */
+                ratio[n_ratios++] = d > 0 ? bound / d : HUGE_VAL;
             bound2 += bound * bound;
             error2 += d * d;
         }
-    if (check.n_blocks > 0) {
-        qsort(ratio, (size_t)check.n_blocks, sizeof *ratio, by_value);
-        check.median_ratio = ratio[check.n_blocks / 2];
+    check.median_ratio = -1.0;
+    check.rms_ratio = -1.0;
+    if (n_ratios > 0) {
+        qsort(ratio, (size_t)n_ratios, sizeof *ratio, by_value);
+        check.median_ratio = ratio[n_ratios / 2];
         check.rms_ratio = error2 > 0 ? sqrt(bound2 / error2) : HUGE_VAL;
     }
     xfree(ratio);

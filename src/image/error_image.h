@@ -70,9 +70,10 @@ struct block_count blocks_within(const struct image *image, const struct stated_
 struct bound_check {
     int n_blocks, covered; /* blocks judged and those whose statement held            */
     double median_ratio;   /* the median over blocks of B / |mean a - mean b| (+Inf for
-                              equal means); an exact normal bound at 0.95 gives 2.91   */
+                              equal means and B > 0; blocks with both 0 are left out);
+                              an exact normal bound at 0.95 gives 2.91; -1 for none    */
     double rms_ratio;      /* rms(B) / rms(mean a - mean b) over the blocks; an exact
-                              bound gives z_c, 1.96 at 0.95                            */
+                              bound gives z_c, 1.96 at 0.95; -1 for none               */
 };
 struct bound_check bound_check(const struct image *a, const struct image *var_a,
                                const struct image *b, const struct image *var_b, double z);
