@@ -92,7 +92,7 @@ int main(int argc, char **argv)
         ps.progressive.footprints = 1; /* R0 one footprint (shortened by walls), one estimate */
         ps.caustic_footprints = 0;
         ps.observer = &observer;
-        struct render_counters counters = {0, 0, 0, 0, 0};
+        struct render_counters counters = {0};
         struct ppm_stats stats;
         struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
         printf("%s: pixel (%d, %d), %s; %zu hit points; L = %.6g %.6g %.6g\n", p->name, p->x,
