@@ -114,26 +114,15 @@ static double target_render(double e, int *passes, int *all_within)
     rs.target_error = e;
     struct render_counters counters = {0};
     struct render_result result = render_pt(scene, &rs, 0, NULL, &counters);
-    int blocks = 0, within = 0;
-    for (int by = 0; by < 96; by += 16)
-        for (int bx = 0; bx < 128; bx += 16) {
-            double mean = 0.0, truth = 0.0;
-            for (int y = by; y < by + 16; y++)
-                for (int x = bx; x < bx + 16; x++) {
-                    mean += vec3_luminance(image_get(result.image, x, y));
-                    truth += pixel_closed_form(scene, x, y, sky_over_floor_with_sphere);
-                }
-            if (truth < 256 * ERROR_DARK_FLOOR)
-                continue; /* inside the sphere's image: left out as the render does */
-            blocks++;
-            within += fabs(mean - truth) <= e * truth;
-        }
+    int blocks;
+    double within = blocks_within_truth(scene, result.image, e, sky_over_floor_with_sphere,
+                                        &blocks);
     *passes = counters.passes;
     *all_within = counters.target_within == counters.target_blocks &&
                   counters.target_blocks == blocks && counters.target_missed_x == -1;
     render_result_free(&result);
     scene_free(scene);
-    return (double)within / blocks;
+    return within;
 }
 
 /* truth: sky-over-floor's closed form, block by block; and a looser target against a

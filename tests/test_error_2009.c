@@ -153,24 +153,15 @@ static double target_render(double e, int *passes, int *all_within)
     struct render_counters counters = {0};
     struct ppm_stats stats;
     struct render_result result = render_sppm(scene, &rs, &ps, &counters, &stats);
-    int blocks = 0, within = 0;
-    for (int by = 0; by < 48; by += 16)
-        for (int bx = 0; bx < 64; bx += 16) {
-            double mean = 0.0, truth = 0.0;
-            for (int y = by; y < by + 16; y++)
-                for (int x = bx; x < bx + 16; x++) {
-                    mean += vec3_luminance(image_get(result.image, x, y));
-                    truth += pixel_closed_form(scene, x, y, sky_over_floor_with_sphere);
-                }
-            blocks++;
-            within += fabs(mean - truth) <= e * truth;
-        }
+    int blocks;
+    double within = blocks_within_truth(scene, result.image, e, sky_over_floor_with_sphere,
+                                        &blocks);
     *passes = counters.passes;
     *all_within = counters.target_within == counters.target_blocks &&
                   counters.target_blocks == blocks && counters.target_missed_x == -1;
     render_result_free(&result);
     scene_free(scene);
-    return (double)within / blocks;
+    return within;
 }
 
 /* truth: sky-over-floor's closed form, block by block; a looser target against a tighter.

@@ -5,6 +5,7 @@
 
 #include "files.h"
 #include "../src/base/alloc.h"
+#include "../src/image/error_image.h"
 #include "../src/modes/pt.h"
 
 #include <math.h>
@@ -96,6 +97,27 @@ static int by_value(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
     return (x > y) - (x < y);
+}
+
+double blocks_within_truth(const struct scene *scene, const struct image *image, double e,
+                           double (*along)(struct ray), int *blocks)
+{
+    int within = 0;
+    *blocks = 0;
+    for (int by = 0; by + 16 <= image->height; by += 16)
+        for (int bx = 0; bx + 16 <= image->width; bx += 16) {
+            double mean = 0.0, truth = 0.0;
+            for (int y = by; y < by + 16; y++)
+                for (int x = bx; x < bx + 16; x++) {
+                    mean += vec3_luminance(image_get(image, x, y));
+                    truth += pixel_closed_form(scene, x, y, along);
+                }
+            if (truth < 256 * ERROR_DARK_FLOOR)
+                continue;
+            (*blocks)++;
+            within += fabs(mean - truth) <= e * truth;
+        }
+    return *blocks > 0 ? (double)within / *blocks : 0.0;
 }
 
 struct coverage coverage_of(const struct scene *scene, const struct image *image,

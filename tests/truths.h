@@ -64,6 +64,14 @@ struct coverage coverage_of(const struct scene *scene, const struct image *image
                             const struct image *error, const struct image *without,
                             double (*along)(struct ray));
 
+/* The share of image's 16 x 16 blocks (image a render of scene, finished, same size; its
+ * width and height multiples of 16) whose mean luminance is within e of the closed
+ * form's, pixel_closed_form() per pixel, those whose truth is below ERROR_DARK_FLOOR
+ * (image/error_image.h) left out as a target error leaves them; *blocks: how many were
+ * judged (test_error.c, test_error_2009.c). */
+double blocks_within_truth(const struct scene *scene, const struct image *image, double e,
+                           double (*along)(struct ray), int *blocks);
+
 /* Whether every pixel of image, a render of scenes/analytic/point-over-plane.scene
  * (finished, same size), lies within the closed form L = rho Phi h / (4 pi^2 d^3) over its
  * square: a pixel is the mean of L there, so it must lie between the least and the
