@@ -153,15 +153,8 @@ static double target_render(double e, int *passes, int *all_within)
     struct render_counters counters = {0};
     struct ppm_stats stats;
     struct render_result result = render_sppm(scene, &rs, &ps, &counters, &stats);
-    int blocks;
-    double within = blocks_within_truth(scene, result.image, e, sky_over_floor_with_sphere,
-                                        &blocks);
-    *passes = counters.passes;
-    *all_within = counters.target_within == counters.target_blocks &&
-                  counters.target_blocks == blocks && counters.target_missed_x == -1;
-    render_result_free(&result);
-    scene_free(scene);
-    return within;
+    return target_outcome(scene, &result, &counters, e, sky_over_floor_with_sphere, passes,
+                          all_within);
 }
 
 /* truth: sky-over-floor's closed form, block by block; a looser target against a tighter.

@@ -120,6 +120,20 @@ double blocks_within_truth(const struct scene *scene, const struct image *image,
     return *blocks > 0 ? (double)within / *blocks : 0.0;
 }
 
+double target_outcome(struct scene *scene, struct render_result *result,
+                      const struct render_counters *counters, double e,
+                      double (*along)(struct ray), int *passes, int *all_within)
+{
+    int blocks;
+    double within = blocks_within_truth(scene, result->image, e, along, &blocks);
+    *passes = counters->passes;
+    *all_within = counters->target_within == counters->target_blocks &&
+                  counters->target_blocks == blocks && counters->target_missed_x == -1;
+    render_result_free(result);
+    scene_free(scene);
+    return within;
+}
+
 struct coverage coverage_of(const struct scene *scene, const struct image *image,
                             const struct image *error, const struct image *without,
                             double (*along)(struct ray))

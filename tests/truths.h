@@ -72,6 +72,14 @@ struct coverage coverage_of(const struct scene *scene, const struct image *image
 double blocks_within_truth(const struct scene *scene, const struct image *image, double e,
                            double (*along)(struct ray), int *blocks);
 
+/* What a render of scene to target error e did, against the closed form along(): the
+ * share of blocks within e of it (blocks_within_truth()), the passes in *passes, and in
+ * *all_within whether the render judged every one of those blocks within e. Frees result
+ * and scene (test_error.c, test_error_2009.c). */
+double target_outcome(struct scene *scene, struct render_result *result,
+                      const struct render_counters *counters, double e,
+                      double (*along)(struct ray), int *passes, int *all_within);
+
 /* Whether every pixel of image, a render of scenes/analytic/point-over-plane.scene
  * (finished, same size), lies within the closed form L = rho Phi h / (4 pi^2 d^3) over its
  * square: a pixel is the mean of L there, so it must lie between the least and the
