@@ -434,7 +434,9 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
     result.seconds = 0.0;
     counters->passes = run_passes(scene, rs, estimator, &acc, start, checkpoint, counters,
                                   &result.seconds);
-    counters->samples += acc.n_samples;
+    for (size_t k = 0; k < (size_t)acc.out_width * (size_t)acc.out_height; k++)
+        counters->samples += (unsigned long long)acc.n[written_pixel(&acc, k)]; /* the
+            window's, as render_counters says: the error image's margin is not its work */
     counters->specular_pixels = acc.n_specular;
     result.image = image_create(acc.out_width, acc.out_height);
     mean_image(&acc, result.image);
