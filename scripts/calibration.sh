@@ -10,9 +10,10 @@
 # `scripts/calibration.sh --rewrite` renders nothing and writes the table again from
 # build/calibration/.
 #
-# MODES is pt by default: compare judges a block's bound from its pixels', their noise in
-# quadrature, which holds for pt's independent pixels but not for 2009's, whose pixels
-# share photons and whose block statement (src/image/error_image.h) no file carries yet.
+# MODES is pt and 2009 by default. compare judges pt's blocks from its pixels' bounds,
+# their noise in quadrature, which holds for pt's independent pixels; 2008's and 2009's
+# pixels share photons, so their blocks are judged by the mode's own block statement
+# (--block-error, src/image/error_image.h).
 #
 # The renders take seed 7, which no bound was measured on. A --target-error render stops
 # at CALIBRATION_LIMIT CPU seconds (default 600) if it has not reached the target, and the
@@ -24,7 +25,7 @@ photon=${PHOTON:-./photon}
 table=reference/consistency.txt
 out=reference/suite.md
 work=build/calibration
-modes=${MODES:-pt}
+modes=${MODES:-pt 2009}
 limit=${CALIBRATION_LIMIT:-600}
 target=0.02
 mkdir -p "$work"
@@ -129,12 +130,17 @@ for name in $names; do
             how=
             [ "$kind" = defaults ] || how="--target-error $target --time-limit $limit"
             echo "calibration: $name, --mode $mode $how $options"
+            statement="--error $base-error.pfm"
+            judged="--test-error $base-error.pfm"
+            case $mode in 2008 | 2009)
+                statement="$statement --block-error $base-blocks.pfm"
+                judged="--test-block-error $base-blocks.pfm" ;;
+            esac
             # shellcheck disable=SC2086 # the options are words
             if "$photon" --mode "$mode" $how $options --seed 7 --stats --no-progress "$scene" \
-                -o "$base.pfm" --error "$base-error.pfm" 2> "$base.log"; then
+                -o "$base.pfm" $statement 2> "$base.log"; then
                 # shellcheck disable=SC2086
-                "$photon" compare "$base.pfm" "$reference" --test-error "$base-error.pfm" \
-                    $noise > "$base.compare"
+                "$photon" compare "$base.pfm" "$reference" $judged $noise > "$base.compare"
             elif ! grep -q -- '--error' "$base.log"; then
                 echo "calibration: --mode $mode failed on $scene: $(tail -n 1 "$base.log")" >&2
                 exit 1

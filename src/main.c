@@ -149,6 +149,17 @@ static int write_tile_record(const struct run *run, struct error *err)
     return tile_record_write(run->o.output, &r, err);
 }
 
+/* --block-error: the block statement of the image's error image (image/error_image.h). */
+static int write_block_error(const struct run *run, struct error *err)
+{
+    const struct render_result *r = &run->result;
+    struct stated_error stated = {r->error, r->bias, r->block_noise};
+    struct image *blocks = block_error_image(r->image, &stated, run->rs.x0, run->rs.y0);
+    int status = pfm_write(run->o.block_error, blocks, err);
+    image_free(blocks);
+    return status;
+}
+
 /* -o's PFM (the name ends in .pfm: parse_options) and the display image beside it, the
  * variance and, for a crop, its record; put in place together by render_command(). A
  * whole render writes no record, and removes one an earlier crop left (tile.h). */
@@ -160,6 +171,8 @@ static int write_outputs(struct run *run, struct error *err)
     if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
         return -1;
     if (o->error != NULL && pfm_write(o->error, run->result.error, err) < 0)
+        return -1;
+    if (o->block_error != NULL && write_block_error(run, err) < 0)
         return -1;
     if (o->has_crop && write_tile_record(run, err) < 0)
         return -1;
@@ -497,6 +510,8 @@ static int check_outputs(const struct options *o, struct error *err)
         output_declare(o->variance, "--variance");
     if (o->error != NULL)
         output_declare(o->error, "--error");
+    if (o->block_error != NULL)
+        output_declare(o->block_error, "--block-error");
     if (o->report != NULL)
         output_declare(o->report, "--report");
     if (o->save_photons != NULL)

@@ -1,8 +1,9 @@
 /*
  * tests/test_compare_verdict.c -- the block test of `photon compare` (image_block_test):
  * block sums and the Sidak level worked by hand, untestable and exact blocks, error images
- * (+Inf, NaN, byte order) against the variances they stand for, the command's verdict and
- * exit status, and on pt renders of scenes/cornell.scene: the false-alarm rate over 100
+ * (+Inf, NaN, byte order) against the variances they stand for, block statements
+ * (--block-error, --test-block-error) worked by hand and against a closed form, the
+ * command's verdict and exit status, and on pt renders of scenes/cornell.scene: the false-alarm rate over 100
  * independent seed pairs, the power against a 2% error planted in one block, and the
  * seed pairs the old per-pixel test called inconsistent. About 8 CPU seconds, nearly all
  * rendering.
@@ -14,7 +15,9 @@
 #include <string.h>
 
 #include "../src/image/compare.h"
+#include "../src/image/error_image.h"
 #include "../src/modes/pt.h"
+#include "../src/scene/scene.h"
 #include "check.h"
 #include "files.h"
 #include "tests.h"
@@ -221,10 +224,144 @@ static void test_error_image_read(struct check *t)
     image_free(like);
 }
 
+static double sky_over_floor_with_sphere(struct ray r)
+{
+    return sky_over_floor(r, 1);
+}
+
 /* Runs "PHOTON compare args" with its output in log; the exit status. */
 static int compare_status(const char *args, const char *log)
 {
     return photon_logged("compare", args, log);
+}
+
+/* truth: error_image.h's block rule worked by hand on a 20 x 16 image (blocks 16 x 16
+ *   and 4 x 16): pixel bounds 0.02 of noise alone give a block 0.02 sqrt(n) / n (0.00125
+ *   for 256 pixels, 0.0025 for 64); a bias of +0.01 everywhere adds 0.01; +0.01 and -0.01
+ *   in alternate columns cancel; a stated block noise of 0.005 replaces the quadrature.
+ *   And block_error_read() (compare.h) turns a block's S back into n (S / z)^2 at each
+ *   of its pixels, so that the block test's sum over n^2 is (S / z)^2.
+ * tolerance: 1e-12 relative (sums of 256 doubles); the read, 1e-6 (floats in the PFM).
+ * catches: biases added in quadrature or by magnitude, the block's n taken as 256 at a
+ *   cut edge, the stated block noise ignored, the read's n or z left out. */
+static void test_block_statement(struct check *t)
+{
+    struct image *image = filled(20, 16, 1.0), *error = filled(20, 16, 0.02);
+    struct image *bias = filled(20, 16, 0.01), *noise = filled(2, 1, 0.005);
+    struct stated_error stated = {error, NULL, NULL};
+    struct image *blocks = block_error_image(image, &stated, 0, 0);
+    REQUIRE(t, blocks->width == 2 && blocks->height == 1);
+    CHECK_CLOSE(t, image_get(blocks, 0, 0).y, 0.00125, 1e-12 * 0.00125);
+    CHECK_CLOSE(t, image_get(blocks, 1, 0).z, 0.0025, 1e-12 * 0.0025);
+    image_free(blocks);
+    shift(error, 0, 0, 20, 16, 0, 0.01); /* red: bias 0.01 and noise 0.02 */
+    stated.bias = bias;
+    shift(bias, 0, 0, 20, 16, 1, -0.01); /* green: no bias, noise 0.02 */
+    blocks = block_error_image(image, &stated, 0, 0);
+    CHECK_CLOSE(t, image_get(blocks, 0, 0).x, 0.01125, 1e-12 * 0.01125);
+    CHECK_CLOSE(t, image_get(blocks, 0, 0).y, 0.00125, 1e-12 * 0.00125);
+    image_free(blocks);
+    for (int x = 0; x < 20; x += 2) /* blue: +0.01 and -0.01 by columns, noise 0.01 */
+        shift(bias, x, 0, x + 1, 16, 2, -0.02);
+    stated.block_noise = noise;
+    blocks = block_error_image(image, &stated, 0, 0);
+    CHECK_CLOSE(t, image_get(blocks, 0, 0).z, 0.005, 1e-12 * 0.005);
+    CHECK_CLOSE(t, image_get(blocks, 1, 0).x, 0.015, 1e-12 * 0.015);
+    char name[NAME_BYTES];
+    struct error err;
+    temp_name(name, sizeof name, "verdict", "blocks.pfm");
+    CHECK(t, pfm_write(name, blocks, &err) == 0);
+    struct image *var = block_error_read(name, image, 0.95, &err);
+    REQUIRE(t, var != NULL);
+    double s = 0.015 / Z95;
+    CHECK(t, fabs(image_get(var, 19, 15).x / (64 * s * s) - 1) < 1e-6);
+    CHECK(t, fabs(image_get(var, 0, 0).z / (256 * (0.005 / Z95) * (0.005 / Z95)) - 1) < 1e-6);
+    struct image *wide = filled(40, 16, 1.0);
+    CHECK(t, block_error_read(name, wide, 0.95, &err) == NULL && strstr(err.message, "3x1"));
+    remove(name);
+    image_free(wide);
+    image_free(var);
+    image_free(blocks);
+    image_free(noise);
+    image_free(bias);
+    image_free(error);
+    image_free(image);
+}
+
+/* truth: two blocks of 16 x 16, A 0.02 above B in the second; a statement of 0.01 per
+ *   block at 0.95 makes that block z = 0.02 / (0.01 / 1.96) = 3.92, beyond Sidak's 3.14
+ *   for m = 6 at alpha 0.01 (2 blocks, 3 channels), and its bound (sum_c w_c 0.01 = 0.01
+ *   in luminance) misses it: covered 1 of 2; a statement of 0.05, z 0.78, covers both.
+ *   And photon --block-error writes one pixel a block, whose bounds hold the closed form
+ *   of sky-over-floor (tests/truths.c) in all 6 blocks of 40 x 30 at 16 samples (seed 1),
+ *   each useful: under 2% of the block's mean (0.4-1.1%, at 2-200 times the error). It
+ *   is refused without --error and with --crop.
+ * tolerance: none (printed figures); the 2% is what the bound is for.
+ * catches: the statement read as a pixel bound (z 62.7), the second block not named, the
+ *   bound fields not printed for a block statement, a block statement of pixels. */
+static void test_command_block_statement(struct check *t)
+{
+    char log[NAME_BYTES], a[NAME_BYTES], b[NAME_BYTES], s[NAME_BYTES], args[4 * NAME_BYTES];
+    temp_name(log, sizeof log, "verdict", "log");
+    temp_name(a, sizeof a, "verdict", "a.pfm");
+    temp_name(b, sizeof b, "verdict", "b.pfm");
+    temp_name(s, sizeof s, "verdict", "s.pfm");
+    struct image *img = filled(32, 16, 1.0);
+    struct error err;
+    CHECK(t, pfm_write(b, img, &err) == 0);
+    for (int c = 0; c < 3; c++)
+        shift(img, 16, 0, 32, 16, c, 0.02);
+    CHECK(t, pfm_write(a, img, &err) == 0);
+    static const double stated[] = {0.01, 0.05};
+    for (int k = 0; k < 2; k++) {
+        struct image *blocks = filled(2, 1, stated[k]);
+        CHECK(t, pfm_write(s, blocks, &err) == 0);
+        image_free(blocks);
+        snprintf(args, sizeof args, "%s %s --test-block-error %s --exit-status", a, b, s);
+        CHECK(t, compare_status(args, log) == (k == 0 ? 1 : 0));
+        CHECK(t, file_contains(log, k == 0 ? " worst_z=3.92 " : " worst_z=0.784 "));
+        CHECK(t, file_contains(log, k == 0 ? " failed_blocks=16,0 " : " failed_blocks=none "));
+        CHECK(t, file_contains(log, k == 0 ? " bound_blocks=2 bound_covered=0.5000 "
+                                           : " bound_blocks=2 bound_covered=1.0000 "));
+    }
+    image_free(img);
+    /* photon --block-error: one pixel a block, around sky-over-floor's closed form */
+    snprintf(args, sizeof args, "--mode pt --spp 16 --width 40 --height 30 --no-progress "
+             "scenes/analytic/sky-over-floor.scene -o %s --error %s --block-error %s", a, b, s);
+    CHECK(t, photon_logged("", args, log) == 0);
+    struct scene *scene = load_test_scene("scenes/analytic/sky-over-floor.scene", 40, 30);
+    struct image *image = pfm_read(a, &err), *blocks = pfm_read(s, &err);
+    REQUIRE(t, scene != NULL && image != NULL && blocks != NULL && blocks->width == 3 &&
+                   blocks->height == 2);
+    for (int k = 0; k < 6; k++) {
+        int x0 = 16 * (k % 3), y0 = 16 * (k / 3), x1 = x0 + 16 < 40 ? x0 + 16 : 40;
+        int y1 = y0 + 16 < 30 ? y0 + 16 : 30;
+        double mean = 0.0, truth = 0.0;
+        for (int y = y0; y < y1; y++)
+            for (int x = x0; x < x1; x++) {
+                mean += vec3_luminance(image_get(image, x, y));
+                truth += pixel_closed_form(scene, x, y, sky_over_floor_with_sphere);
+            }
+        double n = (double)(x1 - x0) * (double)(y1 - y0), bound =
+            vec3_luminance(image_get(blocks, k % 3, k / 3));
+        CHECK(t, fabs(mean - truth) / n <= bound && bound < 0.02 * truth / n);
+    }
+    scene_free(scene);
+    image_free(blocks);
+    image_free(image);
+    static const char *refused[][2] = {{"--block-error %s", "needs --error"},
+                                       {"--error %s --block-error %s --crop 0 0 8 8",
+                                        "not with --crop"}};
+    for (int k = 0; k < 2; k++) {
+        int n = snprintf(args, sizeof args, "--mode pt --spp 16 --no-progress -o %s "
+                         "scenes/analytic/sky-plane.scene ", a);
+        snprintf(args + n, sizeof args - (size_t)n, refused[k][0], b, s);
+        CHECK(t, photon_logged("", args, log) == 2 && file_contains(log, refused[k][1]));
+    }
+    remove(s);
+    remove(b);
+    remove(a);
+    remove(log);
 }
 
 /* truth: the contract in compare.h and the README: --exit-status gives 0 consistent, 1
@@ -274,7 +411,9 @@ static void test_command_verdict(struct check *t)
         {"--ref-error %s --confidence 0", "--confidence"},
         {"--ref-error %s --confidence 0.9x", "--confidence"},
         {"--ref-variance %s --confidence 0.9", "--confidence needs"},
-        {"--ref-variance %s --ref-error %s", "not both"},
+        {"--ref-variance %s --ref-error %s", "takes one of"},
+        {"--test-error %s --test-block-error %s", "takes one of"},
+        {"--test-block-error %s --block 8", "blocks of 16 x 16 pixels"},
         {"--exit-status --block 4", "--exit-status needs"},
     };
     for (size_t k = 0; k < sizeof refused / sizeof refused[0]; k++) {
@@ -497,6 +636,8 @@ void test_compare_verdict(struct check *t)
     RUN_TEST(t, test_untestable_and_exact);
     RUN_TEST(t, test_error_image_read);
     RUN_TEST(t, test_command_verdict);
+    RUN_TEST(t, test_block_statement);
+    RUN_TEST(t, test_command_block_statement);
     RUN_TEST(t, test_false_alarm_rate);
     RUN_TEST(t, test_planted_error);
     RUN_TEST(t, test_old_false_alarms);

@@ -50,7 +50,8 @@ static uint64_t photons_hash_of(const char *words)
  * and is compared with that mode's hash (base_of). */
 static const char *const same_pixels_options[] = {
     "-o build/x.pfm", "--crop 0 0 4 4", "--time-limit 5", "--reference r.pfm --report r.csv",
-    "--variance v.pfm", "--mode pt --error e.pfm", "--mode 2008 --checkpoint 3", "--exposure 2", "--stats", "--progress",
+    "--variance v.pfm", "--mode pt --error e.pfm", "--mode pt --error e.pfm --block-error b.pfm",
+    "--mode 2008 --checkpoint 3", "--exposure 2", "--stats", "--progress",
     "--no-progress", "--save-photons w.work", "--load-photons w.work", "--quality default",
     "--mode pt --paper", "--exclude-rim-photon" /* the default */,
     "--mode 1996 --shadow-rays" /* the default */,

@@ -247,6 +247,13 @@ int check_combinations(const struct options *o, const struct command_words *word
         return error_set(err, "", 0, "--variance: not available with --mode %s, whose "
                                      "pixels are not means of independent samples",
                          mode_name(o->mode));
+    if (o->block_error != NULL && o->error == NULL)
+        return error_set(err, "", 0, "--block-error: needs --error, whose bounds it sums "
+                                     "over each block");
+    if (o->block_error != NULL && o->has_crop)
+        return error_set(err, "", 0, "--block-error: not with --crop, which cuts the blocks "
+                                     "of the whole image at its edges (photon merge joins "
+                                     "no block statements)");
     if (check_error_bound(o, err) < 0)
         return -1;
     return check_idle(o, words, err);

@@ -109,6 +109,9 @@ static const struct option_spec specs[] = {
      "and its 5 x 5 neighbours' spread (needs --spp >= 16); 2009: from its passes' spread "
      "and, added, its photon estimate's bias, from a disc of half the area (needs --passes "
      ">= 16)", FOR_PT | FOR_2009},
+    {"--block-error", OPT_FILE, FIELD(block_error), 0, 0, "FILE.pfm",
+     "with --error: also write each 16 x 16 block's bound on |block mean - truth|, one pixel "
+     "a block, for photon compare --test-block-error (not with --crop)", FOR_PT | FOR_2009},
     {"--confidence", OPT_REAL_BETWEEN, FIELD(confidence), 0, 1, "C",
      "the confidence of --error's bound: the truth is within it in a fraction C of the "
      "pixels (default 0.95)", FOR_PT | FOR_2009},
@@ -630,8 +633,8 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
  * are hashed themselves: a preset and its words spelled out make the same tiles. */
 static const char *const outside_pixels[] = {
     "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure", "--reference",
-    "--report", "--variance", "--error", "--checkpoint", "--time-limit", "--save-photons",
-    "--load-photons", "--quality", "--paper",
+    "--report", "--variance", "--error", "--block-error", "--checkpoint", "--time-limit",
+    "--save-photons", "--load-photons", "--quality", "--paper",
 };
 
 static int changes_pixels(const struct option_spec *spec)

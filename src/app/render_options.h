@@ -53,6 +53,7 @@ struct options {
     const char *report;           /* --report FILE.csv, or NULL (borrowed)          */
     const char *variance;         /* --variance FILE.pfm, or NULL (borrowed)        */
     const char *error;            /* --error FILE.pfm, or NULL (borrowed)           */
+    const char *block_error;      /* --block-error FILE.pfm, or NULL (borrowed)     */
     double confidence;            /* --error's confidence, 0 < c < 1                */
     double target_error;          /* --target-error E, 0 = none                     */
     const char *save_photons;     /* --save-photons FILE, or NULL (borrowed)        */

@@ -51,9 +51,10 @@
 
 #define RELMSE_EPSILON 1e-2 /* compare.h's definition of relmse */
 #define COMPARE_USAGE "usage: photon compare A.pfm B.pfm [--diff OUT.png|.ppm] " \
-                      "[--ref-variance VB.pfm | --ref-error EB.pfm] [--test-variance VA.pfm " \
-                      "| --test-error EA.pfm] [--confidence C] [--alpha ALPHA] [--block N] " \
-                      "[--exit-status]"
+                      "[--ref-variance VB.pfm | --ref-error EB.pfm | --ref-block-error " \
+                      "BB.pfm] [--test-variance VA.pfm | --test-error EA.pfm | " \
+                      "--test-block-error BA.pfm] [--confidence C] [--alpha ALPHA] " \
+                      "[--block N] [--exit-status]"
 #define DEFAULT_ALPHA 0.01      /* family-wise level of the test when --alpha is not given */
 #define DEFAULT_CONFIDENCE 0.95 /* an error image's confidence when --confidence is not given */
 #define DEFAULT_TEST_BLOCK 16   /* the block test's side when --block is not given */
@@ -206,8 +207,10 @@ static struct image *checked_like(struct image *img, const char *name, const str
     while (++k < n && vec3_get(img->pixels[k / 3], (int)(k % 3)) >= 0)
         ; /* k: the first value (row order, then channel) that is not >= 0, or n */
     if (img != NULL && (img->width != like->width || img->height != like->height)) {
-        error_set(err, name, 0, "%s image is %dx%d, but the images compared are %dx%d",
-                  what, img->width, img->height, like->width, like->height);
+        error_set(err, name, 0, "%s image is %dx%d, but the images compared %s %dx%d",
+                  what, img->width, img->height,
+                  like->pixels == NULL ? "have blocks of 16 x 16 pixels" : "are", like->width,
+                  like->height);
     } else if (k < n) {
         double value = vec3_get(img->pixels[k / 3], (int)(k % 3));
         error_set(err, name, 0, "pixel (%lld, %lld) from the top left has a %s %s (%g) in "
@@ -241,12 +244,41 @@ struct image *error_image_read(const char *name, const struct image *like, doubl
     return e;
 }
 
+struct image *block_error_read(const char *name, const struct image *like, double confidence,
+                               struct error *err)
+{
+    assert(confidence > 0 && 1.0 - confidence > 0 && 1.0 - confidence < 1);
+    int columns, rows;
+    error_block_grid(0, 0, like->width, like->height, &columns, &rows);
+    struct image grid = {columns, rows, NULL};
+    struct image *blocks = checked_like(pfm_read_bounds(name, err), name, &grid, "bound", err);
+    if (blocks == NULL)
+        return NULL;
+    struct image *var = image_create(like->width, like->height);
+    double z = normal_critical_two_sided(1.0 - confidence);
+    for (int row = 0; row < rows; row++)
+        for (int column = 0; column < columns; column++) {
+            int u0, v0, u1, v1;
+            error_block_window(0, 0, like->width, like->height, column, row, &u0, &v0, &u1,
+                               &v1);
+            double n = (double)(u1 - u0) * (double)(v1 - v0);
+            struct vec3 b = vec3_scale(image_get(blocks, column, row), 1.0 / z);
+            struct vec3 pixel = vec3_scale(vec3_mul(b, b), n); /* +Inf stays +Inf */
+            for (int y = v0; y < v1; y++)
+                for (int x = u0; x < u1; x++)
+                    image_set(var, x, y, pixel);
+        }
+    image_free(blocks);
+    return var;
+}
+
 /* What `photon compare` was asked to do. */
 struct compare_args {
     const char *test, *reference; /* A.pfm, the image judged, and B.pfm, its reference    */
     const char *diff;             /* --diff OUT.png or .ppm, or NULL                       */
     const char *ref_variance, *test_variance; /* --ref-variance VB.pfm, --test-variance VA */
     const char *ref_error, *test_error;       /* --ref-error EB.pfm, --test-error EA.pfm   */
+    const char *ref_blocks, *test_blocks;     /* --ref-block-error, --test-block-error     */
     const char *alpha_text, *confidence_text, *block_text; /* as given, or NULL           */
     double alpha, confidence; /* the test's level and the error images' confidence       */
     int block;                /* > 0: report the worst block of this size                */
@@ -312,10 +344,12 @@ struct block_error image_worst_block(const struct image *a, const struct image *
 static const char **option_value(struct compare_args *args, const char *arg)
 {
     const char *names[] = {"--diff", "--ref-variance", "--test-variance", "--ref-error",
-                           "--test-error", "--alpha", "--confidence", "--block"};
+                           "--test-error", "--ref-block-error", "--test-block-error",
+                           "--alpha", "--confidence", "--block"};
     const char **fields[] = {&args->diff, &args->ref_variance, &args->test_variance,
-                             &args->ref_error, &args->test_error, &args->alpha_text,
-                             &args->confidence_text, &args->block_text};
+                             &args->ref_error, &args->test_error, &args->ref_blocks,
+                             &args->test_blocks, &args->alpha_text, &args->confidence_text,
+                             &args->block_text};
     for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
         if (strcmp(arg, names[k]) == 0)
             return fields[k];
@@ -328,20 +362,22 @@ static const char **option_value(struct compare_args *args, const char *arg)
 static int check_test_args(struct compare_args *args, struct error *err)
 {
     int tested = args->ref_variance || args->test_variance || args->ref_error ||
-                 args->test_error;
+                 args->test_error || args->ref_blocks || args->test_blocks;
+    int bounds = args->ref_error || args->test_error || args->ref_blocks || args->test_blocks;
     double size = DEFAULT_TEST_BLOCK;
     args->alpha = DEFAULT_ALPHA;
     args->confidence = DEFAULT_CONFIDENCE;
-    if ((args->ref_variance && args->ref_error) || (args->test_variance && args->test_error))
-        return error_set(err, "", 0, "compare: a side takes a variance image or an error "
-                                     "image, not both; " COMPARE_USAGE);
+    if (!!args->ref_variance + !!args->ref_error + !!args->ref_blocks > 1 ||
+        !!args->test_variance + !!args->test_error + !!args->test_blocks > 1)
+        return error_set(err, "", 0, "compare: a side takes one of a variance image, an "
+                                     "error image and a block statement; " COMPARE_USAGE);
     if ((args->alpha_text || args->exit_status) && !tested)
         return error_set(err, "", 0, "compare: %s needs --ref-variance, --ref-error, "
                          "--test-variance or --test-error; " COMPARE_USAGE,
                          args->alpha_text ? "--alpha" : "--exit-status");
-    if (args->confidence_text && !args->ref_error && !args->test_error)
-        return error_set(err, "", 0, "compare: --confidence needs --ref-error or "
-                                     "--test-error; " COMPARE_USAGE);
+    if (args->confidence_text && !bounds)
+        return error_set(err, "", 0, "compare: --confidence needs an error image or a block "
+                                     "statement; " COMPARE_USAGE);
     if (args->alpha_text && (!number_parse(args->alpha_text, 0, &args->alpha) ||
                              !(args->alpha >= ALPHA_MIN && args->alpha < 1)))
         return error_set(err, "", 0, "compare: --alpha '%s' must be a number from %g up to "
@@ -356,6 +392,10 @@ static int check_test_args(struct compare_args *args, struct error *err)
         return error_set(err, "", 0, "compare: --block '%s' must be a whole number of pixels "
                          "from 1 to 65536; " COMPARE_USAGE, args->block_text);
     args->block = (int)size;
+    if ((args->ref_blocks || args->test_blocks) && args->block != ERROR_BLOCK)
+        return error_set(err, "", 0, "compare: --block %d: a block statement is of blocks "
+                         "of %d x %d pixels, the test's with it", args->block, ERROR_BLOCK,
+                         ERROR_BLOCK);
     return 0;
 }
 
@@ -437,16 +477,19 @@ struct compare_inputs {
     struct image *var_a, *var_b; /* their variances (from error images too), when given */
 };
 
-/* A side's variance image: from a variance image, an error image, or none (NULL, no
- * error). -1 with *err filled. */
-static int read_variance(const char *variance, const char *error, const struct image *like,
-                         double confidence, struct image **var, struct error *err)
+/* A side's variance image: from a variance image, an error image, a block statement, or
+ * none (NULL, no error). -1 with *err filled. */
+static int read_variance(const char *variance, const char *error, const char *blocks,
+                         const struct image *like, double confidence, struct image **var,
+                         struct error *err)
 {
     if (variance != NULL)
         *var = variance_read(variance, like, err);
     else if (error != NULL)
         *var = error_image_read(error, like, confidence, err);
-    return (variance != NULL || error != NULL) && *var == NULL ? -1 : 0;
+    else if (blocks != NULL)
+        *var = block_error_read(blocks, like, confidence, err);
+    return (variance != NULL || error != NULL || blocks != NULL) && *var == NULL ? -1 : 0;
 }
 
 /* Reads every input named in args and checks their sizes; -1 with *err filled, leaving
@@ -464,11 +507,11 @@ static int read_inputs(const struct compare_args *args, struct compare_inputs *i
         return error_set(err, args->test, 0, "size %dx%d differs from %s: %dx%d",
                          in->a->width, in->a->height, args->reference, in->b->width,
                          in->b->height);
-    if (read_variance(args->test_variance, args->test_error, in->a, args->confidence,
-                      &in->var_a, err) < 0)
+    if (read_variance(args->test_variance, args->test_error, args->test_blocks, in->a,
+                      args->confidence, &in->var_a, err) < 0)
         return -1;
-    return read_variance(args->ref_variance, args->ref_error, in->a, args->confidence,
-                         &in->var_b, err);
+    return read_variance(args->ref_variance, args->ref_error, args->ref_blocks, in->a,
+                         args->confidence, &in->var_b, err);
 }
 
 /* blocks_noisy=N and noisy_blocks=X,Y;X,Y;... (or "none"): the blocks of reference b
@@ -545,7 +588,7 @@ static void print_results(const struct image_error *e, const struct compare_inpu
         print_verdict(&v);
         *consistent = v.consistent;
     }
-    if (args->test_error != NULL) { /* how A's stated bound held against B */
+    if (args->test_error != NULL || args->test_blocks != NULL) { /* how A's bound held */
         struct bound_check c = bound_check(in->a, in->var_a, in->b, in->var_b,
                                            normal_critical_two_sided(1.0 - args->confidence));
         printf(" bound_blocks=%d bound_covered=%.4f", c.n_blocks,
@@ -592,6 +635,9 @@ static const char compare_help[] =
     "  --test-variance V A's (a side with neither is exact: variance 0)\n"
     "  --ref-error E     B's bound on |pixel - truth| at --confidence C (default\n"
     "  --test-error E    0.95; photon --error); A's. +Inf: no bound\n"
+    "  --ref-block-error S  B's bound on each 16 x 16 block's mean, one pixel a\n"
+    "  --test-block-error S block (photon --block-error; 2009's pixels share\n"
+    "                    photons, so their bounds do not add in quadrature); A's\n"
     "  --alpha ALPHA     chance of calling equal images inconsistent (default 0.01)\n"
     "  --exit-status     exit 0 consistent, 1 inconsistent, 2 bad input or untestable\n"
     "Fields: rmse, relmse (mean of (a-b)^2/(b^2+0.01)), psnr, maxerr over all values.\n"
@@ -601,17 +647,19 @@ static const char compare_help[] =
     "  mean_ratio = mean A / mean B over the image.\n"
     "With a variance or error image, the block test: in each block and channel z =\n"
     "  (mean A - mean B) / sqrt((sum var_A + sum var_B) / n^2), var = (E / z_C)^2\n"
-    "  from an error image, n pixels. blocks_tested; blocks_untestable (a pixel of\n"
-    "  +Inf: not tested); test_block; z_critical, Sidak's |z| for 3 x blocks_tested\n"
-    "  tests at level alpha; worst_z, the largest |z|, in worst_z_block=X,Y and\n"
+    "  from an error image, n pixels, or n^2 (S / z_C)^2 for their sum from a block\n"
+    "  statement. blocks_tested; blocks_untestable (a pixel of +Inf: not tested);\n"
+    "  test_block; z_critical, Sidak's |z| for 3 x blocks_tested tests at level\n"
+    "  alpha; worst_z, the largest |z|, in worst_z_block=X,Y and\n"
     "  worst_z_channel=r|g|b, where worst_z_reldiff = mean A / mean B - 1;\n"
     "  blocks_failed (|z| >= z_critical), failed_blocks=X,Y;... (the first 10, then\n"
     "  ...; none); consistent=yes (none failed), no, or untestable (none tested);\n"
     "  alpha. Status without --exit-status: 0, or 2 for bad input.\n"
-    "With --test-error, how A's bound held against B in 16 x 16 blocks (B's mean under\n"
-    "  1e-3 aside): bound_blocks; bound_covered, the share whose |mean A - mean B| is\n"
-    "  within sqrt(bound^2 + (z_C sigma_B)^2); bound_median_ratio and bound_rms_ratio,\n"
-    "  the bound over the error (exact bounds at 0.95: 2.91 and 1.96).\n";
+    "With --test-error or --test-block-error, how A's bound held against B in\n"
+    "  16 x 16 blocks (B's mean under 1e-3 aside): bound_blocks; bound_covered, the\n"
+    "  share whose |mean A - mean B| is within sqrt(bound^2 + (z_C sigma_B)^2);\n"
+    "  bound_median_ratio and bound_rms_ratio, the bound over the error (exact bounds\n"
+    "  at 0.95: 2.91 and 1.96).\n";
 
 int compare_command(int argc, char **argv)
 {

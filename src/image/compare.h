@@ -95,6 +95,16 @@ struct image *variance_read(const char *name, const struct image *like, struct e
 struct image *error_image_read(const char *name, const struct image *like, double confidence,
                                struct error *err);
 
+/* Reads a block statement (photon --block-error) for comparison with image like: a PFM
+ * of one pixel a 16 x 16 block of like (ERROR_BLOCK, the grid from its top left, cut at
+ * its edges), each value a bound B >= 0 (or +Inf) on |block mean - truth| at the given
+ * confidence. Returned as the variance image the block test takes, n (B / z)^2 at each
+ * of a block's n pixels, so that the block mean's variance, their sum over n^2, is
+ * (B / z)^2: a statement of blocks the test reads only in blocks of 16. NULL with *err
+ * filled. */
+struct image *block_error_read(const char *name, const struct image *like, double confidence,
+                               struct error *err);
+
 /* The whole-image test of image_block_test(); definitions in compare.c's header. */
 #define BLOCK_TEST_LISTED 10 /* failed blocks named in block_verdict, the first in row order */
 struct block_verdict {

@@ -38,28 +38,68 @@ static void bound_parts(const struct stated_error *stated, int x, int y, struct 
     *noise = vec3(bound.x - fabs(b->x), bound.y - fabs(b->y), bound.z - fabs(b->z));
 }
 
+/* What a block's bound is made of, summed over its pixels [u0, u1) x [v0, v1): the image's
+ * luminance, the bias b per channel and in luminance, and the squares of the pixels'
+ * noise parts per channel and in luminance (error_image.h). */
+struct block_sums {
+    double n, luminance, bias_luminance, noise2_luminance;
+    struct vec3 bias, noise2;
+};
+
+static struct block_sums block_sums(const struct image *image, const struct stated_error *stated,
+                                    int u0, int v0, int u1, int v1)
+{
+    struct block_sums s = {0.0, 0.0, 0.0, 0.0, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+    for (int y = v0; y < v1; y++)
+        for (int x = u0; x < u1; x++) {
+            struct vec3 b, noise;
+            bound_parts(stated, x, y, &b, &noise);
+            double l = vec3_luminance(noise);
+            s.luminance += vec3_luminance(image_get(image, x, y));
+            s.bias = vec3_add(s.bias, b);
+            s.bias_luminance += vec3_luminance(b);
+            s.noise2 = vec3_add(s.noise2, vec3_mul(noise, noise));
+            s.noise2_luminance += l * l;
+        }
+    s.n = (double)(u1 - u0) * (double)(v1 - v0);
+    return s;
+}
+
 /* The mean luminance of image over block (column, row)'s pixels [u0, u1) x [v0, v1) and
  * the bound on it (error_image.h). */
 static void block_bound(const struct image *image, const struct stated_error *stated,
                         int column, int row, int u0, int v0, int u1, int v1, double *mean,
                         double *bound)
 {
-    double sum = 0.0, bias_sum = 0.0, noise2 = 0.0;
-    for (int y = v0; y < v1; y++)
-        for (int x = u0; x < u1; x++) {
-            struct vec3 b, noise;
-            bound_parts(stated, x, y, &b, &noise);
-            double s = vec3_luminance(noise);
-            sum += vec3_luminance(image_get(image, x, y));
-            bias_sum += vec3_luminance(b);
-            noise2 += s * s;
-        }
-    double n = (double)(u1 - u0) * (double)(v1 - v0);
+    struct block_sums s = block_sums(image, stated, u0, v0, u1, v1);
     double noise = stated->block_noise != NULL
                        ? vec3_luminance(image_get(stated->block_noise, column, row))
-                       : sqrt(noise2) / n;
-    *mean = sum / n;
-    *bound = fabs(bias_sum) / n + noise;
+                       : sqrt(s.noise2_luminance) / s.n;
+    *mean = s.luminance / s.n;
+    *bound = fabs(s.bias_luminance) / s.n + noise;
+}
+
+struct image *block_error_image(const struct image *image, const struct stated_error *stated,
+                                int x0, int y0)
+{
+    int columns, rows;
+    error_block_grid(x0, y0, image->width, image->height, &columns, &rows);
+    struct image *blocks = image_create(columns, rows);
+    for (int row = 0; row < rows; row++)
+        for (int column = 0; column < columns; column++) {
+            int u0, v0, u1, v1;
+            error_block_window(x0, y0, image->width, image->height, column, row, &u0, &v0,
+                               &u1, &v1);
+            struct block_sums s = block_sums(image, stated, u0, v0, u1, v1);
+            struct vec3 noise = stated->block_noise != NULL
+                                    ? image_get(stated->block_noise, column, row)
+                                    : vec3_scale(vec3(sqrt(s.noise2.x), sqrt(s.noise2.y),
+                                                      sqrt(s.noise2.z)), 1.0 / s.n);
+            struct vec3 bias = vec3_scale(s.bias, 1.0 / s.n);
+            image_set(blocks, column, row,
+                      vec3_add(vec3(fabs(bias.x), fabs(bias.y), fabs(bias.z)), noise));
+        }
+    return blocks;
 }
 
 struct block_count blocks_within(const struct image *image, const struct stated_error *stated,

@@ -60,6 +60,15 @@ struct block_count {
 struct block_count blocks_within(const struct image *image, const struct stated_error *stated,
                                  int x0, int y0, double e);
 
+/* The block statement (--block-error): per block of the grid above that the window of
+ * image at (x0, y0) meets (error_block_grid(), one pixel a block), per channel, the bound
+ * on |block mean - truth| at stated's confidence, |sum of the pixels' b| / n + N_block
+ * (the rule above, per channel: N_block from stated's block_noise, else its pixels' noise
+ * in quadrature). A block's luminance is bounded by sum_c w_c of its channels' bounds,
+ * which is what photon compare reads from it (--test-block-error). Owned by the caller. */
+struct image *block_error_image(const struct image *image, const struct stated_error *stated,
+                                int x0, int y0);
+
 /* How an error image's statement held against a reference (ERROR.md's words), block by
  * block (the grid above, of the whole image the images are): a block's statement holds
  * when |mean a - mean b| of its luminance is at most sqrt(B^2 + (z_c sigma_b)^2), B its
