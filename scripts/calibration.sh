@@ -35,7 +35,10 @@ suite_names calibration "$@"
 # cell NAME MODE KIND: the table's cell from build/calibration/NAME-MODE-KIND.*.
 cell() {
     base=$work/$1-$2-$3
-    [ -f "$base.log" ] || { echo "not run"; return; }
+    if [ ! -f "$base.log" ]; then
+        kept "calibration $2" "$1" "$([ "$3" = defaults ] && echo 1 || echo 2)"
+        return
+    fi
     if [ ! -f "$base.compare" ]; then
         echo "refuses --error"
         return
@@ -60,7 +63,10 @@ cell() {
         blocks=$(stat_of "$base.log" target_blocks)
         [ "$within" = "$blocks" ] || printf ', stopped with %s of %s blocks at %s' \
             "$within" "$blocks" "$target"
-        printf ', %s samples' "$(stat_of "$base.log" spp)"
+        case $2 in
+            2008 | 2009) printf ', %s passes' "$(stat_of "$base.log" passes)" ;;
+            *) printf ', %s samples' "$(stat_of "$base.log" spp)" ;;
+        esac
     fi
 }
 

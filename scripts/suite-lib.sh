@@ -42,6 +42,16 @@ suite_names() {
     done
 }
 
+# kept MARKER NAME I: the I-th cell of NAME's row in the table of $out between the lines
+# <!-- MARKER --> and <!-- /MARKER -->, as the last run wrote it, or "not run": a run of
+# some scenes or modes leaves the cells it did not render as they were.
+kept() {
+    [ -f "$out" ] || { echo "not run"; return; }
+    sed -n "/^<!-- $1 -->\$/,/^<!-- \/$1 -->\$/p" "$out" |
+        awk -F' [|] ' -v n="| \`$2\`" -v i="$3" '$1 == n { c = $(i + 1); sub(/ [|]$/, "", c); print c; found = 1 }
+            END { if (!found) print "not run" }'
+}
+
 # scene_of NAME: $scene, $reference (its PFM), $options and $noise (photon compare's
 # --ref-variance of the reference's variance image, when it has one) from NAME's line of
 # reference/consistency.txt.
