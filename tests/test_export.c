@@ -279,7 +279,8 @@ static void substitute(char *args, size_t size, const char *words, const char *o
     args[n < size ? n : size - 1] = '\0';
 }
 
-/* Bad input: exit status 2, a message on stderr, and no output file. */
+/* Bad input: exit status 2, a message on stderr, and no output file; --help, status 0
+ * and the usage on stdout. */
 static void test_failures(struct check *t)
 {
     static const struct {
@@ -305,6 +306,9 @@ static void test_failures(struct check *t)
         CHECK(t, file_contains(log, cases[i].message));
         CHECK(t, !file_exists(out));
     }
+    CHECK(t, photon_logged("export", "--help", log) == 0);
+    CHECK(t, file_contains(log, "usage: photon export --format pbrt|mitsuba|blender SCENE"));
+    CHECK(t, file_contains(log, "--channel R|G|B   one channel's values"));
     remove(bad);
     remove(log);
 }

@@ -388,10 +388,29 @@ static int check_output_name(const char *output, struct error *err)
     return 0;
 }
 
+/* `photon export --help`: what each option and format does (README: Rendering our scenes
+ * elsewhere). */
+static const char export_help[] =
+    EXPORT_USAGE "\n\n"
+    "Writes SCENE for another renderer, with the same camera, image size, lights and\n"
+    "materials, so that its image can be compared with photon's (photon compare).\n"
+    "  --format pbrt     a pbrt-v4 scene (.pbrt)\n"
+    "  --format mitsuba  a Mitsuba 3 scene (.xml)\n"
+    "  --format blender  a Python script for Blender that builds the scene for Cycles\n"
+    "  -o OUT            the file written (mitsuba: its meshes' OBJ files beside it)\n"
+    "  --spp N           the samples a pixel the other renderer is told to take\n"
+    "                    (default 1024)\n"
+    "  --channel R|G|B   one channel's values on every colour: a grey scene\n"
+    "What a format cannot express exactly is said on stderr, never left out silently.\n"
+    "Exit status 0, or 2 for bad input (nothing written).\n";
+
 int export_command(int argc, char **argv)
 {
     struct export_args a;
     struct error err;
+    for (int i = 1; i < argc; i++)
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0)
+            return fputs(export_help, stdout) < 0;
     if (parse_export_args(argc, argv, &a, &err) < 0 || check_output_name(a.output, &err) < 0 ||
         output_check_one(a.output, "-o", &err) < 0) {
         error_print(&err);
