@@ -105,6 +105,20 @@ int files_equal(const char *a, const char *b)
     return same;
 }
 
+int count_temporaries(const char *name)
+{
+    char command[COMMAND_MAX];
+    snprintf(command, sizeof command, "n=0; for f in '%s'.tmp '%s'.????????.tmp; do "
+             "if [ -e \"$f\" ] || [ -L \"$f\" ]; then n=$((n + 1)); fi; done; exit $n",
+             name, name);
+    return run_command(command);
+}
+
+int no_temporaries(const char *name)
+{
+    return count_temporaries(name) == 0;
+}
+
 double file_stat(const char *log, const char *key)
 {
     char *text = read_text_file(log);

@@ -30,6 +30,12 @@ int file_contains(const char *name, const char *text);
 int file_equals_text(const char *name, const char *text);
 /* Whether both files can be read and hold the same bytes. */
 int files_equal(const char *a, const char *b);
+/* How many temporaries of the output name are on disk: files, links or directories
+ * named NAME.XXXXXXXX.tmp (base/output.h) or NAME.tmp (the name photon once used).
+ * name holds no quote. */
+int count_temporaries(const char *name);
+/* Whether count_temporaries(name) is 0. */
+int no_temporaries(const char *name);
 
 /* The number of the "key=value" line (as --stats prints) for key in file log; -1 when the
  * file has no such line. */

@@ -47,6 +47,7 @@ static const struct room rooms[] = {
     {"switches", test_switches, 0}, {"ppm_departures", test_ppm_departures, 0},
     {"export", test_export, 0},   {"export_blender", test_export_blender, 0},
     {"sppm", test_sppm, 0},       {"outputs", test_outputs, 0},
+    {"foreign_files", test_foreign_files, 0},
     {"numbers", test_numbers, 0}, {"sky", test_sky, 0},
     {"shading", test_shading, 0}, {"lens", test_lens, 0},
     {"spd", test_spd, 1},

@@ -33,12 +33,10 @@ static size_t read_file(const char *name, unsigned char *bytes)
     return n;
 }
 
-/* True when the writer left no NAME.tmp behind. */
+/* True when the writer left no temporary behind (files.h). */
 static int no_temporary(const char *name)
 {
-    char tmp[3 * NAME_MAX_BYTES]; /* room for any name these tests build, and ".tmp" */
-    snprintf(tmp, sizeof tmp, "%s.tmp", name);
-    return !file_exists(tmp);
+    return no_temporaries(name);
 }
 
 /* A value in [1e-45, 1e38) spread evenly over the decades (floats' subnormals to near

@@ -611,7 +611,7 @@ static void test_probe_command(struct check *t)
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         CHECK(t, photon_logged("probe", bad[i][0], OUT ".log") == 2 &&
                  file_contains(OUT ".log", bad[i][1]));
-        CHECK(t, !file_exists(OUT ".csv") && !file_exists(OUT ".csv.tmp"));
+        CHECK(t, !file_exists(OUT ".csv") && no_temporaries(OUT ".csv"));
     }
     CHECK(t, photon_logged("probe", "--help", OUT ".log") == 0 &&
              file_contains(OUT ".log", "usage: photon probe") && !file_exists(OUT ".csv"));

@@ -324,7 +324,7 @@ static int merge_refused(const char *tile_names, const char *message)
     remove(OUT "_full.png");
     int refused = photon("merge -o " OUT "_full.pfm %s", tile_names) == 2 &&
                   log_contains(message) && !file_exists(OUT "_full.pfm") &&
-                  !file_exists(OUT "_full.png") && !file_exists(OUT "_full.pfm.tmp");
+                  !file_exists(OUT "_full.png") && no_temporaries(OUT "_full.pfm");
     if (!refused)
         fprintf(stderr, "test_merge: 'merge %s' was not refused with '%s'\n", tile_names,
                 message);

@@ -104,8 +104,8 @@ static void test_output_naming_an_input_refused(struct check *t)
         CHECK(t, photon(refused[i][0]) == 2 && log_contains("is the input"));
         CHECK(t, files_equal(OUT "_s.scene", OUT "_keep.scene") &&
                  files_equal(OUT "_l.pfm", OUT "_keep.pfm"));
-        CHECK(t, !file_exists(OUT "_x.pfm") && !file_exists(OUT "_s.scene.tmp") &&
-                 !file_exists(OUT "_l.pfm.tmp"));
+        CHECK(t, !file_exists(OUT "_x.pfm") && no_temporaries(OUT "_s.scene") &&
+                 no_temporaries(OUT "_l.pfm"));
     }
     CHECK(t, photon("merge -o " OUT "_m.pfm " OUT "_l.pfm " OUT "_r.pfm") == 0);
     run_command("cp " OUT "_m.pfm " OUT "_copy.pfm && ln " OUT "_m.pfm " OUT "_hard.pfm");

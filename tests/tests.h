@@ -53,6 +53,7 @@ void test_export(struct check *t);  /* test_export.c: photon export to pbrt-v4, 
 void test_switches(struct check *t); /* test_switches.c: each paper switch of 1994, 1996 */
 void test_export_blender(struct check *t); /* test_export_blender.c: the Blender script */
 void test_outputs(struct check *t); /* test_outputs.c: outputs and inputs of a command */
+void test_foreign_files(struct check *t); /* test_foreign_files.c: files photon did not make */
 void test_numbers(struct check *t); /* test_numbers.c: numbers, ranges, messages       */
 void test_sky(struct check *t);     /* test_sky.c: the background as a light, every mode */
 void test_error(struct check *t);   /* test_error.c: error images against closed forms */

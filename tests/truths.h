@@ -175,7 +175,7 @@ int crop_is_window(const struct image *whole, const struct image *crop, const in
 
 /* Runs `photon --mode MODE OPTION --width 8 --height 8 -o OUT.pfm scenes/cornell.scene`
  * for each bad[i] = {OPTION, TEXT}: each must exit 2 with TEXT in its message and leave
- * no OUT.pfm, OUT.pfm.tmp or OUT.png. Returns how many did not (each named on stderr). */
+ * no OUT.pfm, temporary of it (files.h) or OUT.png. Returns how many did not (each named on stderr). */
 int refuses_options(const char *mode, const char *const (*bad)[2], size_t n_bad,
                     const char *out);
 

@@ -14,7 +14,7 @@
 #include "../modes/render.h"
 
 struct report {
-    FILE *csv;                     /* owned: NAME.tmp until report_close()           */
+    FILE *csv;                     /* owned: a temporary until report_close()        */
     const struct image *reference; /* borrowed: the whole image's reference          */
     int x0, y0;                    /* the window's corner in the whole image          */
     struct image *window;          /* owned: the reference's pixels under the window  */

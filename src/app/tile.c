@@ -65,12 +65,12 @@ int tile_record_write(const char *pfm_name, const struct tile_record *r, struct 
 int tile_record_remove(const char *pfm_name, struct error *err)
 {
     char name[FILENAME_MAX];
+    struct tile_record r;
+    struct error not_a_record;
     if (record_name(pfm_name, name, err) < 0)
         return -1;
-    FILE *f = fopen(name, "r");
-    if (f == NULL)
-        return 0; /* no record: nothing to do */
-    fclose(f);
+    if (tile_record_read(pfm_name, &r, &not_a_record) < 0)
+        return 0; /* none, or the user's file of that name (tile.h): nothing of ours */
     if (remove(name) != 0)
         return error_set(err, name, 0, "cannot remove this record of an earlier crop (%s), "
                          "which would make photon merge take the whole image %s for that "

@@ -48,9 +48,10 @@ int tile_record_write(const char *pfm_name, const struct tile_record *r, struct 
 
 /* Removes the record beside pfm_name when there is one: a whole render (no --crop) calls
  * it once its PFM is written, so that a record left there by an earlier crop of the same
- * name cannot make merge take the whole image for that crop. -1 with *err filled when the
- * record is there and cannot be removed; a record that cannot even be opened is left, as
- * merge cannot read it either. */
+ * name cannot make merge take the whole image for that crop. Only a record is removed:
+ * a file that tile_record_read() takes whole. Anything else of that name (a scene, a
+ * note, a directory, a file that cannot be read) is the user's and is left, as merge
+ * refuses it anyway. -1 with *err filled when the record cannot be removed. */
 int tile_record_remove(const char *pfm_name, struct error *err);
 
 /* Reads the record beside pfm_name into *r. -1 with *err ("FILE.window:LINE: message")

@@ -2,14 +2,19 @@
  * base/output.c -- the registry of a command's outputs and inputs (output.h).
  *
  * Invariants: outputs[0 .. n_outputs - 1] are the declared outputs (and lone files being
- * written), each with its state; a temporary exists on disk exactly for the OPEN and
- * COMMITTED ones, and outputs_abandon() removes those. inputs[] holds the name of every
- * file input_open() let through. Both lists own their strings.
+ * written), each with its state. Every file of ours on disk is in an undo entry (undo.h)
+ * from the moment it exists: an output's temporary, or outputs_check()'s probe, is
+ * tmp_name, in tmp_undo (to remove) until it is renamed or removed; during an
+ * outputs_publish(), aside_undo says how to take back what putting the output in place
+ * did. Removing a file of ours is undo_now() of its entry, so an exit and a signal remove
+ * exactly what a normal path would. inputs[] holds the name of every file input_open()
+ * let through. Both lists own their strings.
  */
 #include "output.h"
 
 #include <assert.h>
 #include <errno.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -17,25 +22,32 @@
 #include "alloc.h"
 #include "file_kind.h"
 #include "hash.h"
+#include "undo.h"
 
 #define PROBE_MARKER_MAX 64 /* "photon-output-check" + two numbers */
 #define COMPARE_CHUNK 65536 /* bytes compared at a time when an output may be an input */
+#define TEMPORARY_SUFFIX ".XXXXXXXX.tmp" /* what a name of ours adds: 8 hex digits   */
+#define TEMPORARY_TRIES 16  /* names tried for one file of ours before giving up     */
+#define NO_OUTPUT SIZE_MAX  /* "no output" where an index of outputs[] is expected   */
 
 enum output_state {
-    OUTPUT_DECLARED,  /* nothing on disk of ours                                   */
+    OUTPUT_DECLARED,  /* no temporary of ours                                      */
     OUTPUT_OPEN,      /* stream writes tmp_name                                    */
     OUTPUT_COMMITTED  /* tmp_name complete, waiting for outputs_publish()          */
 };
 
 struct output {
     char *name;             /* owned: the final name                              */
-    char *tmp_name;         /* owned: name + ".tmp", where the bytes go first      */
+    char *tmp_name;         /* owned: the temporary or probe on disk, else NULL    */
+    char *aside_name;       /* owned: in a publish, where the replaced file waits  */
     const char *role;       /* borrowed (a literal): "-o", "--variance", ...       */
     enum output_state state;
     FILE *stream;           /* while OUTPUT_OPEN                                  */
     int checked;            /* outputs_check() passed it                          */
     int lone;               /* opened with nothing declared: renamed at commit    */
-    int renamed_now;        /* put in place by the outputs_publish() running      */
+    int published;          /* put in place by the outputs_publish() running      */
+    struct undo *tmp_undo;  /* tmp_name's entry                                   */
+    struct undo *aside_undo; /* in a publish: what takes this output's step back  */
 };
 
 static struct output *outputs;
@@ -74,17 +86,17 @@ static struct output *add_output(const char *name, const char *role, int lone)
         outputs = xrealloc(outputs, cap_outputs, sizeof *outputs, "outputs");
     }
     struct output *o = &outputs[n_outputs];
-    size_t n = strlen(name);
     o->name = xstrdup(name);
-    o->tmp_name = xmalloc(n + 5, 1, "output name");
-    memcpy(o->tmp_name, name, n);
-    memcpy(o->tmp_name + n, ".tmp", 5);
+    o->tmp_name = NULL;
+    o->aside_name = NULL;
     o->role = role;
     o->state = OUTPUT_DECLARED;
     o->stream = NULL;
     o->checked = 0;
     o->lone = lone;
-    o->renamed_now = 0;
+    o->published = 0;
+    o->tmp_undo = undo_new();
+    o->aside_undo = undo_new();
     n_outputs++; /* last: fatal() inside the allocations above sees a consistent list */
     return o;
 }
@@ -94,10 +106,32 @@ void output_declare(const char *name, const char *role)
     add_output(name, role, 0);
 }
 
-/* ---- identity -------------------------------------------------------------------------- */
+/* Removes o's temporary (or probe), if it has one. A probe that holds a user's file moved
+ * aside is renamed back instead (undo.h); when that fails it keeps its name. */
+static void drop_temporary(struct output *o)
+{
+    if (o->tmp_name != NULL && undo_now(o->tmp_undo) == 0) {
+        xfree(o->tmp_name);
+        o->tmp_name = NULL;
+    }
+}
 
-/* This run's mark in the probes: the clock, the time and where the OS put a static and
- * the stack (C99 has no process id). Only told apart from other runs' leftovers. */
+/* Forgets outputs[i], a lone output done with. */
+static void forget(size_t i)
+{
+    xfree(outputs[i].name);
+    xfree(outputs[i].tmp_name);
+    xfree(outputs[i].aside_name);
+    undo_free(outputs[i].tmp_undo);
+    undo_free(outputs[i].aside_undo);
+    outputs[i] = outputs[--n_outputs];
+}
+
+/* ---- files of ours ------------------------------------------------------------------- */
+
+/* This run's token, in its probes' markers and its temporaries' names: the clock, the
+ * time and where the OS put a static and the stack (C99 has no process id). Two runs may
+ * still draw the same: what keeps them apart is the exclusive create (create_ours). */
 static uint64_t run_token(void)
 {
     static uint64_t token = 0;
@@ -112,6 +146,106 @@ static uint64_t run_token(void)
     }
     return token;
 }
+
+/* The number of this run's first temporary name: 32 bits of run_token(), or the 8 hex
+ * digits of PHOTON_TEMPORARY_MARK, with which the tests make two runs try the same names
+ * (as two runs started in one clock tick without address randomisation would). */
+static unsigned long run_mark(void)
+{
+    static int known = 0;
+    static unsigned long mark;
+    if (!known) {
+        const char *fixed = getenv("PHOTON_TEMPORARY_MARK");
+        char *end = NULL;
+        mark = fixed != NULL ? strtoul(fixed, &end, 16) : 0;
+        if (fixed == NULL || end == fixed || *end != '\0')
+            mark = (unsigned long)(run_token() >> 32);
+        mark &= 0xffffffffUL;
+        known = 1;
+    }
+    return mark;
+}
+
+/* name + ".XXXXXXXX.tmp", XXXXXXXX the run's mark + attempt in hex (a new string). */
+static char *temporary_name(const char *name, unsigned long attempt)
+{
+    char *t = xmalloc(strlen(name) + sizeof TEMPORARY_SUFFIX, 1, "temporary name");
+    sprintf(t, "%s.%08lx.tmp", name, (run_mark() + attempt) & 0xffffffffUL);
+    return t;
+}
+
+/* What outputs_check() writes in outputs[k]'s probe: this run and k. */
+static void probe_marker(size_t k, char marker[PROBE_MARKER_MAX])
+{
+    snprintf(marker, PROBE_MARKER_MAX, "photon-output-check %016llx %zu\n",
+             (unsigned long long)run_token(), k);
+}
+
+/* The earlier output (j < k) whose probe f holds, or NO_OUTPUT. */
+static size_t probe_owner(FILE *f, size_t k)
+{
+    char found[PROBE_MARKER_MAX], marker[PROBE_MARKER_MAX];
+    size_t n = fread(found, 1, sizeof found - 1, f);
+    found[n] = '\0';
+    for (size_t j = 0; j < k; j++) {
+        probe_marker(j, marker);
+        if (!outputs[j].lone && strcmp(found, marker) == 0)
+            return j;
+    }
+    return NO_OUTPUT;
+}
+
+/* A new file of ours beside name, open for binary writing, its name in *made (a new
+ * string) and in u, as a file to remove: the first of this run's temporary names that no
+ * file has, made by an exclusive create (output.h). A name that is taken is passed over:
+ * when it holds the probe of an earlier output than probe_k (NO_OUTPUT: not a probe),
+ * *same is set to that output and NULL returned. NULL with *errnum the last errno (0 when
+ * every name was taken) when no name could be made. */
+static FILE *create_ours(const char *name, struct undo *u, char **made, size_t probe_k,
+                         size_t *same, int *errnum)
+{
+    *errnum = 0;
+    for (unsigned long attempt = 0; attempt < TEMPORARY_TRIES; attempt++) {
+        char *t = temporary_name(name, attempt);
+        FILE *f = fopen(t, "rb"); /* taken: C99's own check, before C11's "x" */
+        if (f != NULL) {
+            size_t owner = probe_k != NO_OUTPUT ? probe_owner(f, probe_k) : NO_OUTPUT;
+            fclose(f);
+            xfree(t);
+            if (owner != NO_OUTPUT) {
+                *same = owner;
+                return NULL;
+            }
+            continue;
+        }
+        undo_hold(); /* the file and its entry appear together for a signal */
+        errno = 0;
+        f = fopen(t, "wbx");
+        *errnum = errno;
+        if (f != NULL)
+            undo_set(u, UNDO_REMOVE, t, NULL);
+        undo_release();
+        if (f != NULL) {
+            *made = t;
+            return f;
+        }
+        xfree(t);
+    }
+    return NULL;
+}
+
+/* The message's ": reason" for an errno, "" for none. */
+static const char *colon(int errnum)
+{
+    return errnum != 0 ? ": " : "";
+}
+
+static const char *reason(int errnum)
+{
+    return errnum != 0 ? strerror(errnum) : "";
+}
+
+/* ---- identity -------------------------------------------------------------------------- */
 
 /* The size of the regular file name, or -1 when it does not open. */
 static long file_size(const char *name)
@@ -144,44 +278,78 @@ static int same_bytes(const char *a, const char *b)
     return same;
 }
 
-/* Whether opening input goes through o's directory entry: o's file moved aside to its
- * temporary name for the moment of one fopen(), then put back. -1 with *err when it
- * cannot be put back (the message says where it is). */
-static int input_goes_through(struct output *o, const char *input, struct error *err)
+/* Whether inputs[i] opens (for reading). */
+static int input_opens(size_t i)
 {
-    if (rename(o->name, o->tmp_name) != 0)
-        return 1; /* cannot tell, and the bytes are the same: refuse rather than risk */
-    FILE *f = fopen(input, "rb");
+    FILE *f = fopen(inputs[i], "rb");
     if (f != NULL)
         fclose(f);
-    if (rename(o->tmp_name, o->name) != 0) {
+    return f != NULL;
+}
+
+/* Moves o's file aside, onto a file of ours (its probe, or a new one), and back
+ * (output.h). -1 with *err when the file there cannot be moved, so that o could not be put
+ * in place either; when one of inputs[from ..] opens only while o's file is in place (it
+ * is that file); or when o's file cannot be moved back (the message says where it is, and
+ * its entry will try again at exit). Nothing there (or a new file of ours that cannot be
+ * made): 0. */
+static int round_trip(struct output *o, size_t from, struct error *err)
+{
+    int errnum = 0;
+    FILE *f = NULL;
+    if (o->tmp_name == NULL &&
+        (f = create_ours(o->name, o->tmp_undo, &o->tmp_name, NO_OUTPUT, NULL, &errnum)) == NULL)
+        return 0; /* the check or the write will say why */
+    if (f != NULL)
+        fclose(f);
+    undo_hold(); /* the rename and the entry that says where the file is, together */
+    errno = 0;
+    int moved = rename(o->name, o->tmp_name) == 0;
+    errnum = errno;
+    if (moved)
+        undo_set(o->tmp_undo, UNDO_RENAME_BACK, o->tmp_name, o->name);
+    undo_release();
+    if (!moved) {
+        drop_temporary(o);
+        if ((f = fopen(o->name, "rb")) == NULL)
+            return 0; /* nothing there to move */
+        fclose(f);
+        return error_set(err, o->name, 0, "the file exists and cannot be replaced%s%s (%s)",
+                         colon(errnum), reason(errnum), o->role);
+    }
+    char *gone = xcalloc(n_inputs > from ? n_inputs - from : 1, 1, "inputs");
+    for (size_t i = from; i < n_inputs; i++)
+        gone[i - from] = !input_opens(i);
+    errno = 0;
+    if (undo_now(o->tmp_undo) != 0) {
+        xfree(gone);
         o->checked = 0;
         return error_set(err, o->name, 0, "moved to %s for a moment and cannot be moved "
                          "back: %s", o->tmp_name, strerror(errno));
     }
-    return f == NULL;
+    xfree(o->tmp_name);
+    o->tmp_name = NULL;
+    size_t through = from;
+    while (through < n_inputs && !(gone[through - from] && input_opens(through)))
+        through++;
+    xfree(gone);
+    if (through < n_inputs)
+        return error_set(err, o->name, 0, "%s is the input %s of this command: writing it "
+                         "would destroy that input", o->role, inputs[through]);
+    return 0;
 }
 
-/* -1 with *err when o is the input file `input` of `size` bytes (output.h). */
-static int refuse_if_same(struct output *o, const char *input, long size, struct error *err)
+/* -1 with *err when o is inputs[i], of `size` bytes (output.h). */
+static int refuse_if_same(struct output *o, size_t i, long size, struct error *err)
 {
     if (o->lone || o->state != OUTPUT_DECLARED || file_size(o->name) != size ||
-        file_is_directory(o->name) || !same_bytes(o->name, input))
+        file_is_directory(o->name) || !same_bytes(o->name, inputs[i]))
         return 0;
-    int through = input_goes_through(o, input, err);
-    if (through < 0)
-        return -1;
-    if (through)
-        return error_set(err, o->name, 0, "%s is the input %s of this command: writing it "
-                         "would destroy that input", o->role, input);
-    return 0;
+    return round_trip(o, i, err);
 }
 
 int output_refuse_input(const char *name, long size, struct error *err)
 {
-    for (size_t i = 0; i < n_outputs; i++)
-        if (refuse_if_same(&outputs[i], name, size, err) < 0)
-            return -1;
     register_cleanup();
     if (n_inputs == cap_inputs) {
         cap_inputs = cap_inputs < 8 ? 8 : 2 * cap_inputs;
@@ -189,6 +357,9 @@ int output_refuse_input(const char *name, long size, struct error *err)
     }
     inputs[n_inputs] = xstrdup(name);
     n_inputs++;
+    for (size_t i = 0; i < n_outputs; i++)
+        if (refuse_if_same(&outputs[i], n_inputs - 1, size, err) < 0)
+            return -1;
     return 0;
 }
 
@@ -202,36 +373,28 @@ static int check_name(const struct output *o, struct error *err)
         return error_set(err, "", 0, "%s: an empty file name", o->role);
     if (o->name[n - 1] == '/' || file_is_directory(o->name))
         return error_set(err, o->name, 0, "is a directory (%s)", o->role);
-    if (n + 5 > OUTPUT_NAME_MAX)
+    if (n + sizeof TEMPORARY_SUFFIX > OUTPUT_NAME_MAX)
         return error_set(err, o->name, 0, "the file name is too long (%s)", o->role);
     return 0;
 }
 
-/* outputs[k]'s temporary, made with its marker, unless it is already there as an earlier
- * output's: then that output is the same file. */
+/* outputs[k]'s probe, a new file of ours beside it holding its marker, unless an earlier
+ * output's probe is there already: then that output is the same file. */
 static int make_probe(size_t k, struct error *err)
 {
     struct output *o = &outputs[k];
-    char marker[PROBE_MARKER_MAX], found[PROBE_MARKER_MAX] = "";
-    FILE *f = fopen(o->tmp_name, "rb");
-    if (f != NULL) {
-        size_t n = fread(found, 1, sizeof found - 1, f);
-        found[n] = '\0';
-        fclose(f);
-    }
-    for (size_t j = 0; j < k; j++) {
-        snprintf(marker, sizeof marker, "photon-output-check %016llx %zu\n",
-                 (unsigned long long)run_token(), j);
-        if (!outputs[j].lone && strcmp(found, marker) == 0)
-            return error_set(err, o->name, 0, "%s names the same file as %s (%s)", o->role,
-                             outputs[j].role, outputs[j].name);
-    }
-    errno = 0;
-    f = fopen(o->tmp_name, "wb");
+    size_t same = NO_OUTPUT;
+    int errnum;
+    FILE *f = create_ours(o->name, o->tmp_undo, &o->tmp_name, k, &same, &errnum);
+    if (same != NO_OUTPUT)
+        return error_set(err, o->name, 0, "%s names the same file as %s (%s)", o->role,
+                         outputs[same].role, outputs[same].name);
     if (f == NULL)
-        return error_set(err, o->name, 0, "cannot create output file%s%s (%s)",
-                         errno != 0 ? ": " : "", errno != 0 ? strerror(errno) : "", o->role);
-    fprintf(f, "photon-output-check %016llx %zu\n", (unsigned long long)run_token(), k);
+        return error_set(err, o->name, 0, "cannot create output file%s%s (%s)", colon(errnum),
+                         reason(errnum), o->role);
+    char marker[PROBE_MARKER_MAX];
+    probe_marker(k, marker);
+    fputs(marker, f);
     int failed = ferror(f) != 0;
     failed |= fclose(f) != 0;
     if (failed)
@@ -250,32 +413,26 @@ static int check_writable(const struct output *o, struct error *err)
     f = fopen(o->name, "ab");
     if (f == NULL)
         return error_set(err, o->name, 0, "the file exists and cannot be written%s%s (%s)",
-                         errno != 0 ? ": " : "", errno != 0 ? strerror(errno) : "", o->role);
+                         colon(errno), reason(errno), o->role);
     fclose(f);
     return 0;
 }
 
 int outputs_check(struct error *err)
 {
-    size_t made = 0;
     int status = 0;
     for (size_t k = 0; k < n_outputs && status == 0; k++) {
         assert(outputs[k].state == OUTPUT_DECLARED); /* checked before any is opened */
-        if (outputs[k].lone)
-            continue;
-        status = check_name(&outputs[k], err);
-        if (status == 0 && (status = make_probe(k, err)) == 0)
-            made = k + 1;
+        if (!outputs[k].lone && (status = check_name(&outputs[k], err)) == 0)
+            status = make_probe(k, err);
     }
-    for (size_t k = 0; k < made; k++)
-        if (!outputs[k].lone)
-            remove(outputs[k].tmp_name);
-    for (size_t k = 0; k < n_outputs && status == 0; k++) {
+    for (size_t k = 0; k < n_outputs && status == 0; k++)
+        if (!outputs[k].lone && (status = check_writable(&outputs[k], err)) == 0)
+            status = round_trip(&outputs[k], 0, err);
+    for (size_t k = 0; k < n_outputs; k++) {
         if (outputs[k].lone)
             continue;
-        status = check_writable(&outputs[k], err);
-        for (size_t i = 0; i < n_inputs && status == 0; i++)
-            status = refuse_if_same(&outputs[k], inputs[i], file_size(inputs[i]), err);
+        drop_temporary(&outputs[k]);
         outputs[k].checked = status == 0;
     }
     return status;
@@ -291,9 +448,9 @@ int output_check_one(const char *name, const char *role, struct error *err)
 
 /* error_set() for a write that failed (exit status 1). */
 static int write_failed(struct error *err, const char *file, const char *message,
-                        const char *reason)
+                        const char *why)
 {
-    error_set(err, file, 0, "%s%s%s", message, reason[0] != '\0' ? ": " : "", reason);
+    error_set(err, file, 0, "%s%s%s", message, why[0] != '\0' ? ": " : "", why);
     if (err != NULL)
         err->failed_write = 1;
     return -1;
@@ -311,44 +468,58 @@ FILE *output_open(const char *name, struct error *err)
 {
     struct output *o = find_name(name);
     assert(o != NULL ? o->checked || o->lone : !any_declared()); /* declared, checked */
-    if (strlen(name) + 5 > OUTPUT_NAME_MAX) {
+    if (strlen(name) + sizeof TEMPORARY_SUFFIX > OUTPUT_NAME_MAX) {
         write_failed(err, name, "output file name is too long", "");
         return NULL;
     }
     if (o == NULL)
         o = add_output(name, "", 1);
     if (o->state == OUTPUT_OPEN)
-        output_abandon(o->stream);
-    errno = 0;
-    o->stream = fopen(o->tmp_name, "wb");
+        fclose(o->stream); /* opened again before its commit: the first one is dropped */
+    drop_temporary(o);
+    o->state = OUTPUT_DECLARED;
+    int errnum;
+    o->stream = create_ours(name, o->tmp_undo, &o->tmp_name, NO_OUTPUT, NULL, &errnum);
     if (o->stream == NULL) {
-        write_failed(err, name, "cannot create output file", errno != 0 ? strerror(errno) : "");
-        o->state = OUTPUT_DECLARED;
+        write_failed(err, name, "cannot create output file", reason(errnum));
+        if (o->lone)
+            forget((size_t)(o - outputs));
         return NULL;
     }
     o->state = OUTPUT_OPEN;
     return o->stream;
 }
 
-/* Renames o's temporary to its name: 0, or the errno of the failed rename (-1 without
- * one), after which the temporary is removed. */
-static int put_in_place(struct output *o)
+/* Renames o's committed temporary to its name: 0, or the errno of what failed (-1
+ * without one), and then o's temporary is still there. With keep, what the rename would
+ * destroy is first made something o->aside_undo can give back: the file there is moved
+ * aside, onto a file of ours (aside_name); or, with nothing there, the name is taken by
+ * an exclusive create, so that o once in place is a file of ours to remove. */
+static int put_in_place(struct output *o, int keep)
 {
+    int errnum = 0;
+    FILE *f;
+    if (keep && (f = fopen(o->name, "wbx")) != NULL) { /* never waits, never follows */
+        fclose(f);
+        undo_set(o->aside_undo, UNDO_REMOVE, o->name, NULL);
+    } else if (keep) {
+        f = create_ours(o->name, o->aside_undo, &o->aside_name, NO_OUTPUT, NULL, &errnum);
+        if (f == NULL)
+            return errnum != 0 ? errnum : -1;
+        fclose(f);
+        errno = 0;
+        if (rename(o->name, o->aside_name) != 0)
+            return errno != 0 ? errno : -1; /* what cannot be moved cannot be replaced */
+        undo_set(o->aside_undo, UNDO_RENAME_BACK, o->aside_name, o->name);
+    }
     errno = 0;
-    int failed = rename(o->tmp_name, o->name) != 0;
-    int reason = failed ? (errno != 0 ? errno : -1) : 0;
-    if (failed)
-        remove(o->tmp_name);
+    if (rename(o->tmp_name, o->name) != 0)
+        return errno != 0 ? errno : -1;
+    undo_set(o->tmp_undo, UNDO_NOTHING, NULL, NULL);
+    xfree(o->tmp_name);
+    o->tmp_name = NULL;
     o->state = OUTPUT_DECLARED;
-    return reason;
-}
-
-/* Forgets outputs[i], a lone output done with. */
-static void forget(size_t i)
-{
-    xfree(outputs[i].name);
-    xfree(outputs[i].tmp_name);
-    outputs[i] = outputs[--n_outputs];
+    return 0;
 }
 
 int output_commit(FILE *f, struct error *err)
@@ -360,11 +531,11 @@ int output_commit(FILE *f, struct error *err)
     failed |= fclose(f) != 0;
     o->stream = NULL;
     o->state = OUTPUT_COMMITTED;
+    if (!failed && o->lone)
+        failed = put_in_place(o, 0) != 0;
     if (failed) {
-        remove(o->tmp_name);
+        drop_temporary(o);
         o->state = OUTPUT_DECLARED;
-    } else if (o->lone) {
-        failed = put_in_place(o) != 0;
     }
     int status = failed ? write_failed(err, o->name, "cannot write output file", "") : 0;
     if (o->lone)
@@ -378,37 +549,69 @@ void output_abandon(FILE *f)
     if (o == NULL)
         return;
     fclose(f);
-    remove(o->tmp_name);
+    drop_temporary(o);
     o->stream = NULL;
     o->state = OUTPUT_DECLARED;
     if (o->lone)
         forget((size_t)(o - outputs));
 }
 
+/* The end of a publish: each output it put in place keeps it (the file it replaced,
+ * kept aside, is removed), or, when it failed, gives back what was there (the file kept
+ * aside is renamed back; a name that held nothing is removed). -1 with *err when a file
+ * kept aside cannot be renamed back (it stays, and the message says where). */
+static int end_publish(int failed, struct error *err)
+{
+    int status = 0;
+    for (size_t i = 0; i < n_outputs; i++) {
+        struct output *o = &outputs[i];
+        if (!o->published)
+            continue;
+        if (!failed && o->aside_name != NULL)
+            undo_set(o->aside_undo, UNDO_REMOVE, o->aside_name, NULL);
+        else if (!failed)
+            undo_set(o->aside_undo, UNDO_NOTHING, NULL, NULL);
+        if (undo_now(o->aside_undo) != 0 && failed && o->aside_name != NULL) {
+            status = error_set(err, o->name, 0, "cannot write output file, and the file it "
+                               "replaced cannot be put back: it is kept as %s", o->aside_name);
+            if (err != NULL)
+                err->failed_write = 1;
+            undo_set(o->aside_undo, UNDO_NOTHING, NULL, NULL); /* the user's: never removed */
+        }
+        xfree(o->aside_name);
+        o->aside_name = NULL;
+        o->published = 0;
+    }
+    return status;
+}
+
 int outputs_publish(struct error *err)
 {
+    size_t last = NO_OUTPUT;
     for (size_t i = 0; i < n_outputs; i++)
-        outputs[i].renamed_now = 0;
-    for (size_t i = 0; i < n_outputs; i++) {
+        if (outputs[i].state == OUTPUT_COMMITTED)
+            last = i;
+    int status = 0;
+    undo_hold(); /* a signal waits until every output is in place, or none */
+    for (size_t i = 0; last != NO_OUTPUT && i <= last && status == 0; i++) {
         if (outputs[i].state != OUTPUT_COMMITTED)
             continue;
-        int reason = put_in_place(&outputs[i]);
-        if (reason == 0) {
-            outputs[i].renamed_now = 1;
-            continue;
-        }
-        write_failed(err, outputs[i].name, "cannot write output file",
-                     reason > 0 ? strerror(reason) : "");
-        for (size_t j = 0; j < n_outputs; j++) {
-            if (outputs[j].renamed_now)
-                remove(outputs[j].name); /* all or none */
-            if (outputs[j].state == OUTPUT_COMMITTED)
-                remove(outputs[j].tmp_name);
-            outputs[j].state = outputs[j].state == OUTPUT_OPEN ? OUTPUT_OPEN : OUTPUT_DECLARED;
-        }
-        return -1;
+        outputs[i].published = 1;
+        int why = put_in_place(&outputs[i], i < last); /* the last has nothing after it to
+                                                          fail, and is replaced at once */
+        if (why != 0)
+            status = write_failed(err, outputs[i].name, "cannot write output file",
+                                  why > 0 ? strerror(why) : "");
     }
-    return 0;
+    if (end_publish(status != 0, err) < 0)
+        status = -1;
+    for (size_t i = 0; status != 0 && i < n_outputs; i++)
+        if (outputs[i].state == OUTPUT_COMMITTED) {
+            drop_temporary(&outputs[i]);
+            outputs[i].state = OUTPUT_DECLARED;
+        }
+    undo_release();
+    return status;
 }
 
 void outputs_abandon(void)
@@ -416,10 +619,13 @@ void outputs_abandon(void)
     for (size_t i = 0; i < n_outputs; i++) {
         if (outputs[i].state == OUTPUT_OPEN)
             fclose(outputs[i].stream);
-        if (outputs[i].state != OUTPUT_DECLARED)
-            remove(outputs[i].tmp_name);
+        drop_temporary(&outputs[i]);
+        undo_now(outputs[i].aside_undo);
         xfree(outputs[i].name);
         xfree(outputs[i].tmp_name);
+        xfree(outputs[i].aside_name);
+        undo_free(outputs[i].tmp_undo);
+        undo_free(outputs[i].aside_undo);
     }
     for (size_t i = 0; i < n_inputs; i++)
         xfree(inputs[i]);

@@ -9,30 +9,51 @@
  *   - a name whose directory is missing or not writable (its temporary cannot be made);
  *   - an existing file that cannot be opened for writing (mode 444). C99 cannot read a
  *     file's mode, so this asks fopen(); for root, who may write any file, it opens;
+ *   - an existing file that cannot be moved, so that it could not be replaced either (a
+ *     file of another owner in a sticky directory such as /tmp): it is renamed aside and
+ *     back (below);
  *   - two outputs that are one file, however spelt (see "Identity" below);
  *   - an output that is an input of the command: every reader opens its file through
  *     input_open() (input.h), which asks output_refuse_input(), and outputs_check()
  *     asks the same of the inputs opened before it.
- * Each output is then written to NAME.tmp (output_open), completed (output_commit),
- * and, once every one is complete, outputs_publish() renames them all to their names;
- * if a rename fails, the ones it already renamed are removed. An exit before that, by
- * any path (fatal(), an error, a return from main), removes every temporary: a
+ * Each output is then written to a temporary (output_open), completed (output_commit),
+ * and, once every one is complete, outputs_publish() renames them all to their names.
+ * The files they replace are first moved aside, so that if a rename fails, every output
+ * already in place gives back the file it replaced (or is removed, where there was
+ * none): a failed publish leaves what was there. An exit before that, by any path
+ * (fatal(), an error, a return from main, a signal: undo.h), removes every temporary: a
  * command's outputs appear whole and together, or not at all. A file written while
  * nothing is declared (a test's lone pfm_write()) is renamed by its own commit.
  *
+ * Files of ours. photon removes only files it made, and makes each one new: a temporary,
+ * a probe of the check, the place a replaced file waits is NAME.XXXXXXXX.tmp, beside
+ * NAME so that the final rename stays within its directory (atomic), XXXXXXXX 8 hex
+ * digits: the run's mark, then the mark + 1, ... for the next name (16 in all) when one
+ * is taken. A name is taken when it opens for reading (C99's own test) or when fopen()'s
+ * exclusive create, mode "wbx", refuses it. "x" is C11's, not C99's: glibc and musl
+ * honour it (O_EXCL: any existing entry refuses it, a symbolic link too, even a dangling
+ * one, and a FIFO without waiting); a C99 library that ignored it would be left with the
+ * test for reading alone, which a dangling link passes. So a user's file at any of these
+ * names, a scene named NAME.tmp, a link, stay untouched; and two runs writing the same
+ * NAME at once each write their own temporary (the one renamed last is NAME, whole). The
+ * run's mark comes from the clock and addresses (C99 has no process id);
+ * PHOTON_TEMPORARY_MARK (8 hex digits) sets it, for tests that make runs collide.
+ *
  * Identity, with C99's files only (no stat(), no inode numbers):
- *   - Two outputs. outputs_check() makes each output's temporary in turn, holding a
- *     marker of this run and of the output; an output whose temporary is already there
- *     with an earlier output's marker is that output: the same directory entry, whatever
- *     the spelling ("a.pfm", "./a.pfm", an absolute path, a symbolic link to the
- *     directory, a file system that ignores case).
+ *   - Two outputs. outputs_check() makes each output's probe in turn, holding a marker
+ *     of this run and of the output; an output whose names of ours hold an earlier
+ *     output's marker is that output: the same directory entry, whatever the spelling
+ *     ("a.pfm", "./a.pfm", an absolute path, a symbolic link to the directory, a file
+ *     system that ignores case).
  *   - An output and an input. Outputs are renamed into place, so what an output
  *     destroys is the file its name's directory entry held; an input is lost only when
- *     opening it goes through that entry (the same name, or a symbolic link to it). An
- *     input with the same size and bytes as an existing output is tested by renaming
- *     the output aside for a moment, to its temporary's name, and opening the input
- *     again: if that fails the two are one file, and the rename is undone either way.
- *     A hard link to an output keeps its bytes when the output is replaced, and passes.
+ *     opening it goes through that entry (the same name, or a symbolic link to it).
+ *     outputs_check() renames each existing output aside for a moment, onto its probe,
+ *     and opens every input read so far again; one that opens only with the output in
+ *     place is that output. An input read later is tested so when it has the same size
+ *     and bytes as an output. A hard link to an output keeps its bytes when the output
+ *     is replaced, and passes. While a file is aside, a signal renames it back (undo.h);
+ *     only SIGKILL or a crash in that moment leaves it under its NAME.XXXXXXXX.tmp.
  */
 #ifndef PHOTON_OUTPUT_H
 #define PHOTON_OUTPUT_H
@@ -41,7 +62,11 @@
 
 #include "error.h"
 
-#define OUTPUT_NAME_MAX 1024 /* longest output name, ".tmp" included */
+#include "undo.h"
+
+/* The longest output name, its temporary's ".XXXXXXXX.tmp" and '\0' included: the
+ * longest path the signal handler copies (undo.h). */
+#define OUTPUT_NAME_MAX UNDO_PATH_MAX
 
 /* Declares name (copied) as a file this command writes; role (a string literal) names
  * it in messages. Two declarations of one file, even spelt alike, are refused by
@@ -55,11 +80,12 @@ int outputs_check(struct error *err);
 /* output_declare() and outputs_check() for a command with one output. */
 int output_check_one(const char *name, const char *role, struct error *err);
 
-/* Opens NAME.tmp for binary writing. name must have been declared and checked, unless
- * nothing is declared (a lone file). NULL with *err filled (a failed write). */
+/* Opens a new temporary for name (above) for binary writing. name must have been
+ * declared and checked, unless nothing is declared (a lone file). NULL with *err filled
+ * (a failed write). */
 FILE *output_open(const char *name, struct error *err);
 
-/* Closes the stream of output_open(); its bytes wait under NAME.tmp for
+/* Closes the stream of output_open(); its bytes wait in the temporary for
  * outputs_publish() (a lone file is renamed now). A failed write or close removes the
  * temporary and returns -1 with *err filled (a failed write). */
 int output_commit(FILE *f, struct error *err);
@@ -68,9 +94,11 @@ int output_commit(FILE *f, struct error *err);
 void output_abandon(FILE *f);
 
 /* Renames every committed output to its name, in the order declared. -1 with *err filled
- * (a failed write) when a rename fails: the outputs it renamed are removed, and the
- * committed temporaries; open ones stay open. Outputs stay declared, so a command may
- * write and publish again (2008's checkpoints publish -o's pair as they go). */
+ * (a failed write) when a rename fails: the outputs it renamed give back the files they
+ * replaced (or are removed), and the committed temporaries are removed; open ones stay
+ * open. A signal meanwhile waits until the publish is over, either way. Outputs stay
+ * declared, so a command may write and publish again (2008's checkpoints publish -o's
+ * pair as they go). */
 int outputs_publish(struct error *err);
 
 /* Removes every temporary and forgets every output and input; at exit, by atexit(). */

@@ -1,0 +1,191 @@
+/*
+ * base/undo.c -- the list of files to put right, and the signal handler that does it
+ * (undo.h).
+ *
+ * Invariants: head links every entry undo_new() made and undo_free() has not taken out;
+ * an entry is linked in only whole. holds counts the undo_hold() not yet released, and
+ * while it is above 0 the main program may be changing the list, so the handler only
+ * notes its signal in pending, for undo_release() to act on.
+ */
+#include "undo.h"
+
+#include <assert.h>
+#include <signal.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "alloc.h"
+
+struct undo {
+    volatile sig_atomic_t action;     /* an enum undo_action                     */
+    volatile char path[UNDO_PATH_MAX]; /* the file on disk the action is about    */
+    volatile char back[UNDO_PATH_MAX]; /* UNDO_RENAME_BACK: the user's own name    */
+    struct undo *volatile next;
+};
+
+static struct undo *volatile head;
+static volatile sig_atomic_t holds;   /* undo_hold()s not yet released             */
+static volatile sig_atomic_t pending; /* a signal that came under a hold; 0: none  */
+static int installed;
+
+/* The signals whose default action ends the program (C99's three, then those POSIX adds
+ * where <signal.h> has them). Not SIGPROF, SIGVTALRM: profilers use them. */
+static const int stop_signals[] = {
+    SIGINT, SIGTERM, SIGABRT,
+#ifdef SIGHUP
+    SIGHUP,
+#endif
+#ifdef SIGQUIT
+    SIGQUIT,
+#endif
+#ifdef SIGPIPE
+    SIGPIPE,
+#endif
+#ifdef SIGALRM
+    SIGALRM,
+#endif
+#ifdef SIGUSR1
+    SIGUSR1,
+#endif
+#ifdef SIGUSR2
+    SIGUSR2,
+#endif
+#ifdef SIGXCPU
+    SIGXCPU,
+#endif
+#ifdef SIGXFSZ
+    SIGXFSZ,
+#endif
+};
+
+/* from[] into to[UNDO_PATH_MAX]: a library function takes no volatile string. */
+static void copy_out(char *to, const volatile char *from)
+{
+    size_t i = 0;
+    while (i + 1 < UNDO_PATH_MAX && (to[i] = from[i]) != '\0')
+        i++;
+    to[i] = '\0';
+}
+
+static void copy_in(volatile char *to, const char *from)
+{
+    size_t i = 0;
+    for (; from[i] != '\0' && i + 1 < UNDO_PATH_MAX; i++)
+        to[i] = from[i];
+    to[i] = '\0';
+}
+
+/* Does what u says: 0, and u says nothing more; -1 when that failed. Called by the
+ * handler too, so it uses only remove() and rename() (undo.h). */
+static int act(struct undo *u)
+{
+    char path[UNDO_PATH_MAX], back[UNDO_PATH_MAX];
+    int failed = 0;
+    copy_out(path, u->path);
+    if (u->action == UNDO_REMOVE) {
+        failed = remove(path) != 0;
+    } else if (u->action == UNDO_RENAME_BACK) {
+        copy_out(back, u->back);
+        failed = rename(path, back) != 0;
+    }
+    if (failed)
+        return -1;
+    u->action = UNDO_NOTHING;
+    return 0;
+}
+
+/* Puts every entry right, then ends the program with sig as its default action would. A
+ * second signal meanwhile waits (holds), and the first ends the program. */
+static void stop(int sig)
+{
+    holds = 1;
+    for (struct undo *u = head; u != NULL; u = u->next)
+        act(u);
+    signal(sig, SIG_DFL);
+    raise(sig); /* in the handler, delivered as it returns (the signal is blocked in it) */
+}
+
+static void on_signal(int sig)
+{
+    if (holds > 0)
+        pending = sig;
+    else
+        stop(sig);
+}
+
+/* Catches every stop signal but those photon was started ignoring: the disposition is
+ * read by setting one (C99 has no other way), SIG_IGN first so that a signal in between
+ * is not taken for a stop. */
+static void install(void)
+{
+    for (size_t i = 0; i < sizeof stop_signals / sizeof stop_signals[0]; i++) {
+        void (*before)(int) = signal(stop_signals[i], SIG_IGN);
+        if (before != SIG_IGN && before != SIG_ERR)
+            signal(stop_signals[i], on_signal);
+    }
+}
+
+void undo_hold(void)
+{
+    holds = holds + 1;
+}
+
+void undo_release(void)
+{
+    assert(holds > 0);
+    holds = holds - 1;
+    if (holds == 0 && pending != 0)
+        stop(pending);
+}
+
+struct undo *undo_new(void)
+{
+    if (!installed) {
+        install();
+        installed = 1;
+    }
+    struct undo *u = xmalloc(1, sizeof *u, "undo entry");
+    u->action = UNDO_NOTHING;
+    u->path[0] = '\0';
+    u->back[0] = '\0';
+    undo_hold();
+    u->next = head;
+    head = u;
+    undo_release();
+    return u;
+}
+
+void undo_set(struct undo *u, enum undo_action action, const char *path, const char *back)
+{
+    assert(action == UNDO_NOTHING || strlen(path) < UNDO_PATH_MAX);
+    assert(action != UNDO_RENAME_BACK || strlen(back) < UNDO_PATH_MAX);
+    undo_hold();
+    u->action = UNDO_NOTHING;
+    if (action != UNDO_NOTHING)
+        copy_in(u->path, path);
+    if (action == UNDO_RENAME_BACK)
+        copy_in(u->back, back);
+    u->action = action;
+    undo_release();
+}
+
+int undo_now(struct undo *u)
+{
+    undo_hold();
+    int status = act(u);
+    undo_release();
+    return status;
+}
+
+void undo_free(struct undo *u)
+{
+    if (u == NULL)
+        return;
+    undo_hold();
+    struct undo *volatile *link = &head;
+    while (*link != u)
+        link = &(*link)->next;
+    *link = u->next;
+    undo_release();
+    xfree(u);
+}

@@ -1,0 +1,298 @@
+/*
+ * tests/test_foreign_files.c -- the files beside a command's outputs that photon did not
+ * make: a user's file where a temporary might go, a scene or a directory named like a crop
+ * record, the previous outputs a failed publish must give back, another run writing the
+ * same -o, and a signal at any moment. photon writes and removes only what it made
+ * (base/output.h, base/undo.h, app/tile.h).
+ */
+#include <stdio.h>
+
+#include "../src/base/output.h"
+#include "files.h"
+#include "tests.h"
+
+#define COMMAND_MAX 4096
+#define OUT "build/test_foreign"
+#define TINY "--no-progress --width 4 --height 4 --spp 2 --mode pt"
+#define SCENE "scenes/cornell.scene"
+/* A render with a report, so that a temporary (the report's) is on disk from its start. */
+#define REPORTED "--no-progress --mode pt --width 32 --height 32 --reference " OUT "_ref.pfm"
+
+/* Runs "ENV PHOTON args" (env: variable assignments, or "") with its output in OUT.log,
+ * under timeout(1). */
+static int photon(const char *env, const char *args)
+{
+    char command[COMMAND_MAX];
+    snprintf(command, sizeof command, "%s timeout 60 %s %s >" OUT ".log 2>&1", env,
+             photon_binary(), args);
+    return run_command(command);
+}
+
+static void clean(void)
+{
+    run_command("rm -rf " OUT "_*");
+}
+
+/* Whether the files named build/test_foreign_* are exactly names (a space after each,
+ * without the build/test_foreign_ prefix, in the C locale's order). */
+static int files_are(const char *names)
+{
+    char command[COMMAND_MAX];
+    snprintf(command, sizeof command, "test \"$(cd build && LC_ALL=C ls -d test_foreign_* | "
+             "sed 's/^test_foreign_//' | tr '\\n' ' ')\" = '%s'", names);
+    return run_command(command) == 0;
+}
+
+/* The reference the reported renders compare with (32 x 32, 4 samples). */
+static void make_reference(void)
+{
+    photon("", "--no-progress --mode pt --width 32 --height 32 --spp 4 -o " OUT "_ref.pfm "
+           SCENE);
+    remove(OUT "_ref.png");
+}
+
+/* truth: output.h: a temporary is a new file photon creates beside its output, under a
+ *   name no file had (NAME.XXXXXXXX.tmp, created exclusively: never an existing file,
+ *   never through a symbolic link), and photon removes only such files. So every file the
+ *   user had beside the outputs keeps its bytes and its kind, whether the render succeeds
+ *   or fails: NAME.tmp, photon's old temporary name (a file, a link to another file, the
+ *   scene itself); and, with PHOTON_TEMPORARY_MARK fixing the names a run tries (its mark,
+ *   then the mark + 1, ...), a file, a link and a dangling link at the very names it tries
+ *   first, which it passes over for the next free one.
+ * catches: out.pfm.tmp deleted by any render to out.pfm; photon s.pfm.tmp -o s.pfm
+ *   deleting its scene before reading it ("No such file"); a write through a link at the
+ *   temporary's name (the linked file overwritten, or created for a dangling link). */
+static void test_user_files_beside_outputs_kept(struct check *t)
+{
+    clean();
+    write_text_file(OUT "_victim", "victim\n");
+    write_text_file(OUT "_o.pfm.tmp", "mine\n");
+    run_command("ln -s test_foreign_victim " OUT "_o.png.tmp && cp " SCENE " " OUT
+                "_s.pfm.tmp");
+    CHECK(t, photon("", TINY " -o " OUT "_o.pfm " SCENE) == 0);
+    CHECK(t, photon("", TINY " -o " OUT "_o.pfm build/no_such.scene") == 2);
+    CHECK(t, photon("", TINY " -o " OUT "_s.pfm " OUT "_s.pfm.tmp") == 0);
+    CHECK(t, file_equals_text(OUT "_o.pfm.tmp", "mine\n") &&
+             file_equals_text(OUT "_victim", "victim\n") &&
+             run_command("test -L " OUT "_o.png.tmp") == 0);
+    CHECK(t, files_equal(OUT "_s.pfm.tmp", SCENE) && files_equal(OUT "_s.pfm", OUT "_o.pfm"));
+    CHECK(t, files_are("o.pfm o.pfm.tmp o.png o.png.tmp s.pfm s.pfm.tmp s.png victim "));
+
+    write_text_file(OUT "_m.pfm.00001000.tmp", "mine 0\n");
+    run_command("ln -s test_foreign_victim " OUT "_m.pfm.00001001.tmp && "
+                "ln -s test_foreign_victim " OUT "_m.png.00001000.tmp && "
+                "ln -s test_foreign_nowhere " OUT "_m.png.00001001.tmp");
+    CHECK(t, photon("PHOTON_TEMPORARY_MARK=00001000", TINY " -o " OUT "_m.pfm "
+                    "build/no_such.scene") == 2);
+    CHECK(t, photon("PHOTON_TEMPORARY_MARK=00001000", TINY " -o " OUT "_m.pfm " SCENE) == 0);
+    CHECK(t, files_equal(OUT "_m.pfm", OUT "_o.pfm") &&
+             files_equal(OUT "_m.png", OUT "_o.png"));
+    CHECK(t, file_equals_text(OUT "_m.pfm.00001000.tmp", "mine 0\n") &&
+             file_equals_text(OUT "_victim", "victim\n"));
+    CHECK(t, run_command("test -L " OUT "_m.pfm.00001001.tmp && test -L " OUT
+                         "_m.png.00001000.tmp && test -L " OUT "_m.png.00001001.tmp") == 0);
+    CHECK(t, files_are("m.pfm m.pfm.00001000.tmp m.pfm.00001001.tmp m.png m.png.00001000.tmp "
+                       "m.png.00001001.tmp o.pfm o.pfm.tmp o.png o.png.tmp s.pfm s.pfm.tmp "
+                       "s.png victim "));
+    clean();
+}
+
+/* truth: tile.h: a whole render removes NAME.pfm.window only when it is a record photon
+ *   wrote (it reads as one, tile.h's five lines); any other file or directory of that
+ *   name is the user's and stays: a scene (here the very scene rendered), a note, an empty
+ *   directory. A crop's record is still removed by a whole render to the same name.
+ * catches: remove() on NAME.pfm.window without looking: the scene deleted, the empty
+ *   directory removed. */
+static void test_only_crop_records_removed(struct check *t)
+{
+    clean();
+    run_command("cp " SCENE " " OUT "_w.pfm.window && mkdir " OUT "_d.pfm.window && "
+                "echo notes > " OUT "_n.pfm.window");
+    CHECK(t, photon("", TINY " -o " OUT "_w.pfm " OUT "_w.pfm.window") == 0);
+    CHECK(t, photon("", TINY " -o " OUT "_d.pfm " SCENE) == 0);
+    CHECK(t, photon("", TINY " -o " OUT "_n.pfm " SCENE) == 0);
+    CHECK(t, files_equal(OUT "_w.pfm.window", SCENE) &&
+             run_command("test -d " OUT "_d.pfm.window") == 0 &&
+             file_equals_text(OUT "_n.pfm.window", "notes\n"));
+    CHECK(t, photon("", TINY " --crop 0 0 2 2 -o " OUT "_c.pfm " SCENE) == 0 &&
+             file_exists(OUT "_c.pfm.window"));
+    CHECK(t, photon("", TINY " -o " OUT "_c.pfm " SCENE) == 0 &&
+             !file_exists(OUT "_c.pfm.window"));
+    clean();
+}
+
+/* truth: output.h: a failed publish gives back what was there: an output already put in
+ *   place is replaced again by the file it replaced (its bytes), and one that replaced
+ *   nothing is removed; no temporary is left. Here the last output's name becomes a
+ *   directory after the check, so its rename fails after the others' succeeded.
+ * catches: the rollback removing the outputs it had renamed, the user's previous file
+ *   with them: nothing new and nothing old left. */
+static void test_failed_publish_gives_back(struct check *t)
+{
+    static const char *const names[] = {OUT "_first.txt", OUT "_third.txt",
+                                        OUT "_second.txt"};
+    struct error err;
+    clean();
+    outputs_abandon(); /* the inputs earlier tests of this process read are forgotten */
+    write_text_file(OUT "_first.txt", "old first\n");
+    write_text_file(OUT "_second.txt", "old second\n");
+    for (int i = 0; i < 3; i++)
+        output_declare(names[i], "an output");
+    REQUIRE(t, outputs_check(&err) == 0);
+    for (int i = 0; i < 3; i++) {
+        FILE *f = output_open(names[i], &err);
+        REQUIRE(t, f != NULL);
+        fputs("new\n", f);
+        CHECK(t, output_commit(f, &err) == 0);
+    }
+    run_command("rm " OUT "_second.txt && mkdir " OUT "_second.txt && touch " OUT
+                "_second.txt/inside");
+    CHECK(t, outputs_publish(&err) < 0 && err.failed_write);
+    CHECK(t, file_equals_text(OUT "_first.txt", "old first\n") &&
+             !file_exists(OUT "_third.txt"));
+    CHECK(t, files_are("first.txt second.txt "));
+    outputs_abandon();
+    clean();
+}
+
+/* truth: output.h: what cannot be put in place is refused before the work, status 2: here
+ *   a PNG of another owner in a sticky directory (mode 1777, as /tmp), which the user may
+ *   write (mode 666) but not replace ("cannot be replaced"; or "cannot be written" where
+ *   the kernel's fs.protected_regular forbids the write too). The user's previous PFM
+ *   beside it and the PNG keep their bytes. Run as nobody (setpriv, util-linux) since the
+ *   tests run as root, who may replace any file; skipped otherwise, as only root can make
+ *   another owner's file.
+ * catches: the PFM put in place, the PNG's rename refused after the work, and the
+ *   rollback removing the PFM: the user's previous PFM lost, status 1. */
+static void test_unreplaceable_output_refused(struct check *t)
+{
+    char command[COMMAND_MAX];
+    if (run_command("test $(id -u) = 0") != 0) {
+        printf("  (test_unreplaceable_output_refused: not root, skipped)\n");
+        return;
+    }
+    clean();
+    run_command("mkdir -m 1777 " OUT "_sticky && cp " SCENE " " OUT "_sticky/s.scene && "
+                "chmod 644 " OUT "_sticky/s.scene && echo precious > " OUT "_sticky/x.png && "
+                "chmod 666 " OUT "_sticky/x.png");
+    snprintf(command, sizeof command, "cd " OUT "_sticky && setpriv --reuid=nobody "
+             "--regid=nogroup --clear-groups sh -c 'echo old > x.pfm && %s%s " TINY
+             " -o x.pfm s.scene' > ../test_foreign.log 2>&1",
+             photon_binary()[0] == '/' ? "" : "../../", photon_binary());
+    CHECK(t, run_command(command) == 2 &&
+             file_contains(OUT ".log", "x.png: the file exists and cannot be"));
+    CHECK(t, file_equals_text(OUT "_sticky/x.pfm", "old\n") &&
+             file_equals_text(OUT "_sticky/x.png", "precious\n"));
+    CHECK(t, run_command("test \"$(cd " OUT "_sticky && LC_ALL=C ls | tr '\\n' ' ')\" = "
+                         "'s.scene x.pfm x.png '") == 0);
+    clean();
+}
+
+/* truth: output.h: each run writes its own temporaries, even two runs that try the same
+ *   names (PHOTON_TEMPORARY_MARK the same in both, as two runs started in one clock tick
+ *   without address randomisation would). Two renders of different seeds to the same -o
+ *   and --report at the same time both succeed, and each file left is whole: the PFM and
+ *   the PNG hold one run's bytes (as a lone run of that seed writes them), the report one
+ *   run's rows (work and errors; the seconds vary). The lone runs differ, so the test
+ *   can tell.
+ * catches: one NAME.tmp shared by both runs: rows of both in one report, a truncated
+ *   file, or the second run's rename failing (status 1) after the first moved the file. */
+static void test_two_runs_one_output(struct check *t)
+{
+    clean();
+    make_reference();
+    CHECK(t, photon("", REPORTED " --spp 256 --seed 1 -o " OUT "_a.pfm --report " OUT "_a.csv "
+                    SCENE) == 0);
+    CHECK(t, photon("", REPORTED " --spp 256 --seed 2 -o " OUT "_b.pfm --report " OUT "_b.csv "
+                    SCENE) == 0);
+    char command[COMMAND_MAX];
+    snprintf(command, sizeof command,
+             "for s in 1 2; do (PHOTON_TEMPORARY_MARK=00002000 timeout 60 %s " REPORTED
+             " --spp 256 --seed $s -o " OUT "_t.pfm --report " OUT "_t.csv " SCENE " >" OUT
+             "_log$s 2>&1; echo $? > " OUT "_status$s) & done; wait", photon_binary());
+    run_command(command);
+    CHECK(t, file_equals_text(OUT "_status1", "0\n") &&
+             file_equals_text(OUT "_status2", "0\n"));
+    CHECK(t, !files_equal(OUT "_a.pfm", OUT "_b.pfm") &&
+             !files_equal(OUT "_a.png", OUT "_b.png"));
+    CHECK(t, files_equal(OUT "_t.pfm", OUT "_a.pfm") ||
+             files_equal(OUT "_t.pfm", OUT "_b.pfm"));
+    CHECK(t, files_equal(OUT "_t.png", OUT "_a.png") ||
+             files_equal(OUT "_t.png", OUT "_b.png"));
+    run_command("for r in a b t; do cut -d, -f2- " OUT "_$r.csv > " OUT "_$r.rows; done");
+    CHECK(t, !files_equal(OUT "_a.rows", OUT "_b.rows"));
+    CHECK(t, files_equal(OUT "_t.rows", OUT "_a.rows") ||
+             files_equal(OUT "_t.rows", OUT "_b.rows"));
+    CHECK(t, no_temporaries(OUT "_t.pfm") && no_temporaries(OUT "_t.png") &&
+             no_temporaries(OUT "_t.csv"));
+    clean();
+}
+
+/* Sets the previous outputs of the render to OUT_k.pfm. */
+static void previous_outputs(void)
+{
+    write_text_file(OUT "_k.pfm", "old pfm\n");
+    write_text_file(OUT "_k.png", "old png\n");
+    write_text_file(OUT "_k.csv", "old csv\n");
+}
+
+/* Whether the render to OUT_k.pfm ended with status (in OUT_status), left no file of its
+ * own, and its previous outputs all keep their bytes. */
+static int stopped_cleanly(int status)
+{
+    char text[16];
+    snprintf(text, sizeof text, "%d\n", status);
+    return file_equals_text(OUT "_status", text) &&
+           files_are("k.csv k.pfm k.png ref.pfm status ") &&
+           file_equals_text(OUT "_k.pfm", "old pfm\n") &&
+           file_equals_text(OUT "_k.png", "old png\n") &&
+           file_equals_text(OUT "_k.csv", "old csv\n");
+}
+
+/* truth: undo.h: a signal that ends photon leaves no file photon made, whenever it comes,
+ *   and the previous outputs keep their bytes: SIGINT, SIGTERM and SIGHUP sent before the
+ *   outputs are checked or during the render (8192 samples: seconds; the report's
+ *   temporary is on disk from its start), and SIGXFSZ raised by the write of the PFM itself
+ *   when files may not grow past 2 KiB (ulimit -f 4), the report and its temporary already
+ *   written. The status is 128 + the signal's number (Linux's numbers): the signal still
+ *   ends photon, as its default action would.
+ * catches: temporaries left by a signal (its default action ends photon without atexit);
+ *   a signal turned into a normal exit (status 0, 1 or 2). */
+static void test_signals_leave_nothing(struct check *t)
+{
+    static const struct {
+        const char *name;
+        int number;
+        const char *delay;
+    } stops[] = {{"INT", 2, "0.01"}, {"TERM", 15, "0.1"}, {"HUP", 1, "0.4"}, {"INT", 2, "0.8"},
+                 {"TERM", 15, "1.2"}};
+    char command[COMMAND_MAX];
+    clean();
+    make_reference();
+    for (size_t i = 0; i < sizeof stops / sizeof stops[0]; i++) {
+        previous_outputs();
+        snprintf(command, sizeof command, "timeout --preserve-status -s %s %s %s " REPORTED
+                 " --spp 8192 -o " OUT "_k.pfm --report " OUT "_k.csv " SCENE " >" OUT
+                 ".log 2>&1; echo $? > " OUT "_status", stops[i].name, stops[i].delay,
+                 photon_binary());
+        run_command(command);
+        CHECK(t, stopped_cleanly(128 + stops[i].number));
+    }
+    previous_outputs();
+    snprintf(command, sizeof command, "sh -c 'ulimit -f 4; %s " REPORTED " --spp 4 -o " OUT
+             "_k.pfm --report " OUT "_k.csv " SCENE " >" OUT ".log 2>&1; echo $? > " OUT
+             "_status'", photon_binary());
+    run_command(command);
+    CHECK(t, stopped_cleanly(128 + 25));
+    clean();
+}
+
+void test_foreign_files(struct check *t)
+{
+    RUN_TEST(t, test_user_files_beside_outputs_kept);
+    RUN_TEST(t, test_only_crop_records_removed);
+    RUN_TEST(t, test_failed_publish_gives_back);
+    RUN_TEST(t, test_unreplaceable_output_refused);
+    RUN_TEST(t, test_two_runs_one_output);
+    RUN_TEST(t, test_signals_leave_nothing);
+}
