@@ -145,6 +145,7 @@ static int write_tile_record(const struct run *run, struct error *err)
     r.width = run->scene->width;
     r.height = run->scene->height;
     r.hash = render_hash(run);
+    r.pixels = tile_pixels_hash(run->result.image);
     r.time_limit = run->o.time_limit;
     return tile_record_write(run->o.output, &r, err);
 }

@@ -2,8 +2,9 @@
  * tests/test_foreign_files.c -- the files beside a command's outputs that photon did not
  * make: a user's file where a temporary might go, a scene or a directory named like a crop
  * record, the previous outputs a failed publish must give back, another run writing the
- * same -o, and a signal at any moment. photon writes and removes only what it made
- * (base/output.h, base/undo.h, app/tile.h).
+ * same -o, a signal at any moment, and FIFOs wherever a file is read or written. photon
+ * writes and removes only what it made (base/output.h, base/undo.h, app/tile.h), and waits
+ * for no FIFO (base/input.h).
  */
 #include <stdio.h>
 
@@ -98,7 +99,7 @@ static void test_user_files_beside_outputs_kept(struct check *t)
 }
 
 /* truth: tile.h: a whole render removes NAME.pfm.window only when it is a record photon
- *   wrote (it reads as one, tile.h's five lines); any other file or directory of that
+ *   wrote (it reads as one, tile.h's six lines); any other file or directory of that
  *   name is the user's and stays: a scene (here the very scene rendered), a note, an empty
  *   directory. A crop's record is still removed by a whole render to the same name.
  * catches: remove() on NAME.pfm.window without looking: the scene deleted, the empty
@@ -287,6 +288,73 @@ static void test_signals_leave_nothing(struct check *t)
     clean();
 }
 
+/* Runs "ENV PHOTON args" as photon() does, but gives it 10 seconds: a read or write that
+ * waits for a FIFO's other end shows as timeout's status 124. */
+static int photon_briefly(const char *env, const char *args)
+{
+    char command[COMMAND_MAX];
+    snprintf(command, sizeof command, "%s timeout 10 %s %s >" OUT ".log 2>&1", env,
+             photon_binary(), args);
+    return run_command(command);
+}
+
+#define FIFOS "f.scene f.pfm f.csv f.work o.pfm o.pbrt t.pfm.window w.pfm.window " \
+              "n.pfm.00003000.tmp"
+
+/* truth: input.h and output.h: photon reads and writes regular files only, and a FIFO
+ *   (made by mkfifo(1), nothing at its other end) is told from one without waiting for that
+ *   end: each reader refuses it as bad input naming it (status 2): a scene, an include, a
+ *   --load-photons file, a --reference, compare's and plot's inputs, a tile's record; so
+ *   does each writer (-o of a render and of export). Where a FIFO stands at a name photon
+ *   only looks at (a crop record beside a whole render, a temporary's name) the render goes
+ *   on (status 0). Every FIFO is left a FIFO. Skipped without mkfifo(1).
+ * catches: fopen(NAME, "rb") before the check, which waits for a writer that never comes
+ *   (timeout's 124): in input_open(), in the output checks, in the temporaries' test for a
+ *   taken name, in the crop record's reading before its removal. */
+static void test_fifos_refused_without_waiting(struct check *t)
+{
+    static const struct {
+        const char *env, *args, *named;
+        int status;
+    } cases[] = {
+        {"", TINY " -o " OUT "_x.pfm " OUT "_f.scene", "test_foreign_f.scene", 2},
+        {"", TINY " -o " OUT "_x.pfm " OUT "_inc.scene", "test_foreign_f.scene", 2},
+        {"", "--no-progress --width 4 --height 4 --mode photons --load-photons " OUT
+         "_f.work -o " OUT "_x.pfm " SCENE, "test_foreign_f.work", 2},
+        {"", TINY " --reference " OUT "_f.pfm --report " OUT "_x.csv -o " OUT "_x.pfm " SCENE,
+         "test_foreign_f.pfm", 2},
+        {"", "compare " OUT "_f.pfm " OUT "_f.pfm", "test_foreign_f.pfm", 2},
+        {"", "plot " OUT "_f.csv -o " OUT "_x.svg", "test_foreign_f.csv", 2},
+        {"", "merge -o " OUT "_x.pfm " OUT "_t.pfm", "test_foreign_t.pfm.window", 2},
+        {"", TINY " -o " OUT "_o.pfm " SCENE, "test_foreign_o.pfm", 2},
+        {"", "export --format pbrt " SCENE " -o " OUT "_o.pbrt", "test_foreign_o.pbrt", 2},
+        {"", TINY " -o " OUT "_w.pfm " SCENE, "", 0},
+        {"PHOTON_TEMPORARY_MARK=00003000", TINY " -o " OUT "_n.pfm " SCENE, "", 0},
+    };
+    if (run_command("command -v mkfifo >/dev/null") != 0) {
+        printf("  (test_fifos_refused_without_waiting: no mkfifo, skipped)\n");
+        return;
+    }
+    clean();
+    run_command("cd build && for f in " FIFOS "; do mkfifo test_foreign_$f; done && "
+                "echo 'include test_foreign_f.scene' > test_foreign_inc.scene");
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        int status = photon_briefly(cases[i].env, cases[i].args);
+        int refused = status == cases[i].status &&
+                      (status == 0 || (file_contains(OUT ".log", cases[i].named) &&
+                                       file_contains(OUT ".log", "FIFO")));
+        CHECK(t, refused);
+        if (!refused)
+            fprintf(stderr, "test_foreign_files: '%s': status %d, not %d naming %s\n",
+                    cases[i].args, status, cases[i].status, cases[i].named);
+    }
+    CHECK(t, run_command("cd build && for f in " FIFOS "; do test -p test_foreign_$f || "
+                         "exit 1; done") == 0);
+    CHECK(t, files_are("f.csv f.pfm f.scene f.work inc.scene n.pfm n.pfm.00003000.tmp n.png "
+                       "o.pbrt o.pfm t.pfm.window w.pfm w.pfm.window w.png "));
+    clean();
+}
+
 void test_foreign_files(struct check *t)
 {
     RUN_TEST(t, test_user_files_beside_outputs_kept);
@@ -295,4 +363,5 @@ void test_foreign_files(struct check *t)
     RUN_TEST(t, test_unreplaceable_output_refused);
     RUN_TEST(t, test_two_runs_one_output);
     RUN_TEST(t, test_signals_leave_nothing);
+    RUN_TEST(t, test_fifos_refused_without_waiting);
 }

@@ -11,6 +11,7 @@
 
 #include "../src/app/options.h"
 #include "../src/app/tile.h"
+#include "../src/image/image.h"
 #include "files.h"
 #include "option_words.h"
 #include "tests.h"
@@ -175,22 +176,32 @@ static void test_options_hash_covers_pixel_options(struct check *t)
     CHECK(t, every_option_classified());
 }
 
-/* truth: tile.h's format, written out by hand: the five lines in order, the hash as 16
- *   lower-case hex digits; reading it back gives the record written.
+/* truth: tile.h's format, written out by hand: the six lines in order, the hashes as 16
+ *   lower-case hex digits; reading it back gives the record written. The pixels' hash of a
+ *   1 x 1 image (1, 0.5, -2) is FNV-1a 64 of the floats' bits lowest byte first,
+ *   00 00 80 3f, 00 00 00 3f, 00 00 00 c0, worked out apart from photon (Python:
+ *   h = 0xcbf29ce484222325; for b in bytes: h = ((h ^ b) * 0x100000001b3) % 2**64).
  * tolerance: none.
- * catches: a field left out or swapped (x1 for y0), the hash printed short or in decimal. */
+ * catches: a field left out or swapped (x1 for y0), a hash printed short or in decimal,
+ *   the pixels hashed as doubles or in the machine's byte order. */
 static void test_tile_record_round_trip(struct check *t)
 {
-    struct tile_record r = {1, 2, 30, 4, 32, 6, UINT64_C(0x0123456789abcdef), 0.0}, back;
+    struct tile_record r = {1, 2, 30, 4, 32, 6, UINT64_C(0x0123456789abcdef),
+                            UINT64_C(0xfedcba9876543210), 0.0}, back;
     struct error err;
     CHECK(t, tile_record_write(OUT "_record.pfm", &r, &err) == 0);
-    CHECK(t, file_equals_text(OUT "_record.pfm.window", "photon-window 1\nwindow 1 2 30 4\n"
-                              "image 32 6\nhash fnv1a64 0123456789abcdef\ntime-limit 0\n"));
+    CHECK(t, file_equals_text(OUT "_record.pfm.window", "photon-window 2\nwindow 1 2 30 4\n"
+                              "image 32 6\nhash fnv1a64 0123456789abcdef\n"
+                              "pixels fnv1a64 fedcba9876543210\ntime-limit 0\n"));
     CHECK(t, tile_record_read(OUT "_record.pfm", &back, &err) == 0);
     CHECK(t, back.x0 == 1 && back.y0 == 2 && back.x1 == 30 && back.y1 == 4 &&
              back.width == 32 && back.height == 6 && back.hash == r.hash &&
-             back.time_limit == 0);
+             back.pixels == r.pixels && back.time_limit == 0);
     remove(OUT "_record.pfm.window");
+    struct image *one = image_create(1, 1);
+    image_set(one, 0, 0, vec3(1, 0.5, -2));
+    CHECK(t, tile_pixels_hash(one) == UINT64_C(0x456cf7b72e202e05));
+    image_free(one);
 }
 
 /* truth: tile.h's format read strictly: each malformed record is refused at its line
@@ -205,24 +216,32 @@ static void test_bad_tile_records_are_refused(struct check *t)
         int line;
         const char *message;
     } bad[] = {
-        {"", 1, "expected 'photon-window 1'"},
-        {"photon-window 2\n", 1, "version 2"},
-        {"photon-window 1\nwindow 0 0 8\n", 2, "expected 'window X0 Y0 X1 Y1'"},
-        {"photon-window 1\nwindow 0 0 -8 6\n", 2, "not a whole number"},
-        {"photon-window 1\nwindow 0 0 9 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n"
-         "time-limit 0\n", 2, "not a window of the 8x6 image"},
-        {"photon-window 1\nwindow 4 0 4 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n"
-         "time-limit 0\n", 2, "not a window"},
-        {"photon-window 1\nwindow 0 0 8 6\nimage 8 6\nhash fnv1a64 0123456789abcde\n", 4,
+        {"", 1, "expected 'photon-window 2'"},
+        {"photon-window 3\n", 1, "version 3"},
+        {"photon-window 1\nwindow 0 0 8 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n"
+         "time-limit 0\n", 1, "version 1 of the record; this photon reads version 2"},
+        {"photon-window 2\nwindow 0 0 8\n", 2, "expected 'window X0 Y0 X1 Y1'"},
+        {"photon-window 2\nwindow 0 0 -8 6\n", 2, "not a whole number"},
+        {"photon-window 2\nwindow 0 0 9 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n"
+         "pixels fnv1a64 0000000000000000\ntime-limit 0\n", 2, "not a window of the 8x6 image"},
+        {"photon-window 2\nwindow 4 0 4 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n"
+         "pixels fnv1a64 0000000000000000\ntime-limit 0\n", 2, "not a window"},
+        {"photon-window 2\nwindow 0 0 8 6\nimage 8 6\nhash fnv1a64 0123456789abcde\n", 4,
          "16 hex digits"},
-        {"photon-window 1\nwindow 0 0 8 6\nimage 8 6\nhash md5 0123456789abcdef\n", 4,
+        {"photon-window 2\nwindow 0 0 8 6\nimage 8 6\nhash md5 0123456789abcdef\n", 4,
          "fnv1a64"},
-        {"photon-window 1\nwindow 0 0 8 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n", 5,
-         "found the end of the file"},
-        {"photon-window 1\nwindow 0 0 8 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n"
-         "time-limit nan\n", 5, "time-limit"},
-        {"photon-window 1\nwindow 0 0 8 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n"
-         "time-limit 0\nwindow 0 0 8 6\n", 6, "unexpected text"},
+        {"photon-window 2\nwindow 0 0 8 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n", 5,
+         "expected 'pixels fnv1a64 HHHHHHHHHHHHHHHH', found the end of the file"},
+        {"photon-window 2\nwindow 0 0 8 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n"
+         "time-limit 0\n", 5, "expected 'pixels fnv1a64"},
+        {"photon-window 2\nwindow 0 0 8 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n"
+         "pixels fnv1a64 0123\n", 5, "pixels: expected 'fnv1a64' and 16 hex digits"},
+        {"photon-window 2\nwindow 0 0 8 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n"
+         "pixels fnv1a64 0000000000000000\n", 6, "found the end of the file"},
+        {"photon-window 2\nwindow 0 0 8 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n"
+         "pixels fnv1a64 0000000000000000\ntime-limit nan\n", 6, "time-limit"},
+        {"photon-window 2\nwindow 0 0 8 6\nimage 8 6\nhash fnv1a64 0123456789abcdef\n"
+         "pixels fnv1a64 0000000000000000\ntime-limit 0\nwindow 0 0 8 6\n", 7, "unexpected text"},
     };
     struct tile_record r;
     struct error err;
@@ -378,6 +397,38 @@ static void test_merge_refuses_bad_tile_sets(struct check *t)
     CHECK(t, photon("merge -o " OUT "_full.jpg " THREE_TILES) == 2 && log_contains(".png or"));
     CHECK(t, photon("merge -o " OUT "_full.pfm " THREE_TILES OUT "_tile3.pfm") == 0);
     CHECK(t, photon("merge --help") == 0 && log_contains("usage: photon merge"));
+}
+
+/* truth: tile.h: a record describes the one PFM it was written with (its pixels' hash), so
+ *   merge refuses a tile whose PFM was written again without its record: the top half's
+ *   PFM replaced by the bottom half's, of the same size (as a --checkpoint of a render of
+ *   the bottom half to the top's name leaves it when that render is stopped), or with one
+ *   byte of its last pixel changed. The true tiles merge. merge -o NAME.pfm then removes
+ *   the record NAME.pfm.window an earlier crop to NAME.pfm left, as a whole render does.
+ * tolerance: none.
+ * catches: a bottom tile pasted into the top half with exit 0 (the record's window and
+ *   hash alone checked); a stale record beside the merged image, by which merge would
+ *   take the whole image for that crop. */
+static void test_merge_refuses_pixels_the_record_does_not_describe(struct check *t)
+{
+    static const int top[4] = {0, 0, 32, 12}, bottom[4] = {0, 12, 32, 24};
+    const char *both = OUT "_top.pfm " OUT "_bottom.pfm";
+    CHECK(t, render_window(OUT "_top.pfm", top, "") == 0);
+    CHECK(t, render_window(OUT "_bottom.pfm", bottom, "") == 0);
+    CHECK(t, run_command("cp " OUT "_top.pfm " OUT "_kept.pfm && cp " OUT "_bottom.pfm "
+                         OUT "_top.pfm") == 0);
+    CHECK(t, merge_refused(both, OUT "_top.pfm: not the pixels its record " OUT
+                           "_top.pfm.window describes"));
+    CHECK(t, run_command("cp " OUT "_kept.pfm " OUT "_top.pfm && printf '\\001' | dd of="
+                         OUT "_top.pfm bs=1 seek=$(($(wc -c < " OUT "_top.pfm) - 1)) "
+                         "conv=notrunc 2>/dev/null && ! cmp -s " OUT "_top.pfm " OUT
+                         "_kept.pfm") == 0);
+    CHECK(t, merge_refused(both, OUT "_top.pfm: not the pixels its record"));
+    CHECK(t, run_command("cp " OUT "_kept.pfm " OUT "_top.pfm") == 0);
+    CHECK(t, render_window(OUT "_full.pfm", bottom, "") == 0 &&
+             file_exists(OUT "_full.pfm.window"));
+    CHECK(t, photon("merge -o " OUT "_full.pfm %s", both) == 0 &&
+             !file_exists(OUT "_full.pfm.window"));
 }
 
 /* truth: tile.h's contract: a whole render removes the record an earlier crop left under
@@ -574,6 +625,7 @@ void test_merge(struct check *t)
     RUN_TEST(t, test_merged_tiles_equal_whole_render);
     RUN_TEST(t, test_merge_refuses_bad_tile_sets);
     RUN_TEST(t, test_whole_render_removes_stale_record);
+    RUN_TEST(t, test_merge_refuses_pixels_the_record_does_not_describe);
     RUN_TEST(t, test_loaded_work_renders_same_bytes);
     RUN_TEST(t, test_bad_work_files_are_refused);
 }

@@ -201,8 +201,60 @@ static void test_bad_illumination_maps_are_refused(struct check *t)
                              "version 2"));
 }
 
+/* Where example_bytes()'s values start: its photon's position, power and flags; its
+ * record's normal's z and irradiance's R. */
+enum { AT_POSITION = 33, AT_POWER = 45, AT_FLAGS = 52, AT_NORMAL_Z = 102, AT_E = 110 };
+
+/* truth: work_file.h: every value is checked for its range, not only the checksum, which
+ *   anyone can compute: each value planted in example_bytes()'s file, its checksum made
+ *   again, is refused naming what is wrong: a photon of some 1e37 W (RGBE 240 240 240 250:
+ *   240 x 2^(250 - 135), photon.h), above WORK_PHOTON_POWER_MAX; a photon at an infinite x;
+ *   a flag that is no photon kind; a record's negative irradiance, or its normal of length
+ *   2; a negative irradiance in an illumination map. The same planted at the largest
+ *   power the file takes (2^110 W, RGBE 128 128 128 238) is read.
+ * tolerance: none.
+ * catches: the checksum taken for a proof of sense: a crafted file's 1e37 W photons or
+ *   negative irradiance rendered (nonsense pixels, or a NaN from a square root). */
+static void test_values_out_of_range_are_refused(struct check *t)
+{
+    static const struct {
+        size_t at; /* from the file's start, or from the illumination maps' with maps */
+        int maps;
+        unsigned char bytes[8];
+        size_t n_bytes;
+        const char *message;
+    } planted[] = {
+        {AT_POWER, 0, {240, 240, 240, 250}, 4, "map 0, photon 1: power 9.9"},
+        {AT_POSITION, 0, {0, 0, 0x80, 0x7f}, 4, "map 0, photon 1: its position is not finite"},
+        {AT_FLAGS, 0, {16}, 1, "map 0, photon 1: flags 16 are not photon kinds"},
+        {AT_E, 0, {0, 0, 0, 0, 0, 0, 0xf0, 0xbf}, 8, "cache record 0: irradiance (-1, 0, 0)"},
+        {AT_NORMAL_Z, 0, {0, 0, 0, 0, 0, 0, 0, 0x40}, 8, "cache record 0: its normal is not "
+         "of unit length (2)"},
+        {AT_DI, 1, {0, 0, 0, 0, 0, 0, 0xf0, 0xbf}, 8, "primitive 1: irradiance -1 is negative"},
+    };
+    unsigned char bytes[1024];
+    size_t maps_at, n;
+    for (size_t i = 0; i < sizeof planted / sizeof planted[0]; i++) {
+        n = example_bytes(bytes, &maps_at);
+        memcpy(bytes + (planted[i].maps ? maps_at : 0) + planted[i].at, planted[i].bytes,
+               planted[i].n_bytes);
+        n = with_checksum(bytes, n - 8);
+        CHECK(t, example_refused(bytes, n, planted[i].message));
+    }
+    n = example_bytes(bytes, &maps_at);
+    memcpy(bytes + AT_POWER, (const unsigned char[]){128, 128, 128, 238}, 4);
+    n = with_checksum(bytes, n - 8);
+    write_bytes_file(OUT "_planted.work", bytes, n);
+    struct global_work work = {NULL, 0, NULL, 0, NULL};
+    struct error err;
+    CHECK(t, work_file_read(OUT "_planted.work", UINT64_C(0x0123456789abcdef), &work,
+                            &err) == 0);
+    global_work_free(&work);
+}
+
 void test_merge_work_file(struct check *t)
 {
     RUN_TEST(t, test_work_file_format);
     RUN_TEST(t, test_bad_illumination_maps_are_refused);
+    RUN_TEST(t, test_values_out_of_range_are_refused);
 }

@@ -1,9 +1,11 @@
 /*
  * app/merge.c -- `photon merge` (merge.h): tiles checked against each other, then pasted.
  *
- * Every check runs before a pixel is read or anything written: first each record alone and
- * against the first tile's (same image, same hash, no time limit), then the windows against
- * each other (no overlap) and the image (no gap). Pixels are copied, never computed, so the
+ * Every check runs before anything is written: first each record alone and against the
+ * first tile's (same image, same hash, no time limit), then the windows against each other
+ * (no overlap) and the image (no gap), then each PFM against its record (its window's size,
+ * its pixels' hash). Once FULL.pfm is in place, a crop's record of that name left by an
+ * earlier render is removed, as a whole render removes it (tile.h). Pixels are copied, never computed, so the
  * whole image's floats come back exactly: the PFM reader widens each float to a double and
  * the writer rounds it back to the same float.
  */
@@ -46,7 +48,8 @@ static int parse_merge_args(int argc, char **argv, struct merge_args *args, stru
                    "means the same; -o\nFULL.ppm writes FULL.pfm and FULL.ppm). Refused, with "
                    "exit status 2 and nothing\nwritten: tiles of different images, scenes, "
                    "modes, seeds or options; tiles\nrendered with --time-limit; overlaps, and "
-                   "a tile given twice; gaps (named as\n--crop windows to render).\n",
+                   "a tile given twice; gaps (named as\n--crop windows to render); a PFM "
+                   "that is not the one its record was written\nwith (a --checkpoint).\n",
                    MERGE_USAGE);
             return 1;
         }
@@ -189,7 +192,8 @@ static int check_coverage(const struct merge_args *args, const struct tile_recor
                      left > 0 ? ", and more" : "");
 }
 
-/* Reads each tile's PFM, checks it is its window's size, and copies it into full. */
+/* Reads each tile's PFM, checks it is its window's size and the very pixels its record
+ * was written with (tile.h), and copies it into full. */
 static int paste_tiles(const struct merge_args *args, const struct tile_record *records,
                        struct image *full, struct error *err)
 {
@@ -202,6 +206,16 @@ static int paste_tiles(const struct merge_args *args, const struct tile_record *
             error_set(err, args->tiles[i], 0, "%dx%d pixels, but its record's window %d %d "
                       "%d %d is %dx%d", tile->width, tile->height, r->x0, r->y0, r->x1, r->y1,
                       r->x1 - r->x0, r->y1 - r->y0);
+            image_free(tile);
+            return -1;
+        }
+        uint64_t pixels = tile_pixels_hash(tile);
+        if (pixels != r->pixels) {
+            error_set(err, args->tiles[i], 0, "not the pixels its record %s%s describes "
+                      "(pixels %016llx, not %016llx): the PFM was written again without it "
+                      "(a --checkpoint, or a render that did not finish); render the tile "
+                      "again", args->tiles[i], TILE_RECORD_SUFFIX,
+                      (unsigned long long)pixels, (unsigned long long)r->pixels);
             image_free(tile);
             return -1;
         }
@@ -245,6 +259,8 @@ int merge_command(int argc, char **argv)
         status = merge_tiles(&args, records, &err);
         if (status == 0)
             status = outputs_publish(&err);
+        if (status == 0) /* FULL.pfm is whole: a crop's record of that name would lie */
+            status = tile_record_remove(args.output, &err);
         xfree(records);
     }
     if (status < 0)

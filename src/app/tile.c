@@ -1,7 +1,7 @@
 /*
  * app/tile.c -- reading and writing the record beside a crop's PFM (tile.h).
  *
- * The reader is strict: the five lines in their order, each with exactly its words, every
+ * The reader is strict: the six lines in their order, each with exactly its words, every
  * number in range, nothing after them. A record that says less than it should must not
  * let merge place a tile where it does not belong.
  */
@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../base/hash.h"
 #include "../base/input.h"
 #include "../base/output.h"
 #include "../image/image.h"
@@ -30,6 +31,25 @@ struct record_reader {
     char *words[RECORD_WORDS_MAX];
     int n_words;
 };
+
+uint64_t tile_pixels_hash(const struct image *image)
+{
+    uint64_t h = FNV1A_OFFSET_BASIS;
+    for (int y = 0; y < image->height; y++)
+        for (int x = 0; x < image->width; x++) {
+            struct vec3 v = image_get(image, x, y);
+            float rgb[3] = {(float)v.x, (float)v.y, (float)v.z};
+            unsigned char bytes[12];
+            for (int c = 0; c < 3; c++) {
+                uint32_t bits;
+                memcpy(&bits, &rgb[c], sizeof bits);
+                for (int i = 0; i < 4; i++)
+                    bytes[4 * c + i] = (unsigned char)(bits >> (8 * i));
+            }
+            h = fnv1a(h, bytes, sizeof bytes);
+        }
+    return h;
+}
 
 /* pfm_name + TILE_RECORD_SUFFIX into name[FILENAME_MAX]. */
 static int record_name(const char *pfm_name, char *name, struct error *err)
@@ -57,8 +77,8 @@ int tile_record_write(const char *pfm_name, const struct tile_record *r, struct 
         return -1;
     fprintf(f, "photon-window %d\nwindow %d %d %d %d\nimage %d %d\n", TILE_RECORD_VERSION,
             r->x0, r->y0, r->x1, r->y1, r->width, r->height);
-    fprintf(f, "hash fnv1a64 %016llx\ntime-limit %g\n", (unsigned long long)r->hash,
-            r->time_limit);
+    fprintf(f, "hash fnv1a64 %016llx\npixels fnv1a64 %016llx\ntime-limit %g\n",
+            (unsigned long long)r->hash, (unsigned long long)r->pixels, r->time_limit);
     return output_commit(f, err); /* a failed write shows in ferror(), checked there */
 }
 
@@ -132,18 +152,20 @@ static int read_int(const struct record_reader *rd, int k, int min, int max, int
     return 0;
 }
 
-/* "hash fnv1a64 HHHHHHHHHHHHHHHH": the method named, and exactly 16 hex digits. */
-static int read_hash(struct record_reader *rd, uint64_t *hash, struct error *err)
+/* form, "hash fnv1a64 HHHHHHHHHHHHHHHH" or "pixels ...": the method named, and exactly 16
+ * hex digits. */
+static int read_hash(struct record_reader *rd, const char *form, uint64_t *hash,
+                     struct error *err)
 {
-    if (read_line(rd, "hash fnv1a64 HHHHHHHHHHHHHHHH", err) < 0)
+    if (read_line(rd, form, err) < 0)
         return -1;
     const char *digits = rd->words[2];
     int hex = strlen(digits) == 16;
     for (int i = 0; hex && i < 16; i++)
         hex = isxdigit((unsigned char)digits[i]);
     if (strcmp(rd->words[1], "fnv1a64") != 0 || !hex)
-        return error_set(err, rd->file, rd->line, "hash: expected 'fnv1a64' and 16 hex "
-                         "digits, got '%s %s'", rd->words[1], digits);
+        return error_set(err, rd->file, rd->line, "%s: expected 'fnv1a64' and 16 hex "
+                         "digits, got '%s %s'", rd->words[0], rd->words[1], digits);
     *hash = (uint64_t)strtoull(digits, NULL, 16);
     return 0;
 }
@@ -160,16 +182,17 @@ static int read_time_limit(struct record_reader *rd, double *seconds, struct err
     return 0;
 }
 
-/* The five lines, in order, and nothing after them. */
+/* The six lines, in order, and nothing after them. */
 static int read_fields(struct record_reader *rd, struct tile_record *r, struct error *err)
 {
     int version, w[4];
-    if (read_line(rd, "photon-window 1", err) < 0 ||
+    if (read_line(rd, "photon-window 2", err) < 0 ||
         read_int(rd, 1, 0, INT_MAX, &version, err) < 0)
         return -1;
     if (version != TILE_RECORD_VERSION)
         return error_set(err, rd->file, rd->line, "version %d of the record; this photon "
-                         "reads version %d", version, TILE_RECORD_VERSION);
+                         "reads version %d (render the tile again)", version,
+                         TILE_RECORD_VERSION);
     if (read_line(rd, "window X0 Y0 X1 Y1", err) < 0)
         return -1;
     int window_line = rd->line; /* checked against the image, read next */
@@ -179,7 +202,9 @@ static int read_fields(struct record_reader *rd, struct tile_record *r, struct e
     if (read_line(rd, "image WIDTH HEIGHT", err) < 0 ||
         read_int(rd, 1, 1, MAX_IMAGE_SIDE, &r->width, err) < 0 ||
         read_int(rd, 2, 1, MAX_IMAGE_SIDE, &r->height, err) < 0 ||
-        read_hash(rd, &r->hash, err) < 0 || read_time_limit(rd, &r->time_limit, err) < 0)
+        read_hash(rd, "hash fnv1a64 HHHHHHHHHHHHHHHH", &r->hash, err) < 0 ||
+        read_hash(rd, "pixels fnv1a64 HHHHHHHHHHHHHHHH", &r->pixels, err) < 0 ||
+        read_time_limit(rd, &r->time_limit, err) < 0)
         return -1;
     if (!(w[0] < w[2] && w[2] <= r->width && w[1] < w[3] && w[3] <= r->height))
         return error_set(err, rd->file, window_line, "window %d %d %d %d: not a window of the "

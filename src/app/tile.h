@@ -1,14 +1,21 @@
 /*
  * app/tile.h -- the record beside a crop's PFM that lets `photon merge` put it back.
  *
- * A render with --crop writes FILE.pfm.window beside FILE.pfm (and its display image), five
+ * A render with --crop writes FILE.pfm.window beside FILE.pfm (and its display image), six
  * lines of text in this order:
  *
- *   photon-window 1                    the format and its version
+ *   photon-window 2                    the format and its version
  *   window X0 Y0 X1 Y1                 the crop, [X0, X1) x [Y0, Y1), (0, 0) at the top left
  *   image WIDTH HEIGHT                 the whole image it is a window of
  *   hash fnv1a64 HHHHHHHHHHHHHHHH      16 lower-case hex digits: what made the pixels
+ *   pixels fnv1a64 HHHHHHHHHHHHHHHH    the pixels themselves (tile_pixels_hash)
  *   time-limit SECONDS                 the render's --time-limit, 0 for none
+ *
+ * The pixels' hash binds the record to the one PFM it was written with: a --checkpoint
+ * rewrites the PFM alone, and a render that ends before its record (a signal, a failed
+ * write) may leave an earlier run's record beside a new PFM; merge reads every tile's PFM
+ * and refuses one whose pixels are not those its record describes. Version 1 had no such
+ * line, and is refused.
  *
  * The hash is FNV-1a, 64 bits (base/hash.h), over every line the scene readers read from
  * the scene file and the files it includes and imports (scene.h, source_hash), then this
@@ -29,15 +36,23 @@
 
 #include "../base/error.h"
 
+struct image;
+
 #define TILE_RECORD_SUFFIX ".window" /* appended to the PFM's name */
-#define TILE_RECORD_VERSION 1        /* the number on the first line */
+#define TILE_RECORD_VERSION 2        /* the number on the first line */
 
 struct tile_record {
     int x0, y0, x1, y1; /* the window: 0 <= x0 < x1 <= width, 0 <= y0 < y1 <= height    */
     int width, height;  /* the whole image's size, each 1..MAX_IMAGE_SIDE               */
     uint64_t hash;      /* FNV-1a of the scene's lines and the pixel-changing options   */
+    uint64_t pixels;    /* tile_pixels_hash() of the PFM's pixels                        */
     double time_limit;  /* the render's --time-limit in CPU seconds, 0 = none            */
 };
+
+/* FNV-1a 64 of the pixels as the PFM keeps them: each channel rounded to a float, its 32
+ * bits lowest byte first, R, G, B, pixel by pixel in rows from the top. The same from the
+ * image a render writes and from the PFM merge reads back (floats widen exactly). */
+uint64_t tile_pixels_hash(const struct image *image);
 
 /* Declares pfm_name + TILE_RECORD_SUFFIX as an output of the command (base/output.h). */
 void tile_record_declare(const char *pfm_name);

@@ -10,6 +10,7 @@
  */
 #include "work_file.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -23,6 +24,68 @@
 #define RECORD_DOUBLES 28 /* an irradiance record in the file: 28 doubles    */
 
 extern char float_is_4_bytes[sizeof(float) == 4 ? 1 : -1];
+
+/* ---- Ranges: what the writer refuses to save and the reader to load (work_file.h) ---- */
+
+#define PHOTON_FLAGS (PHOTON_DIRECT | PHOTON_CAUSTIC | PHOTON_INDIRECT | PHOTON_SHADOW)
+#define UNIT_TOLERANCE 1e-9 /* |n| of a record's unit normal: normalised in double */
+
+/* Photon i of map m within its ranges; name the file, for messages. */
+static int check_photon(const struct photon *p, size_t m, size_t i, const char *name,
+                        struct error *err)
+{
+    struct vec3 power = photon_power(p);
+    if (!isfinite(p->pos[0]) || !isfinite(p->pos[1]) || !isfinite(p->pos[2]))
+        return error_set(err, name, 0, "map %zu, photon %zu: its position is not finite", m,
+                         i);
+    if ((p->flags & ~PHOTON_FLAGS) != 0)
+        return error_set(err, name, 0, "map %zu, photon %zu: flags %u are not photon kinds",
+                         m, i, (unsigned)p->flags);
+    if (vec3_max_component(power) > WORK_PHOTON_POWER_MAX)
+        return error_set(err, name, 0, "map %zu, photon %zu: power %g W is more than any "
+                         "render's photon carries (%g W)", m, i, vec3_max_component(power),
+                         WORK_PHOTON_POWER_MAX);
+    return 0;
+}
+
+static int finite3(struct vec3 v)
+{
+    return isfinite(v.x) && isfinite(v.y) && isfinite(v.z);
+}
+
+/* Cache record i within its ranges (irradiance_cache_add()'s terms). */
+static int check_record(const struct irradiance_record *rec, size_t i, const char *name,
+                        struct error *err)
+{
+    int finite = finite3(rec->p) && finite3(rec->n) && finite3(rec->e) && isfinite(rec->r);
+    for (int c = 0; c < 3; c++)
+        finite = finite && finite3(rec->grad_r[c]) && finite3(rec->grad_t[c]);
+    if (!finite)
+        return error_set(err, name, 0, "cache record %zu: a number is not finite", i);
+    if (!(rec->r > 0))
+        return error_set(err, name, 0, "cache record %zu: radius %g is not positive", i,
+                         rec->r);
+    if (rec->e.x < 0 || rec->e.y < 0 || rec->e.z < 0)
+        return error_set(err, name, 0, "cache record %zu: irradiance (%g, %g, %g) is "
+                         "negative", i, rec->e.x, rec->e.y, rec->e.z);
+    if (!(fabs(vec3_length(rec->n) - 1) <= UNIT_TOLERANCE))
+        return error_set(err, name, 0, "cache record %zu: its normal is not of unit length "
+                         "(%g)", i, vec3_length(rec->n));
+    return 0;
+}
+
+/* Every photon and record of work within its ranges, before a byte is written. */
+static int check_work(const struct global_work *work, const char *name, struct error *err)
+{
+    for (size_t m = 0; m < work->n_maps; m++)
+        for (size_t i = 1; work->maps[m] != NULL && i <= work->maps[m]->n_photons; i++)
+            if (check_photon(&work->maps[m]->photons[i], m, i, name, err) < 0)
+                return -1;
+    for (size_t i = 0; i < work->n_records; i++)
+        if (check_record(&work->records[i], i, name, err) < 0)
+            return -1;
+    return 0;
+}
 
 /* ---- Writing ----------------------------------------------------------------------- */
 
@@ -66,6 +129,11 @@ int work_file_write(const char *name, uint64_t hash, const struct global_work *w
                     struct error *err)
 {
     struct binary_writer w = {NULL, FNV1A_OFFSET_BASIS};
+    if (check_work(work, name, err) < 0) {
+        if (err != NULL)
+            err->failed_write = 1; /* the render's own work: no input of the user's is bad */
+        return -1;
+    }
     w.f = output_open(name, err);
     if (w.f == NULL)
         return -1;
@@ -134,6 +202,10 @@ static int get_map(struct binary_reader *r, size_t m, struct kdtree **map, struc
             return -1;
         }
         heap[i] = photon_of_bytes(bytes);
+        if (check_photon(&heap[i], m, i, r->name, err) < 0) {
+            xfree(heap);
+            return -1;
+        }
     }
     *map = kdtree_from_heap(heap, (size_t)n); /* takes heap */
     if (*map == NULL)
@@ -141,7 +213,7 @@ static int get_map(struct binary_reader *r, size_t m, struct kdtree **map, struc
     return 0;
 }
 
-/* Record i into *rec: 28 finite doubles, R > 0 (irradiance_cache_add()'s terms). */
+/* Record i into *rec, within its ranges (check_record). */
 static int get_record(struct binary_reader *r, size_t i, struct irradiance_record *rec,
                       struct error *err)
 {
@@ -151,9 +223,6 @@ static int get_record(struct binary_reader *r, size_t i, struct irradiance_recor
     for (int k = 0; k < RECORD_DOUBLES; k++)
         if (binary_get_double(r, what, &x[k], err) < 0)
             return -1;
-    if (!(x[9] > 0))
-        return error_set(err, r->name, 0, "cache record %zu: radius %g is not positive", i,
-                         x[9]);
     rec->p = vec3(x[0], x[1], x[2]);
     rec->n = vec3(x[3], x[4], x[5]);
     rec->e = vec3(x[6], x[7], x[8]);
@@ -162,7 +231,7 @@ static int get_record(struct binary_reader *r, size_t i, struct irradiance_recor
         rec->grad_r[c] = vec3(x[10 + 3 * c], x[11 + 3 * c], x[12 + 3 * c]);
         rec->grad_t[c] = vec3(x[19 + 3 * c], x[20 + 3 * c], x[21 + 3 * c]);
     }
-    return 0;
+    return check_record(rec, i, r->name, err);
 }
 
 /* Magic, version and hash: the file is work of this program's kind, for this render. */

@@ -29,7 +29,13 @@
  *                     draws (illumination_map.c alone knows their insides)
  *   8                 checksum: FNV-1a 64 of every byte before it
  *
- * and nothing after. The maps are not balanced again on reading: each is checked
+ * and nothing after. Every value is checked for its range as it is read, not only the
+ * checksum (which anyone can compute for a file made by hand): a photon's position is
+ * finite, its flags PHOTON_* bits, its power at most WORK_PHOTON_POWER_MAX in each
+ * channel; a record's position, irradiance and gradients are finite, its irradiance not
+ * negative, its normal of unit length, its radius positive; an illumination map's
+ * irradiances are finite and not negative. The writer refuses work outside the same
+ * ranges, so a file photon saves, it loads. The maps are not balanced again on reading: each is checked
  * (kdtree_check) and used node for node, the records are added to the cache in the
  * order written, and the illumination maps come back element for element, so a render
  * that loads the file renders the very bits of one that made the work itself.
@@ -47,8 +53,16 @@
 #define WORK_FILE_MAGIC "photonGW" /* 8 bytes, no terminating zero in the file */
 #define WORK_FILE_VERSION 2
 
+/* The most a photon in the file may carry, in watts per channel: 2^110, some 1.3e33. A
+ * scene's lights give at most MAX_LIGHT_POWER (1e30, scene/scene.h) per channel in all;
+ * a photon leaves a light with at most 1 / 0.0722 of that (a light picked by its
+ * luminance, vec3.h, that is blue alone) and a BRDF weight above 1 (photon/trace.c) may
+ * raise it about 90 times more. A photon of 1e37 W is no render's. */
+#define WORK_PHOTON_POWER_MAX 1.298074214633707e33
+
 /* Writes work (full) with hash to name, whole or not at all (output_open). -1 with *err
- * filled when it cannot be written. */
+ * filled when it cannot be written, or (a failed write, nothing written) when a value is
+ * out of the ranges above. */
 int work_file_write(const char *name, uint64_t hash, const struct global_work *work,
                     struct error *err);
 
@@ -56,8 +70,7 @@ int work_file_write(const char *name, uint64_t hash, const struct global_work *w
  * case). -1 with *err ("FILE: message") when the file cannot be opened, is not such a
  * file, is of another version, was saved with another hash (another scene, mode, seed or
  * setting), is truncated or damaged (checksum), has bytes after its end, or holds a map
- * that is not a balanced kd-tree, a record that is not finite, or illumination maps of
- * sides out of range or irradiances that are not finite. */
+ * that is not a balanced kd-tree, or a value out of its range (above). */
 int work_file_read(const char *name, uint64_t hash, struct global_work *work,
                    struct error *err);
 

@@ -2,9 +2,10 @@
  * base/input.c -- files photon reads: regular files only, read to their size (input.h).
  *
  * C99 cannot ask what kind of file a name is, so input_open() asks by behaviour:
- * "NAME/." opens only for a directory (file_kind.h); a pipe cannot seek to its end; and a
- * regular file has nothing past its end, where a device such as /dev/zero (which says its
- * size is 0) goes on giving bytes. A file that passes all three is read to the size it had.
+ * "NAME/." opens only for a directory, and a FIFO is found by an open that does not wait
+ * for its writer (file_kind.h); a pipe cannot seek to its end; and a regular file has
+ * nothing past its end, where a device such as /dev/zero (which says its size is 0) goes
+ * on giving bytes. A file that passes them all is read to the size it had.
  */
 #include "input.h"
 
@@ -43,8 +44,12 @@ int input_open(struct input *in, const char *name, struct error *err)
         return error_set(err, "", 0, "an empty file name");
     if (file_is_directory(name))
         return error_set(err, name, 0, "is a directory");
+    int pipe;
     errno = 0;
-    in->f = fopen(name, "rb");
+    in->f = file_open_read(name, &pipe);
+    if (pipe)
+        return error_set(err, name, 0, "is a FIFO or a terminal, not a regular file (photon "
+                         "reads files it can measure)");
     if (in->f == NULL)
         return error_set(err, name, 0, "cannot open: %s",
                          errno != 0 ? strerror(errno) : "unknown reason");

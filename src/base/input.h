@@ -3,7 +3,8 @@
  *
  * Every reader (scene files and their includes, NFF, OBJ, PFM, CSV, a tile's record, the
  * work file) opens its file through input_open(), which refuses what is not a regular
- * file before a byte is used: a directory ("is a directory"), a pipe or a device that
+ * file before a byte is used, and before anything waits: a directory ("is a directory"), a
+ * FIFO ("is a FIFO", told without waiting for its writer: file_kind.h), a device that
  * cannot tell its size, and a device that yields bytes past the size it tells (/dev/zero,
  * /dev/urandom). The size it measures bounds the reading: input_line() refuses a file
  * that goes on past it (one that grows while it is read), so no reader can read for
@@ -32,8 +33,8 @@ struct input {
 };
 
 /* Opens name for reading into *in and measures it. -1 with *err filled ("NAME: is a
- * directory", "NAME: not a regular file ...", "NAME: cannot open: reason", or the output
- * registry's refusal); nothing is left open then. */
+ * directory", "NAME: is a FIFO ...", "NAME: not a regular file ...", "NAME: cannot open:
+ * reason", or the output registry's refusal); nothing is left open then. */
 int input_open(struct input *in, const char *name, struct error *err);
 
 /* The next line, its '\n' kept when it has one, into text[size] (size >= 3) as a string.

@@ -207,10 +207,13 @@ static FILE *create_ours(const char *name, struct undo *u, char **made, size_t p
     *errnum = 0;
     for (unsigned long attempt = 0; attempt < TEMPORARY_TRIES; attempt++) {
         char *t = temporary_name(name, attempt);
-        FILE *f = fopen(t, "rb"); /* taken: C99's own check, before C11's "x" */
-        if (f != NULL) {
-            size_t owner = probe_k != NO_OUTPUT ? probe_owner(f, probe_k) : NO_OUTPUT;
-            fclose(f);
+        if (file_is_there(t)) { /* taken, a FIFO too, found without opening it (C11's "x"
+                                   below is the check that counts) */
+            int pipe;
+            FILE *f = probe_k != NO_OUTPUT ? file_open_no_wait(t, &pipe) : NULL;
+            size_t owner = f != NULL ? probe_owner(f, probe_k) : NO_OUTPUT;
+            if (f != NULL)
+                fclose(f);
             xfree(t);
             if (owner != NO_OUTPUT) {
                 *same = owner;
@@ -220,7 +223,7 @@ static FILE *create_ours(const char *name, struct undo *u, char **made, size_t p
         }
         undo_hold(); /* the file and its entry appear together for a signal */
         errno = 0;
-        f = fopen(t, "wbx");
+        FILE *f = fopen(t, "wbx");
         *errnum = errno;
         if (f != NULL)
             undo_set(u, UNDO_REMOVE, t, NULL);
@@ -247,10 +250,12 @@ static const char *reason(int errnum)
 
 /* ---- identity -------------------------------------------------------------------------- */
 
-/* The size of the regular file name, or -1 when it does not open. */
+/* The size of the regular file name, or -1 when it does not open for update (an output
+ * that does not is refused by the check) or is a FIFO: asked so, it never waits. */
 static long file_size(const char *name)
 {
-    FILE *f = fopen(name, "rb");
+    int pipe;
+    FILE *f = file_open_no_wait(name, &pipe);
     if (f == NULL)
         return -1;
     long size = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
@@ -258,10 +263,12 @@ static long file_size(const char *name)
     return size;
 }
 
-/* Whether files a and b hold the same bytes (both readable). */
+/* Whether the output a and the input b hold the same bytes: a opens for update (a regular
+ * file, as file_size() found), b for reading (as input_open() did). */
 static int same_bytes(const char *a, const char *b)
 {
-    FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
+    int pipe_a, pipe_b;
+    FILE *fa = file_open_no_wait(a, &pipe_a), *fb = file_open_read(b, &pipe_b);
     unsigned char *ca = xmalloc(2, COMPARE_CHUNK, "file comparison"), *cb = ca + COMPARE_CHUNK;
     int same = fa != NULL && fb != NULL;
     while (same) {
@@ -278,10 +285,11 @@ static int same_bytes(const char *a, const char *b)
     return same;
 }
 
-/* Whether inputs[i] opens (for reading). */
+/* Whether inputs[i] opens (for reading, as input_open() opened it). */
 static int input_opens(size_t i)
 {
-    FILE *f = fopen(inputs[i], "rb");
+    int pipe;
+    FILE *f = file_open_read(inputs[i], &pipe);
     if (f != NULL)
         fclose(f);
     return f != NULL;
@@ -311,9 +319,8 @@ static int round_trip(struct output *o, size_t from, struct error *err)
     undo_release();
     if (!moved) {
         drop_temporary(o);
-        if ((f = fopen(o->name, "rb")) == NULL)
+        if (!file_is_there(o->name))
             return 0; /* nothing there to move */
-        fclose(f);
         return error_set(err, o->name, 0, "the file exists and cannot be replaced%s%s (%s)",
                          colon(errnum), reason(errnum), o->role);
     }
@@ -373,6 +380,9 @@ static int check_name(const struct output *o, struct error *err)
         return error_set(err, "", 0, "%s: an empty file name", o->role);
     if (o->name[n - 1] == '/' || file_is_directory(o->name))
         return error_set(err, o->name, 0, "is a directory (%s)", o->role);
+    if (file_is_pipe(o->name))
+        return error_set(err, o->name, 0, "is a FIFO or a terminal, not a regular file (%s): "
+                         "photon writes whole files, each renamed into place", o->role);
     if (n + sizeof TEMPORARY_SUFFIX > OUTPUT_NAME_MAX)
         return error_set(err, o->name, 0, "the file name is too long (%s)", o->role);
     return 0;
@@ -402,20 +412,22 @@ static int make_probe(size_t k, struct error *err)
     return 0;
 }
 
-/* An existing output must open for writing (without being changed). */
+/* An existing output must open for writing (without being changed): for update, which
+ * never waits (file_kind.h; check_name() refused a FIFO that opens so). */
 static int check_writable(const struct output *o, struct error *err)
 {
-    FILE *f = fopen(o->name, "rb");
-    if (f == NULL)
-        return 0; /* absent: its directory took the probe */
-    fclose(f);
+    int pipe;
     errno = 0;
-    f = fopen(o->name, "ab");
-    if (f == NULL)
-        return error_set(err, o->name, 0, "the file exists and cannot be written%s%s (%s)",
-                         colon(errno), reason(errno), o->role);
-    fclose(f);
-    return 0;
+    FILE *f = file_open_no_wait(o->name, &pipe);
+    int errnum = errno;
+    if (f != NULL) {
+        fclose(f);
+        return 0;
+    }
+    if (!file_is_there(o->name))
+        return 0; /* absent: its directory took the probe */
+    return error_set(err, o->name, 0, "the file exists and cannot be written%s%s (%s)",
+                     colon(errnum), reason(errnum), o->role);
 }
 
 int outputs_check(struct error *err)

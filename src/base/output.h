@@ -6,9 +6,13 @@
  * names it in messages ("-o", "--variance", "the PNG beside -o"), and calls
  * outputs_check() before it computes anything. That refuses, as bad input (exit 2):
  *   - an empty name, a name ending in '/', and a name that is a directory;
+ *   - a FIFO or a terminal (file_kind.h): a FIFO would take the bytes of no whole file, and
+ *     opening it to write waits for a reader; found without waiting, as every look at an
+ *     output here is (an open for update, a rename onto itself: file_kind.h);
  *   - a name whose directory is missing or not writable (its temporary cannot be made);
- *   - an existing file that cannot be opened for writing (mode 444). C99 cannot read a
- *     file's mode, so this asks fopen(); for root, who may write any file, it opens;
+ *   - an existing file that cannot be opened for update (mode 444, and 222 too). C99
+ *     cannot read a file's mode, so this asks fopen(); for root, who may write any file,
+ *     it opens;
  *   - an existing file that cannot be moved, so that it could not be replaced either (a
  *     file of another owner in a sticky directory such as /tmp): it is renamed aside and
  *     back (below);
@@ -29,11 +33,12 @@
  * a probe of the check, the place a replaced file waits is NAME.XXXXXXXX.tmp, beside
  * NAME so that the final rename stays within its directory (atomic), XXXXXXXX 8 hex
  * digits: the run's mark, then the mark + 1, ... for the next name (16 in all) when one
- * is taken. A name is taken when it opens for reading (C99's own test) or when fopen()'s
+ * is taken. A name is taken when renaming it onto itself succeeds (file_is_there(), which
+ * opens nothing, so a FIFO there is passed over without waiting) or when fopen()'s
  * exclusive create, mode "wbx", refuses it. "x" is C11's, not C99's: glibc and musl
  * honour it (O_EXCL: any existing entry refuses it, a symbolic link too, even a dangling
  * one, and a FIFO without waiting); a C99 library that ignored it would be left with the
- * test for reading alone, which a dangling link passes. So a user's file at any of these
+ * rename test alone. So a user's file at any of these
  * names, a scene named NAME.tmp, a link, stay untouched; and two runs writing the same
  * NAME at once each write their own temporary (the one renamed last is NAME, whole). The
  * run's mark comes from the clock and addresses (C99 has no process id);

@@ -270,13 +270,18 @@ void illumination_maps_write(const struct illumination_maps *maps, struct binary
 }
 
 /* n irradiances into values (the caller has checked that the file holds their bytes);
- * what names the map for messages. */
+ * what names the map for messages. Each is finite and not negative: an element's energy
+ * is a sum of photons' powers over its area (illumination_maps_finish). */
 static int get_irradiances(struct binary_reader *r, const char *what, double *values,
                            size_t n, struct error *err)
 {
-    for (size_t i = 0; i < n; i++)
+    for (size_t i = 0; i < n; i++) {
         if (binary_get_double(r, what, &values[i], err) < 0)
             return -1;
+        if (values[i] < 0)
+            return error_set(err, r->name, 0, "%s: irradiance %g is negative", what,
+                             values[i]);
+    }
     return 0;
 }
 

@@ -106,7 +106,7 @@ void illumination_maps_write(const struct illumination_maps *maps, struct binary
 
 /* Finished maps read from r in the layout drawn above. NULL with *err ("FILE: message"),
  * and nothing left allocated, when the file ends inside them or a side is out of range or
- * an irradiance is not finite (every count is checked against the bytes left before it is
+ * an irradiance is not finite or is negative (every count is checked against the bytes left before it is
  * allocated). */
 struct illumination_maps *illumination_maps_read(struct binary_reader *r, struct error *err);
 
