@@ -529,10 +529,12 @@ static void report_target(const struct run *run)
     const struct render_counters *c = &run->counters;
     if (run->o.target_error == 0 || c->target_within == c->target_blocks)
         return;
-    fprintf(stderr, "photon: --target-error %g: %d of %d blocks not within it after %d "
+    int progressive = run->o.mode == MODE_PPM2008 || run->o.mode == MODE_SPPM2009;
+    fprintf(stderr, "photon: --target-error %g: %d of %d blocks not within it after %ld "
             "%s, the first at (%d, %d)\n", run->o.target_error,
-            c->target_blocks - c->target_within, c->target_blocks, c->passes,
-            run->o.mode == MODE_SPPM2009 ? "passes" : "samples per pixel", c->target_missed_x,
+            c->target_blocks - c->target_within, c->target_blocks,
+            progressive ? run->ppm_stats.passes : (long)c->passes,
+            progressive ? "passes" : "samples per pixel", c->target_missed_x,
             c->target_missed_y);
 }
 

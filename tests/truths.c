@@ -374,6 +374,18 @@ int crop_is_window(const struct image *whole, const struct image *crop, const in
     return same;
 }
 
+int target_cut_short(const char *mode, const char *extra, const char *out)
+{
+    char args[1024], log[512];
+    snprintf(log, sizeof log, "%s.log", out);
+    snprintf(args, sizeof args, "--mode %s --target-error 0.001 --passes 16 --photons-per-pass "
+             "1000 --width 32 --height 24 --no-progress --stats -o %s.pfm %s "
+             "scenes/analytic/sky-over-floor.scene", mode, out, extra);
+    return photon_logged("", args, log) == 0 &&
+           file_contains(log, "blocks not within it after 16 passes, the first at (0, 0)") &&
+           file_stat(log, "target_blocks") == 4 && file_stat(log, "target_blocks_within") == 0;
+}
+
 int refuses_options(const char *mode, const char *const (*bad)[2], size_t n_bad,
                     const char *out)
 {

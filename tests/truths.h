@@ -173,6 +173,14 @@ int same_pixels(const struct image *a, const struct image *b);
 /* Whether crop holds exactly the pixels of whole's window (x0 y0 x1 y1), bit for bit. */
 int crop_is_window(const struct image *whole, const struct image *crop, const int *window);
 
+/* Runs `photon --mode MODE --target-error 0.001 --passes 16 --photons-per-pass 1000 --width
+ * 32 --height 24 --no-progress --stats -o OUT.pfm EXTRA scenes/analytic/sky-over-floor.scene`
+ * (MODE 2008 or 2009) into OUT.log: a target no 16 passes reach. Whether it exited 0, named
+ * its 4 blocks as not within it after 16 passes, the first at (0, 0), and tallied them in
+ * --stats (test_error_2008.c, test_error_2009.c). OUT.log stays for more checks; the caller
+ * removes it, OUT.pfm and OUT.png. */
+int target_cut_short(const char *mode, const char *extra, const char *out);
+
 /* Runs `photon --mode MODE OPTION --width 8 --height 8 -o OUT.pfm scenes/cornell.scene`
  * for each bad[i] = {OPTION, TEXT}: each must exit 2 with TEXT in its message and leave
  * no OUT.pfm, temporary of it (files.h) or OUT.png. Returns how many did not (each named on stderr). */

@@ -192,17 +192,50 @@ static int check_idle(const struct options *o, const struct command_words *words
     return 0;
 }
 
-/* The bound of --error and --target-error (modes/pixel_error.h; 2009:
+/* 2008's bound (modes/ppm_error.h) is made from the spread of its passes, which re-sample
+ * neither the hit points nor the eye rays of the ray tracing pass: it holds where those
+ * carry only the photons' light after a bounce, smooth over several pixels, and misses
+ * where they carry the light's edges. Measured against closed forms (tests/
+ * test_error_2008.c): with the direct light from photons the truth fell within the 95%
+ * bound in 0.66 of point-over-plane's pixels at 32 x 32 (one merged hit point a pixel)
+ * and 0.91 of area-over-floor's without merging (the light's outline splits a pixel's
+ * --spp rays); with the emission seen by the --spp rays alone, the blocks on the light's
+ * outline were stated exact (their rays fixed) and erred. */
+static int check_error_2008(const struct options *o, const struct command_words *words,
+                            const char *name, struct error *err)
+{
+    char with[96];
+    if (!o->direct_light_samples) {
+        setting_text(o, words, "--no-direct-light-samples", "", with, sizeof with);
+        return error_set(err, "", 0, "%s: not with %s: the photons then bring the direct "
+                         "light to hit points fixed by the first eye rays, whose aliasing "
+                         "(a merged hit point one point of the light for its pixel, a "
+                         "shadow's or a light's outline split by --spp rays) no spread of "
+                         "the passes states (the truth within the 95%% bound in 0.66 of "
+                         "point-over-plane's pixels)", name, with);
+    }
+    if (!o->resample_emission) {
+        setting_text(o, words, "--no-resample-emission", "", with, sizeof with);
+        return error_set(err, "", 0, "%s: not with %s: the emission seen is then the "
+                         "--spp first eye rays' alone, fixed, whose aliasing on a light's "
+                         "outline no spread of the passes states (area-over-floor's blocks "
+                         "there were stated exact and erred)", name, with);
+    }
+    return 0;
+}
+
+/* The bound of --error and --target-error (modes/pixel_error.h; 2008 and 2009:
  * modes/sppm_error.h) holds for the pixel's expected value only where that is the truth
- * (or its bias is stated) and its samples (2009: passes) are many enough to see their
- * rare values. */
-static int check_error_bound(const struct options *o, struct error *err)
+ * (or its bias is stated) and its samples (2008, 2009: passes) are many enough to see
+ * their rare values. */
+static int check_error_bound(const struct options *o, const struct command_words *words,
+                             struct error *err)
 {
     if ((o->error == NULL && o->target_error == 0) ||
-        (o->mode != MODE_PT && o->mode != MODE_SPPM2009))
+        (o->mode != MODE_PT && o->mode != MODE_SPPM2009 && o->mode != MODE_PPM2008))
         return 0; /* check_modes() refuses the other modes */
     const char *name = o->error != NULL ? "--error" : "--target-error";
-    int passes = o->mode == MODE_SPPM2009, n = passes ? o->passes : o->spp;
+    int passes = o->mode != MODE_PT, n = passes ? o->passes : o->spp;
     if (n < ERROR_MIN_SPP)
         return error_set(err, "", 0, "%s: needs %s >= %d (with %d, even the spread "
                          "pooled over 5 x 5 pixels misses the rare bright samples, and the "
@@ -216,7 +249,7 @@ static int check_error_bound(const struct options *o, struct error *err)
         return error_set(err, "", 0, "%s: not with --max-depth %d, which leaves out the "
                          "light of longer paths, a bias no spread states", name,
                          o->max_depth);
-    return 0;
+    return o->mode == MODE_PPM2008 ? check_error_2008(o, words, name, err) : 0;
 }
 
 int check_combinations(const struct options *o, const struct command_words *words,
@@ -254,7 +287,7 @@ int check_combinations(const struct options *o, const struct command_words *word
         return error_set(err, "", 0, "--block-error: not with --crop, which cuts the blocks "
                                      "of the whole image at its edges (photon merge joins "
                                      "no block statements)");
-    if (check_error_bound(o, err) < 0)
+    if (check_error_bound(o, words, err) < 0)
         return -1;
     return check_idle(o, words, err);
 }

@@ -182,10 +182,11 @@ void mode_defaults(struct options *o)
         o->gather = o->mode == MODE_JENSEN1994   ? J94_DEFAULT_GATHER
                     : o->mode == MODE_JENSEN1996 ? J96_DEFAULT_GATHER
                                                  : PHOTONS_DEFAULT_GATHER;
-    if (o->passes == 0) /* 2009 with a target error: the target ends the render */
-        o->passes = o->mode != MODE_SPPM2009 ? PPM_DEFAULT_PASSES
-                    : o->target_error > 0    ? MAX_SPP
-                                             : SPPM_DEFAULT_PASSES;
+    if (o->passes == 0) /* with a target error the target ends the render */
+        o->passes = o->target_error > 0 && (o->mode == MODE_PPM2008 ||
+                                            o->mode == MODE_SPPM2009) ? MAX_SPP
+                    : o->mode != MODE_SPPM2009                        ? PPM_DEFAULT_PASSES
+                                                                      : SPPM_DEFAULT_PASSES;
     if (o->photons_per_pass == 0)
         o->photons_per_pass = o->mode == MODE_SPPM2009 ? SPPM_DEFAULT_PHOTONS_PER_PASS
                                                        : PPM_DEFAULT_PHOTONS_PER_PASS;

@@ -106,20 +106,20 @@ static const struct option_spec specs[] = {
      "also write each pixel's variance of the mean (needs --spp >= 2)", FOR_SAMPLES},
     {"--error", OPT_FILE, FIELD(error), 0, 0, "FILE.pfm",
      "also write each pixel's bound on |pixel - truth| at --confidence, from its samples' "
-     "and its 5 x 5 neighbours' spread (needs --spp >= 16); 2009: from its passes' spread "
-     "and, added, its photon estimate's bias, from a disc of half the area (needs --passes "
-     ">= 16)", FOR_PT | FOR_2009},
+     "and its 5 x 5 neighbours' spread (needs --spp >= 16); 2008, 2009: from its passes' "
+     "spread and, added, its photon estimates' bias, from discs of half the area (needs "
+     "--passes >= 16)", FOR_PT | FOR_PROGRESSIVE},
     {"--block-error", OPT_FILE, FIELD(block_error), 0, 0, "FILE.pfm",
      "with --error: also write each 16 x 16 block's bound on |block mean - truth|, one pixel "
-     "a block, for photon compare --test-block-error (not with --crop)", FOR_PT | FOR_2009},
+     "a block, for photon compare --test-block-error (not with --crop)", FOR_PT | FOR_PROGRESSIVE},
     {"--confidence", OPT_REAL_BETWEEN, FIELD(confidence), 0, 1, "C",
      "the confidence of --error's bound: the truth is within it in a fraction C of the "
-     "pixels (default 0.95)", FOR_PT | FOR_2009},
+     "pixels (default 0.95)", FOR_PT | FOR_PROGRESSIVE},
     {"--target-error", OPT_REAL_ABOVE, FIELD(target_error), 0, 1, "E",
      "sample until every 16 x 16 block's bound at --confidence is at most E times its mean "
      "(blocks darker than 1e-3 aside), --spp at most (default with it: 1048576), or the "
-     "time limit; 2009: passes until then, --passes at most (default with it: 1048576)",
-     FOR_PT | FOR_2009},
+     "time limit; 2008, 2009: passes until then, --passes at most (default with it: "
+     "1048576)", FOR_PT | FOR_PROGRESSIVE},
     {"--save-photons", OPT_FILE, FIELD(save_photons), 0, 0, "FILE",
      "also write the global work (photon maps, 1994's illumination "
      "maps, irradiance cache) to FILE, for --load-photons", FOR_PHOTON_MAPS},
@@ -240,7 +240,7 @@ static const struct option_spec specs[] = {
      "emit photons into all directions, not through projection maps as the paper (Sec. "
      "3.1) and the default do", FOR_1994},
     {"--passes", OPT_INT, FIELD(passes), 1, MAX_PASSES, "N",
-     "photon passes (default 144; 2009: 256, each with one new eye path a pixel, 1048576 "
+     "photon passes (default 144; 2009: 256, each with one new eye path a pixel; 1048576 "
      "with --target-error; --time-limit may stop sooner)", FOR_PROGRESSIVE},
     {"--photons-per-pass", OPT_INT, FIELD(photons_per_pass), 1, MAX_PHOTONS, "N",
      "photons traced in each pass (default 100000)", FOR_PROGRESSIVE},
@@ -607,7 +607,7 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
         default_output(o->scene_path, o->output);
     if ((o->reference == NULL) != (o->report == NULL))
         return error_set(err, "", 0, "--reference and --report go together");
-    if (o->target_error > 0 && o->spp == 0)
+    if (o->target_error > 0 && o->spp == 0 && o->mode != MODE_PPM2008) /* 2008: --passes */
         o->spp = MAX_SPP; /* the target ends the render, or the time limit */
     mode_defaults(o);
     if (o->cone > 0 && o->cone < 1)

@@ -4,7 +4,7 @@
  *
  * An error image holds, per pixel and channel, a bound B on |pixel - truth| at a
  * confidence c: B = |b| + z_c sigma, b the pixel's estimated bias (0 where the mode's
- * mean is unbiased, pt: modes/pixel_error.h; 2009's density estimates:
+ * mean is unbiased, pt: modes/pixel_error.h; 2008's and 2009's density estimates:
  * modes/sppm_error.h, which hands b over as an image of its own), sigma the standard
  * error of the pixel's mean. A pixel's luminance (vec3_luminance's weights w) is bounded
  * by sum_c w_c B_c, its channels being one estimate's and so correlated; the mean of a
@@ -13,7 +13,7 @@
  * the biases adding linearly, with their signs, and N_block the bound on the noise of
  * the block's mean at the same confidence: where the pixels' noise is independent (pt),
  *     N_block = sqrt(sum over the pixels of (sum_c w_c (B_c - |b_c|))^2) / n,
- * their noise adding in quadrature; where it is not (2009's pixels share the photons of
+ * their noise adding in quadrature; where it is not (2008's and 2009's pixels share the photons of
  * discs a few pixels wide), the mode states N_block itself, an image of one pixel a
  * block (stated_error's block_noise). A block is
  * within E when B_block <= E times its mean luminance; blocks whose mean luminance is

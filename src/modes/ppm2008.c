@@ -58,6 +58,12 @@
  * its own (add_flux()); Sec. 3.1 takes every photon within R, and the sphere of radius R
  * also reaches through thin walls and onto the back of the hit point's own surface.
  *
+ * The error image (--error, --target-error; ppm_error.h): each pass hands every pixel's
+ * pass values to 2009's batches (progressive_update()); the window kept grows by
+ * SPPM_ERROR_MARGIN pixels each side, whose hit points only the error image reads
+ * (evaluate_image() writes the asked window alone), so a crop's error image is its window
+ * of the whole's, and the image is the same with it or without.
+ *
  * Determinism: photon i of pass p draws from rng_stream(seed, STREAM_PHOTON, p, i) and eye
  * sample s of pixel (x, y) from its camera stream (render.h); the light samples of the
  * k-th surface a pixel's new eye ray meets are keyed by the pixel and k (ppm_direct.h);
@@ -76,6 +82,7 @@
 #include "../photon/hit_points.h"
 #include "../photon/trace.h"
 #include "ppm_direct.h"
+#include "ppm_error.h"
 #include "ppm_radius.h"
 #include "surface.h"
 
@@ -91,10 +98,13 @@ struct pending_member {
 
 struct ppm {
     const struct scene *scene;          /* borrowed                                       */
-    const struct render_settings *rs;   /* borrowed                                       */
+    const struct render_settings *rs;   /* &kept.grown                                    */
+    struct kept_window kept;            /* the caller's window, grown by SPPM_ERROR_MARGIN
+                                           with an error image (the pixels its bound
+                                           reads; sppm_error.h)                           */
     const struct ppm_settings *ps;      /* borrowed                                       */
     struct render_counters *counters;   /* borrowed                                       */
-    int width, height;                  /* of the window                                  */
+    int width, height;                  /* of the window kept                             */
     struct vec3 *emission_seen;         /* owned: per window pixel, the sum of the emission
                                            and background radiance seen along its eye rays */
     long eye_rays;                      /* eye rays per pixel in emission_seen so far:
@@ -118,6 +128,8 @@ struct ppm {
     size_t n_members, cap_members;
     uint64_t surfaces_met;              /* surfaces with a non-delta part the current eye
                                            ray (all its branches) has met so far          */
+    int want_error;                     /* rs->error_confidence > 0                       */
+    struct ppm_error error;             /* with want_error (ppm_error.h)                  */
 };
 
 struct ppm_settings ppm_settings_default(void)
@@ -442,7 +454,8 @@ static void add_flux(void *context, size_t i)
 {
     struct ppm *ppm = context;
     hit_point_add_photon(&ppm->points[i], ppm->photon, ppm->photons_per_pass,
-                         ppm->ps->progressive.facing_test, ppm->ps->caustic_footprints > 0);
+                         ppm->ps->progressive.facing_test, ppm->ps->caustic_footprints > 0,
+                         ppm->want_error ? &ppm->error.inner[2 * i] : NULL);
 }
 
 /* Each photon a photon tracing pass stores goes to the hit points around it, at every
@@ -524,15 +537,22 @@ void ppm_update_estimate(struct progressive_estimate *e, double alpha)
     e->m_photons = 0;
 }
 
-/* Pass p's end: every hit point's estimates updated, then shown to the observer. */
+/* Pass p's end: with an error image the pass values (the pass's tau_M, before Eq. 12
+ * takes it), then every hit point's estimates updated (the error image keeps their tau,
+ * which the next pass's tau_M adds to), then shown to the observer. */
 static void progressive_update(void *context, long pass)
 {
     struct ppm *ppm = context;
     double alpha = ppm->ps->progressive.alpha;
+    if (ppm->want_error)
+        ppm_error_add_pass(&ppm->error, &ppm->tree, ppm->photons_per_pass, ppm->emission_seen,
+                           ppm->ps->progressive.direct_photons ? NULL : &ppm->direct);
     for (size_t i = 0; i < ppm->n_points; i++) {
         ppm_update_estimate(&ppm->points[i].global, alpha);
         ppm_update_estimate(&ppm->points[i].caustic, alpha);
     }
+    if (ppm->want_error)
+        ppm_error_end_pass(&ppm->error, &ppm->tree);
     hit_point_tree_refit(&ppm->tree); /* the discs shrank: tighten the boxes */
     const struct ppm_observer *observer = ppm->ps->observer;
     if (observer != NULL)
@@ -549,40 +569,59 @@ struct vec3 ppm_radiance(struct vec3 tau, double r, double n_emitted)
     return vec3_scale(tau, 1.0 / (PI * r * r * n_emitted)); /* Eq. 13 */
 }
 
-/* The image so far: the mean of what the eye rays saw directly plus every hit point's
- * Eq. 13 radiance times its pixel weight, summed in the order the hit points were made
- * (not the tree's, which depends on the window). */
+/* The image so far, of the written window: the mean of what the eye rays saw directly
+ * plus every hit point's Eq. 13 radiance times its pixel weight, summed in the order the
+ * hit points were made (not the tree's, which depends on the window). */
 static void evaluate_image(const void *context, double n_emitted, struct image *image)
 {
     const struct ppm *ppm = context;
-    size_t n_pixels = (size_t)ppm->width * (size_t)ppm->height;
-    for (size_t i = 0; i < n_pixels; i++) {
-        image->pixels[i] = vec3_scale(ppm->emission_seen[i], 1.0 / (double)ppm->eye_rays);
+    size_t n_pixels = (size_t)image->width * (size_t)image->height;
+    for (size_t k = 0; k < n_pixels; k++) {
+        size_t i = kept_pixel(&ppm->kept, k);
+        image->pixels[k] = vec3_scale(ppm->emission_seen[i], 1.0 / (double)ppm->eye_rays);
         if (!ppm->ps->progressive.direct_photons)
-            image->pixels[i] = vec3_add(image->pixels[i], ppm_direct_radiance(&ppm->direct, i));
+            image->pixels[k] = vec3_add(image->pixels[k], ppm_direct_radiance(&ppm->direct, i));
     }
     for (size_t i = 0; i < ppm->n_points; i++) {
         const struct hit_point *hp = &ppm->points[ppm->tree.place[i]]; /* the i-th made */
+        size_t k = written_pixel(&ppm->kept, hp->pixel);
+        if (k == NOT_WRITTEN)
+            continue; /* the margin's, which only the error image reads */
         struct vec3 l = vec3_add(ppm_radiance(hp->global.tau, hp->global.radius, n_emitted),
                                  ppm_radiance(hp->caustic.tau, hp->caustic.radius, n_emitted));
-        image->pixels[hp->pixel] = vec3_add(image->pixels[hp->pixel], vec3_mul(hp->weight, l));
+        image->pixels[k] = vec3_add(image->pixels[k], vec3_mul(hp->weight, l));
     }
-    for (size_t i = 0; i < n_pixels; i++)
-        if (!vec3_is_finite(image->pixels[i])) { /* a bug upstream: report, never write */
+    for (size_t k = 0; k < n_pixels; k++)
+        if (!vec3_is_finite(image->pixels[k])) { /* a bug upstream: report, never write */
             ppm->counters->nonfinite_samples++;
-            image->pixels[i] = vec3_zero();
+            image->pixels[k] = vec3_zero();
         }
+}
+
+/* --target-error's judgement (progressive.h): the image so far and its error image. */
+static int target_reached(void *context, double n_emitted)
+{
+    struct ppm *ppm = context;
+    struct image *mean = image_create(ppm->kept.out_width, ppm->kept.out_height);
+    evaluate_image(ppm, n_emitted, mean);
+    int reached = ppm_error_target(&ppm->error, mean, ppm->counters);
+    image_free(mean);
+    return reached;
 }
 
 /* ---- the passes ------------------------------------------------------------------ */
 
+/* The mean R of the written pixels' hit points: the progress line's and --stats's. */
 static double mean_radius(const void *context)
 {
     const struct ppm *ppm = context;
-    double sum = 0.0;
+    double sum = 0.0, n = 0.0;
     for (size_t i = 0; i < ppm->n_points; i++)
-        sum += ppm->points[i].global.radius;
-    return ppm->n_points > 0 ? sum / (double)ppm->n_points : 0.0;
+        if (written_pixel(&ppm->kept, ppm->points[i].pixel) != NOT_WRITTEN) {
+            sum += ppm->points[i].global.radius;
+            n++;
+        }
+    return n > 0 ? sum / n : 0.0;
 }
 
 struct render_result render_ppm(const struct scene *scene, const struct render_settings *rs,
@@ -594,11 +633,14 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     memset(&ppm, 0, sizeof ppm);
     memset(stats, 0, sizeof *stats);
     ppm.scene = scene;
-    ppm.rs = rs;
+    ppm.want_error = rs->error_confidence > 0;
+    kept_window_init(&ppm.kept, rs, scene->width, scene->height,
+                     ppm.want_error ? SPPM_ERROR_MARGIN : 0);
+    ppm.rs = &ppm.kept.grown;
     ppm.ps = ps;
     ppm.counters = counters;
-    ppm.width = rs->x1 - rs->x0;
-    ppm.height = rs->y1 - rs->y0;
+    ppm.width = ppm.kept.width;
+    ppm.height = ppm.kept.height;
     ppm.emission_seen = xcalloc((size_t)ppm.width * (size_t)ppm.height,
                                 sizeof *ppm.emission_seen, "ppm pixels");
     ppm.footprint_per_distance = camera_footprint(&scene->camera);
@@ -606,7 +648,7 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     ppm.keep_members = ps->merge_hit_points && ps->caustic_footprints > 0 &&
                        makes_caustics(scene);
     if (!common->direct_photons)
-        ppm_direct_create(&ppm.direct, scene, rs);
+        ppm_direct_create(&ppm.direct, scene, ppm.rs);
     clock_t start = clock();
     ray_tracing_pass(&ppm);
     stats->seconds_ray_pass = cpu_seconds(start);
@@ -614,18 +656,24 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     stats->bytes_per_hit_point = sizeof(struct hit_point) + HIT_POINT_TREE_BYTES_PER_POINT;
     stats->hit_members = ppm.n_members;
     stats->initial_mean_radius = mean_radius(&ppm);
+    if (ppm.want_error)
+        ppm_error_create(&ppm.error, &ppm.kept, ppm.n_points, ppm.emission_seen,
+                         common->direct_photons ? NULL : &ppm.direct);
     struct render_result result = {NULL, NULL, NULL, NULL, NULL, 0.0};
-    result.image = image_create(ppm.width, ppm.height);
+    result.image = image_create(ppm.kept.out_width, ppm.kept.out_height);
 
     /* The photon tracing passes, each followed by the new eye ray a pixel. */
     struct progressive_steps steps = {&ppm, NULL, add_photon, eye_ray_pass, progressive_update,
-                                      evaluate_image, mean_radius, NULL, NULL};
+                                      evaluate_image, mean_radius,
+                                      rs->target_error > 0 ? target_reached : NULL, counters};
     struct progressive_run run = progressive_passes(&steps, scene, rs, common,
                                                     stats->seconds_ray_pass, result.image,
                                                     &stats->photon_rays);
     stats->passes = run.passes;
     stats->seconds_photons = run.seconds;
     result.seconds = stats->seconds_ray_pass + stats->seconds_photons;
+    if (ppm.want_error)
+        result.seconds += ppm_error_finish(&ppm.error, &result);
     stats->photons_emitted = run.photons_emitted;
     stats->mean_radius = mean_radius(&ppm);
     counters->passes = rs->spp;

@@ -77,7 +77,11 @@ struct vec3 ppm_radiance(struct vec3 tau, double r, double n_emitted);
 /* Renders the window of rs: the ray tracing pass with rs->spp eye rays per pixel (the
  * caller keeps window pixels x spp <= PPM_MAX_EYE_RAYS), then photon passes as
  * progressive_passes() runs them, calling ps->observer after each. result.variance is
- * always NULL: the pixels of a progressive estimate are not means of independent samples. */
+ * always NULL: the pixels of a progressive estimate are not means of independent samples.
+ * With rs->error_confidence (and ps->progressive.passes >= ERROR_MIN_SPP), result.error,
+ * .bias and .block_noise are the error image and what it states of blocks (ppm_error.h;
+ * the window kept grows by SPPM_ERROR_MARGIN, and stats->hit_points counts its hit points
+ * too); with rs->target_error the passes end once it is reached. */
 struct render_result render_ppm(const struct scene *scene, const struct render_settings *rs,
                                 const struct ppm_settings *ps,
                                 struct render_counters *counters, struct ppm_stats *stats);

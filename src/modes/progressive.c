@@ -8,7 +8,7 @@
  * eye ray a pixel) and the update; between passes come the checkpoints and the progress
  * line, whose time is not counted.
  *
- * With a target error (2009's --target-error) the mode judges its image after the passes
+ * With a target error (--target-error) the mode judges its image after the passes
  * target_judged_after() names, pt's schedule, and the loop ends once it is reached; with
  * an error image no time limit ends it before ERROR_MIN_SPP passes, which the image needs.
  *

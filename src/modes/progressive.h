@@ -69,7 +69,7 @@ struct progressive_steps {
     void (*evaluate)(const void *mode, double photons_emitted, struct image *image);
     /* the mean radius, for the progress line */
     double (*mean_radius)(const void *mode);
-    /* with rs->target_error (2009), or NULL: judges the image so far, photons_emitted
+    /* with rs->target_error (2008, 2009), or NULL: judges the image so far, photons_emitted
      * photons in all, against the target (target_tally()), after the passes
      * target_judged_after() names and after the last; whether every block is within it */
     int (*target_reached)(void *mode, double photons_emitted);

@@ -145,13 +145,13 @@ struct render_result {
                                is typically an over-estimate                               */
     struct image *error;    /* owned or NULL: with rs->error_confidence, each pixel's bound
                                on |image - truth| at that confidence (pixel_error.h;
-                               2009: sppm_error.h)                                         */
+                               2008, 2009: sppm_error.h)                                   */
     struct image *bias;     /* owned or NULL: the estimated bias b whose |b| error includes
-                               (2009), adding linearly over a block (image/error_image.h);
+                               (2008, 2009), adding linearly over a block (error_image.h);
                                NULL: error is all noise                                    */
     struct image *block_noise; /* owned or NULL: the bound on the noise of each block's
                                mean (image/error_image.h, stated_error), where the pixels'
-                               noise is not independent (2009); NULL: it is            */
+                               noise is not independent (2008, 2009); NULL: it is      */
     double seconds;         /* CPU seconds rendering, checkpoint work excluded            */
 };
 
@@ -188,7 +188,7 @@ void render_result_free(struct render_result *result);
 
 /* Whether the target error is judged after pass p (rs->target_error above: p >=
  * ERROR_MIN_SPP and a multiple of the largest power of two <= p / 8); pt's sample passes
- * and 2009's photon passes alike. */
+ * and 2008's and 2009's photon passes alike. */
 int target_judged_after(long p);
 
 struct stated_error;

@@ -68,7 +68,7 @@
  * (add_pass_values(), before the update) to the pixel's batches; the window kept grows
  * by SPPM_ERROR_MARGIN pixels each side (inside the image), which the bound of a pixel
  * near the edge reads, so that a crop's error image is its window of the whole's; the
- * image is the written window's alone (kept_pixel()).
+ * image is the written window's alone (kept_pixel(), sppm_error.h's kept_window).
  *
  * Determinism: eye path p of pixel (x, y) is camera sample p (render.h: its stream is
  * keyed by the pixel and p), its light samples are keyed by the pixel and the pass
@@ -78,7 +78,6 @@
  */
 #include "sppm2009.h"
 
-#include <float.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
@@ -110,18 +109,14 @@ struct fitted_plane {
 
 struct sppm {
     const struct scene *scene;          /* borrowed                                        */
-    const struct render_settings *rs;   /* &grown                                          */
-    const struct render_settings *asked; /* borrowed: the caller's, whose window is written */
-    struct render_settings grown;       /* asked, its window grown by SPPM_ERROR_MARGIN
+    const struct render_settings *rs;   /* &kept.grown                                     */
+    struct kept_window kept;            /* the caller's window, grown by SPPM_ERROR_MARGIN
                                            with an error image (inside the image): the
                                            pixels kept                                     */
-    int out_x0, out_y0;                 /* asked's window within the kept one ...          */
-    int out_width, out_height;          /* ... and its size                               */
     const struct sppm_settings *ps;     /* borrowed                                        */
     struct render_counters *counters;   /* borrowed                                        */
     struct ppm_stats *stats;            /* borrowed: gets the eye paths' seconds, mean R0   */
-    int width;                          /* of the window kept                              */
-    size_t n_pixels;
+    size_t n_pixels;                    /* of the window kept                              */
     struct progressive_estimate *shared; /* owned: per window pixel, S's N, R and tau; R is
                                             0 until the pixel's first hit point            */
     struct vec3 *emission_seen;         /* owned: per window pixel, the sum over passes of
@@ -142,15 +137,17 @@ struct sppm {
     struct fitted_plane *fitted;        /* owned, with ps->disc_coverage: per window pixel,
                                            the plane its radius was fitted on             */
     int want_error;                     /* rs->error_confidence > 0                        */
-    struct sppm_error error;            /* with want_error                                 */
+    struct sppm_error error;            /* with want_error, and with it: ...               */
+    size_t *point;                      /* owned: per window pixel, its hit point this pass
+                                           or NO_POINT                                     */
+    struct vec3 *inner_tau;             /* owned: per hit point, this pass's f_r Phi' of
+                                           the photons within R / sqrt(2) of it            */
+    uint32_t *inner_probes;             /* owned: 2 per window pixel, the disc probes that
+                                           fell in the inner disc and those of them that
+                                           found the surface                               */
 };
 
-/* Pixel k (row-major) of the window written, as an index of the window kept. */
-static size_t kept_pixel(const struct sppm *sppm, size_t k)
-{
-    size_t x = k % (size_t)sppm->out_width, y = k / (size_t)sppm->out_width;
-    return (y + (size_t)sppm->out_y0) * (size_t)sppm->width + x + (size_t)sppm->out_x0;
-}
+#define NO_POINT ((size_t)-1) /* a pixel whose eye path made no hit point this pass */
 
 /* ---- the distributed ray tracing pass ----------------------------------------------- */
 
@@ -201,8 +198,8 @@ static void store_hit_point(struct sppm *sppm, size_t pixel, const struct surfac
     if (sppm->ps->disc_coverage && common->fit_radius && common->radius <= 0)
         fit_to_surface(sppm, pixel, s, distance); /* else no fit could shorten R */
     if (sppm->want_error) {
-        sppm->error.point[pixel] = sppm->n_points;
-        sppm->error.inner_tau[sppm->n_points] = vec3_zero();
+        sppm->point[pixel] = sppm->n_points;
+        sppm->inner_tau[sppm->n_points] = vec3_zero();
     }
     struct hit_point *hp = &sppm->points[sppm->n_points++];
     hp->x = s->p;
@@ -238,8 +235,8 @@ static void probe_disc(struct sppm *sppm, size_t pixel, long pass, const struct 
     share->probes++;
     share->covered += (uint32_t)covered;
     if (sppm->want_error && u < 0.5) { /* within R / sqrt(2): the inner disc's probe too */
-        sppm->error.inner_probes[2 * pixel]++;
-        sppm->error.inner_probes[2 * pixel + 1] += (uint32_t)covered;
+        sppm->inner_probes[2 * pixel]++;
+        sppm->inner_probes[2 * pixel + 1] += (uint32_t)covered;
     }
 }
 
@@ -340,8 +337,8 @@ static double mean_radius(const void *context)
     const struct sppm *sppm = context;
     double sum = 0.0;
     size_t n = 0;
-    for (size_t k = 0; k < (size_t)sppm->out_width * (size_t)sppm->out_height; k++) {
-        double r = sppm->shared[kept_pixel(sppm, k)].radius;
+    for (size_t k = 0; k < (size_t)sppm->kept.out_width * (size_t)sppm->kept.out_height; k++) {
+        double r = sppm->shared[kept_pixel(&sppm->kept, k)].radius;
         if (r > 0) {
             sum += r;
             n++;
@@ -368,11 +365,12 @@ static void distributed_ray_tracing_pass(void *context, long pass)
     sppm->n_points = 0;
     for (size_t i = 0; sppm->want_error && i < sppm->n_pixels; i++) {
         sppm->error.before[i] = seen_so_far(sppm, i);
-        sppm->error.point[i] = SPPM_NO_POINT;
+        sppm->point[i] = NO_POINT;
     }
     for (int y = rs->y0; y < rs->y1; y++)
         for (int x = rs->x0; x < rs->x1; x++) {
-            size_t pixel = (size_t)(y - rs->y0) * (size_t)sppm->width + (size_t)(x - rs->x0);
+            size_t pixel = (size_t)(y - rs->y0) * (size_t)sppm->kept.width +
+                           (size_t)(x - rs->x0);
             struct rng rng;
             struct ray ray = camera_sample(sppm->scene, rs->seed, x, y, (int)pass, &rng);
             trace_eye_path(sppm, pixel, pass, ray, &rng);
@@ -394,12 +392,9 @@ static void add_flux(void *context, size_t i)
                                                       sppm->photon->position,
                                                       sppm->photon->normal))
         return;
-    struct vec3 added = hit_point_add_photon(&sppm->points[i], sppm->photon,
-                                             sppm->photons_per_pass,
-                                             sppm->ps->progressive.facing_test, 0);
-    double r = hp->global.radius;
-    if (sppm->want_error && 2 * vec3_length2(vec3_sub(sppm->photon->position, hp->x)) <= r * r)
-        sppm->error.inner_tau[i] = vec3_add(sppm->error.inner_tau[i], added);
+    hit_point_add_photon(&sppm->points[i], sppm->photon, sppm->photons_per_pass,
+                         sppm->ps->progressive.facing_test, 0,
+                         sppm->want_error ? &sppm->inner_tau[i] : NULL);
 }
 
 /* Each photon a photon tracing pass stores (2008's pass) goes to the hit points around
@@ -427,7 +422,7 @@ static double covered_share(const struct sppm *sppm, size_t i)
  * it; the whole disc's while none has. */
 static double inner_share(const struct sppm *sppm, size_t i)
 {
-    const uint32_t *probes = &sppm->error.inner_probes[2 * i];
+    const uint32_t *probes = &sppm->inner_probes[2 * i];
     if (!sppm->ps->disc_coverage || probes[0] == 0)
         return covered_share(sppm, i);
     return fmax(DISC_COVERAGE_FLOOR, (double)probes[1] / probes[0]);
@@ -443,14 +438,12 @@ static void add_pass_values(struct sppm *sppm, long pass)
     struct sppm_error *e = &sppm->error;
     for (size_t i = 0; i < sppm->n_pixels; i++) {
         struct vec3 y = vec3_sub(seen_so_far(sppm, i), e->before[i]), y_inner = y;
-        const struct hit_point *hp = e->point[i] != SPPM_NO_POINT ? &sppm->points[e->point[i]]
-                                                                  : NULL;
-        double area = hp != NULL ? PI * hp->global.radius * hp->global.radius : 0.0;
-        if (area * sppm->photons_per_pass >= DBL_MIN) {
-            double scale = 1.0 / (area * sppm->photons_per_pass);
-            struct vec3 p = vec3_scale(vec3_mul(hp->weight, hp->global.tau), scale);
-            struct vec3 p_inner = vec3_scale(vec3_mul(hp->weight, e->inner_tau[e->point[i]]),
-                                             2 * scale);
+        if (sppm->point[i] != NO_POINT) {
+            const struct hit_point *hp = &sppm->points[sppm->point[i]];
+            struct vec3 p, p_inner;
+            sppm_error_photons(hp->weight, hp->global.radius, hp->global.tau,
+                               sppm->inner_tau[sppm->point[i]], sppm->photons_per_pass, &p,
+                               &p_inner);
             y = vec3_add(y, vec3_scale(p, 1.0 / covered_share(sppm, i)));
             y_inner = vec3_add(y_inner, vec3_scale(p_inner, 1.0 / inner_share(sppm, i)));
         }
@@ -487,8 +480,8 @@ static void evaluate_image(const void *context, double n_emitted, struct image *
 {
     const struct sppm *sppm = context;
     double passes = sppm->passes_done > 0 ? (double)sppm->passes_done : 1.0;
-    for (size_t k = 0; k < (size_t)sppm->out_width * (size_t)sppm->out_height; k++) {
-        size_t i = kept_pixel(sppm, k);
+    for (size_t k = 0; k < (size_t)sppm->kept.out_width * (size_t)sppm->kept.out_height; k++) {
+        size_t i = kept_pixel(&sppm->kept, k);
         const struct progressive_estimate *e = &sppm->shared[i];
         struct vec3 photons = ppm_radiance(e->tau, e->radius, n_emitted);
         struct vec3 l = vec3_add(vec3_scale(sppm->emission_seen[i], 1.0 / passes),
@@ -505,30 +498,14 @@ static void evaluate_image(const void *context, double n_emitted, struct image *
 
 /* ---- the error image ---------------------------------------------------------------- */
 
-/* The error image of the written window, its bias and its blocks' noise
- * (sppm_error.h). */
-static struct image *error_image(const struct sppm *sppm, struct image **bias,
-                                 struct image **block_noise)
-{
-    return sppm_error_image(&sppm->error, sppm->passes_done, sppm->out_x0, sppm->out_y0,
-                            sppm->out_x0 + sppm->out_width, sppm->out_y0 + sppm->out_height,
-                            sppm->asked->x0, sppm->asked->y0, sppm->rs->error_confidence,
-                            bias, block_noise);
-}
-
 /* --target-error's judgement (progressive.h): the image so far and its error image. */
 static int target_reached(void *context, double n_emitted)
 {
     struct sppm *sppm = context;
-    struct image *mean = image_create(sppm->out_width, sppm->out_height);
+    struct image *mean = image_create(sppm->kept.out_width, sppm->kept.out_height);
     evaluate_image(sppm, n_emitted, mean);
-    struct image *bias, *block_noise;
-    struct image *error = error_image(sppm, &bias, &block_noise);
-    struct stated_error stated = {error, bias, block_noise};
-    int reached = target_tally(mean, &stated, sppm->asked, sppm->counters);
-    image_free(block_noise);
-    image_free(bias);
-    image_free(error);
+    int reached = sppm_error_target(&sppm->error, &sppm->kept, sppm->passes_done, mean,
+                                    sppm->counters);
     image_free(mean);
     return reached;
 }
@@ -554,24 +531,14 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     memset(&sppm, 0, sizeof sppm);
     memset(stats, 0, sizeof *stats);
     sppm.scene = scene;
-    sppm.asked = rs;
     sppm.want_error = rs->error_confidence > 0;
-    int margin = sppm.want_error ? SPPM_ERROR_MARGIN : 0; /* the pixels its pools read */
-    sppm.grown = *rs;
-    sppm.grown.x0 = rs->x0 > margin ? rs->x0 - margin : 0;
-    sppm.grown.y0 = rs->y0 > margin ? rs->y0 - margin : 0;
-    sppm.grown.x1 = rs->x1 + margin < scene->width ? rs->x1 + margin : scene->width;
-    sppm.grown.y1 = rs->y1 + margin < scene->height ? rs->y1 + margin : scene->height;
-    sppm.rs = &sppm.grown;
-    sppm.out_x0 = rs->x0 - sppm.grown.x0;
-    sppm.out_y0 = rs->y0 - sppm.grown.y0;
-    sppm.out_width = rs->x1 - rs->x0;
-    sppm.out_height = rs->y1 - rs->y0;
+    kept_window_init(&sppm.kept, rs, scene->width, scene->height,
+                     sppm.want_error ? SPPM_ERROR_MARGIN : 0); /* the pixels its pools read */
+    sppm.rs = &sppm.kept.grown;
     sppm.ps = ps;
     sppm.counters = counters;
     sppm.stats = stats;
-    sppm.width = sppm.grown.x1 - sppm.grown.x0;
-    sppm.n_pixels = (size_t)sppm.width * (size_t)(sppm.grown.y1 - sppm.grown.y0);
+    sppm.n_pixels = (size_t)sppm.kept.width * (size_t)sppm.kept.height;
     sppm.shared = xcalloc(sppm.n_pixels, sizeof *sppm.shared, "sppm statistics");
     sppm.emission_seen = xcalloc(sppm.n_pixels, sizeof *sppm.emission_seen, "sppm pixels");
     sppm.points = xmalloc(sppm.n_pixels, sizeof *sppm.points, "sppm hit points");
@@ -586,10 +553,15 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     hit_point_grid_build(&sppm.grid, sppm.points, 0);
     if (!common->direct_photons)
         ppm_direct_create(&sppm.direct, scene, sppm.rs);
-    if (sppm.want_error)
-        sppm_error_create(&sppm.error, sppm.width, sppm.grown.y1 - sppm.grown.y0);
+    if (sppm.want_error) {
+        sppm_error_create(&sppm.error, sppm.kept.width, sppm.kept.height);
+        sppm.point = xmalloc(sppm.n_pixels, sizeof *sppm.point, "sppm pass points");
+        sppm.inner_tau = xcalloc(sppm.n_pixels, sizeof *sppm.inner_tau, "sppm inner flux");
+        sppm.inner_probes = xcalloc(2 * sppm.n_pixels, sizeof *sppm.inner_probes,
+                                    "sppm inner probes");
+    }
     struct render_result result = {NULL, NULL, NULL, NULL, NULL, 0.0};
-    result.image = image_create(sppm.out_width, sppm.out_height);
+    result.image = image_create(sppm.kept.out_width, sppm.kept.out_height);
 
     /* Each pass: the distributed ray tracing pass, the photon tracing pass, the update. */
     struct progressive_steps steps = {&sppm, distributed_ray_tracing_pass, add_photon, NULL,
@@ -600,9 +572,12 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     result.seconds = run.seconds;
     if (sppm.want_error) {
         clock_t start = clock();
-        result.error = error_image(&sppm, &result.bias, &result.block_noise);
+        sppm_error_result(&sppm.error, &sppm.kept, sppm.passes_done, &result);
         result.seconds += cpu_seconds(start);
         sppm_error_free(&sppm.error);
+        xfree(sppm.point);
+        xfree(sppm.inner_tau);
+        xfree(sppm.inner_probes);
     }
     stats->passes = run.passes;
     stats->seconds_photons = run.seconds - stats->seconds_ray_pass;

@@ -4,6 +4,7 @@
  */
 #include "sppm_error.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -14,6 +15,38 @@
 
 #define PIXEL_BATCHES (3 * ERROR_BATCHES) /* the doubles of one pixel's batches */
 
+void kept_window_init(struct kept_window *k, const struct render_settings *asked,
+                      int image_width, int image_height, int margin)
+{
+    k->asked = asked;
+    k->grown = *asked;
+    k->grown.x0 = asked->x0 > margin ? asked->x0 - margin : 0;
+    k->grown.y0 = asked->y0 > margin ? asked->y0 - margin : 0;
+    k->grown.x1 = asked->x1 + margin < image_width ? asked->x1 + margin : image_width;
+    k->grown.y1 = asked->y1 + margin < image_height ? asked->y1 + margin : image_height;
+    k->width = k->grown.x1 - k->grown.x0;
+    k->height = k->grown.y1 - k->grown.y0;
+    k->out_x0 = asked->x0 - k->grown.x0;
+    k->out_y0 = asked->y0 - k->grown.y0;
+    k->out_width = asked->x1 - asked->x0;
+    k->out_height = asked->y1 - asked->y0;
+}
+
+size_t kept_pixel(const struct kept_window *k, size_t written)
+{
+    size_t x = written % (size_t)k->out_width, y = written / (size_t)k->out_width;
+    return (y + (size_t)k->out_y0) * (size_t)k->width + x + (size_t)k->out_x0;
+}
+
+size_t written_pixel(const struct kept_window *k, size_t kept)
+{
+    int x = (int)(kept % (size_t)k->width) - k->out_x0;
+    int y = (int)(kept / (size_t)k->width) - k->out_y0;
+    if (x < 0 || y < 0 || x >= k->out_width || y >= k->out_height)
+        return NOT_WRITTEN;
+    return (size_t)y * (size_t)k->out_width + (size_t)x;
+}
+
 void sppm_error_create(struct sppm_error *e, int width, int height)
 {
     size_t n = (size_t)width * (size_t)height;
@@ -22,10 +55,7 @@ void sppm_error_create(struct sppm_error *e, int width, int height)
     e->batches = xcalloc(PIXEL_BATCHES * n, sizeof *e->batches, "sppm error batches");
     e->bias_batches = xcalloc(PIXEL_BATCHES * n, sizeof *e->bias_batches,
                               "sppm error batches");
-    e->inner_probes = xcalloc(2 * n, sizeof *e->inner_probes, "sppm inner probes");
     e->before = xcalloc(n, sizeof *e->before, "sppm pass values");
-    e->point = xcalloc(n, sizeof *e->point, "sppm pass points");
-    e->inner_tau = xcalloc(n, sizeof *e->inner_tau, "sppm inner flux");
 }
 
 void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 y,
@@ -35,6 +65,20 @@ void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 
     double v[3] = {y.x, y.y, y.z}, w[3] = {b.x, b.y, b.z};
     error_batches_add(e->batches + PIXEL_BATCHES * i, (int)pass, v);
     error_batches_add(e->bias_batches + PIXEL_BATCHES * i, (int)pass, w);
+}
+
+void sppm_error_photons(struct vec3 weight, double radius, struct vec3 tau,
+                        struct vec3 inner_tau, double photons_per_pass, struct vec3 *p,
+                        struct vec3 *p_inner)
+{
+    double area = PI * radius * radius;
+    *p = vec3_zero();
+    *p_inner = vec3_zero();
+    if (area * photons_per_pass >= DBL_MIN) {
+        double scale = 1.0 / (area * photons_per_pass);
+        *p = vec3_scale(vec3_mul(weight, tau), scale);
+        *p_inner = vec3_scale(vec3_mul(weight, inner_tau), 2 * scale);
+    }
 }
 
 /* Each pixel's batches of b averaged over the pixels within SPPM_BIAS_RADIUS of it,
@@ -154,13 +198,30 @@ struct image *sppm_error_image(const struct sppm_error *e, long passes, int x0, 
     return error;
 }
 
+void sppm_error_result(const struct sppm_error *e, const struct kept_window *k, long passes,
+                       struct render_result *result)
+{
+    result->error = sppm_error_image(e, passes, k->out_x0, k->out_y0, k->out_x0 + k->out_width,
+                                     k->out_y0 + k->out_height, k->asked->x0, k->asked->y0,
+                                     k->grown.error_confidence, &result->bias,
+                                     &result->block_noise);
+}
+
+int sppm_error_target(const struct sppm_error *e, const struct kept_window *k, long passes,
+                      const struct image *mean, struct render_counters *counters)
+{
+    struct render_result r = {NULL, NULL, NULL, NULL, NULL, 0.0};
+    sppm_error_result(e, k, passes, &r);
+    struct stated_error stated = {r.error, r.bias, r.block_noise};
+    int reached = target_tally(mean, &stated, k->asked, counters);
+    render_result_free(&r);
+    return reached;
+}
+
 void sppm_error_free(struct sppm_error *e)
 {
     xfree(e->batches);
     xfree(e->bias_batches);
-    xfree(e->inner_probes);
     xfree(e->before);
-    xfree(e->point);
-    xfree(e->inner_tau);
     memset(e, 0, sizeof *e);
 }

@@ -1,7 +1,12 @@
 /*
- * modes/sppm_error.h -- the error image of `--mode 2009` (sppm2009.c): each pixel's bound
- * on |pixel - truth| at a confidence c, of the noise of its passes and of the bias of its
- * photon density estimate (ERROR.md's words).
+ * modes/sppm_error.h -- the error image of the progressive modes, `--mode 2009`
+ * (sppm2009.c) and `--mode 2008` (ppm2008.c, whose pass values ppm_error.h makes): each
+ * pixel's bound on |pixel - truth| at a confidence c, of the noise of its passes and of
+ * the bias of its photon density estimates (ERROR.md's words). Below, 2009's pass values
+ * and the rule both modes' bounds are made by; ppm_error.h, 2008's values and what its
+ * passes cannot see. Both keep the pixels up to SPPM_ERROR_MARGIN beyond the window they
+ * write (struct kept_window), which the rule reads, so that a crop's error image is its
+ * window of the whole's.
  *
  * The pass values. A pixel's value is the mean over its n passes of
  *     y_i = e_i + P_i / c,   P_i = beta Phi_i / (pi R_i^2 M),
@@ -77,29 +82,48 @@
 
 #include "../base/vec3.h"
 #include "../image/image.h"
+#include "../photon/hit_points.h"
 
 #include "pixel_error.h"
+#include "render.h"
 
-#define SPPM_NO_POINT ((size_t)-1) /* a pixel whose eye path made no hit point this pass */
 #define SPPM_BIAS_RADIUS 2         /* pixels each side whose bias a pixel's b~ averages   */
 /* The pixels beyond a window its error image reads: the pool of pixel_error.h around
  * each, and the bias of SPPM_BIAS_RADIUS around each of those. */
 #define SPPM_ERROR_MARGIN (ERROR_POOL_RADIUS + SPPM_BIAS_RADIUS)
+#define NOT_WRITTEN ((size_t)-1)   /* a kept pixel outside the written window             */
 
-/* What 2009 keeps for its error image, per pixel of the window it renders (the written
- * one grown by the pool's margin, pixel_error.h), and per pass. */
+/* The window a progressive mode keeps: the one asked for, grown by a margin each side
+ * (inside the image; SPPM_ERROR_MARGIN with an error image, else 0), whose pixels' pass
+ * values the bound of a pixel near the written window's edge reads, so that a crop's
+ * error image is its window of the whole's. Only the asked window is written. */
+struct kept_window {
+    const struct render_settings *asked; /* borrowed: the window written              */
+    struct render_settings grown;        /* asked's settings, the window grown         */
+    int width, height;                   /* of the kept (grown) window                 */
+    int out_x0, out_y0;                  /* the written window within the kept one ... */
+    int out_width, out_height;           /* ... and its size                           */
+};
+
+/* asked's window grown by margin pixels each side, inside an image_width x image_height
+ * image. */
+void kept_window_init(struct kept_window *k, const struct render_settings *asked,
+                      int image_width, int image_height, int margin);
+
+/* Pixel `written` (row-major) of the written window, as an index of the kept one. */
+size_t kept_pixel(const struct kept_window *k, size_t written);
+
+/* Kept pixel `kept`'s index in the written window, or NOT_WRITTEN. */
+size_t written_pixel(const struct kept_window *k, size_t kept);
+
+/* What a progressive mode keeps for its error image, per pixel of the kept window. */
 struct sppm_error {
     int width, height;      /* of the window kept                                          */
     double *batches;        /* owned: 3 ERROR_BATCHES per pixel, the batches of the pass
                                values y_i (error_batches_add(), n = the pass)             */
     double *bias_batches;   /* owned: the same, of b_i = 2 (y_i - y'_i)                    */
-    uint32_t *inner_probes; /* owned: 2 per pixel, the disc probes that fell in the inner
-                               disc and those of them that found the surface              */
     struct vec3 *before;    /* owned: per pixel, what its eye paths saw and its direct term
                                summed before this pass                                    */
-    size_t *point;          /* owned: per pixel, its hit point this pass or SPPM_NO_POINT */
-    struct vec3 *inner_tau; /* owned: per hit point, this pass's f_r Phi' of the photons
-                               within R / sqrt(2) of it                                   */
 };
 
 /* Room for a window of width x height pixels, every sum zero. */
@@ -109,6 +133,16 @@ void sppm_error_create(struct sppm_error *e, int width, int height);
 void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 y,
                          struct vec3 y_inner);
 
+/* A progressive estimate's part of a pass value, seen through weight (the hit point's
+ * pixel weight, 2009's path weight): *p = weight Phi_i / (pi R_i^2 M) over its disc of
+ * radius R_i, and *p_inner = weight 2 Phi'_i / (pi R_i^2 M) over its inner disc of radius
+ * R_i / sqrt(2), Phi_i and Phi'_i the f_r Phi' the pass's photons gave the two (tau and
+ * inner_tau; hit_point_add_photon()); both zero for a radius too small to hold a photon
+ * (ppm_radiance()'s rule). */
+void sppm_error_photons(struct vec3 weight, double radius, struct vec3 tau,
+                        struct vec3 inner_tau, double photons_per_pass, struct vec3 *p,
+                        struct vec3 *p_inner);
+
 /* The error image of the pixels [x0, x1) x [y0, y1) of the kept window after `passes`
  * passes (>= ERROR_MIN_SPP) at confidence c, by the rule above, which reads the pixels
  * up to SPPM_ERROR_MARGIN beyond them; *bias: their b~, *block: the noise bound of each
@@ -117,6 +151,16 @@ void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 
 struct image *sppm_error_image(const struct sppm_error *e, long passes, int x0, int y0,
                                int x1, int y1, int wx0, int wy0, double confidence,
                                struct image **bias, struct image **block);
+
+/* The written window's error image, bias and block noise after `passes` passes, at the
+ * kept settings' confidence, into result. */
+void sppm_error_result(const struct sppm_error *e, const struct kept_window *k, long passes,
+                       struct render_result *result);
+
+/* --target-error's judgement (progressive.h) of mean, the written window's image after
+ * `passes` passes, by its error image: target_tally() against the asked settings. */
+int sppm_error_target(const struct sppm_error *e, const struct kept_window *k, long passes,
+                      const struct image *mean, struct render_counters *counters);
 
 void sppm_error_free(struct sppm_error *e);
 

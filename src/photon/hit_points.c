@@ -208,34 +208,46 @@ void hit_point_tree_free(struct hit_point_tree *tree)
     tree->n = 0;
 }
 
-/* The share of hp's members whose disc of radius r about their own hit holds p. */
-static double members_holding(const struct hit_point *hp, struct vec3 p, double r)
+/* The share of hp's members whose disc of radius r about their own hit holds p: those
+ * within scale |p - member|^2 <= r^2 (scale 1 the disc, 2 the inner disc of radius
+ * r / sqrt(2)). */
+static double members_holding(const struct hit_point *hp, struct vec3 p, double r,
+                              double scale)
 {
     struct vec3 from_x = vec3_sub(p, hp->x);
     double share = 0.0;
     for (uint32_t j = 0; j < hp->n_members; j++) {
         const struct hit_member *m = &hp->members[j];
-        if (vec3_length2(vec3_sub(from_x, vec3(m->dx, m->dy, m->dz))) <= r * r)
+        if (scale * vec3_length2(vec3_sub(from_x, vec3(m->dx, m->dy, m->dz))) <= r * r)
             share += m->share;
     }
     return share;
 }
 
 struct vec3 hit_point_add_photon(struct hit_point *hp, const struct photon_event *photon,
-                                 double photons_per_pass, int facing_test, int caustic_apart)
+                                 double photons_per_pass, int facing_test, int caustic_apart,
+                                 struct vec3 *inner)
 {
     if (facing_test && vec3_dot(hp->n, photon->normal) <= 0)
         return vec3_zero();
-    struct progressive_estimate *e =
-        photon->kind == PHOTON_CAUSTIC && caustic_apart ? &hp->caustic : &hp->global;
-    double share = e == &hp->caustic && hp->n_members > 0
-                       ? members_holding(hp, photon->position, e->radius)
-                       : vec3_length2(vec3_sub(photon->position, hp->x)) <= e->radius * e->radius;
+    int caustic = photon->kind == PHOTON_CAUSTIC && caustic_apart;
+    struct progressive_estimate *e = caustic ? &hp->caustic : &hp->global;
+    int members = caustic && hp->n_members > 0;
+    double r = e->radius, d2 = vec3_length2(vec3_sub(photon->position, hp->x));
+    double share = members ? members_holding(hp, photon->position, r, 1.0) : d2 <= r * r;
     if (!(share > 0))
         return vec3_zero(); /* within the hit point's reach, not within this estimate's disc */
     struct vec3 f = brdf_eval(hp->material, &hp->frame, hp->wo, photon->wi);
     struct vec3 added = vec3_mul(f, vec3_scale(photon->power, photons_per_pass * share));
     e->tau = vec3_add(e->tau, added);
     e->m_photons += share;
+    if (inner != NULL) { /* the inner disc's part, for an error image */
+        double within = members ? members_holding(hp, photon->position, r, 2.0) : 2 * d2 <= r * r;
+        struct vec3 part = within == share ? added
+                                           : vec3_mul(f, vec3_scale(photon->power,
+                                                                    photons_per_pass * within));
+        if (within > 0)
+            inner[caustic] = vec3_add(inner[caustic], part);
+    }
     return added;
 }
