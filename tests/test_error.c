@@ -199,7 +199,8 @@ static void test_error_refusals(struct check *t)
     };
     CHECK(t, refuses_options("pt", bad, sizeof bad / sizeof bad[0], OUT) == 0);
     static const char *const not_pt[][2] = {
-        {"--error " OUT "_e.pfm", "--error: only for --mode pt, 2008 or 2009"},
+        {"--error " OUT "_e.pfm", "--error: --mode 1996 states no bound yet: every pixel "
+                                  "shares its photon maps"},
     };
     CHECK(t, refuses_options("1996", not_pt, 1, OUT) == 0);
     CHECK(t, !file_exists(OUT "_e.pfm"));

@@ -231,10 +231,19 @@ static int check_error_2008(const struct options *o, const struct command_words 
 static int check_error_bound(const struct options *o, const struct command_words *words,
                              struct error *err)
 {
-    if ((o->error == NULL && o->target_error == 0) ||
-        (o->mode != MODE_PT && o->mode != MODE_SPPM2009 && o->mode != MODE_PPM2008))
-        return 0; /* check_modes() refuses the other modes */
+    if (o->error == NULL && o->target_error == 0)
+        return 0;
     const char *name = o->error != NULL ? "--error" : "--target-error";
+    if (o->mode == MODE_DIRECT)
+        return error_set(err, "", 0, "%s: --mode direct states no bound: it leaves out "
+                         "indirect light by design, a bias no spread of its samples shows; "
+                         "pt, 2008 and 2009 state one", name);
+    if (o->mode != MODE_PT && o->mode != MODE_SPPM2009 && o->mode != MODE_PPM2008)
+        return error_set(err, "", 0, "%s: --mode %s states no bound yet: every pixel shares "
+                         "its photon maps%s, whose noise and bias no spread of one pixel's "
+                         "samples shows; pt, 2008 and 2009 state one", name,
+                         mode_name(o->mode),
+                         o->mode == MODE_PHOTONS ? "" : " and irradiance cache");
     int passes = o->mode != MODE_PT, n = passes ? o->passes : o->spp;
     if (n < ERROR_MIN_SPP)
         return error_set(err, "", 0, "%s: needs %s >= %d (with %d, even the spread "

@@ -36,11 +36,9 @@ void ppm_error_add_pass(struct ppm_error *e, const struct hit_point_tree *tree,
                         const struct ppm_direct *direct)
 {
     size_t n = (size_t)e->values.width * (size_t)e->values.height;
-    for (size_t i = 0; i < n; i++) { /* e_i + d_i: what the pass's eye ray saw and took */
-        struct vec3 now = seen_so_far(emission_seen, direct, i);
-        e->y[i] = vec3_sub(now, e->values.before[i]);
-        e->y_inner[i] = e->y[i];
-        e->values.before[i] = now;
+    for (size_t i = 0; i < n; i++) { /* the photon parts, summed over the pixel's points */
+        e->y[i] = vec3_zero();
+        e->y_inner[i] = vec3_zero();
     }
     for (size_t k = 0; k < tree->n; k++) { /* the k-th made: w (P_i + C_i) */
         size_t j = tree->place[k];
@@ -55,8 +53,12 @@ void ppm_error_add_pass(struct ppm_error *e, const struct hit_point_tree *tree,
         }
     }
     memset(e->inner, 0, 2 * tree->n * sizeof *e->inner);
-    for (size_t i = 0; i < n; i++)
-        sppm_error_add_pass(&e->values, i, e->passes, e->y[i], e->y_inner[i]);
+    for (size_t i = 0; i < n; i++) { /* e_i + d_i: what the pass's eye ray saw and took */
+        struct vec3 now = seen_so_far(emission_seen, direct, i);
+        sppm_error_add_pass(&e->values, i, e->passes, vec3_sub(now, e->values.before[i]),
+                            e->y[i], e->y_inner[i]);
+        e->values.before[i] = now;
+    }
     e->passes++;
 }
 

@@ -54,7 +54,7 @@ struct ppm_error {
                                  and caustic estimates (hit_point_add_photon())        */
     struct vec3 *tau_before;  /* owned: 2 per hit point, its estimates' tau after the last
                                  update, which the pass's tau_M is added to            */
-    struct vec3 *y, *y_inner; /* owned: per pixel, the pass's values being summed        */
+    struct vec3 *y, *y_inner; /* owned: per pixel, the pass's P_i and P'_i being summed  */
     long passes;              /* passes added                                           */
 };
 

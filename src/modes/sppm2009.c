@@ -40,7 +40,8 @@
  * surface; here a pixel's radius is shared by hit points anywhere in its square, and one
  * short enough for all of them is noise for all of them (the figures:
  * src/modes/README.md). Instead each pass probes one point of its hit point's
- * disc (disc_probe(); the pass-th point of the pixel's own shuffled (0,2)-sequence), and
+ * disc (disc_probe_beside(), which also counts no point behind a wall; the pass-th point
+ * of the pixel's own shuffled (0,2)-sequence), and
  * the image divides the pixel's photon estimate by the share of its probes that found the
  * surface: tau / (pi R^2) is the sum over the passes of Phi_i / (pi R_i^2) (Eq. 12 keeps
  * it), each of which is on average the photon density times its disc's covered share c_i,
@@ -230,8 +231,8 @@ static void probe_disc(struct sppm *sppm, size_t pixel, long pass, const struct 
     sequence02_point(sequence02_shuffled((uint32_t)pass, (uint32_t)rng_next(&order)),
                      (uint32_t)shift, (uint32_t)(shift >> 32), &u, &v);
     struct disc_share *share = &sppm->coverage[pixel];
-    int covered = disc_probe(sppm->scene, s->p, s->ng, sppm->shared[pixel].radius, u,
-                             2 * PI * v);
+    int covered = disc_probe_beside(sppm->scene, s->p, s->ng, sppm->shared[pixel].radius,
+                                    u, 2 * PI * v);
     share->probes++;
     share->covered += (uint32_t)covered;
     if (sppm->want_error && u < 0.5) { /* within R / sqrt(2): the inner disc's probe too */
@@ -428,26 +429,35 @@ static double inner_share(const struct sppm *sppm, size_t i)
     return fmax(DISC_COVERAGE_FLOOR, (double)probes[1] / probes[0]);
 }
 
-/* With an error image, before the update: each pixel's pass values (sppm_error.h), y_i
- * = what its eye path saw and its direct light + P_i / c, P_i = beta Phi_i / (pi R_i^2 M)
- * its photon estimate (the pass's share of Eq. 13: tau / (pi R^2) is the sum over the
- * passes of Phi_i / (pi R_i^2), Eq. 12 keeping it, the top of the file), c its covered
- * share so far; y'_i the same over the inner disc of radius R_i / sqrt(2). */
+/* With an error image, before the update: each pixel's pass values (sppm_error.h), e_i
+ * what its eye path saw and its direct light, P_i = beta Phi_i / (pi R_i^2 M) its photon
+ * estimate (the pass's share of Eq. 13: tau / (pi R^2) is the sum over the passes of
+ * Phi_i / (pi R_i^2), Eq. 12 keeping it, the top of the file) and P'_i the same over the
+ * inner disc of radius R_i / sqrt(2); the covered shares divide them later
+ * (state_shares()). */
 static void add_pass_values(struct sppm *sppm, long pass)
 {
     struct sppm_error *e = &sppm->error;
     for (size_t i = 0; i < sppm->n_pixels; i++) {
-        struct vec3 y = vec3_sub(seen_so_far(sppm, i), e->before[i]), y_inner = y;
+        struct vec3 seen = vec3_sub(seen_so_far(sppm, i), e->before[i]);
+        struct vec3 p = vec3_zero(), p_inner = vec3_zero();
         if (sppm->point[i] != NO_POINT) {
             const struct hit_point *hp = &sppm->points[sppm->point[i]];
-            struct vec3 p, p_inner;
             sppm_error_photons(hp->weight, hp->global.radius, hp->global.tau,
                                sppm->inner_tau[sppm->point[i]], sppm->photons_per_pass, &p,
                                &p_inner);
-            y = vec3_add(y, vec3_scale(p, 1.0 / covered_share(sppm, i)));
-            y_inner = vec3_add(y_inner, vec3_scale(p_inner, 1.0 / inner_share(sppm, i)));
         }
-        sppm_error_add_pass(e, i, pass, y, y_inner);
+        sppm_error_add_pass(e, i, pass, seen, p, p_inner);
+    }
+}
+
+/* Before the error image is made: each pixel's covered shares as the image has them,
+ * c of its discs and c' of their inner discs (sppm_error_add_pass()). */
+static void state_shares(struct sppm *sppm)
+{
+    for (size_t i = 0; i < sppm->n_pixels; i++) {
+        sppm->error.shares[2 * i] = covered_share(sppm, i);
+        sppm->error.shares[2 * i + 1] = inner_share(sppm, i);
     }
 }
 
@@ -504,6 +514,7 @@ static int target_reached(void *context, double n_emitted)
     struct sppm *sppm = context;
     struct image *mean = image_create(sppm->kept.out_width, sppm->kept.out_height);
     evaluate_image(sppm, n_emitted, mean);
+    state_shares(sppm);
     int reached = sppm_error_target(&sppm->error, &sppm->kept, sppm->passes_done, mean,
                                     sppm->counters);
     image_free(mean);
@@ -572,6 +583,7 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     result.seconds = run.seconds;
     if (sppm.want_error) {
         clock_t start = clock();
+        state_shares(&sppm);
         sppm_error_result(&sppm.error, &sppm.kept, sppm.passes_done, &result);
         result.seconds += cpu_seconds(start);
         sppm_error_free(&sppm.error);

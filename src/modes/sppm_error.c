@@ -52,19 +52,37 @@ void sppm_error_create(struct sppm_error *e, int width, int height)
     size_t n = (size_t)width * (size_t)height;
     e->width = width;
     e->height = height;
-    e->batches = xcalloc(PIXEL_BATCHES * n, sizeof *e->batches, "sppm error batches");
-    e->bias_batches = xcalloc(PIXEL_BATCHES * n, sizeof *e->bias_batches,
-                              "sppm error batches");
+    e->seen_batches = xcalloc(PIXEL_BATCHES * n, sizeof *e->seen_batches, "sppm batches");
+    e->photon_batches = xcalloc(PIXEL_BATCHES * n, sizeof *e->photon_batches, "sppm batches");
+    e->inner_batches = xcalloc(PIXEL_BATCHES * n, sizeof *e->inner_batches, "sppm batches");
+    e->shares = xmalloc(2 * n, sizeof *e->shares, "sppm covered shares");
+    for (size_t i = 0; i < 2 * n; i++)
+        e->shares[i] = 1.0;
     e->before = xcalloc(n, sizeof *e->before, "sppm pass values");
 }
 
-void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 y,
-                         struct vec3 y_inner)
+void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 seen,
+                         struct vec3 p, struct vec3 p_inner)
 {
-    struct vec3 b = vec3_scale(vec3_sub(y, y_inner), 2.0);
-    double v[3] = {y.x, y.y, y.z}, w[3] = {b.x, b.y, b.z};
-    error_batches_add(e->batches + PIXEL_BATCHES * i, (int)pass, v);
-    error_batches_add(e->bias_batches + PIXEL_BATCHES * i, (int)pass, w);
+    double v[3] = {seen.x, seen.y, seen.z}, w[3] = {p.x, p.y, p.z};
+    double w_inner[3] = {p_inner.x, p_inner.y, p_inner.z};
+    error_batches_add(e->seen_batches + PIXEL_BATCHES * i, (int)pass, v);
+    error_batches_add(e->photon_batches + PIXEL_BATCHES * i, (int)pass, w);
+    error_batches_add(e->inner_batches + PIXEL_BATCHES * i, (int)pass, w_inner);
+}
+
+/* The batches of the pass values y_i = e_i + P_i / c and of their biases b_i = 2 (y_i -
+ * y'_i) = 2 (P_i / c - P'_i / c'), the shares as they stand (sppm_error_add_pass()). */
+static void pass_value_batches(const struct sppm_error *e, double *values, double *biases)
+{
+    size_t n = (size_t)e->width * (size_t)e->height;
+    for (size_t i = 0; i < n; i++)
+        for (size_t k = 0; k < PIXEL_BATCHES; k++) {
+            size_t j = PIXEL_BATCHES * i + k;
+            double p = e->photon_batches[j] / e->shares[2 * i];
+            values[j] = e->seen_batches[j] + p;
+            biases[j] = 2.0 * (p - e->inner_batches[j] / e->shares[2 * i + 1]);
+        }
 }
 
 void sppm_error_photons(struct vec3 weight, double radius, struct vec3 tau,
@@ -81,9 +99,9 @@ void sppm_error_photons(struct vec3 weight, double radius, struct vec3 tau,
     }
 }
 
-/* Each pixel's batches of b averaged over the pixels within SPPM_BIAS_RADIUS of it,
- * inside the window, into smoothed. */
-static void smooth_bias(const struct sppm_error *e, double *smoothed)
+/* Each pixel's batches of b (biases) averaged over the pixels within SPPM_BIAS_RADIUS of
+ * it, inside the window, into smoothed. */
+static void smooth_bias(const struct sppm_error *e, const double *biases, double *smoothed)
 {
     for (int y = 0; y < e->height; y++)
         for (int x = 0; x < e->width; x++) {
@@ -95,8 +113,7 @@ static void smooth_bias(const struct sppm_error *e, double *smoothed)
                     if (u < 0 || v < 0 || u >= e->width || v >= e->height)
                         continue;
                     const double *b =
-                        e->bias_batches + PIXEL_BATCHES * ((size_t)v * (size_t)e->width +
-                                                           (size_t)u);
+                        biases + PIXEL_BATCHES * ((size_t)v * (size_t)e->width + (size_t)u);
                     members++;
                     for (size_t k = 0; k < PIXEL_BATCHES; k++)
                         out[k] += b[k];
@@ -164,12 +181,15 @@ struct image *sppm_error_image(const struct sppm_error *e, long passes, int x0, 
     double *corrected = xmalloc(PIXEL_BATCHES * n, sizeof *corrected, "sppm error batches");
     double *sum = xcalloc(3 * n, sizeof *sum, "sppm error sums");
     int *count = xmalloc(n, sizeof *count, "sppm error counts");
-    smooth_bias(e, smoothed);
+    double *biases = xmalloc(PIXEL_BATCHES * n, sizeof *biases, "sppm bias batches");
+    pass_value_batches(e, corrected, biases);
+    smooth_bias(e, biases, smoothed);
+    xfree(biases);
     for (size_t i = 0; i < n; i++) { /* the batches of s = y - b~, and their sums */
         count[i] = (int)passes;
         for (size_t k = 0; k < PIXEL_BATCHES; k++) {
             size_t j = PIXEL_BATCHES * i + k;
-            corrected[j] = e->batches[j] - smoothed[j];
+            corrected[j] -= smoothed[j];
             sum[3 * i + k % 3] += corrected[j];
         }
     }
@@ -220,8 +240,10 @@ int sppm_error_target(const struct sppm_error *e, const struct kept_window *k, l
 
 void sppm_error_free(struct sppm_error *e)
 {
-    xfree(e->batches);
-    xfree(e->bias_batches);
+    xfree(e->seen_batches);
+    xfree(e->photon_batches);
+    xfree(e->inner_batches);
+    xfree(e->shares);
     xfree(e->before);
     memset(e, 0, sizeof *e);
 }

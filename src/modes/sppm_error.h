@@ -17,8 +17,9 @@
  * so Eq. 13's tau / (pi R^2 N_emitted) is the mean of the P_i. A pixel keeps its y_i in
  * batches as pt keeps its samples (pixel_error.h, error_batches_add(), n the pass): the
  * passes' photons are independent, their eye paths consecutive points of the pixel's
- * stratified sequence. c is the share so far (1 away from edges and corners, where the
- * image's own c stays 1 too).
+ * stratified sequence. c is the share the image divides by when the bound is made (1
+ * away from edges, corners and curved walls, and without coverage; sppm_error_add_pass()
+ * says why not pass i's own).
  *
  * The bias. A density estimate over a uniform disc of radius R errs on average by about
  * (1/2) m2 Lap(L) = Lap(L) R^2 / 8 (m2 = R^2 / 4, the disc's second moment along an
@@ -119,9 +120,12 @@ size_t written_pixel(const struct kept_window *k, size_t kept);
 /* What a progressive mode keeps for its error image, per pixel of the kept window. */
 struct sppm_error {
     int width, height;      /* of the window kept                                          */
-    double *batches;        /* owned: 3 ERROR_BATCHES per pixel, the batches of the pass
-                               values y_i (error_batches_add(), n = the pass)             */
-    double *bias_batches;   /* owned: the same, of b_i = 2 (y_i - y'_i)                    */
+    double *seen_batches;   /* owned: 3 ERROR_BATCHES per pixel, the batches of the pass
+                               values' e_i (error_batches_add(), n = the pass)            */
+    double *photon_batches; /* owned: the same, of P_i                                     */
+    double *inner_batches;  /* owned: the same, of the inner disc's P'_i                   */
+    double *shares;         /* owned: 2 per pixel, the covered shares c and c' the image
+                               divides P and P' by, as they stand (1 without coverage)    */
     struct vec3 *before;    /* owned: per pixel, what its eye paths saw and its direct term
                                summed before this pass                                    */
 };
@@ -129,9 +133,15 @@ struct sppm_error {
 /* Room for a window of width x height pixels, every sum zero. */
 void sppm_error_create(struct sppm_error *e, int width, int height);
 
-/* Pass `pass` (from 0) of pixel i: its value y and the inner disc's y'. */
-void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 y,
-                         struct vec3 y_inner);
+/* Pass `pass` (from 0) of pixel i: what its eye path saw and its direct term, e_i, and
+ * its photon estimate over the disc and over the inner disc, P_i and P'_i, before the
+ * covered shares divide them. Kept apart, so that y_i = e_i + P_i / c and y'_i = e_i +
+ * P'_i / c' are formed with the shares c, c' the image itself ends with (shares), not
+ * those of pass i: a share estimated from the probes so far swings over the first passes
+ * (one probe a pass), and where a disc is half covered (a sphere curving away from it)
+ * those passes' values stated bounds of 23% on the furnace, whose image is within 0.2%. */
+void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 seen,
+                         struct vec3 p, struct vec3 p_inner);
 
 /* A progressive estimate's part of a pass value, seen through weight (the hit point's
  * pixel weight, 2009's path weight): *p = weight Phi_i / (pi R_i^2 M) over its disc of

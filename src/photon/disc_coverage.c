@@ -54,6 +54,21 @@ int disc_probe(const struct scene *scene, struct vec3 x, struct vec3 n, double r
     return probe_finds_surface(scene, q, n, DISC_DEPTH * r);
 }
 
+int disc_probe_beside(const struct scene *scene, struct vec3 x, struct vec3 n, double r,
+                      double u, double phi)
+{
+    if (!disc_probe(scene, x, n, r, u, phi))
+        return 0;
+    struct vec3 t, b;
+    vec3_frame(n, &t, &b);
+    double rho = r * sqrt(u);
+    struct hit hit;
+    struct ray across = make_ray(vec3_madd(x, n, DISC_DEPTH * r),
+                                 vec3_add(vec3_scale(t, cos(phi)), vec3_scale(b, sin(phi))));
+    return rho <= 0 || !(scene_intersect(scene, across, rho, &hit) &&
+                         fabs(vec3_dot(hit.ng, n)) < DISC_SAME_SURFACE_COS);
+}
+
 double disc_coverage(const struct scene *scene, struct vec3 x, struct vec3 n, double r)
 {
     int covered = 0;

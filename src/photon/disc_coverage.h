@@ -49,6 +49,15 @@ double disc_coverage(const struct scene *scene, struct vec3 x, struct vec3 n, do
 int disc_probe(const struct scene *scene, struct vec3 x, struct vec3 n, double r, double u,
                double phi);
 
+/* As disc_probe(), and the point is not behind a wall: no surface turned 60 degrees or
+ * more from the plane crosses the segment from x to the point, DISC_DEPTH r above the
+ * plane. A disc that reaches past a wall finds the floor going on behind it, where no
+ * photon of the hit point's side lands; counted as covered, it darkened the pixels along
+ * closed-box's edges by 2-15% (--mode 2009 probes with this; the 2008 radius fit, which
+ * looks for surface past a wall, with disc_probe()). */
+int disc_probe_beside(const struct scene *scene, struct vec3 x, struct vec3 n, double r,
+                      double u, double phi);
+
 /* Whether a photon at `position`, arrived on a surface with unit normal `normal` on its
  * side, lies on the disc of radius r around x with unit normal n as the probes see the
  * disc: within DISC_DEPTH r of its plane, on a surface that continues the plane (turned
