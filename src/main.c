@@ -18,9 +18,11 @@
 #include "app/merge.h"
 #include "app/probe.h"
 #include "app/report.h"
+#include "app/suggest.h"
 #include "app/tile.h"
 #include "app/work_file.h"
 #include "base/alloc.h"
+#include "base/file_kind.h"
 #include "base/output.h"
 #include "image/compare.h"
 #include "image/error_image.h"
@@ -571,18 +573,38 @@ static void finish_run(struct run *run)
     scene_free(run->scene);
 }
 
+/* The commands beside rendering: photon NAME ARGS... runs run(argc - 1, argv + 1). */
+static const struct {
+    const char *name;
+    int (*run)(int argc, char **argv);
+} commands[] = {{"compare", compare_command}, {"plot", plot_command}, {"probe", probe_command},
+                {"merge", merge_command},     {"export", export_command}};
+#define N_COMMANDS (sizeof commands / sizeof commands[0])
+
+/* For the near miss of a command (app/suggest.h). */
+static const char *command_at(size_t i)
+{
+    return commands[i].name;
+}
+
+/* A first word that is no file but nearly a command ("comapre") is a mistyped command,
+ * not a scene: -1 with *err naming the command, else 0. */
+static int refuse_near_command(int argc, char **argv, struct error *err)
+{
+    if (argc < 2 || argv[1][0] == '-' || file_is_there(argv[1]))
+        return 0;
+    const char *command = nearest_name(argv[1], command_at, N_COMMANDS);
+    return command == NULL ? 0
+                           : error_set(err, "", 0, "'%s' is neither a scene file nor a "
+                                       "command: did you mean 'photon %s'?", argv[1],
+                                       command);
+}
+
 int main(int argc, char **argv)
 {
-    if (argc > 1 && strcmp(argv[1], "compare") == 0)
-        return compare_command(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "plot") == 0)
-        return plot_command(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "probe") == 0)
-        return probe_command(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "merge") == 0)
-        return merge_command(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "export") == 0)
-        return export_command(argc - 1, argv + 1);
+    for (size_t i = 0; argc > 1 && i < N_COMMANDS; i++)
+        if (strcmp(argv[1], commands[i].name) == 0)
+            return commands[i].run(argc - 1, argv + 1);
     struct run run;
     struct error err;
     memset(&run, 0, sizeof run);
@@ -597,6 +619,10 @@ int main(int argc, char **argv)
     run.work.records = NULL;
     run.work.illumination = NULL;
     run.start = clock();
+    if (refuse_near_command(argc, argv, &err) < 0) {
+        error_print(&err);
+        return 2;
+    }
     int parsed = parse_options(argc, argv, &run.o, &err);
     if (parsed != 0) {
         if (parsed < 0)

@@ -86,6 +86,33 @@ static void test_options(struct check *t)
     CHECK(t, photon("a.scene b.scene") == 2 && log_contains("more than one"));
 }
 
+/* truth: app/suggest.h's rule, worked by hand: --sp is 1 from --spp (an insertion), 2099 1
+ *   from 2009 (a swap), comapre 1 from compare (a swap) and no file; --frobnicate and pt's
+ *   slip ptt are near nothing (ptt is 1 from pt, whose 2 letters take no slip), and a
+ *   scene file named like a command is still rendered as one (scenes/cornell.scene copied
+ *   to merg, 1 from merge, in a folder of its own under build/).
+ * catches: the suggestion missing, the wrong name suggested, a suggestion for a word near
+ *   nothing, a file taken for a command. */
+static void test_near_misses(struct check *t)
+{
+    CHECK(t, photon("--sp 4 scenes/cornell.scene") == 2 &&
+             log_contains("unknown option '--sp' (did you mean '--spp'?)"));
+    CHECK(t, photon("--mode 2099 scenes/cornell.scene") == 2 &&
+             log_contains("unknown mode '2099' (did you mean '2009'?)"));
+    CHECK(t, photon("comapre a.pfm b.pfm") == 2 &&
+             log_contains("'comapre' is neither a scene file nor a command: did you mean "
+                          "'photon compare'?"));
+    CHECK(t, photon("--frobnicate scenes/cornell.scene") == 2 && !log_contains("did you mean"));
+    CHECK(t, photon("--mode ptt scenes/cornell.scene") == 2 && !log_contains("did you mean"));
+    char command[COMMAND_MAX];
+    snprintf(command, sizeof command, "rm -rf " OUT "_dir && mkdir " OUT "_dir && cp "
+             "scenes/cornell.scene " OUT "_dir/merg && p='%s' && case $p in /*) ;; *) "
+             "p=$PWD/$p ;; esac && cd " OUT "_dir && \"$p\" --no-progress --width 4 --height 4 "
+             "--spp 1 -o merg.pfm merg > merg.log 2>&1", photon_binary());
+    CHECK(t, run_command(command) == 0);
+    CHECK(t, run_command("rm -rf " OUT "_dir") == 0);
+}
+
 /* truth: an option given that does nothing with the others exits 2 with a message naming
  *   it and the setting that leaves it idle, and writes nothing (app/option_checks.c says
  *   why each is idle); each half alone is taken, and so is the idle option when the
@@ -671,6 +698,7 @@ static void test_failed_png_leaves_nothing(struct check *t)
 void test_cli(struct check *t)
 {
     RUN_TEST(t, test_options);
+    RUN_TEST(t, test_near_misses);
     RUN_TEST(t, test_idle_options_refused);
     RUN_TEST(t, test_bad_scene_leaves_no_output);
     RUN_TEST(t, test_no_assertion_reachable_from_scenes);

@@ -19,6 +19,7 @@
 #include "option_checks.h"
 #include "option_values.h"
 #include "presets.h"
+#include "suggest.h"
 
 /* A departure from a mode's paper is switched by a pair of options: --NAME, its default
  * side, and --no-NAME, the paper's (--paper's words are such --no-NAMEs, or an option
@@ -57,8 +58,7 @@ struct option_spec {
 #define FOR_ALL (FOR_DIRECT | FOR_PT | FOR_PHOTONS | FOR_1994 | FOR_1996 | FOR_2008 | FOR_2009)
 #define FOR_PHOTON_MAPS (FOR_PHOTONS | FOR_1994 | FOR_1996) /* the modes that keep maps */
 #define FOR_PROGRESSIVE (FOR_2008 | FOR_2009)
-#define FOR_SAMPLES (FOR_ALL & ~FOR_PROGRESSIVE) /* pixels that are means of independent
-                                                    samples */
+#define FOR_SAMPLES (FOR_ALL & ~FOR_PROGRESSIVE) /* pixels: means of independent samples */
 
 static const struct option_spec specs[] = {
     {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME",
@@ -392,17 +392,20 @@ static void print_help(enum help_format format)
     print_presets(format);
 }
 
+static const char *mode_at(size_t i) { return mode_name(every_mode[i]); } /* suggest.h */
+static const char *spec_at(size_t i) { return specs[i].name; }
+
 static int read_mode(const char *text, enum mode *mode, struct error *err)
 {
+    char hint[80];
     for (size_t i = 0; text != NULL && i < N_MODES; i++)
         if (strcmp(text, mode_name(every_mode[i])) == 0) {
             *mode = every_mode[i];
             return 0;
         }
-    return error_set(err, "", 0,
-                     "--mode: unknown mode '%s' (available: direct, pt, photons, 1994, 1996, 2008, "
-                     "2009)",
-                     text != NULL ? text : "nothing");
+    did_you_mean(text, mode_at, N_MODES, hint, sizeof hint);
+    return error_set(err, "", 0, "--mode: unknown mode '%s'%s (available: direct, pt, photons, "
+                     "1994, 1996, 2008, 2009)", text != NULL ? text : "nothing", hint);
 }
 
 static const struct option_spec *find_spec(const char *name)
@@ -531,7 +534,10 @@ static int apply_words(const struct words *w, struct options *o, int given[N_SPE
             if (apply_option(spec, argv, argc, &i, o, err) < 0)
                 return -1;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            return error_set(err, "", 0, "unknown option '%s' (see photon --help)", argv[i]);
+            char hint[80];
+            did_you_mean(argv[i], spec_at, N_SPECS, hint, sizeof hint);
+            return error_set(err, "", 0, "unknown option '%s'%s (see photon --help)", argv[i],
+                             hint);
         } else if (o->scene_path != NULL) {
             return error_set(err, "", 0, "more than one scene file: '%s' and '%s'",
                              o->scene_path, argv[i]);
@@ -555,11 +561,9 @@ static int apply_layer(const struct preset_words *layer, const char *name, struc
     return 0;
 }
 
-/* The defaults, the preset's words, --paper's, then the user's (argv[1 ...]). The mode,
- * the quality and --paper are known only once the user's words are read, so a first pass
- * reads them alone (refusing a bad one before anything else); the second starts again
- * from the defaults. given[] ends as the user's words left it (a layer names only options
- * of its own mode). Returns what apply_words() returns. */
+/* The defaults, the preset's words, --paper's, then the user's (argv[1 ...]): a first pass
+ * reads the user's alone for the mode, quality and --paper (refusing a bad word first), the
+ * second starts again from the defaults; given[] as the user's words leave it. */
 static int apply_preset_and_words(int argc, char **argv, struct options *o,
                                   int given[N_SPECS], struct error *err)
 {
@@ -623,14 +627,12 @@ int parse_options(int argc, char **argv, struct options *o, struct error *err)
     return check_modes(o, given, err); /* after the checks above, whose messages say why */
 }
 
-/* The options that change no pixel of the PFM: where outputs go, what is printed or shown,
- * the PPM's exposure, the window itself, checkpoints and reports, which only look at the
- * image as it grows, and the file of global work, which holds what the render would
- * otherwise compute itself, bit for bit (tests/test_merge.c). options_hash() covers every
- * other option, so one added to specs[] is hashed unless it is named here. --time-limit
- * is here because a hash cannot capture it: it makes the pixels depend on the machine's
- * speed, so tile.h records it apart. --quality is here because the options its words set
- * are hashed themselves: a preset and its words spelled out make the same tiles. */
+/* The options that change no pixel of the PFM: outputs, what is printed or shown, the
+ * window, checkpoints and reports (they only look at the image), and the file of global
+ * work, which holds what the render would compute itself, bit for bit (tests/test_merge.c).
+ * options_hash() covers every other option. --time-limit is here because a hash cannot
+ * capture it (the pixels depend on the machine's speed: tile.h records it apart);
+ * --quality because its words are hashed themselves, as if spelled out. */
 static const char *const outside_pixels[] = {
     "-o", "--crop", "--stats", "--progress", "--no-progress", "--exposure", "--reference",
     "--report", "--variance", "--error", "--block-error", "--checkpoint", "--time-limit",
