@@ -126,6 +126,9 @@ static int prepare_run(struct run *run, struct error *err)
             return -1;
     }
     scene_finish(run->scene, width, height);
+    if (run->scene->n_lights == 0) /* the sky is a light too (scene.h) */
+        fprintf(stderr, "photon: warning: %s has no light (no light line, no emitting "
+                "material, no background): every mode renders it black\n", o->scene_path);
     run->seconds_build = seconds_since(run->start);
     return 0;
 }

@@ -86,6 +86,29 @@ static void test_options(struct check *t)
     CHECK(t, photon("a.scene b.scene") == 2 && log_contains("more than one"));
 }
 
+/* truth: renders that cannot mean what they say are refused or named: a
+ *   variance image of one sample a pixel (all zero) is refused; a scene with no light
+ *   (scene.h: lights, emitters and the sky are all lights) renders black, and says so,
+ *   while the Cornell box, lit, says nothing of it.
+ * catches: the zero variance image written, the warning missing or given for a lit scene. */
+static void test_meaningless_renders_named(struct check *t)
+{
+    CHECK(t, photon("--spp 1 --variance " OUT "_v.pfm --width 4 --height 4 -o " OUT
+                    "_x.pfm scenes/cornell.scene") == 2 &&
+             log_contains("--variance: needs --spp >= 2"));
+    CHECK(t, !file_exists(OUT "_v.pfm"));
+    write_text_file(OUT "_dark.scene", "image 4 4\ncamera 0 0 -5  0 0 0  0 1 0  40\n"
+                                       "material w lambert 0.5 0.5 0.5\nsphere 0 0 0 1 w\n");
+    CHECK(t, photon("--no-progress -o " OUT "_x.pfm " OUT "_dark.scene") == 0 &&
+             log_contains("has no light (no light line, no emitting material, no "
+                          "background): every mode renders it black"));
+    CHECK(t, photon("--no-progress --width 4 --height 4 --spp 1 -o " OUT "_x.pfm "
+                    "scenes/cornell.scene") == 0 && !log_contains("no light"));
+    remove(OUT "_dark.scene");
+    remove(OUT "_x.pfm");
+    remove(OUT "_x.png");
+}
+
 /* truth: app/suggest.h's rule, worked by hand: --sp is 1 from --spp (an insertion), 2099 1
  *   from 2009 (a swap), comapre 1 from compare (a swap) and no file; --frobnicate and pt's
  *   slip ptt are near nothing (ptt is 1 from pt, whose 2 letters take no slip), and a
@@ -699,6 +722,7 @@ void test_cli(struct check *t)
 {
     RUN_TEST(t, test_options);
     RUN_TEST(t, test_near_misses);
+    RUN_TEST(t, test_meaningless_renders_named);
     RUN_TEST(t, test_idle_options_refused);
     RUN_TEST(t, test_bad_scene_leaves_no_output);
     RUN_TEST(t, test_no_assertion_reachable_from_scenes);

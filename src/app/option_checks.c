@@ -289,6 +289,9 @@ int check_combinations(const struct options *o, const struct command_words *word
         return error_set(err, "", 0, "--variance: not available with --mode %s, whose "
                                      "pixels are not means of independent samples",
                          mode_name(o->mode));
+    if (o->variance != NULL && o->spp < 2)
+        return error_set(err, "", 0, "--variance: needs --spp >= 2 (one sample a pixel has "
+                                     "no spread: its variance image would be all zero)");
     if (o->block_error != NULL && o->error == NULL)
         return error_set(err, "", 0, "--block-error: needs --error, whose bounds it sums "
                                      "over each block");
