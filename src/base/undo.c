@@ -7,6 +7,12 @@
  * while it is above 0 the main program may be changing the list, so the handler only
  * notes its signal in pending, for undo_release() to act on.
  */
+/* On a POSIX system, sigaction() (see catch_signal()); its declaration needs this first. */
+#if defined(__unix__) || defined(__APPLE__)
+#define _POSIX_C_SOURCE 200112L
+#define UNDO_SIGACTION 1
+#endif
+
 #include "undo.h"
 
 #include <assert.h>
@@ -102,11 +108,35 @@ static void stop(int sig)
     for (struct undo *u = head; u != NULL; u = u->next)
         act(u);
     signal(sig, SIG_DFL);
-    raise(sig); /* in the handler, delivered as it returns (the signal is blocked in it) */
+    raise(sig); /* delivered at once, or as the handler returns (sigaction() blocks sig) */
+}
+
+static void on_signal(int sig);
+
+/* Makes on_signal() sig's handler. C99's signal() may set the action back to the default
+ * as the handler is entered (glibc's does under -std=c99, System V's rule), so a second
+ * signal (a ^C pressed twice; timeout(1) signals the process, then its group) could end
+ * photon halfway through putting the files right. POSIX's sigaction() keeps the handler
+ * and blocks every stop signal while it runs; elsewhere the handler sets itself again as
+ * its first step, which leaves the few instructions before it open (undo.h). */
+static void catch_signal(int sig)
+{
+#ifdef UNDO_SIGACTION
+    struct sigaction action;
+    memset(&action, 0, sizeof action);
+    action.sa_handler = on_signal;
+    sigemptyset(&action.sa_mask);
+    for (size_t i = 0; i < sizeof stop_signals / sizeof stop_signals[0]; i++)
+        sigaddset(&action.sa_mask, stop_signals[i]);
+    sigaction(sig, &action, NULL);
+#else
+    signal(sig, on_signal);
+#endif
 }
 
 static void on_signal(int sig)
 {
+    catch_signal(sig);
     if (holds > 0)
         pending = sig;
     else
@@ -121,7 +151,7 @@ static void install(void)
     for (size_t i = 0; i < sizeof stop_signals / sizeof stop_signals[0]; i++) {
         void (*before)(int) = signal(stop_signals[i], SIG_IGN);
         if (before != SIG_IGN && before != SIG_ERR)
-            signal(stop_signals[i], on_signal);
+            catch_signal(stop_signals[i]);
     }
 }
 

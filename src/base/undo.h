@@ -27,7 +27,12 @@
  * list is made under undo_hold(), while which a signal only sets a flag and is acted on
  * at undo_release(). The holds are short and never wait (a rename, a link in a list).
  *
- * Not covered: SIGKILL and SIGSTOP, which no handler sees; and a crash (SIGSEGV, SIGBUS,
+ * On a POSIX system the handler is set by sigaction(), photon's one use of POSIX beyond
+ * C99: C99's signal() may set the default action back as a handler is entered, and a
+ * second signal then (^C pressed twice) would end photon before the files are right.
+ *
+ * Not covered: SIGKILL and SIGSTOP, which no handler sees; without POSIX, a second signal
+ * in the few instructions before the handler sets itself again; and a crash (SIGSEGV, SIGBUS,
  * SIGILL, SIGFPE), after which the list itself may be damaged: those leave a temporary
  * (NAME.XXXXXXXX.tmp), which no later run removes, as it cannot tell it from a user's.
  */
