@@ -13,7 +13,7 @@
 
 /* Which options the command line itself gave: given(table, name) is the index in argv of
  * the word that named the option called name, 0 when none did (a preset or --paper may
- * still have set it). options.c answers from its table. */
+ * still have set it). options.c answers from its table (option_table.c). */
 struct command_words {
     int (*given)(const void *table, const char *name);
     const void *table;

@@ -2,7 +2,7 @@
  * app/options.h -- the render command's options: `photon [options] SCENE`, read into
  * struct options (render_options.h).
  *
- * One table in options.c lists every option with its limits, default and help text;
+ * One table (option_table.c) lists every option with its limits, default and help text;
  * --help prints that table, so the help and the parser cannot disagree.
  */
 #ifndef PHOTON_OPTIONS_H
