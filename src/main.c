@@ -353,6 +353,7 @@ static struct progressive_settings progressive_settings(const struct options *o,
     ps.footprints = o->footprints;
     ps.fit_radius = o->fit_radius;
     ps.facing_test = o->facing_test;
+    ps.turn_photon_directions = o->turn_photon_directions;
     ps.direct_photons = !o->direct_light_samples;
     ps.report = report;
     ps.snapshot_every = o->checkpoint;

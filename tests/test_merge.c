@@ -62,8 +62,8 @@ static const char *const same_pixels_options[] = {
     "--mode 1994 --lobe-lights" /* the default */,
     "--mode 1996 --glossy-corner" /* the default */, "--mode 1994 --bounded-reach" /* the default */,
     "--mode 1996 --gradient-limit" /* the default */,
-    "--mode 2008 --fit-radius --merge-hit-points --resample-emission --facing-test" /* the
-                                                                                  defaults */,
+    "--mode 2008 --fit-radius --merge-hit-points --resample-emission --facing-test "
+    "--turn-photon-directions" /* the defaults */,
     "--mode 2009 --direct-light-samples" /* the default */,
 };
 static const char *const other_pixels_options[] = {
@@ -88,6 +88,7 @@ static const char *const other_pixels_options[] = {
     "--mode 2008 --footprints 2",
     "--mode 2008 --no-fit-radius", "--mode 2008 --no-merge-hit-points",
     "--mode 2008 --no-resample-emission", "--mode 2008 --no-facing-test",
+    "--mode 2008 --no-turn-photon-directions",
     "--mode 2008 --caustic-footprints 2", "--mode 2008 --no-caustic-footprints",
     "--mode pt --target-error 0.1", "--mode pt --target-error 0.1 --confidence 0.9",
 };

@@ -189,7 +189,8 @@ static void test_paper_renders_as_its_words(struct check *t)
          "--no-bounded-reach --no-gradient-limit --specular-spp 2"},
         {"--mode 2008 --passes 3 --photons-per-pass 5000 --spp 2",
          "--no-direct-light-samples --footprints 1 --no-caustic-footprints --no-fit-radius "
-         "--no-merge-hit-points --no-resample-emission --no-facing-test"},
+         "--no-merge-hit-points --no-resample-emission --no-facing-test "
+         "--no-turn-photon-directions"},
     };
     for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {
         char args[512];

@@ -232,6 +232,12 @@ const struct option_spec option_specs[] = {
      FOR_PROGRESSIVE},
     {"--no-facing-test", OPT_FLAG, FIELD(facing_test), 0, 0, "",
      "every photon within R counts (the papers leave the test open)", FOR_PROGRESSIVE},
+    {"--turn-photon-directions", OPT_FLAG, FIELD(turn_photon_directions), 0, 0, "",
+     "f_r sees a photon's direction turned by the rotation taking its surface's normal to "
+     "the hit point's, so none within R falls below a curved surface's horizon (the "
+     "default)", FOR_PROGRESSIVE},
+    {"--no-turn-photon-directions", OPT_FLAG, FIELD(turn_photon_directions), 0, 0, "",
+     "f_r of each photon's direction as it arrived, the papers'", FOR_PROGRESSIVE},
     {"--direct-light-samples", OPT_FLAG, FIELD(direct_light_samples), 0, 0, "",
      "direct light by a light sample at each hit point each pass, photons only after their "
      "first bounce (the default)", FOR_PROGRESSIVE},

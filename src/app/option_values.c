@@ -142,6 +142,7 @@ void option_defaults(struct options *o)
     o->merge_hit_points = pp.merge_hit_points;
     o->resample_emission = pp.resample_emission;
     o->facing_test = pp.progressive.facing_test;
+    o->turn_photon_directions = pp.progressive.turn_photon_directions;
     o->direct_light_samples = !pp.progressive.direct_photons;
     o->cone = -1;
     o->caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;

@@ -106,9 +106,9 @@ static const struct {
                        "--no-glossy-corner --no-bounded-reach --no-gradient-limit"},
     {MODE_PPM2008, "--no-direct-light-samples --footprints 1 --no-caustic-footprints "
                     "--no-fit-radius --no-merge-hit-points --no-resample-emission "
-                    "--no-facing-test"},
+                    "--no-facing-test --no-turn-photon-directions"},
     {MODE_SPPM2009, "--no-direct-light-samples --footprints 1 --no-fit-radius "
-                     "--no-disc-coverage --no-facing-test"},
+                     "--no-disc-coverage --no-facing-test --no-turn-photon-directions"},
 };
 
 /* Splits words, one space apart, into *out. */

@@ -58,6 +58,10 @@
  * its own (add_flux()); Sec. 3.1 takes every photon within R, and the sphere of radius R
  * also reaches through thin walls and onto the back of the hit point's own surface.
  *
+ * Turned photon directions (--turn-photon-directions): f_r sees a photon's direction
+ * turned by the rotation taking its surface's normal to the hit point's, so none within R
+ * falls below a curved surface's horizon (hit_point_add_photon()).
+ *
  * The error image (--error, --target-error; ppm_error.h): each pass hands every pixel's
  * pass values to 2009's batches (progressive_update()); the window kept grows by
  * SPPM_ERROR_MARGIN pixels each side, whose hit points only the error image reads
@@ -142,6 +146,7 @@ struct ppm_settings ppm_settings_default(void)
     ps.progressive.footprints = PPM_DEFAULT_FOOTPRINTS;
     ps.progressive.fit_radius = 1;
     ps.progressive.facing_test = 1;
+    ps.progressive.turn_photon_directions = 1;
     ps.progressive.direct_photons = 0;
     ps.progressive.report = NULL;
     ps.progressive.snapshot_every = 0;
@@ -454,7 +459,9 @@ static void add_flux(void *context, size_t i)
 {
     struct ppm *ppm = context;
     hit_point_add_photon(&ppm->points[i], ppm->photon, ppm->photons_per_pass,
-                         ppm->ps->progressive.facing_test, ppm->ps->caustic_footprints > 0,
+                         ppm->ps->progressive.facing_test,
+                         ppm->ps->progressive.turn_photon_directions,
+                         ppm->ps->caustic_footprints > 0,
                          ppm->want_error ? &ppm->error.inner[2 * i] : NULL);
 }
 

@@ -28,6 +28,8 @@ struct progressive_settings {
                                          surface (ppm_radius.c)                          */
     int facing_test;                  /* 1: a photon counts only at hit points whose
                                          surface faces its own                           */
+    int turn_photon_directions;       /* 1: f_r sees a photon's direction turned with its
+                                         surface onto the hit point's (hit_points.h)     */
     int direct_photons;               /* 1: the direct light from photons too, the papers'
                                          way; 0: by a light sample at each pass's hit
                                          points, photons only after their first bounce  */

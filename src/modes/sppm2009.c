@@ -62,7 +62,8 @@
  *   the fitted initial radius (--fit-radius) and R0 in footprints: the paper leaves R0
  *       to the user;
  *   the disc coverage (--disc-coverage), above;
- *   the facing test (--facing-test): a photon counts only where the surfaces face alike.
+ *   the facing test (--facing-test): a photon counts only where the surfaces face alike;
+ *   turned photon directions (--turn-photon-directions), as 2008's.
  *
  * The error image (--error, --target-error; sppm_error.h): each pass also hands every
  * pixel's pass value y_i and the value y'_i over the inner disc of radius R_i / sqrt(2)
@@ -394,7 +395,8 @@ static void add_flux(void *context, size_t i)
                                                       sppm->photon->normal))
         return;
     hit_point_add_photon(&sppm->points[i], sppm->photon, sppm->photons_per_pass,
-                         sppm->ps->progressive.facing_test, 0,
+                         sppm->ps->progressive.facing_test,
+                         sppm->ps->progressive.turn_photon_directions, 0,
                          sppm->want_error ? &sppm->inner_tau[i] : NULL);
 }
 

@@ -224,9 +224,20 @@ static double members_holding(const struct hit_point *hp, struct vec3 p, double 
     return share;
 }
 
+/* w turned by the rotation about from x to that takes unit from onto unit to, which face
+ * alike (from . to > 0): Rodrigues' formula with the axis from x to unnormalised,
+ * w cos + (k x w) + k (k . w) / (1 + cos), with cos = from . to. */
+static struct vec3 turned(struct vec3 w, struct vec3 from, struct vec3 to)
+{
+    struct vec3 k = vec3_cross(from, to);
+    double c = vec3_dot(from, to);
+    struct vec3 t = vec3_add(vec3_scale(w, c), vec3_cross(k, w));
+    return vec3_madd(t, k, vec3_dot(k, w) / (1.0 + c));
+}
+
 struct vec3 hit_point_add_photon(struct hit_point *hp, const struct photon_event *photon,
-                                 double photons_per_pass, int facing_test, int caustic_apart,
-                                 struct vec3 *inner)
+                                 double photons_per_pass, int facing_test,
+                                 int turn_directions, int caustic_apart, struct vec3 *inner)
 {
     if (facing_test && vec3_dot(hp->n, photon->normal) <= 0)
         return vec3_zero();
@@ -237,7 +248,10 @@ struct vec3 hit_point_add_photon(struct hit_point *hp, const struct photon_event
     double share = members ? members_holding(hp, photon->position, r, 1.0) : d2 <= r * r;
     if (!(share > 0))
         return vec3_zero(); /* within the hit point's reach, not within this estimate's disc */
-    struct vec3 f = brdf_eval(hp->material, &hp->frame, hp->wo, photon->wi);
+    double alike = vec3_dot(photon->normal, hp->n);
+    struct vec3 wi = turn_directions && alike > 0 ? turned(photon->wi, photon->normal, hp->n)
+                                                  : photon->wi;
+    struct vec3 f = brdf_eval(hp->material, &hp->frame, hp->wo, wi);
     struct vec3 added = vec3_mul(f, vec3_scale(photon->power, photons_per_pass * share));
     e->tau = vec3_add(e->tau, added);
     e->m_photons += share;

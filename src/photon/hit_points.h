@@ -87,15 +87,19 @@ struct photon_event;
  * that estimate's disc, or, with facing_test, when the two surfaces face apart (a photon
  * on the far side of a thin wall, or on the back of hp's own surface); a photon on a wall
  * at right angles is not counted either, which is why R0 stops at walls. No cosine: it
- * is in the photon's flux already. Returns what it added to tau (zero for nothing).
+ * is in the photon's flux already. With turn_directions, w_p is first turned by the
+ * rotation that takes the photon's normal onto hp's (where the two face alike): so on a
+ * curved surface f_r sees the photon arrive at the angle it met its own surface, and no
+ * photon within R falls below hp's horizon to be lost (the papers' f_r(x, w, w_p) takes
+ * w_p as it arrived). Returns what it added to tau (zero for nothing).
  * inner: NULL, or the sums of what the estimates' inner discs, of radius R / sqrt(2)
  * about x, took of it ([0] the global estimate's, [1] the caustic one's, touched only
  * with caustic_apart): for a caustic estimate with members by the share of them whose
  * inner discs hold the photon. From them an error image estimates the bias of the
  * estimates' discs (modes/sppm_error.h). */
 struct vec3 hit_point_add_photon(struct hit_point *hp, const struct photon_event *photon,
-                                 double photons_per_pass, int facing_test, int caustic_apart,
-                                 struct vec3 *inner);
+                                 double photons_per_pass, int facing_test,
+                                 int turn_directions, int caustic_apart, struct vec3 *inner);
 
 /* The node whose middle is m: what a search reads. */
 struct hit_point_node {
