@@ -35,7 +35,7 @@
 #                   equal CPU seconds, on both Cornell boxes: each one's seconds, relmse and
 #                   worst block, and the ratio of the errors (scripts/bench_pbrt.sh; about 6
 #                   minutes of CPU; ONLY=cornell or cornell-specular; development)
-#   make fuzz       libFuzzer targets for every reader (scene, NFF, OBJ, PFM, CSV, tile
+#   make fuzz       libFuzzer targets for every reader (scene, NFF, OBJ, PFM, OpenEXR, CSV, tile
 #                   record, work file) and the option parser, built with clang (development)
 #   make crosscheck our references against Blender's Cycles, where blender (3.4+) is
 #                   installed: each scene exported, rendered, compared (ONLY=NAME for

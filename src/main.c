@@ -12,6 +12,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "app/convert.h"
 #include "app/export.h"
 #include "app/option_values.h"
 #include "app/options.h"
@@ -54,6 +55,8 @@ struct run {
     clock_t start;
     double seconds_build;
     double seconds_work_file;          /* reading or writing it                        */
+    int checkpoint_failed;             /* a --checkpoint write failed: none is tried
+                                          again, and the run ends with status 1         */
 };
 
 static double seconds_since(clock_t start)
@@ -118,7 +121,7 @@ static int prepare_run(struct run *run, struct error *err)
                                      "limit of %d (each leaves a hit point of ~300 bytes)",
                          eye_rays, PPM_MAX_EYE_RAYS);
     if (o->reference != NULL) {
-        run->reference = pfm_read(o->reference, err);
+        run->reference = image_read(o->reference, err);
         if (run->reference == NULL)
             return error_set(err, err->file, err->line, "%s (--reference)", err->message);
         if (report_open(&run->report, o->report, run->reference, width, height, &run->rs,
@@ -127,8 +130,8 @@ static int prepare_run(struct run *run, struct error *err)
     }
     scene_finish(run->scene, width, height);
     if (run->scene->n_lights == 0) /* the sky is a light too (scene.h) */
-        fprintf(stderr, "photon: warning: %s has no light (no light line, no emitting "
-                "material, no background): every mode renders it black\n", o->scene_path);
+        message_print("photon: warning: %s has no light (no light line, no emitting "
+                      "material, no background): every mode renders it black", o->scene_path);
     run->seconds_build = seconds_since(run->start);
     return 0;
 }
@@ -161,22 +164,23 @@ static int write_block_error(const struct run *run, struct error *err)
     const struct render_result *r = &run->result;
     struct stated_error stated = {r->error, r->bias, r->block_noise};
     struct image *blocks = block_error_image(r->image, &stated, run->rs.x0, run->rs.y0);
-    int status = pfm_write(run->o.block_error, blocks, err);
+    int status = image_write(run->o.block_error, blocks, err); /* .exr or PFM */
     image_free(blocks);
     return status;
 }
 
-/* -o's PFM (the name ends in .pfm: parse_options) and the display image beside it, the
- * variance and, for a crop, its record; put in place together by render_command(). A
- * whole render writes no record, and removes one an earlier crop left (tile.h). */
+/* -o's PFM or OpenEXR file (the name ends in .pfm or .exr: read_output) and the display
+ * image beside it, the variance and, for a crop, its record; put in place together by
+ * render_command(). A whole render writes no record, and removes one an earlier crop left
+ * (tile.h). */
 static int write_outputs(struct run *run, struct error *err)
 {
     const struct options *o = &run->o;
     if (image_write_pair(o->output, o->display, run->result.image, o->exposure, err) < 0)
         return -1;
-    if (o->variance != NULL && pfm_write(o->variance, run->result.variance, err) < 0)
+    if (o->variance != NULL && image_write(o->variance, run->result.variance, err) < 0)
         return -1;
-    if (o->error != NULL && pfm_write(o->error, run->result.error, err) < 0)
+    if (o->error != NULL && image_write(o->error, run->result.error, err) < 0)
         return -1;
     if (o->block_error != NULL && write_block_error(run, err) < 0)
         return -1;
@@ -190,19 +194,27 @@ static int write_outputs(struct run *run, struct error *err)
     return 0;
 }
 
-/* --checkpoint: the image so far, written over -o's files; a failed write is reported and
- * the render goes on (the final write will say so again if the problem stays). */
+/* --checkpoint: the image so far, written over -o's files. A failed write is reported
+ * once and no checkpoint is tried again (a full disk would print the same line at every
+ * one); the render goes on to its final write, and the run ends with status 1. */
 static double write_snapshot(void *context, const struct image *image, long long work,
                              double seconds)
 {
     (void)work;
     (void)seconds;
     clock_t start = clock();
-    const struct options *o = context;
+    struct run *run = context;
+    const struct options *o = &run->o;
     struct error err;
+    if (run->checkpoint_failed)
+        return 0;
     if (image_write_pair(o->output, o->display, image, o->exposure, &err) < 0 ||
-        outputs_publish(&err) < 0)
+        outputs_publish(&err) < 0) {
         error_print(&err);
+        fprintf(stderr, "photon: --checkpoint: no further checkpoint is written; the "
+                "render goes on to its final image\n");
+        run->checkpoint_failed = 1;
+    }
     return seconds_since(start);
 }
 
@@ -394,7 +406,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
     struct sppm_settings settings_2009 = sppm_settings_default();
     struct jensen1996_settings settings_1996 = jensen1996_settings_default();
     struct jensen1994_settings settings_1994 = jensen1994_settings_default();
-    struct checkpoint snapshot = {write_snapshot, &run->o};
+    struct checkpoint snapshot = {write_snapshot, run};
     switch (run->o.mode) {
     case MODE_PT:
         if (pt_unreachable_light(run->scene) >= 0 && run->rs.error_confidence > 0) {
@@ -485,11 +497,11 @@ static struct render_result render_mode(struct run *run, struct error *err)
     case MODE_PPM2008: {
         int glossy = ppm_glossy_material(run->scene);
         if (glossy >= 0)
-            fprintf(stderr, "photon: warning: 2008's hit points estimate glossy lobes (the "
-                    "first in material '%s') from photons, whose few hits near a narrow "
-                    "lobe's peak speckle the image and fade slowly with the passes; 2009 "
-                    "follows those lobes from the eye\n",
-                    run->scene->materials[glossy].name);
+            message_print("photon: warning: 2008's hit points estimate glossy lobes (the "
+                          "first in material '%s') from photons, whose few hits near a "
+                          "narrow lobe's peak speckle the image and fade slowly with the "
+                          "passes; 2009 follows those lobes from the eye",
+                          run->scene->materials[glossy].name);
         settings_2008.progressive = progressive_settings(&run->o, checkpoint, &snapshot);
         settings_2008.caustic_footprints = run->o.caustic_footprints;
         settings_2008.merge_hit_points = run->o.merge_hit_points;
@@ -564,7 +576,7 @@ static int render_command(struct run *run, struct error *err)
         return 1; /* every output could be created before the render: a failed write */
     if (run->o.stats)
         print_stats(run);
-    return 0;
+    return run->checkpoint_failed ? 1 : 0; /* its outputs are whole; a checkpoint failed */
 }
 
 static void finish_run(struct run *run)
@@ -582,7 +594,8 @@ static const struct {
     const char *name;
     int (*run)(int argc, char **argv);
 } commands[] = {{"compare", compare_command}, {"plot", plot_command}, {"probe", probe_command},
-                {"merge", merge_command},     {"export", export_command}};
+                {"merge", merge_command},     {"export", export_command},
+                {"convert", convert_command}};
 #define N_COMMANDS (sizeof commands / sizeof commands[0])
 
 /* For the near miss of a command (app/suggest.h). */

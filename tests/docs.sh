@@ -8,11 +8,12 @@
 #  1c. Every section of a mode's paper that a document or a source file cites is one the
 #     paper has (tests/data/paper-sections.txt).
 #  2. Every option a document shows on a `./photon` command line is one that photon's
-#     --help (or its subcommand's usage) lists.
+#     --help (or, on a subcommand's line, the subcommand's --help) lists.
 #  3. The README's commands work as shown: every line of its ```sh blocks that starts with
 #     `./photon` or `mkdir` runs, in order, in an empty directory that sees only scenes/ and
 #     reference/, and must exit 0. Renders get `--quality preview` appended (an explicit
-#     option still wins over it), so the whole README runs in well under a minute.
+#     option still wins over it; one with its own --quality keeps it, as an option is
+#     given once), so the whole README runs in well under a minute.
 #  4. The reference suite's table (reference/suite.txt) and its files agree: every line has
 #     reference/NAME.pfm, NAME.png and, but for 2008 and 2009, NAME-var.pfm, and a
 #     measured row in reference/suite.md; every PFM in reference/ has its line; every
@@ -112,12 +113,19 @@ rm -f docs-sections.tmp
 
 # 2. Options shown on command lines.
 usage=$("$photon" --help 2>&1)
+# A subcommand's line may show its own options, listed by its own --help.
+subcommands="compare plot merge probe export convert"
 for doc in $docs; do
     [ -f "$doc" ] || continue
-    grep -E '^\s*(\./)?photon ' "$doc" | grep -oE '(^|\s)--[a-z][a-z0-9-]*' | tr -d ' \t' |
-        sort -u | while read -r option; do
-            printf '%s\n' "$usage" | grep -qe "$option" || echo "$doc shows $option, which photon --help does not list"
-        done
+    grep -E '^\s*(\./)?photon ' "$doc" | while read -r line; do
+        sub=$(printf '%s\n' "$line" | sed -E 's#^\s*(\./)?photon ##; s# .*##')
+        case " $subcommands " in *" $sub "*) own=$("$photon" "$sub" --help 2>&1) ;; *) own= ;; esac
+        printf '%s\n' "$line" | grep -oE '(^|\s)--[a-z][a-z0-9-]*' | tr -d ' \t' |
+            while read -r option; do
+                printf '%s\n%s\n' "$usage" "$own" | grep -qe "$option" ||
+                    echo "$doc shows $option, which photon --help does not list"
+            done
+    done | sort -u
 done > docs-options.tmp
 while read -r line; do problem "$line"; done < docs-options.tmp
 rm -f docs-options.tmp
@@ -133,7 +141,9 @@ n=0
 while read -r command; do
     n=$((n + 1))
     case $command in
-    "./photon compare"*|"./photon plot"*|"./photon merge"*|"./photon probe"*|"./photon export"*) run=$command ;;
+    "./photon compare"*|"./photon plot"*|"./photon merge"*|"./photon probe"*|"./photon export"*|\
+    "./photon convert"*) run=$command ;;
+    ./photon*--quality*) run="$command --no-progress" ;; # an option is given once
     ./photon*) run="$command --quality preview --no-progress" ;;
     *) run=$command ;;
     esac

@@ -21,7 +21,8 @@ struct room {
 static const struct room rooms[] = {
     {"base", test_base, 0},       {"image", test_image, 0},         {"compare", test_compare, 0},
     {"compare_verdict", test_compare_verdict, 0},
-    {"png", test_png, 0},
+    {"png", test_png, 0},       {"exr", test_exr, 0},
+    {"convert", test_convert, 0},
     {"plot", test_plot, 0},       {"geom", test_geom, 0},
     {"geom_primitives", test_geom_primitives, 0}, {"bvh", test_bvh, 0},
     {"scene", test_scene, 0},
@@ -48,7 +49,9 @@ static const struct room rooms[] = {
     {"export", test_export, 0},   {"export_blender", test_export_blender, 0},
     {"sppm", test_sppm, 0},       {"outputs", test_outputs, 0},
     {"foreign_files", test_foreign_files, 0},
-    {"numbers", test_numbers, 0}, {"sky", test_sky, 0},
+    {"numbers", test_numbers, 0}, {"number_syntax", test_number_syntax, 0},
+    {"given_once", test_given_once, 0}, {"messages", test_messages, 0},
+    {"sky", test_sky, 0},
     {"shading", test_shading, 0}, {"lens", test_lens, 0},
     {"spd", test_spd, 1},
 };

@@ -60,7 +60,7 @@ static size_t with_checksum(unsigned char *b, size_t n)
 static size_t example_bytes(unsigned char *b, size_t *maps_at)
 {
     static const unsigned char head[] = {
-        'p', 'h', 'o', 't', 'o', 'n', 'G', 'W', 2, 0, 0, 0,           /* magic, version  */
+        'p', 'h', 'o', 't', 'o', 'n', 'G', 'W', 3, 0, 0, 0,           /* magic, version  */
         0xef, 0xcd, 0xab, 0x89, 0x67, 0x45, 0x23, 0x01,               /* hash            */
         2, 0, 0, 0,                                                   /* two maps        */
         1, 1, 0, 0, 0, 0, 0, 0, 0,                                    /* one photon      */
@@ -168,7 +168,7 @@ static int example_refused(const unsigned char *bytes, size_t n, const char *mes
  * tolerance: none.
  * catches: a side of 0 or over its limit accepted (a map of no elements, or one as large
  *   as a damaged byte says), an infinite irradiance let through to the image, a count
- *   trusted before its bytes are there, a version 1 file read as version 2. */
+ *   trusted before its bytes are there, an older version's file read as this one. */
 static void test_bad_illumination_maps_are_refused(struct check *t)
 {
     static const struct {
@@ -196,9 +196,9 @@ static void test_bad_illumination_maps_are_refused(struct check *t)
     }
     n = example_bytes(bytes, &maps_at);
     CHECK(t, example_refused(bytes, n - 12, "truncated: 12 CI irradiances need 96 bytes, 92"));
-    bytes[8] = 1;
-    CHECK(t, example_refused(bytes, n, "version 1 of the saved work; this photon reads "
-                             "version 2"));
+    bytes[8] = 2;
+    CHECK(t, example_refused(bytes, n, "version 2 of the saved work; this photon reads "
+                             "version 3"));
 }
 
 /* Where example_bytes()'s values start: its photon's position, power and flags; its

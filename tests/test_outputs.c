@@ -241,7 +241,8 @@ static void test_inputs_must_be_regular_files(struct check *t)
         "compare /dev/zero /dev/zero",
         "plot /dev/zero -o " OUT "_x.svg",
         "merge -o " OUT "_x.pfm " OUT "_t.pfm",
-        TINY " --mode photons --load-photons /dev/zero -o " OUT "_x.pfm " SCENE,
+        "--no-progress --width 4 --height 4 --mode photons --load-photons /dev/zero -o " OUT
+            "_x.pfm " SCENE,
     };
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
         CHECK(t, photon(commands[i]) == 2 && log_contains("/dev/zero") &&
@@ -314,7 +315,9 @@ static void test_radiance_beyond_float_refused(struct check *t)
 }
 
 /* truth: compare --diff follows -o's rule: a PNG for NAME.png, a PPM for NAME.ppm, any
- *   other ending refused (status 2) before the images are read.
+ *   other ending refused (status 2) before the images are read. The 4 x 4 difference is
+ *   drawn with its colour bar (false_colour.h): 4 + 27 + 6 x 4 pixels wide for labels of
+ *   4 characters, and 60 tall, the least a bar takes.
  * catches: a P6 PPM written into a file named .png. */
 static void test_diff_format_by_name(struct check *t)
 {
@@ -323,7 +326,7 @@ static void test_diff_format_by_name(struct check *t)
     CHECK(t, photon("compare " OUT "_a.pfm " OUT "_a.pfm --diff " OUT "_d.png") == 0 &&
              file_contains(OUT "_d.png", "PNG"));
     CHECK(t, photon("compare " OUT "_a.pfm " OUT "_a.pfm --diff " OUT "_d.ppm") == 0 &&
-             file_contains(OUT "_d.ppm", "P6\n4 4\n255\n"));
+             file_contains(OUT "_d.ppm", "P6\n55 60\n255\n"));
     CHECK(t, photon("compare build/no_such.pfm " OUT "_a.pfm --diff " OUT "_d.jpg") == 2 &&
              log_contains("--diff") && !file_exists(OUT "_d.jpg"));
     clean();

@@ -232,7 +232,7 @@ static void test_rim_photon_switch(struct check *t)
     add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
     struct vec3 up = vec3(0, 0, 1), o = vec3(0, 0, 0);
     struct shading_frame frame = shading_frame_from_normal(up, 1, TRANSPORT_RADIANCE);
-    struct estimate_point at = {o, up, up, &scene->materials[0], &frame};
+    struct estimate_point at = {o, up, up, &scene->materials[0], &frame, 0};
     struct kdtree *map = line_of_photons();
     struct nearest *nn = nearest_create(8);
     double fr = 0.5 / PI, area = PI * 64;

@@ -416,6 +416,42 @@ static void test_plot_command_line(struct check *t)
     remove(log);
 }
 
+/* truth: mirror-caustic.scene's floor is the square |x|, |z| <= 1 at y = 0 and its light
+ *   a point: a probe line from z = -0.9 to 2.1 in 7 steps of 0.5 is on the floor for
+ *   z = -0.9 .. 0.6 (4 points) and off every surface for z = 1.1, 1.6, 2.1, where no
+ *   illumination map covers it (caustic_illumination: none) while the exact direct
+ *   irradiance of a point light has a value everywhere. plot reads what probe wrote: 4
+ *   points on caustic_illumination's line, the 3 left out counted in its legend, 7 on
+ *   exact_direct's; a field left empty is still refused (test_plot_refuses_bad_csv).
+ * catches: probe's empty cells, which plot refused as a whole file; a missing value
+ *   drawn as 0 or as a point at all; the count left out of the legend. */
+static void test_plot_reads_probe_off_the_surfaces(struct check *t)
+{
+    char csv[NAME_MAX_BYTES], svg_name[NAME_MAX_BYTES], log[NAME_MAX_BYTES];
+    char args[COMMAND_MAX];
+    temp_name(csv, sizeof csv, "plot", "probe.csv");
+    temp_name(svg_name, sizeof svg_name, "plot", "probe.svg");
+    temp_name(log, sizeof log, "plot", "probe.log");
+    snprintf(args, sizeof args, "scenes/mirror-caustic.scene --line 0.3 0 -0.9 0.3 0 2.1 "
+             "--samples 7 --photons 20000 -o %s", csv);
+    CHECK(t, photon_logged("probe", args, log) == 0);
+    char *text = read_text_file(csv);
+    CHECK(t, text != NULL && count_of(text, ",none\n") == 3 && count_of(text, "none") == 3);
+    free(text);
+    snprintf(args, sizeof args, "--linear --x z --y caustic_illumination --y exact_direct "
+             "%s -o %s", csv, svg_name);
+    CHECK(t, photon_logged("plot", args, log) == 0);
+    char *svg = read_text_file(svg_name);
+    double xy[2 * 8];
+    CHECK(t, svg != NULL && read_polyline(svg, 0, xy, 8) == 4 &&
+             read_polyline(svg, 1, xy, 8) == 7 &&
+             strstr(svg, "caustic_illumination (3 rows with none)") != NULL);
+    free(svg);
+    remove(csv);
+    remove(svg_name);
+    remove(log);
+}
+
 void test_plot(struct check *t)
 {
     RUN_TEST(t, test_log_axis_fit);
@@ -426,4 +462,5 @@ void test_plot(struct check *t)
     RUN_TEST(t, test_plot_refuses_bad_csv);
     RUN_TEST(t, test_plot_refuses_bad_sets);
     RUN_TEST(t, test_plot_command_line);
+    RUN_TEST(t, test_plot_reads_probe_off_the_surfaces);
 }

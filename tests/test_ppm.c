@@ -376,7 +376,7 @@ static uint64_t image_hash(const struct image *img)
 
 /* truth: the paper's way (--paper: photons the only light, R0 one footprint whole, a hit
  *   point for every eye ray, emission from the ray tracing pass's rays alone, every photon
- *   within R counted) makes images of both Cornell boxes (16 x 16, 2 eye rays, 4 passes
+ *   within R counted, f_r of its direction as it arrived) makes images of both Cornell boxes (16 x 16, 2 eye rays, 4 passes
  *   of 2,000 photons) that hash to what it made when each of the mode's departures got
  *   its switch (gcc; the images are the same doubles under every compiler). A change
  *   meant to move these pixels records new hashes and says why.
@@ -402,6 +402,7 @@ static void test_paper_way_unchanged(struct check *t)
         ps.merge_hit_points = 0;
         ps.resample_emission = 0;
         ps.progressive.facing_test = 0;
+        ps.progressive.turn_photon_directions = 0;
         struct render_counters counters = {0};
         struct ppm_stats stats;
         struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);

@@ -36,7 +36,7 @@ static double point_over_plane_ratio(const struct scene *scene, size_t n, size_t
     double sum = 0;
     for (int i = 0; i < 17 * 17; i++) {
         struct vec3 x = vec3(-2 + 0.25 * (i % 17), 0, -2 + 0.25 * (i / 17));
-        struct estimate_point at = {x, up, up, &scene->materials[0], &frame};
+        struct estimate_point at = {x, up, up, &scene->materials[0], &frame, 0};
         double d = sqrt(1 + x.x * x.x + x.z * x.z);
         double truth = 0.5 * 1000 * 1 / (4 * PI * PI * d * d * d); /* rho Phi h/(4 pi^2 d^3) */
         sum += radiance_estimate(map, &at, &es, nn).y / truth;
@@ -111,7 +111,7 @@ static void test_cone_filter_uniform(struct check *t)
         struct tally m = {0, 0, 441};
         for (int i = 0; i < 441; i++) {
             struct vec3 x = vec3(0.1 + 0.04 * (i % 21), 0.1 + 0.04 * (i / 21), 0);
-            struct estimate_point at = {x, up, vec3(0, 0.6, 0.8), &scene->materials[0], &frame};
+            struct estimate_point at = {x, up, vec3(0, 0.6, 0.8), &scene->materials[0], &frame, 0};
             tally_add(&m, radiance_estimate(map, &at, &es, nn).x / truth);
         }
         CHECK_CLOSE(t, m.sum / 441, 1.0, 3 * tally_se(&m) / 441);
@@ -135,7 +135,7 @@ static void test_estimate_boundaries(struct check *t)
     add_test_material(scene, MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3_zero());
     struct vec3 up = vec3(0, 0, 1);
     struct shading_frame frame = shading_frame_from_normal(up, 1, TRANSPORT_RADIANCE);
-    struct estimate_point at = {vec3(0, 0, 0), up, up, &scene->materials[0], &frame};
+    struct estimate_point at = {vec3(0, 0, 0), up, up, &scene->materials[0], &frame, 0};
     struct estimate_settings es = {10, HUGE_VAL, 1.0, 0, 0};
     struct nearest *nn = nearest_create(10);
     struct kdtree *empty = balance_kdtree(NULL, 0);

@@ -9,6 +9,8 @@
 void test_base(struct check *t);   /* test_base.c: rng, allocation, errors       */
 void test_image(struct check *t);  /* test_image.c: PFM/PPM, compare metrics      */
 void test_png(struct check *t);    /* test_png.c: PNG files, outside readers      */
+void test_convert(struct check *t); /* test_convert.c: photon convert, compare --diff's picture */
+void test_exr(struct check *t);    /* test_exr.c: OpenEXR files, inflate          */
 void test_compare(struct check *t); /* test_compare.c: per-pixel statistical test */
 void test_plot(struct check *t);   /* test_plot.c: CSV reading, SVG plots         */
 void test_geom(struct check *t);   /* test_geom.c: the BVH against brute force    */
@@ -55,6 +57,9 @@ void test_export_blender(struct check *t); /* test_export_blender.c: the Blender
 void test_outputs(struct check *t); /* test_outputs.c: outputs and inputs of a command */
 void test_foreign_files(struct check *t); /* test_foreign_files.c: files photon did not make */
 void test_numbers(struct check *t); /* test_numbers.c: numbers, ranges, messages       */
+void test_number_syntax(struct check *t); /* test_number_syntax.c: every reader, one syntax */
+void test_given_once(struct check *t); /* test_given_once.c: an option given twice */
+void test_messages(struct check *t); /* test_messages.c: what photon prints */
 void test_sky(struct check *t);     /* test_sky.c: the background as a light, every mode */
 void test_error(struct check *t);   /* test_error.c: error images against closed forms */
 void test_error_2009(struct check *t); /* test_error_2009.c: 2009's error images, the same */

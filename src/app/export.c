@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/option_once.h"
 #include "../base/output.h"
 #include "option_values.h"
 
@@ -199,14 +200,15 @@ void export_scene_free(struct export_scene *es)
 
 /* ---- what the writers share ---- */
 
+/* Material names come from the scene file: message_print() quotes their control bytes. */
 void export_note(const char *format, ...)
 {
+    char note[ERROR_MESSAGE_MAX];
     va_list ap;
     va_start(ap, format);
-    fputs("photon: export: ", stderr);
-    vfprintf(stderr, format, ap);
-    fputc('\n', stderr);
+    vsnprintf(note, sizeof note, format, ap);
     va_end(ap);
+    message_print("photon: export: %s", note);
 }
 
 struct glossy_blend export_glossy_blend(const struct material *m)
@@ -310,12 +312,15 @@ static int parse_export_args(int argc, char **argv, struct export_args *a, struc
     a->format = EXPORT_PBRT;
     a->spp = EXPORT_DEFAULT_SPP;
     a->channel = -1;
+    struct option_once once = {{0}, 0};
     for (int i = 1; i < argc; i++) {
         const char *opt = argv[i];
         int takes_value = strcmp(opt, "--format") == 0 || strcmp(opt, "-o") == 0 ||
                           strcmp(opt, "--spp") == 0 || strcmp(opt, "--channel") == 0;
         if (takes_value && i + 1 == argc)
             return error_set(err, "", 0, "export: %s needs a value; " EXPORT_USAGE, opt);
+        if (takes_value && option_once(&once, "export", opt, err) < 0)
+            return -1;
         if (strcmp(opt, "--format") == 0) {
             if (parse_format(argv[++i], &a->format, err) < 0)
                 return -1;

@@ -16,12 +16,14 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/option_once.h"
 #include "../base/output.h"
 #include "../image/image.h"
 #include "option_values.h"
 #include "tile.h"
 
-#define MERGE_USAGE "usage: photon merge -o FULL.pfm TILE.pfm [TILE.pfm ...] [--exposure E]"
+#define MERGE_USAGE "usage: photon merge -o FULL.pfm|.exr TILE.pfm|.exr [TILE ...] " \
+                    "[--exposure E]"
 #define MERGE_MAX_GAPS 4 /* missing windows named in one message; the rest are counted */
 
 struct merge_args {
@@ -40,12 +42,15 @@ static int parse_merge_args(int argc, char **argv, struct merge_args *args, stru
     args->exposure = 1.0;
     args->tiles = xmalloc((size_t)argc, sizeof *args->tiles, "tile names");
     args->n_tiles = 0;
+    struct option_once once = {{0}, 0};
     for (int i = 1; i < argc; i++) {
         const char *value = i + 1 < argc ? argv[i + 1] : NULL;
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             printf("%s\n\nPuts crops (renders with --crop, each with its FILE.pfm.window) "
                    "back into the\nwhole image: FULL.pfm and FULL.png beside it (-o FULL.png "
-                   "means the same; -o\nFULL.ppm writes FULL.pfm and FULL.ppm). Refused, with "
+                   "means the same; -o\nFULL.ppm writes FULL.pfm and FULL.ppm; -o FULL.exr, "
+                   "OpenEXR in place of the PFM;\ntiles are PFM or OpenEXR files). Refused, "
+                   "with "
                    "exit status 2 and nothing\nwritten: tiles of different images, scenes, "
                    "modes, seeds or options; tiles\nrendered with --time-limit; overlaps, and "
                    "a tile given twice; gaps (named as\n--crop windows to render); a PFM "
@@ -53,6 +58,9 @@ static int parse_merge_args(int argc, char **argv, struct merge_args *args, stru
                    MERGE_USAGE);
             return 1;
         }
+        if ((strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--exposure") == 0) &&
+            option_once(&once, "merge", argv[i], err) < 0)
+            return -1;
         if (strcmp(argv[i], "-o") == 0 &&
             read_output(value, args->output, &args->display, err) < 0)
             return -1;
@@ -199,7 +207,7 @@ static int paste_tiles(const struct merge_args *args, const struct tile_record *
 {
     for (int i = 0; i < args->n_tiles; i++) {
         const struct tile_record *r = &records[i];
-        struct image *tile = pfm_read(args->tiles[i], err);
+        struct image *tile = image_read(args->tiles[i], err);
         if (tile == NULL)
             return error_set(err, err->file, err->line, "%s (tile %d)", err->message, i + 1);
         if (tile->width != r->x1 - r->x0 || tile->height != r->y1 - r->y0) {

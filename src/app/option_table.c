@@ -16,7 +16,7 @@
 
 const struct option_spec option_specs[] = {
     {"--mode", OPT_MODE, FIELD(mode), 0, 0, "NAME",
-     "rendering mode: direct, pt, photons, 1994, 1996, 2008 or 2009 (default direct)", FOR_ALL},
+     "rendering mode: direct, pt, photons, 1994, 1996, 2008 or 2009 (default pt)", FOR_ALL},
     {"--quality", OPT_QUALITY, FIELD(quality), 0, 0, "NAME",
      "preview, default or reference: the mode's preset of options (listed below), applied "
      "before the other options given (default default)", FOR_ALL},
@@ -24,9 +24,10 @@ const struct option_spec option_specs[] = {
      "the paper as written: every departure of the mode off, before the other options "
      "given (listed below: a departure's switch is --NAME, the default, and --no-NAME, the "
      "paper's; or the paper's value of a number)", FOR_ALL},
-    {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm|.png|.ppm",
-     "output: FILE.pfm (linear radiance) and FILE.png beside it for display; -o FILE.ppm "
-     "writes FILE.ppm in place of the PNG (default: SCENE's name)", FOR_ALL},
+    {"-o", OPT_OUTPUT, FIELD(output), 0, 0, "FILE.pfm|.exr|.png|.ppm",
+     "output: FILE.pfm (linear radiance) and FILE.png beside it for display; -o FILE.exr "
+     "writes OpenEXR in place of the PFM, -o FILE.ppm FILE.ppm in place of the PNG "
+     "(default: SCENE's name)", FOR_ALL},
     {"--seed", OPT_SEED, FIELD(seed), 0, 0, "N", "random seed, 0..2^64-1 (default 1)", FOR_ALL},
     {"--spp", OPT_INT, FIELD(spp), 1, MAX_SPP, "N",
      "camera samples per pixel (default 16; 1994: 64; 1996: 128; 2008: eye rays per pixel, "
@@ -40,7 +41,7 @@ const struct option_spec option_specs[] = {
      "image height (default: scene's)", FOR_ALL},
     {"--crop", OPT_CROP, FIELD(crop), 0, MAX_IMAGE_SIDE, "X0 Y0 X1 Y1",
      "render only pixels X0 <= x < X1, Y0 <= y < Y1 of the whole image (0,0 = top left); "
-     "also writes FILE.pfm.window for photon merge", FOR_ALL},
+     "also writes FILE.pfm.window (FILE.exr.window) for photon merge", FOR_ALL},
     {"--adaptive", OPT_REAL, FIELD(adaptive), 0, 1e6, "E",
      "stop sampling a pixel (after 4 samples, at powers of two) once its mean's standard "
      "error is at most E times the mean (Jensen & Christensen 1994); 0 = off (default 0); "
@@ -52,18 +53,18 @@ const struct option_spec option_specs[] = {
      "CPU seconds (C's clock()): the pass running then finishes, so the render takes a "
      "pass longer; the mode's set-up (photon maps, the cache) is not cut (default: none)",
      FOR_ALL},
-    {"--reference", OPT_FILE, FIELD(reference), 0, 0, "REF.pfm",
+    {"--reference", OPT_FILE, FIELD(reference), 0, 0, "REF.pfm|.exr",
      "with --report: the converged image to measure error against (whole-image size)", FOR_ALL},
     {"--report", OPT_FILE, FIELD(report), 0, 0, "FILE.csv",
      "write seconds,work,rmse,relmse at work 1, 2, 4, ... and at the end", FOR_ALL},
-    {"--variance", OPT_FILE, FIELD(variance), 0, 0, "FILE.pfm",
+    {"--variance", OPT_FILE, FIELD(variance), 0, 0, "FILE.pfm|.exr",
      "also write each pixel's variance of the mean (needs --spp >= 2)", FOR_SAMPLES},
-    {"--error", OPT_FILE, FIELD(error), 0, 0, "FILE.pfm",
+    {"--error", OPT_FILE, FIELD(error), 0, 0, "FILE.pfm|.exr",
      "also write each pixel's bound on |pixel - truth| at --confidence, from its samples' "
      "and its 5 x 5 neighbours' spread (needs --spp >= 16); 2008, 2009: from its passes' "
      "spread and, added, its photon estimates' bias, from discs of half the area (needs "
      "--passes >= 16)", FOR_PT | FOR_PROGRESSIVE},
-    {"--block-error", OPT_FILE, FIELD(block_error), 0, 0, "FILE.pfm",
+    {"--block-error", OPT_FILE, FIELD(block_error), 0, 0, "FILE.pfm|.exr",
      "with --error: also write each 16 x 16 block's bound on |block mean - truth|, one pixel "
      "a block, for photon compare --test-block-error (not with --crop)", FOR_PT | FOR_PROGRESSIVE},
     {"--confidence", OPT_REAL_BETWEEN, FIELD(confidence), 0, 1, "C",

@@ -96,13 +96,16 @@ int read_output(const char *text, char *output, enum display_format *display,
     size_t n = text != NULL ? strlen(text) : 0;
     const char *ending = n >= 5 ? text + n - 4 : ""; /* NAME is not empty */
     int ppm = strcmp(ending, display_suffix(DISPLAY_PPM)) == 0;
-    if (!ppm && strcmp(ending, ".pfm") != 0 && strcmp(ending, display_suffix(DISPLAY_PNG)) != 0)
-        return error_set(err, "", 0, "-o: expected a file name ending in .pfm, .png or .ppm, "
-                         "got '%s'", text != NULL ? text : "nothing");
+    int exr = strcmp(ending, ".exr") == 0;
+    if (!ppm && !exr && strcmp(ending, ".pfm") != 0 &&
+        strcmp(ending, display_suffix(DISPLAY_PNG)) != 0)
+        return error_set(err, "", 0, "-o: expected a file name ending in .pfm, .exr, .png or "
+                         ".ppm, got '%s'", text != NULL ? text : "nothing");
     if (n >= OUTPUT_PATH_MAX)
         return error_set(err, "", 0, "-o: the file name is too long");
     *display = ppm ? DISPLAY_PPM : DISPLAY_PNG;
-    sprintf(output, "%.*s.pfm", (int)(n - 4), text); /* the PFM is always written */
+    /* The floats are always written: to FILE.exr when named so (OpenEXR), else FILE.pfm. */
+    sprintf(output, "%.*s%s", (int)(n - 4), text, exr ? ".exr" : ".pfm");
     return 0;
 }
 
@@ -121,7 +124,7 @@ void default_output(const char *scene_path, char *output)
 void option_defaults(struct options *o)
 {
     memset(o, 0, sizeof *o);
-    o->mode = MODE_DIRECT;
+    o->mode = MODE_PT;
     o->quality = QUALITY_DEFAULT;
     o->seed = 1;
     o->spp = 0;

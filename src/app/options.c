@@ -85,7 +85,8 @@ static void print_help(enum help_format format)
         help_section(format, "synopsis");
     help_lines(format, "usage: photon [options] SCENE       render SCENE: a scene file, or an NFF file by its\n"
            "                                    .nff name (see README: Scene files)\n"
-           "       photon compare A.pfm B.pfm [--diff OUT.png|.ppm] [--block N] [--alpha ALPHA]\n"
+           "       photon compare A.pfm|.exr B.pfm|.exr [--diff OUT.png|.ppm] [--diff-absolute]\n"
+           "                      [--block N] [--alpha ALPHA]\n"
            "                      [--ref-variance VB.pfm | --ref-error EB.pfm] [--confidence C]\n"
            "                      [--test-variance VA.pfm | --test-error EA.pfm] [--exit-status]\n"
            "                      (photon compare --help: the test and every field it prints)\n"
@@ -95,7 +96,9 @@ static void print_help(enum help_format format)
            "       photon probe SCENE --line X0 Y0 Z0 X1 Y1 Z1 --samples N -o FILE.csv\n"
            "                   [--normal NX NY NZ] [--photons N] [--gather N]\n"
            "                   [--differential R] [--seed S]   (irradiance along a line)\n"
-           "       photon merge -o FULL.pfm TILE.pfm [TILE.pfm ...] [--exposure E]\n"
+           "       photon merge -o FULL.pfm|.exr TILE.pfm|.exr [TILE ...] [--exposure E]\n"
+           "       photon convert IN.pfm|.exr -o OUT.png|.ppm [--exposure E | --false-colour\n"
+           "                      [--min V] [--max V] [--log]]   (pictures of images and errors)\n"
            "       photon export --format pbrt|mitsuba|blender SCENE -o OUT [--spp N]\n"
            "                    [--channel R|G|B]   (the scene for pbrt-v4, Mitsuba 3 or\n"
            "                    Blender; see README: Rendering our scenes elsewhere)\n");
@@ -233,6 +236,30 @@ struct words {
     int first, n;
 };
 
+/* The argv index of an earlier word than i that gave spec, an option with a value; 0
+ * when none. A second value would silently replace the first (--diff a.png --diff b.png
+ * writes b.png alone). A switch is no such option: its last word states the whole
+ * setting, and --no-NAME exists to undo an earlier --NAME (a script's, an alias's), as
+ * a switch repeated says the same thing twice; so switches are never refused here. */
+static int earlier_word(const struct option_spec *spec, const int given[N_OPTION_SPECS], int i)
+{
+    int k = (int)(spec - option_specs);
+    int valued = spec->kind != OPT_FLAG && spec->kind != OPT_OFF;
+    return valued && given[k] > 0 && given[k] != i ? given[k] : 0;
+}
+
+/* The option at argv[i] with the values it takes, as typed ("--spp 4"), into text[size]. */
+static void option_words(char **argv, int argc, int i, char *text, size_t size)
+{
+    const struct option_spec *spec = find_spec(argv[i]);
+    int n_values = spec->kind == OPT_FLAG || spec->kind == OPT_OFF ? 0
+                   : spec->kind == OPT_CROP                         ? 4
+                                                                    : 1;
+    size_t n = (size_t)snprintf(text, size, "%s", argv[i]);
+    for (int k = 1; k <= n_values && i + k < argc && n < size; k++)
+        n += (size_t)snprintf(text + n, size - n, " %s", argv[i + k]);
+}
+
 /* Applies the words w to *o: options by option_specs[], any other word as the scene file; given[k]
  * becomes the index of the word that gave option_specs[k]. Returns 1 once --help or --version is
  * printed, -1 with *err filled on a bad word, else 0. */
@@ -252,6 +279,14 @@ static int apply_words(const struct words *w, struct options *o, int given[N_OPT
             return 1;
         }
         const struct option_spec *spec = find_spec(argv[i]);
+        int earlier = spec != NULL ? earlier_word(spec, given, i) : 0;
+        if (earlier > 0) {
+            char now[160], before[160];
+            option_words(argv, argc, i, now, sizeof now);
+            option_words(argv, argc, earlier, before, sizeof before);
+            return error_set(err, "", 0, "%s: given after %s; give the option once", now,
+                             before);
+        }
         if (spec != NULL) {
             given[spec - option_specs] = i;
             if (apply_option(spec, argv, argc, &i, o, err) < 0)

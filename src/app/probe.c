@@ -7,7 +7,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "../base/option_once.h"
 #include "../base/output.h"
+#include "../image/csv.h"
 #include "../modes/jensen1994_maps.h"
 #include "../modes/photons.h"
 #include "../photon/estimate.h"
@@ -50,12 +52,14 @@ static int read_numbers(int argc, char **argv, int *i, int count, double *values
 
 /* One option at argv[*i] (advancing *i past its values); -1 with *err when unknown. */
 static int read_probe_option(int argc, char **argv, int *i, struct probe_args *args,
-                             struct error *err)
+                             struct option_once *once, struct error *err)
 {
     const char *name = argv[*i];
     const char *value = *i + 1 < argc ? argv[*i + 1] : NULL;
     double v = 0;
     int status = 0;
+    if (option_once(once, "probe", name, err) < 0) /* every probe option takes values */
+        return -1;
     if (strcmp(name, "--line") == 0)
         return read_numbers(argc, argv, i, 6, args->line, err);
     if (strcmp(name, "--normal") == 0)
@@ -93,19 +97,20 @@ static int parse_probe_args(int argc, char **argv, struct probe_args *args, stru
     args->settings = jensen1994_settings_default();
     args->settings.gather = PROBE_DEFAULT_GATHER;
     args->settings.n_photons = PROBE_DEFAULT_PHOTONS;
+    struct option_once once = {{0}, 0};
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             printf("%s\n\nSamples the irradiance at N points along the line from (X0, Y0, Z0) to "
                    "(X1, Y1, Z1)\non a surface of the given normal, and writes one CSV row per "
                    "point: x,y,z,\nexact_direct,exact_caustic (point lights and flat mirrors "
-                   "only; empty otherwise),\ncaustic_photons, caustic_photons_unchecked, "
+                   "only; none otherwise),\ncaustic_photons, caustic_photons_unchecked, "
                    "all_photons (mode 1994's estimates\nfrom --gather photons, default %d), "
                    "caustic_illumination (its illumination map).\n--photons: light rays, "
                    "default %d.\n", PROBE_USAGE, PROBE_DEFAULT_GATHER, PROBE_DEFAULT_PHOTONS);
             return 1;
         }
         if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            if (read_probe_option(argc, argv, &i, args, err) < 0)
+            if (read_probe_option(argc, argv, &i, args, &once, err) < 0)
                 return -1;
         } else if (args->scene_path == NULL) {
             args->scene_path = argv[i];
@@ -190,11 +195,12 @@ static double caustic_irradiance(const struct scene *scene, struct vec3 p, struc
     return e;
 }
 
-/* A CSV field: the number, or nothing for NaN (no exact value). */
+/* A CSV field: the number, or CSV_NONE for NaN (no value here), which plot reads as a
+ * point to leave out. */
 static void write_field(FILE *f, double value)
 {
     if (isnan(value))
-        fputs(",", f);
+        fputs("," CSV_NONE, f);
     else
         fprintf(f, ",%.9g", value);
 }

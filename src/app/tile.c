@@ -16,6 +16,7 @@
 
 #include "../base/hash.h"
 #include "../base/input.h"
+#include "../base/number.h"
 #include "../base/output.h"
 #include "../image/image.h"
 
@@ -141,11 +142,8 @@ static int read_line(struct record_reader *rd, const char *form, struct error *e
 static int read_int(const struct record_reader *rd, int k, int min, int max, int *value,
                     struct error *err)
 {
-    char *end;
-    errno = 0;
-    long v = strtol(rd->words[k], &end, 10);
-    if (*end != '\0' || errno != 0 || !isdigit((unsigned char)rd->words[k][0]) || v < min ||
-        v > max)
+    double v;
+    if (!number_parse(rd->words[k], 1, &v) || v < min || v > max)
         return error_set(err, rd->file, rd->line, "%s: '%s' is not a whole number from %d "
                          "to %d", rd->words[0], rd->words[k], min, max);
     *value = (int)v;
@@ -174,9 +172,7 @@ static int read_time_limit(struct record_reader *rd, double *seconds, struct err
 {
     if (read_line(rd, "time-limit SECONDS", err) < 0)
         return -1;
-    char *end;
-    *seconds = strtod(rd->words[1], &end);
-    if (*end != '\0' || !isfinite(*seconds) || *seconds < 0)
+    if (!number_parse(rd->words[1], 0, seconds) || *seconds < 0)
         return error_set(err, rd->file, rd->line, "time-limit: '%s' is not a number of "
                          "seconds (0 for none)", rd->words[1]);
     return 0;

@@ -27,7 +27,8 @@ extern char float_is_4_bytes[sizeof(float) == 4 ? 1 : -1];
 
 /* ---- Ranges: what the writer refuses to save and the reader to load (work_file.h) ---- */
 
-#define PHOTON_FLAGS (PHOTON_DIRECT | PHOTON_CAUSTIC | PHOTON_INDIRECT | PHOTON_SHADOW)
+#define PHOTON_FLAGS (PHOTON_DIRECT | PHOTON_CAUSTIC | PHOTON_INDIRECT | PHOTON_SHADOW | \
+                      PHOTON_BACK)
 #define UNIT_TOLERANCE 1e-9 /* |n| of a record's unit normal: normalised in double */
 
 /* Photon i of map m within its ranges; name the file, for messages. */

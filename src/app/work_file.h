@@ -40,7 +40,8 @@
  * order written, and the illumination maps come back element for element, so a render
  * that loads the file renders the very bits of one that made the work itself.
  *
- * Versions: 1 had no illumination maps (and no byte saying so); 2 adds them.
+ * Versions: 1 had no illumination maps (and no byte saying so); 2 adds them; 3 adds the
+ * photon's side, PHOTON_BACK (2's photons would all read as arrived on the front).
  */
 #ifndef PHOTON_WORK_FILE_H
 #define PHOTON_WORK_FILE_H
@@ -51,7 +52,7 @@
 #include "../photon/global_work.h"
 
 #define WORK_FILE_MAGIC "photonGW" /* 8 bytes, no terminating zero in the file */
-#define WORK_FILE_VERSION 2
+#define WORK_FILE_VERSION 3
 
 /* The most a photon in the file may carry, in watts per channel: 2^110, some 1.3e33. A
  * scene's lights give at most MAX_LIGHT_POWER (1e30, scene/scene.h) per channel in all;

@@ -43,6 +43,17 @@ int error_set(struct error *err, const char *file, int line, const char *format,
     return -1;
 }
 
+void message_print(const char *format, ...)
+{
+    char message[ERROR_MESSAGE_MAX], quoted[ERROR_MESSAGE_MAX];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(message, sizeof message, format, args);
+    va_end(args);
+    copy_quoted(quoted, sizeof quoted, message);
+    fprintf(stderr, "%s\n", quoted);
+}
+
 int error_exit_status(const struct error *err)
 {
     return err->failed_write ? 1 : 2;

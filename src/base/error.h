@@ -33,6 +33,12 @@ struct error {
  * outside printable ASCII are written as \xNN (input echoed in a message stays text). */
 int error_set(struct error *err, const char *file, int line, const char *format, ...);
 
+/* Prints the printf-style message and a newline on stderr, its bytes outside printable
+ * ASCII quoted as error_set() quotes them: a warning or a note that echoes a name from a
+ * file ("photon: warning: ... material '\x1b[31m'"), which must not reach the terminal raw.
+ * At most ERROR_MESSAGE_MAX - 1 bytes of the message are printed. */
+void message_print(const char *format, ...);
+
 /* Prints err as "file:line: message" (or "photon: message" without a file) on stderr. */
 void error_print(const struct error *err);
 

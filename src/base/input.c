@@ -82,8 +82,16 @@ int input_line(struct input *in, char *text, size_t size, struct error *err)
     if (in->offset > in->size)
         return error_set(err, in->name, in->line, "the file goes on past the %ld bytes it "
                          "had when opened (not a regular file?)", in->size);
-    if (c != '\n' && n + 1 == size && getc(in->f) != EOF)
-        return error_set(err, in->name, in->line, "line longer than %zu bytes", size - 2);
+    if (c != '\n' && n + 1 == size) { /* text is full: the line may end right here */
+        int next = getc(in->f);
+        if (next != '\n' && next != EOF)
+            return error_set(err, in->name, in->line, "line longer than %zu bytes, its "
+                             "newline included", size);
+        in->offset += next == '\n'; /* its newline, read but not kept: the text is full */
+        if (in->offset > in->size)
+            return error_set(err, in->name, in->line, "the file goes on past the %ld bytes "
+                             "it had when opened (not a regular file?)", in->size);
+    }
     return 1;
 }
 

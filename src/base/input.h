@@ -39,8 +39,9 @@ int input_open(struct input *in, const char *name, struct error *err);
 
 /* The next line, its '\n' kept when it has one, into text[size] (size >= 3) as a string.
  * Returns 1 for a line, 0 at the end of the file, -1 with *err filled ("NAME:LINE: ...")
- * for a line that holds a NUL byte or would not fit (longer than size - 2 bytes), a
- * read that fails, or bytes past the measured size. */
+ * for a line that holds a NUL byte or would not fit (more than size bytes with its
+ * newline: a line of exactly size bytes is read without its newline), a read that
+ * fails, or bytes past the measured size. */
 int input_line(struct input *in, char *text, size_t size, struct error *err);
 
 /* Closes what input_open() opened; a closed or never opened input is left alone. */

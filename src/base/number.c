@@ -1,5 +1,5 @@
 /*
- * base/number.c -- the command line's number syntax (number.h).
+ * base/number.c -- the one number syntax (number.h).
  */
 #include "number.h"
 
@@ -16,9 +16,18 @@ static int digits(const char *s)
     return n;
 }
 
-int number_parse(const char *text, int integer, double *value)
+/* Whether the digits before the exponent include one that is not 0: strtod's 0 from such
+ * text is an underflow, not the number written. */
+static int mantissa_is_nonzero(const char *s)
 {
-    *value = 0;
+    for (; *s != '\0' && *s != 'e' && *s != 'E'; s++)
+        if (*s >= '1' && *s <= '9')
+            return 1;
+    return 0;
+}
+
+int number_in_syntax(const char *text, int integer)
+{
     if (text == NULL)
         return 0;
     const char *s = text;
@@ -42,8 +51,42 @@ int number_parse(const char *text, int integer, double *value)
             return 0;
         s += exponent;
     }
-    if (*s != '\0')
-        return 0;
-    *value = strtod(text, NULL);
-    return isfinite(*value);
+    return *s == '\0';
+}
+
+enum number_verdict number_read(const char *text, int integer, double *value)
+{
+    *value = 0;
+    char *end = NULL;
+    double v = text != NULL ? strtod(text, &end) : 0;
+    if (!number_in_syntax(text, integer))
+        /* strtod's "inf" and "nan" are named for what they are */
+        return end != text && *end == '\0' && !isfinite(v) ? NUMBER_INFINITE
+                                                           : NUMBER_UNWRITTEN;
+    if (!isfinite(v))
+        return NUMBER_INFINITE;
+    if (v == 0 && mantissa_is_nonzero(text))
+        return NUMBER_UNDERFLOW;
+    *value = v;
+    return NUMBER_OK;
+}
+
+const char *number_problem(enum number_verdict verdict, int integer)
+{
+    switch (verdict) {
+    case NUMBER_OK:
+        break;
+    case NUMBER_UNWRITTEN:
+        return integer ? "is not a whole number" : "is not a number";
+    case NUMBER_INFINITE:
+        return "is not finite";
+    case NUMBER_UNDERFLOW:
+        return "is too small for a double (it would be read as 0)";
+    }
+    return "is a number";
+}
+
+int number_parse(const char *text, int integer, double *value)
+{
+    return number_read(text, integer, value) == NUMBER_OK;
 }

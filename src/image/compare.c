@@ -42,7 +42,7 @@
 #include "../base/number.h"
 #include "../base/output.h"
 #include "error_image.h"
-#include "png.h"
+#include "diff_picture.h"
 
 #include <assert.h>
 #include <stdint.h>
@@ -50,7 +50,8 @@
 #include <string.h>
 
 #define RELMSE_EPSILON 1e-2 /* compare.h's definition of relmse */
-#define COMPARE_USAGE "usage: photon compare A.pfm B.pfm [--diff OUT.png|.ppm] " \
+#define COMPARE_USAGE "usage: photon compare A.pfm B.pfm [--diff OUT.png|.ppm " \
+                      "[--diff-absolute]] " \
                       "[--ref-variance VB.pfm | --ref-error EB.pfm | --ref-block-error " \
                       "BB.pfm] [--test-variance VA.pfm | --test-error EA.pfm | " \
                       "--test-block-error BA.pfm] [--confidence C] [--alpha ALPHA] " \
@@ -226,14 +227,14 @@ static struct image *checked_like(struct image *img, const char *name, const str
 
 struct image *variance_read(const char *name, const struct image *like, struct error *err)
 {
-    return checked_like(pfm_read(name, err), name, like, "variance", err); /* no NaN, Inf */
+    return checked_like(image_read(name, err), name, like, "variance", err); /* no NaN, Inf */
 }
 
 struct image *error_image_read(const char *name, const struct image *like, double confidence,
                                struct error *err)
 {
     assert(confidence > 0 && 1.0 - confidence > 0 && 1.0 - confidence < 1);
-    struct image *e = checked_like(pfm_read_bounds(name, err), name, like, "bound", err);
+    struct image *e = checked_like(image_read_bounds(name, err), name, like, "bound", err);
     double z = normal_critical_two_sided(1.0 - confidence);
     size_t n_pixels = e != NULL ? (size_t)e->width * (size_t)e->height : 0;
     for (size_t i = 0; i < n_pixels; i++) {
@@ -251,7 +252,7 @@ struct image *block_error_read(const char *name, const struct image *like, doubl
     int columns, rows;
     error_block_grid(0, 0, like->width, like->height, &columns, &rows);
     struct image grid = {columns, rows, NULL};
-    struct image *blocks = checked_like(pfm_read_bounds(name, err), name, &grid, "bound", err);
+    struct image *blocks = checked_like(image_read_bounds(name, err), name, &grid, "bound", err);
     if (blocks == NULL)
         return NULL;
     struct image *var = image_create(like->width, like->height);
@@ -276,6 +277,7 @@ struct image *block_error_read(const char *name, const struct image *like, doubl
 struct compare_args {
     const char *test, *reference; /* A.pfm, the image judged, and B.pfm, its reference    */
     const char *diff;             /* --diff OUT.png or .ppm, or NULL                       */
+    int diff_absolute;            /* --diff-absolute: --diff shows |a - b|, not relative    */
     const char *ref_variance, *test_variance; /* --ref-variance VB.pfm, --test-variance VA */
     const char *ref_error, *test_error;       /* --ref-error EB.pfm, --test-error EA.pfm   */
     const char *ref_blocks, *test_blocks;     /* --ref-block-error, --test-block-error     */
@@ -413,9 +415,14 @@ static int parse_compare_args(int argc, char **argv, struct compare_args *args,
                                  argv[i], value == &args->alpha_text ||
                                  value == &args->block_text ||
                                  value == &args->confidence_text ? "number" : "file name");
+            if (*value != NULL) /* a second value would silently replace the first */
+                return error_set(err, "", 0, "compare: %s is given twice: it takes one "
+                                 "value; " COMPARE_USAGE, argv[i]);
             *value = argv[++i];
         } else if (strcmp(argv[i], "--exit-status") == 0) {
             args->exit_status = 1;
+        } else if (strcmp(argv[i], "--diff-absolute") == 0) {
+            args->diff_absolute = 1;
         } else if (argv[i][0] == '-') {
             return error_set(err, "", 0, "compare: unknown option '%s'; " COMPARE_USAGE,
                              argv[i]);
@@ -434,28 +441,10 @@ static int parse_compare_args(int argc, char **argv, struct compare_args *args,
                                          strcmp(args->diff + n - 4, ".ppm") != 0)))
         return error_set(err, "", 0, "compare: --diff '%s': expected a file name ending in "
                          ".png or .ppm", args->diff);
+    if (args->diff_absolute && args->diff == NULL)
+        return error_set(err, "", 0, "compare: --diff-absolute needs --diff OUT.png; "
+                         COMPARE_USAGE);
     return check_test_args(args, err);
-}
-
-/* --diff: |a - b| per channel divided by maxerr, so the largest error shows as full white
- * and identical images as black; sRGB-encoded like any display image we write, a PNG or
- * a PPM by the name's ending (parse_compare_args refused any other). */
-static int write_diff(const char *name, const struct image *a, const struct image *b,
-                      double maxerr, struct error *err)
-{
-    struct image *diff = image_create(a->width, a->height);
-    double inv_maxerr = maxerr > 0 ? 1.0 / maxerr : 0.0; /* every |a - b| <= maxerr */
-    size_t n_pixels = (size_t)a->width * (size_t)a->height;
-    for (size_t i = 0; i < n_pixels; i++) {
-        struct vec3 d = vec3_sub(a->pixels[i], b->pixels[i]);
-        diff->pixels[i] = vec3_scale(vec3(fabs(d.x), fabs(d.y), fabs(d.z)), inv_maxerr);
-    }
-    size_t n = strlen(name);
-    int status = strcmp(name + n - 4, display_suffix(DISPLAY_PPM)) == 0
-                     ? ppm_write(name, diff, 1.0, err)
-                     : png_write(name, diff, 1.0, err);
-    image_free(diff);
-    return status;
 }
 
 /* The metrics, without the line's end (the test's fields may follow). */
@@ -497,10 +486,10 @@ static int read_variance(const char *variance, const char *error, const char *bl
 static int read_inputs(const struct compare_args *args, struct compare_inputs *in,
                        struct error *err)
 {
-    in->a = pfm_read(args->test, err);
+    in->a = image_read(args->test, err);
     if (in->a == NULL)
         return error_set(err, err->file, err->line, "%s (A, the image tested)", err->message);
-    in->b = pfm_read(args->reference, err);
+    in->b = image_read(args->reference, err);
     if (in->b == NULL)
         return error_set(err, err->file, err->line, "%s (B, the reference)", err->message);
     if (in->a->width != in->b->width || in->a->height != in->b->height)
@@ -612,7 +601,7 @@ static int compare_files(const struct compare_args *args, int *consistent, struc
     if (status == 0) {
         struct image_error e = image_compare(in.a, in.b);
         if (args->diff != NULL)
-            status = write_diff(args->diff, in.a, in.b, e.maxerr, err);
+            status = diff_picture_write(args->diff, in.a, in.b, args->diff_absolute, err);
         if (status == 0)
             status = outputs_publish(err);
         if (status == 0)
@@ -629,7 +618,10 @@ static int compare_files(const struct compare_args *args, int *consistent, struc
 static const char compare_help[] =
     COMPARE_USAGE "\n"
     "Compares image A with reference B (PFM, same size); prints one line on stdout.\n"
-    "  --diff OUT        write |A - B| per channel, the largest white\n"
+    "  --diff OUT        a picture of the relative error |A - B| / max(B, 1% of B's\n"
+    "                    mean), the worst channel's, in false colour with its scale\n"
+    "                    (0 to the 99th percentile: photon convert --help)\n"
+    "  --diff-absolute   --diff shows |A - B| instead\n"
     "  --block N         add the block figures; the test's block side (default 16)\n"
     "  --ref-variance V  B's variance of each pixel's mean (photon --variance); so\n"
     "  --test-variance V A's (a side with neither is exact: variance 0)\n"

@@ -10,6 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../base/number.h"
+
 static int is_blank(int c)
 {
     return c == ' ' || c == '\t';
@@ -104,9 +106,9 @@ int csv_next_row(struct csv *csv, double *value, struct error *err)
         return error_set(err, csv->name, csv->line, "expected %d fields as in the header, "
                                                     "found %d", csv->n_columns, csv->n_fields);
     for (int i = 0; i < csv->n_columns; i++) {
-        char *end;
-        value[i] = strtod(csv->field[i], &end);
-        if (end == csv->field[i] || *end != '\0' || !isfinite(value[i]))
+        if (strcmp(csv->field[i], CSV_NONE) == 0) /* no value (photon probe writes it) */
+            value[i] = NAN;
+        else if (!number_parse(csv->field[i], 0, &value[i]))
             return error_set(err, csv->name, csv->line, "field %d '%s' is not a finite "
                                                         "number", i + 1, csv->field[i]);
     }

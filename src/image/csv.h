@@ -1,10 +1,13 @@
 /*
  * image/csv.h -- reading the numeric CSV files photon writes (--report, `photon probe`)
- * for `photon plot`: a header line naming the columns, then rows of finite numbers.
+ * for `photon plot`: a header line naming the columns, then rows of numbers.
  *
  * Rules (csv.c): fields are separated by commas and trimmed of spaces and tabs; blank
  * lines are ignored; CR LF ends a line as LF does; every row has as many fields as the
- * header, each a finite number in strtod's whole syntax. Limits: lines of CSV_LINE_MAX
+ * header, each a number in base/number.h's syntax or CSV_NONE, no value (`photon probe`
+ * writes it where a column has none: an exact value the scene's lights do not allow, a
+ * map that does not cover the point), read as NaN. An empty field is refused: it is as
+ * likely a value lost as one meant to be missing. Limits: lines of CSV_LINE_MAX
  * bytes, CSV_FIELDS_MAX columns. Every error names the file and the line.
  */
 #ifndef PHOTON_CSV_H
@@ -13,6 +16,8 @@
 #include <stdio.h>
 
 #include "../base/error.h"
+
+#define CSV_NONE "none" /* the field of a row that has no value in its column */
 #include "../base/input.h"
 
 #define CSV_LINE_MAX 1024 /* longest line read; a report row is under 100 bytes */
@@ -39,7 +44,7 @@ int csv_open(struct csv *csv, const char *name, struct error *err);
 /* The index of the column called name, or -1. */
 int csv_column(const struct csv *csv, const char *name);
 
-/* The next row's csv->n_columns numbers into value[]: 1, 0 at the end of the file, -1
+/* The next row's csv->n_columns numbers into value[] (NaN for CSV_NONE): 1, 0 at the end, -1
  * with *err filled for a row that breaks the rules above. */
 int csv_next_row(struct csv *csv, double *value, struct error *err);
 

@@ -43,12 +43,12 @@ const char *display_suffix(enum display_format format)
     return format == DISPLAY_PPM ? ".ppm" : ".png";
 }
 
-/* pfm_name, which ends in ".pfm", with the ending of display in its place: owned by the
- * caller (xfree). */
+/* pfm_name, which ends in ".pfm" or ".exr", with the ending of display in its place:
+ * owned by the caller (xfree). */
 static char *display_name(const char *pfm_name, enum display_format display)
 {
     size_t n = strlen(pfm_name);
-    assert(n >= 4 && strcmp(pfm_name + n - 4, ".pfm") == 0);
+    assert(n >= 4 && (strcmp(pfm_name + n - 4, ".pfm") == 0 || image_name_is_exr(pfm_name)));
     char *name = xstrdup(pfm_name);
     strcpy(name + n - 4, display_suffix(display)); /* as long as ".pfm" */
     return name;
@@ -67,7 +67,7 @@ int image_write_pair(const char *pfm_name, enum display_format display,
                      const struct image *img, double exposure, struct error *err)
 {
     char *name = display_name(pfm_name, display);
-    int status = pfm_write(pfm_name, img, err);
+    int status = image_write(pfm_name, img, err); /* .pfm or .exr */
     if (status == 0)
         status = display == DISPLAY_PPM ? ppm_write(name, img, exposure, err)
                                         : png_write(name, img, exposure, err);

@@ -44,6 +44,18 @@ struct image *pfm_read(const char *name, struct error *err);
  * cannot be stated. NaN and -Inf are refused still. */
 struct image *pfm_read_bounds(const char *name, struct error *err);
 
+/* The one entry for reading an image file, whatever its format: a PFM (above) or a
+ * scanline OpenEXR (exr.h), told apart by the file's first bytes. The rules of pfm_read()
+ * and pfm_read_bounds() hold for both. */
+struct image *image_read(const char *name, struct error *err);
+struct image *image_read_bounds(const char *name, struct error *err);
+
+/* The one entry for writing an image's floats: an OpenEXR file (exr.h: FLOAT RGB,
+ * uncompressed) when name ends in ".exr", a PFM (pfm_write) otherwise. */
+int image_write(const char *name, const struct image *img, struct error *err);
+/* Whether name ends in ".exr". */
+int image_name_is_exr(const char *name);
+
 /* The value a PFM keeps of v: v rounded to the nearest binary32 (clamped to +-FLT_MAX). */
 double pfm_stored_value(double v);
 
@@ -66,15 +78,18 @@ const char *display_suffix(enum display_format format);
 /* Binary PPM (P6) of the bytes display_encode_row() makes, written atomically through
  * output_open()/output_commit(). -1 with *err filled when the file cannot be written. */
 int ppm_write(const char *name, const struct image *img, double exposure, struct error *err);
+/* The same file of bytes already made, as png_write_bytes() (png.h) takes them. */
+int ppm_write_bytes(const char *name, int width, int height, const unsigned char *rgb,
+                    struct error *err);
 
 /* Declares the pair image_write_pair() writes as outputs of the command (base/output.h):
- * pfm_name, ending in ".pfm", under role ("-o"), and the display image beside it under
+ * pfm_name, ending in ".pfm" or ".exr", under role ("-o"), and the display image beside it under
  * display_role ("the PNG beside -o"). */
 void image_declare_pair(const char *pfm_name, enum display_format display, const char *role,
                         const char *display_role);
 
 /* The pair every image-making command writes: the PFM pfm_name, which ends in ".pfm" (the
- * caller checked), then the display image of the same name ending in display_suffix()
+ * caller checked; or the OpenEXR file, ending in ".exr": image_write), then the display image of the same name ending in display_suffix()
  * beside it, each written whole or not at all. -1 with *err filled when either cannot be
  * written (the display image is not tried when the PFM failed). */
 int image_write_pair(const char *pfm_name, enum display_format display,

@@ -24,6 +24,7 @@
 #include "image.h"
 
 #include "../base/input.h"
+#include "../base/number.h"
 #include "../base/output.h"
 
 #include <assert.h>
@@ -176,9 +177,8 @@ static int read_token(FILE *f, const char *name, const char *field, char *token,
 static int parse_side(const char *token, const char *name, const char *field, int *side,
                       struct error *err)
 {
-    char *end;
-    long value = strtol(token, &end, 10);
-    if (end == token || *end != '\0')
+    double value;
+    if (!number_parse(token, 1, &value))
         return error_set(err, name, 0, "header: %s '%s' is not a whole number", field, token);
     if (value < 1 || value > MAX_IMAGE_SIDE)
         return error_set(err, name, 0, "header: %s %s is outside 1..%d", field, token,
@@ -189,9 +189,7 @@ static int parse_side(const char *token, const char *name, const char *field, in
 
 static int parse_scale(const char *token, const char *name, double *scale, struct error *err)
 {
-    char *end;
-    *scale = strtod(token, &end);
-    if (end == token || *end != '\0' || !isfinite(*scale) || *scale == 0)
+    if (!number_parse(token, 0, scale) || *scale == 0)
         return error_set(err, name, 0, "header: scale '%s' must be a finite non-zero number "
                                        "(negative for little-endian data)", token);
     return 0;

@@ -50,6 +50,7 @@ struct series {
     double *x, *y;                    /* owned; n_points values each, in file order */
     size_t n_points, capacity;        /* n_points <= capacity, the arrays' length */
     size_t n_skipped;                 /* rows a log axis cannot show (a 0 in x or y) */
+    size_t n_missing;                 /* rows with no value in x or y (CSV_NONE)     */
 };
 
 struct plot_spec plot_spec_errors(void)
@@ -112,11 +113,16 @@ static void series_add(struct series *s, double x, double y)
     s->n_points++;
 }
 
-/* One row's point (x, y) into s: on log axes refused when negative, skipped (counted)
- * when 0. */
+/* One row's point (x, y) into s: left out (counted) when either has no value (NaN, a
+ * CSV_NONE field: a probe line leaving the surfaces); on log axes refused when negative,
+ * skipped (counted) when 0. */
 static int add_row(const struct csv *csv, const struct plot_spec *spec, double x, double y,
                    const char *y_name, struct series *s, struct error *err)
 {
+    if (isnan(x) || isnan(y)) {
+        s->n_missing++;
+        return 0;
+    }
     if (!spec->linear && (x < 0 || y < 0))
         return error_set(err, csv->name, csv->line, "%s must be >= 0 on a log axis, "
                                                     "found %g", x < 0 ? spec->x : y_name,
@@ -473,14 +479,17 @@ static void write_series(FILE *f, const struct frame *fr, const struct series *s
     fprintf(f, "</g>\n");
 }
 
-/* The legend text of s: its label, and how many rows a log axis could not show. */
+/* The legend text of s: its label, and how many rows a log axis could not show and how
+ * many had no value. */
 static void legend_text(const struct series *s, char *text, size_t size)
 {
-    if (s->n_skipped == 0)
-        snprintf(text, size, "%.*s", LABEL_CHARS + 3, s->label);
-    else
-        snprintf(text, size, "%.*s (%lu row%s at 0 not shown)", LABEL_CHARS + 3, s->label,
-                 (unsigned long)s->n_skipped, s->n_skipped == 1 ? "" : "s");
+    size_t n = (size_t)snprintf(text, size, "%.*s", LABEL_CHARS + 3, s->label);
+    if (s->n_skipped > 0 && n < size)
+        n += (size_t)snprintf(text + n, size - n, " (%lu row%s at 0 not shown)",
+                              (unsigned long)s->n_skipped, s->n_skipped == 1 ? "" : "s");
+    if (s->n_missing > 0 && n < size)
+        snprintf(text + n, size - n, " (%lu row%s with none)", (unsigned long)s->n_missing,
+                 s->n_missing == 1 ? "" : "s");
 }
 
 /* The legend's width: its longest text at LEGEND_CHAR per character, plus the sample. */
@@ -584,6 +593,9 @@ static int fit_frame(const struct series *s, int n_series, const struct plot_spe
             y_hi = fmax(y_hi, s[i].y[p]);
         }
     }
+    if (x_lo > x_hi && spec->linear)
+        return error_set(err, "", 0, "plot: nothing to plot: no row has values of both %s "
+                         "and %s", spec->x, spec->n_y == 1 ? spec->y[0] : "y");
     if (x_lo > x_hi)
         return error_set(err, "", 0, "plot: nothing to plot: no row has %s > 0 and %s > 0 "
                                      "(log axes)", spec->x, spec->n_y == 1 ? spec->y[0] : "y");

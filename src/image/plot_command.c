@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/option_once.h"
 #include "../base/output.h"
 
 #define PLOT_USAGE "usage: photon plot [--x COL] [--y COL]... [--linear] A.csv [B.csv ...] " \
@@ -37,14 +38,15 @@ static int option_value(int argc, char **argv, int *i, const char **value, int o
 
 /* One option at argv[*i] into args; -1 with *err filled. */
 static int parse_plot_option(int argc, char **argv, int *i, struct plot_args *args,
-                             int *y_given, struct error *err)
+                             int *y_given, struct option_once *x_once, struct error *err)
 {
     struct plot_spec *spec = &args->spec;
     const char *name = argv[*i];
     if (strcmp(name, "-o") == 0)
         return option_value(argc, argv, i, &args->svg, 1, err);
-    if (strcmp(name, "--x") == 0)
-        return option_value(argc, argv, i, &spec->x, 0, err);
+    if (strcmp(name, "--x") == 0) /* once, though it has a default (seconds) */
+        return option_once(x_once, "plot", name, err) < 0 ? -1
+               : option_value(argc, argv, i, &spec->x, 0, err);
     if (strcmp(name, "--x-title") == 0)
         return option_value(argc, argv, i, &spec->x_title, 1, err);
     if (strcmp(name, "--y-title") == 0)
@@ -70,6 +72,7 @@ static int parse_plot_args(int argc, char **argv, struct plot_args *args, struct
     args->svg = NULL;
     args->spec = plot_spec_errors();
     int y_given = 0;
+    struct option_once x_once = {{0}, 0};
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             printf("%s\n\nDraws columns of CSV files (first line: the column names) as an "
@@ -81,7 +84,7 @@ static int parse_plot_args(int argc, char **argv, struct plot_args *args, struct
         }
         if (argv[i][0] != '-')
             args->csv[args->n_csv++] = argv[i];
-        else if (parse_plot_option(argc, argv, &i, args, &y_given, err) != 0)
+        else if (parse_plot_option(argc, argv, &i, args, &y_given, &x_once, err) != 0)
             return -1;
     }
     if (args->svg == NULL)

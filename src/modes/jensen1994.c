@@ -216,7 +216,7 @@ static struct vec3 stored_reflection(const struct jensen1994 *mode, const struct
                                      const struct irradiance_settings *is)
 {
     if (keeps_direction(mode->settings, mode->stores.illumination, s->material, s->prim)) {
-        struct estimate_point at = {s->p, s->ng, s->wo, diffuse, frame};
+        struct estimate_point at = {s->p, s->ng, s->wo, diffuse, frame, !s->front};
         struct estimate_settings es = {is->n, is->max_r2, 0.0, is->kinds, is->count_rim};
         return radiance_estimate(mode->stores.glossy, &at, &es, mode->nn);
     }

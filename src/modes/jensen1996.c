@@ -150,6 +150,7 @@ static struct vec3 photon_estimate(const struct jensen1996 *mode, const struct k
     at.wo = s->wo;
     at.material = material;
     at.frame = frame;
+    at.back = !s->front;
     struct vec3 l = radiance_estimate(map, &at, es, mode->scratch->nn);
     *r2 = mode->scratch->nn->r2;
     return l;

@@ -49,6 +49,7 @@ static struct vec3 estimate_at(const struct photons_mode *pm, const struct surfa
     at.wo = s->wo;
     at.material = s->material;
     at.frame = frame;
+    at.back = !s->front;
     return radiance_estimate(pm->map, &at, &pm->es, pm->nn);
 }
 

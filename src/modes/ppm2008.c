@@ -44,23 +44,19 @@
  * pixel's part of a surface) is of the photons' smooth light only.
  *
  * The initial radius (--footprints, --fit-radius). R0 is PPM_DEFAULT_FOOTPRINTS widths of
- * a pixel at the hit point's distance along its eye path (the paper's "footprint of the
- * pixel" is one; it leaves R0 to the user), shortened until the disc lies on its surface,
- * clear of walls and open edges (ppm_radius.c says why and how).
+ * a pixel at its hit point (the paper's "footprint of the pixel" is one; it leaves R0 to
+ * the user), shortened until the disc lies on its surface (ppm_radius.c: why and how).
  *
- * The caustic estimate (--caustic-footprints K; --no-caustic-footprints is the
- * paper's). Caustic photons are sparse and their light sharp; a disc wide enough for the
- * smooth indirect light blurs them. As Jensen's caustic map has a smaller radius than his
- * global one, each hit point keeps a second progressive estimate for caustic photons
- * alone, R0 one footprint, reduced by Eq. 7-12 on its own.
+ * The caustic estimate (--caustic-footprints K; --no-caustic-footprints is the paper's).
+ * Caustic photons are sparse and their light sharp; a disc wide enough for the smooth
+ * indirect light blurs them. As Jensen's caustic map has a smaller radius than his global
+ * one, each hit point keeps a second estimate of caustic photons (Eq. 7-12, R0 a footprint).
  *
  * The facing test (--facing-test): a photon counts only at hit points whose surface faces
  * its own (add_flux()); Sec. 3.1 takes every photon within R, and the sphere of radius R
- * also reaches through thin walls and onto the back of the hit point's own surface.
- *
- * Turned photon directions (--turn-photon-directions): f_r sees a photon's direction
- * turned by the rotation taking its surface's normal to the hit point's, so none within R
- * falls below a curved surface's horizon (hit_point_add_photon()).
+ * also reaches through thin walls and onto the back of the hit point's own surface. Turned
+ * photon directions (--turn-photon-directions): f_r sees a photon arrive as it met its own
+ * surface, so none falls below a curved one's horizon (hit_point_add_photon()).
  *
  * The error image (--error, --target-error; ppm_error.h): each pass hands every pixel's
  * pass values to 2009's batches (progressive_update()); the window kept grows by
@@ -458,10 +454,9 @@ static void ray_tracing_pass(struct ppm *ppm)
 static void add_flux(void *context, size_t i)
 {
     struct ppm *ppm = context;
-    hit_point_add_photon(&ppm->points[i], ppm->photon, ppm->photons_per_pass,
-                         ppm->ps->progressive.facing_test,
-                         ppm->ps->progressive.turn_photon_directions,
-                         ppm->ps->caustic_footprints > 0,
+    const struct progressive_settings *p = &ppm->ps->progressive;
+    hit_point_add_photon(&ppm->points[i], ppm->photon, ppm->photons_per_pass, p->facing_test,
+                         p->turn_photon_directions, ppm->ps->caustic_footprints > 0,
                          ppm->want_error ? &ppm->error.inner[2 * i] : NULL);
 }
 

@@ -42,9 +42,14 @@ struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_po
             rim = 0;
             continue; /* it marks the radius (see the top of the file) */
         }
+        /* A photon on the other side of this surface (a thin wall's back, a closed
+         * sphere's inside) is not this surface's: its side is the tracer's exact bit, as
+         * the rounded direction and a normal turned by curvature cannot tell it (a point
+         * light in a closed sphere leaked onto its outside). The direction still rejects
+         * photons of a neighbouring surface that came from below this one. */
         struct vec3 wi = photon_direction(p);
-        if (!(vec3_dot(wi, at->ng) > 0))
-            continue; /* arrived at the other side: a thin wall's back, not this surface */
+        if (((p->flags & PHOTON_BACK) != 0) != (at->back != 0) || !(vec3_dot(wi, at->ng) > 0))
+            continue;
         struct vec3 fr = brdf_eval(at->material, at->frame, at->wo, wi);
         double w = 1.0;
         if (es->cone_k > 0) /* Eq. 4: w_p = max(0, 1 - d_p / (k r)) */

@@ -31,6 +31,9 @@ struct estimate_point {
     const struct material *material;   /* borrowed                                      */
     const struct shading_frame *frame; /* borrowed; around the shading normal, on wo's
                                           side, with TRANSPORT_RADIANCE                 */
+    int back;                          /* 1: wo is on the primitive's back (surface.h's
+                                          !front): only photons that arrived on the same
+                                          side of their primitive count (PHOTON_BACK)   */
 };
 
 /* How many photons, how far, and which filter. */

@@ -31,6 +31,12 @@
 #define PHOTON_CAUSTIC 2u  /* stored on a diffuse surface after specular bounces only    */
 #define PHOTON_INDIRECT 4u /* "I": stored after at least one diffuse bounce              */
 #define PHOTON_SHADOW 8u   /* "S": a later hit along a light ray, in the light's shadow  */
+/* Not a kind: the side of its surface a photon arrived on, the back of the primitive
+ * (against its geometric normal), as the tracer knew it exactly. The direction bytes
+ * cannot say: rounded to 1.06 degrees, a photon grazing the inside of a sphere can read
+ * as one from outside, and a curved surface turns the normal between a photon and the
+ * point estimated (radiance_estimate, estimate.h). Bit 7, apart from the kinds. */
+#define PHOTON_BACK 128u
 
 /* The paper's 20 bytes per photon; photon.c alone packs and unpacks them. */
 struct photon {

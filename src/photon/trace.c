@@ -74,6 +74,7 @@ struct photon_hit {
     const struct material *material; /* borrowed from the scene                         */
     int prim;                        /* the primitive hit, and where on it (struct hit) */
     double u, v;
+    int front;                       /* whether wi is on the primitive's front side     */
 };
 
 /* The path a photon has taken so far. */
@@ -98,6 +99,7 @@ static struct photon_hit photon_hit_at(const struct scene *scene, const struct h
     h.prim = hit->prim;
     h.u = hit->u;
     h.v = hit->v;
+    h.front = front;
     return h;
 }
 
@@ -128,6 +130,7 @@ static struct photon_event photon_event_at(const struct photon_hit *h, struct ve
     e.prim = h->prim;
     e.u = h->u;
     e.v = h->v;
+    e.back = !h->front;
     return e;
 }
 
@@ -143,7 +146,8 @@ int photon_trace_store(struct photon_trace *out, size_t max_stored, const struct
         out->photons = xrealloc(out->photons, grown, sizeof *out->photons, "photon map");
         out->capacity = grown;
     }
-    out->photons[out->n_photons++] = photon_pack(e->position, e->power, e->wi, e->kind);
+    unsigned side = e->back ? PHOTON_BACK : 0u; /* exact here; wi is rounded in the record */
+    out->photons[out->n_photons++] = photon_pack(e->position, e->power, e->wi, e->kind | side);
     out->n_direct += (e->kind & PHOTON_DIRECT) != 0;
     out->n_caustic += (e->kind & PHOTON_CAUSTIC) != 0;
     out->n_indirect += (e->kind & PHOTON_INDIRECT) != 0;

@@ -96,6 +96,7 @@ struct photon_event {
     int light;            /* the light that emitted it (index into scene->lights)       */
     int prim;             /* the primitive it hit, and where on it: struct hit's u, v   */
     double u, v;
+    int back;             /* 1: it arrived on the primitive's back (PHOTON_BACK)        */
 };
 
 /* Where stored photons go: a photon map packs them (trace_photons), progressive photon

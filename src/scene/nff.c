@@ -46,7 +46,8 @@
  *   # ...   a comment, to the end of the line. Blank lines are skipped anywhere.
  * Sidedness: NFF's opaque polygons are one-sided; our surfaces reflect on both sides
  * (modes/surface.h), as SPD advises for the teapot anyway. Tokens are split at any white
- * space (CRLF included); every number must be finite; the file is read a line at a time
+ * space (CRLF included); numbers are in base/number.h's syntax (a count or resolution
+ * whole: "4", not "4.0"); the file is read a line at a time
  * (mount-s8 is 11.5 MB). Any other keyword (`tpp`, NFF extensions) is refused by name.
  *
  * Errors name the file, the line and the entity ("gears.nff:12: p: ..."); the reader stops
@@ -63,6 +64,7 @@
 
 #include "../base/alloc.h"
 #include "../base/input.h"
+#include "../base/number.h"
 #include "../geom/cone.h"
 #include "../geom/polygon.h"
 #include "../geom/triangle.h"
@@ -168,20 +170,22 @@ static int continuation_line(struct nff_reader *rd, const char *what, struct err
     return status < 0 ? -1 : 0;
 }
 
-/* Reads n finite numbers from the current line; `what` names them for messages. */
-static int read_numbers(struct nff_reader *rd, double *v, int n, const char *what,
-                        struct error *err)
+/* Reads n numbers in base/number.h's syntax (whole ones when integer != 0) from the
+ * current line; `what` names them for messages. */
+static int read_numbers_of(struct nff_reader *rd, double *v, int n, int integer,
+                           const char *what, struct error *err)
 {
     for (int i = 0; i < n; i++) {
         if (rd->next >= rd->n_tokens)
             return nff_error(rd, err, "expected %d numbers (%s), got %d", n, what, i);
         const char *word = rd->tokens[rd->next++];
-        char *end = NULL;
-        v[i] = strtod(word, &end);
-        if (end == word || *end != '\0')
-            return nff_error(rd, err, "'%.40s' is not a number (expected %s)", word, what);
-        if (!isfinite(v[i]))
-            return nff_error(rd, err, "number '%.40s' is not finite", word);
+        enum number_verdict verdict = number_read(word, integer, &v[i]);
+        if (verdict == NUMBER_UNWRITTEN)
+            return nff_error(rd, err, "'%.40s' %s (expected %s)", word,
+                             number_problem(verdict, integer), what);
+        if (verdict != NUMBER_OK)
+            return nff_error(rd, err, "number '%.40s' %s", word,
+                             number_problem(verdict, integer));
     }
     return 0;
 }
@@ -193,13 +197,19 @@ static int expect_end(struct nff_reader *rd, struct error *err)
     return nff_error(rd, err, "unexpected '%.40s' at the end of the line", rd->tokens[rd->next]);
 }
 
-/* Reads exactly n numbers and the end of the line. */
+/* Reads exactly n numbers (whole ones when integer != 0) and the end of the line. */
+static int read_line_of(struct nff_reader *rd, double *v, int n, int integer, const char *what,
+                        struct error *err)
+{
+    if (read_numbers_of(rd, v, n, integer, what, err) < 0)
+        return -1;
+    return expect_end(rd, err);
+}
+
 static int read_line_numbers(struct nff_reader *rd, double *v, int n, const char *what,
                              struct error *err)
 {
-    if (read_numbers(rd, v, n, what, err) < 0)
-        return -1;
-    return expect_end(rd, err);
+    return read_line_of(rd, v, n, 0, what, err);
 }
 
 static struct vec3 vec3_at(const double *v) { return vec3(v[0], v[1], v[2]); }
@@ -210,12 +220,13 @@ struct view_line {
     const char *name;  /* the line's keyword */
     int count;         /* its numbers        */
     const char *what;  /* what they are      */
+    int whole;         /* 1: whole numbers   */
 };
 
 static const struct view_line view_lines[] = {
-    {"from", 3, "eye position x y z"},  {"at", 3, "look-at point x y z"},
-    {"up", 3, "up vector x y z"},       {"angle", 1, "field of view in degrees"},
-    {"hither", 1, "near distance"},     {"resolution", 2, "width, height in pixels"},
+    {"from", 3, "eye position x y z", 0},  {"at", 3, "look-at point x y z", 0},
+    {"up", 3, "up vector x y z", 0},       {"angle", 1, "field of view in degrees", 0},
+    {"hither", 1, "near distance", 0},     {"resolution", 2, "width, height in pixels", 1},
 };
 
 /* Reads the view line vl into v. A `yon` line may stand before `resolution`; it is read
@@ -238,7 +249,8 @@ static int read_view_line(struct nff_reader *rd, const struct view_line *vl, dou
         return nff_error(rd, err, "expected the line '%s' (%s), got '%.40s'", vl->name, vl->what,
                          rd->tokens[0]);
     rd->next = 1;
-    return read_line_numbers(rd, v, vl->count, vl->what, err);
+    snprintf(what, sizeof what, "%s %s", vl->name, vl->what); /* "resolution width, ..." */
+    return read_line_of(rd, v, vl->count, vl->whole, what, err);
 }
 
 /* Checks the view line just read (index i of view_lines); camera holds what came before. */
@@ -256,12 +268,13 @@ static int check_view_line(struct nff_reader *rd, int i, const double *v, struct
     } else if (i == 3) {
         camera->fov = v[0];
         if (!(v[0] > 0 && v[0] < 180))
-            return nff_error(rd, err, "the angle must be in (0, 180) degrees, got %g", v[0]);
+            return nff_error(rd, err, "the angle must be in (0, 180) degrees, got %.40s",
+                             rd->tokens[1]); /* as typed: "1e3", not "1000" */
     } else if (i == 5) {
         for (int k = 0; k < 2; k++)
-            if (!(v[k] >= 1 && v[k] <= MAX_IMAGE_SIDE && v[k] == floor(v[k])))
-                return nff_error(rd, err, "the resolution must be whole numbers from 1 to %d",
-                                 MAX_IMAGE_SIDE);
+            if (!(v[k] >= 1 && v[k] <= MAX_IMAGE_SIDE))
+                return nff_error(rd, err, "the resolution must be whole numbers from 1 to %d, "
+                                 "got %.40s", MAX_IMAGE_SIDE, rd->tokens[1 + k]);
     }
     return 0;
 }
@@ -480,7 +493,7 @@ static int read_sphere(struct nff_reader *rd, struct error *err)
     if (material < 0 || read_line_numbers(rd, v, 4, "centre x y z, radius", err) < 0)
         return -1;
     if (!(v[3] > 0))
-        return nff_error(rd, err, "the radius must be positive, got %g", v[3]);
+        return nff_error(rd, err, "the radius must be positive, got %.40s", rd->tokens[4]);
     return check_added(rd, scene_add_sphere(rd->scene, vec3_at(v), v[3], material), err);
 }
 
@@ -556,12 +569,14 @@ static int read_polygon(struct nff_reader *rd, struct error *err)
 {
     int smooth = strcmp(rd->entity, "pp") == 0;
     double count;
+    char what[48];
+    snprintf(what, sizeof what, "a vertex count from 3 to %d", MAX_POLYGON_VERTICES);
     int material = current_material(rd, err);
-    if (material < 0 || read_line_numbers(rd, &count, 1, "vertex count", err) < 0)
+    if (material < 0 || read_line_of(rd, &count, 1, 1, what, err) < 0)
         return -1;
-    if (!(count >= 3 && count <= MAX_POLYGON_VERTICES && count == floor(count)))
+    if (!(count >= 3 && count <= MAX_POLYGON_VERTICES))
         return nff_error(rd, err, "the vertex count must be a whole number from 3 to %d, "
-                                  "got %g", MAX_POLYGON_VERTICES, count);
+                                  "got %.40s", MAX_POLYGON_VERTICES, rd->tokens[1]);
     int n = (int)count;
     for (int i = 0; i < n; i++)
         if (read_vertex(rd, i, n, smooth, err) < 0)

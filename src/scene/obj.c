@@ -18,7 +18,8 @@
  *   # ...                a comment, to the end of the line; blank lines are skipped.
  * Any other keyword is refused by name: free-form curves and surfaces are not supported,
  * and a mesh silently missing parts would be worse than a clear message. So is a file
- * with no face at all. Numbers must be finite; the file is read a line at a time.
+ * with no face at all. Numbers are in base/number.h's syntax ("1.0e-05", "-0.5"; not
+ * "0x1"), indices whole ("-1", not "+1"); the file is read a line at a time.
  * Placement keeps normals as they are: a positive uniform scale and a translation do not
  * turn them.
  *
@@ -34,6 +35,7 @@
 
 #include "../base/alloc.h"
 #include "../base/input.h"
+#include "../base/number.h"
 #include "../geom/polygon.h"
 #include "../geom/triangle.h"
 
@@ -109,12 +111,11 @@ static int read_number(struct obj_reader *rd, double *x, const char *what, struc
     const char *word = next_word(rd);
     if (word == NULL)
         return 0;
-    char *end = NULL;
-    *x = strtod(word, &end);
-    if (end == word || *end != '\0')
+    enum number_verdict verdict = number_read(word, 0, x);
+    if (verdict == NUMBER_UNWRITTEN)
         return obj_error(rd, err, "'%.40s' is not a number (expected %s)", word, what);
-    if (!isfinite(*x))
-        return obj_error(rd, err, "number '%.40s' is not finite", word);
+    if (verdict != NUMBER_OK)
+        return obj_error(rd, err, "number '%.40s' %s", word, number_problem(verdict, 0));
     return 1;
 }
 
@@ -196,21 +197,26 @@ static int read_texcoord(struct obj_reader *rd, struct error *err)
 }
 
 /* Parses one index at *s (stopping at '/' or the end) into a 0-based index below count.
+ * An index is a whole number in base/number.h's syntax: the OBJ specification writes
+ * reference numbers as integers, negative ones with '-' (relative), never with '+'.
  * Returns 0, or -1 with *err filled; `what` names the element ("vertex"). */
 static int parse_index(struct obj_reader *rd, char **s, size_t count, const char *what,
                        size_t *index, struct error *err)
 {
-    char *end = NULL;
-    long i = strtol(*s, &end, 10);
-    if (end == *s || (*end != '\0' && *end != '/'))
+    char text[24]; /* longer than any index in range: its digits do not fit, it is refused */
+    size_t n = strcspn(*s, "/");
+    double i = 0;
+    if (n < sizeof text) {
+        memcpy(text, *s, n);
+        text[n] = '\0';
+    }
+    if (n >= sizeof text || number_read(text, 1, &i) != NUMBER_OK)
         return obj_error(rd, err, "a %s index must be a whole number", what);
-    *s = end;
-    /* |i| <= count <= OBJ_MAX_VERTICES: strtol's clamping to LONG_MIN/MAX fails it too */
-    if (i == 0 || (i > 0 && (unsigned long)i > count) ||
-        (i < 0 && (i < -(long)OBJ_MAX_VERTICES || (size_t)(-i) > count)))
-        return obj_error(rd, err, "%s index %ld is out of range (%zu defined above)", what, i,
+    *s += n;
+    if (i == 0 || (i > 0 && i > (double)count) || (i < 0 && -i > (double)count))
+        return obj_error(rd, err, "%s index %s is out of range (%zu defined above)", what, text,
                          count);
-    *index = i > 0 ? (size_t)(i - 1) : count - (size_t)(-i);
+    *index = i > 0 ? (size_t)i - 1 : count - (size_t)(-i);
     return 0;
 }
 

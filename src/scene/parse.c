@@ -16,6 +16,7 @@
 
 #include "../base/alloc.h"
 #include "../base/input.h"
+#include "../base/number.h"
 #include "../image/image.h"
 #include "nff.h"
 #include "parser.h"
@@ -34,35 +35,42 @@ const char *read_word(struct parser *ps)
     return ps->next < ps->n_tokens ? ps->tokens[ps->next++] : NULL;
 }
 
-/* Reads n numbers; `what` names them for the message ("centre x y z, radius"). */
-int read_numbers(struct parser *ps, double *v, int n, const char *what,
-                        struct error *err)
+/* Reads n numbers in base/number.h's syntax, whole ones when integer != 0; `what` names
+ * them for the message ("centre x y z, radius"). */
+static int read_numbers_of(struct parser *ps, double *v, int n, int integer, const char *what,
+                           struct error *err)
 {
     for (int i = 0; i < n; i++) {
         const char *word = read_word(ps);
-        char *end = NULL;
         if (word == NULL)
-            return error_set(err, ps->file, ps->line, "%s: expected %d numbers (%s), got %d",
-                             ps->tokens[0], n, what, i);
-        v[i] = strtod(word, &end);
-        if (end == word || *end != '\0')
-            return error_set(err, ps->file, ps->line, "%s: '%s' is not a number (expected %s)",
-                             ps->tokens[0], word, what);
-        if (!isfinite(v[i]))
-            return error_set(err, ps->file, ps->line, "%s: number '%s' is not finite",
-                             ps->tokens[0], word);
+            return error_set(err, ps->file, ps->line, "%s: expected %d %s (%s), got %d",
+                             ps->tokens[0], n, integer ? "whole numbers" : "numbers", what, i);
+        enum number_verdict verdict = number_read(word, integer, &v[i]);
+        if (verdict == NUMBER_UNWRITTEN)
+            return error_set(err, ps->file, ps->line, "%s: '%s' %s (expected %s)",
+                             ps->tokens[0], word, number_problem(verdict, integer), what);
+        if (verdict != NUMBER_OK)
+            return error_set(err, ps->file, ps->line, "%s: number '%s' %s", ps->tokens[0],
+                             word, number_problem(verdict, integer));
     }
     return 0;
 }
 
-/* Whether the next word is a number (an optional parameter follows). */
+int read_numbers(struct parser *ps, double *v, int n, const char *what, struct error *err)
+{
+    return read_numbers_of(ps, v, n, 0, what, err);
+}
+
+int read_wholes(struct parser *ps, double *v, int n, const char *what, struct error *err)
+{
+    return read_numbers_of(ps, v, n, 1, what, err);
+}
+
+/* Whether the next word is written as a number (an optional parameter follows): one that
+ * is out of range is read, and refused, as a number, not taken for a name. */
 int next_is_number(const struct parser *ps)
 {
-    if (ps->next >= ps->n_tokens)
-        return 0;
-    char *end = NULL;
-    strtod(ps->tokens[ps->next], &end);
-    return end != ps->tokens[ps->next] && *end == '\0';
+    return ps->next < ps->n_tokens && number_in_syntax(ps->tokens[ps->next], 0);
 }
 
 int expect_end(struct parser *ps, struct error *err)
@@ -99,13 +107,13 @@ int is_colour_in(const double *v, double lo, double hi)
 static int parse_image(struct parser *ps, struct error *err)
 {
     double v[2];
-    if (read_numbers(ps, v, 2, "width, height in pixels", err) < 0)
+    if (read_wholes(ps, v, 2, "width, height: whole numbers of pixels", err) < 0)
         return -1;
     for (int i = 0; i < 2; i++)
-        if (!(v[i] >= 1 && v[i] <= MAX_IMAGE_SIDE && v[i] == floor(v[i])))
+        if (!(v[i] >= 1 && v[i] <= MAX_IMAGE_SIDE))
             return error_set(err, ps->file, ps->line,
-                             "image: size must be whole numbers from 1 to %d, got %g",
-                             MAX_IMAGE_SIDE, v[i]);
+                             "image: size must be whole numbers from 1 to %d, got %s",
+                             MAX_IMAGE_SIDE, ps->tokens[1 + i]); /* as typed */
     ps->scene->width = (int)v[0];
     ps->scene->height = (int)v[1];
     return expect_end(ps, err);

@@ -195,9 +195,11 @@ int parse_sphereflake(struct parser *ps, struct error *err)
     struct sphereflake_params params;
     double v[8];
     int n = 0;
-    if (read_numbers(ps, v, 8, "centre x y z, radius, levels, axis x y z", err) < 0)
+    if (read_numbers(ps, v, 4, "centre x y z, radius", err) < 0 ||
+        read_wholes(ps, v + 4, 1, "levels", err) < 0 ||
+        read_numbers(ps, v + 5, 3, "axis x y z", err) < 0)
         return -1;
-    if (!(v[4] >= 0 && v[4] <= SPHEREFLAKE_MAX_LEVELS && v[4] == floor(v[4])))
+    if (!(v[4] >= 0 && v[4] <= SPHEREFLAKE_MAX_LEVELS))
         return error_set(err, ps->file, ps->line,
                          "sphereflake: levels must be a whole number from 0 to %d",
                          SPHEREFLAKE_MAX_LEVELS);
@@ -244,11 +246,12 @@ static void add_terrain_triangle(void *context, const struct vec3 v[3],
 int parse_heightfield(struct parser *ps, struct error *err)
 {
     double v[10];
-    if (read_numbers(ps, v, 10, "corner x y z, size, resolution, octaves, roughness, "
-                                "frequency, height, seed", err) < 0)
+    if (read_numbers(ps, v, 4, "corner x y z, size", err) < 0 ||
+        read_wholes(ps, v + 4, 2, "resolution, octaves: whole numbers", err) < 0 ||
+        read_numbers(ps, v + 6, 3, "roughness, frequency, height", err) < 0 ||
+        read_wholes(ps, v + 9, 1, "seed", err) < 0)
         return -1;
-    if (!(v[4] == floor(v[4]) && v[5] == floor(v[5]) && v[9] == floor(v[9]) &&
-          v[4] >= 0 && v[4] <= HEIGHTFIELD_MAX_RESOLUTION && v[5] >= 0 &&
+    if (!(v[4] >= 0 && v[4] <= HEIGHTFIELD_MAX_RESOLUTION && v[5] >= 0 &&
           v[5] <= HEIGHTFIELD_MAX_OCTAVES && v[9] >= 0 && v[9] <= 9007199254740992.0))
         return parse_error(ps, err, "resolution, octaves and seed must be whole numbers "
                                     "within their limits (README)");

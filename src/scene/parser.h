@@ -32,8 +32,10 @@ struct parser {
 int parse_error(const struct parser *ps, struct error *err, const char *message);
 /* The next word of the line, or NULL at its end. */
 const char *read_word(struct parser *ps);
-/* Reads n finite numbers into v; `what` names them for the message. */
+/* Reads n numbers (base/number.h's syntax) into v; `what` names them for the message. */
 int read_numbers(struct parser *ps, double *v, int n, const char *what, struct error *err);
+/* Reads n whole numbers ("8", not "8.0", "8e0" or "0x8") into v, like read_numbers(). */
+int read_wholes(struct parser *ps, double *v, int n, const char *what, struct error *err);
 /* Whether the next word is a number (an optional parameter follows). */
 int next_is_number(const struct parser *ps);
 /* -1 with a message if anything is left on the line. */

@@ -33,7 +33,8 @@ static int in_range(const struct global_work *work)
             const struct photon *p = &work->maps[m]->photons[i];
             struct vec3 power = photon_power(p);
             if (!isfinite(p->pos[0]) || !isfinite(p->pos[1]) || !isfinite(p->pos[2]) ||
-                !(vec3_max_component(power) <= WORK_PHOTON_POWER_MAX) || p->flags > 15)
+                !(vec3_max_component(power) <= WORK_PHOTON_POWER_MAX) ||
+                (p->flags & ~(15u | PHOTON_BACK)) != 0)
                 return 0;
         }
     for (size_t i = 0; i < work->n_records; i++) {
