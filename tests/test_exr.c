@@ -1,7 +1,7 @@
 /*
  * tests/test_exr.c -- the exr room: OpenEXR files read (image/exr_read.c), written
  * (image/exr_write.c), and zlib streams inflated (base/inflate.c), against files and
- * streams written by outside writers: OpenEXR's own library (tests/data/exr/make_exr.cpp,
+ * streams written by outside writers: OpenEXR's own library (scripts/make_exr_samples.cpp,
  * README.md there) and Python's zlib.
  *
  * The sample files hold a formula (R = x + 0.25 y, G = -2.5, B = 0.001 x y at (x, y)

@@ -1,6 +1,6 @@
-// tests/data/exr/make_exr.cpp -- writes the OpenEXR sample files of this folder with
+// scripts/make_exr_samples.cpp -- writes the OpenEXR sample files of tests/data/exr with
 // OpenEXR's own library (the outside writer the reader is tested against). A development
-// tool, never built by make: see README.md here for the command.
+// tool, never built by make: tests/data/exr/README.md has the command.
 //
 // Every colour file holds the formula the tests recompute independently, at pixel (x, y)
 // from the data window's top left:  R = x + 0.25 y,  G = -2.5,  B = 0.001 x y.
