@@ -2,7 +2,7 @@
  * app/convert.c -- `photon convert`: one image file to a PNG or PPM to look at (convert.h).
  *
  * Without --false-colour the picture is the display image a render writes beside its PFM,
- * the same bytes for the same --exposure (display_encode_row(), through png_write() and
+ * the same bytes for the same --exposure (display_encode(), through png_write() and
  * ppm_write()). With it, each pixel's number (the largest of R, G, B) in false colour with
  * the scale beside the image (image/false_colour.c: the map, the default range, the
  * layout). The output is checked before the input is read, refused when it is the input,

@@ -27,15 +27,19 @@ static unsigned char srgb_byte(double linear)
     return (unsigned char)floor(255.0 * e + 0.5);
 }
 
-void display_encode_row(const struct image *img, int y, double exposure, unsigned char *rgb)
+unsigned char *display_encode(const struct image *img, double exposure)
 {
     assert(isfinite(exposure) && exposure >= 0); /* the caller checked the option */
-    for (int x = 0; x < img->width; x++) {
-        struct vec3 p = image_get(img, x, y);
-        rgb[3 * x] = srgb_byte(pfm_stored_value(p.x) * exposure);
-        rgb[3 * x + 1] = srgb_byte(pfm_stored_value(p.y) * exposure);
-        rgb[3 * x + 2] = srgb_byte(pfm_stored_value(p.z) * exposure);
-    }
+    unsigned char *rgb = xmalloc((size_t)img->width * (size_t)img->height, 3, "display image");
+    size_t i = 0;
+    for (int y = 0; y < img->height; y++)
+        for (int x = 0; x < img->width; x++) {
+            struct vec3 p = image_get(img, x, y);
+            rgb[i++] = srgb_byte(pfm_stored_value(p.x) * exposure);
+            rgb[i++] = srgb_byte(pfm_stored_value(p.y) * exposure);
+            rgb[i++] = srgb_byte(pfm_stored_value(p.z) * exposure);
+        }
+    return rgb;
 }
 
 const char *display_suffix(enum display_format format)

@@ -10,7 +10,6 @@
  */
 #include "exr.h"
 
-#include <float.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -104,28 +103,9 @@ static uint64_t header_bytes(void)
     return n + 1;
 }
 
-/* Refuses a value beyond the float range before a byte is written, as pfm_write() does. */
-static int check_float_range(const char *name, const struct image *img, struct error *err)
-{
-    for (int y = 0; y < img->height; y++)
-        for (int x = 0; x < img->width; x++) {
-            struct vec3 v = image_get(img, x, y);
-            double m = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
-            if (m > FLT_MAX) {
-                error_set(err, name, 0, "pixel (%d, %d) from the top left holds %g, beyond "
-                          "an OpenEXR FLOAT's range (%g): scale the scene up or its lights "
-                          "down", x, y, m, FLT_MAX);
-                if (err != NULL)
-                    err->failed_write = 1;
-                return -1;
-            }
-        }
-    return 0;
-}
-
 int exr_write(const char *name, const struct image *img, struct error *err)
 {
-    if (check_float_range(name, img, err) < 0)
+    if (image_check_float_range(name, img, "an OpenEXR FLOAT's", err) < 0)
         return -1;
     FILE *f = output_open(name, err);
     if (f == NULL)

@@ -56,6 +56,12 @@ int image_write(const char *name, const struct image *img, struct error *err);
 /* Whether name ends in ".exr". */
 int image_name_is_exr(const char *name);
 
+/* Refuses an image with a value beyond the float range before a byte of it is written
+ * (-1, *err a failed write naming the pixel): a file of floats (format: "a PFM's") cannot
+ * hold it, and a clamp to FLT_MAX would be a silently wrong image. 0 when all fit. */
+int image_check_float_range(const char *name, const struct image *img, const char *format,
+                            struct error *err);
+
 /* The value a PFM keeps of v: v rounded to the nearest binary32 (clamped to +-FLT_MAX). */
 double pfm_stored_value(double v);
 
@@ -65,17 +71,17 @@ enum display_format {
     DISPLAY_PPM  /* ppm.c: binary PPM (P6), asked for by -o NAME.ppm */
 };
 
-/* Row y of img as the display image shows it, into rgb[0 .. 3 * width - 1] (R, G, B of
- * each pixel, left to right): each channel as the PFM keeps it (pfm_stored_value), times
- * exposure, clamped to [0, 1], sRGB-encoded, rounded to 8 bits; so the display image made
- * from a PFM read back (photon merge) has the same bytes as the one written beside it.
- * exposure is finite and >= 0 (the caller checked). */
-void display_encode_row(const struct image *img, int y, double exposure, unsigned char *rgb);
+/* img as the display image shows it, a new array (the caller frees it) of width x height
+ * pixels, R G B each, rows from the top: each channel as the PFM keeps it
+ * (pfm_stored_value), times exposure, clamped to [0, 1], sRGB-encoded, rounded to 8 bits;
+ * so the display image made from a PFM read back (photon merge) has the same bytes as the
+ * one written beside it. exposure is finite and >= 0 (the caller checked). */
+unsigned char *display_encode(const struct image *img, double exposure);
 
 /* The file-name ending of format: ".png" or ".ppm", as long as ".pfm". */
 const char *display_suffix(enum display_format format);
 
-/* Binary PPM (P6) of the bytes display_encode_row() makes, written atomically through
+/* Binary PPM (P6) of the bytes display_encode() makes, written atomically through
  * output_open()/output_commit(). -1 with *err filled when the file cannot be written. */
 int ppm_write(const char *name, const struct image *img, double exposure, struct error *err);
 /* The same file of bytes already made, as png_write_bytes() (png.h) takes them. */

@@ -75,9 +75,8 @@ static void put_little_endian(uint32_t bits, FILE *f)
         putc((int)((bits >> (8 * i)) & 0xFF), f);
 }
 
-/* Refuses an image with a value beyond the float range before a byte is written: a PFM
- * holds floats, and a clamp to FLT_MAX would be a silently wrong image. */
-static int check_float_range(const char *name, const struct image *img, struct error *err)
+int image_check_float_range(const char *name, const struct image *img, const char *format,
+                            struct error *err)
 {
     for (int y = 0; y < img->height; y++)
         for (int x = 0; x < img->width; x++) {
@@ -85,9 +84,9 @@ static int check_float_range(const char *name, const struct image *img, struct e
             double m = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
             if (m > FLT_MAX) {
                 error_set(err, name, 0, "pixel (%d, %d) from the top left holds %g, beyond "
-                          "a PFM's float range (%g): the scene's units give more radiance "
-                          "than a float holds (scale the scene up or its lights down)", x, y,
-                          m, FLT_MAX);
+                          "%s float range (%g): the scene's units give more radiance than a "
+                          "float holds (scale the scene up or its lights down)", x, y, m,
+                          format, FLT_MAX);
                 if (err != NULL)
                     err->failed_write = 1;
                 return -1;
@@ -98,7 +97,7 @@ static int check_float_range(const char *name, const struct image *img, struct e
 
 int pfm_write(const char *name, const struct image *img, struct error *err)
 {
-    if (check_float_range(name, img, err) < 0)
+    if (image_check_float_range(name, img, "a PFM's", err) < 0)
         return -1;
     FILE *f = output_open(name, err);
     if (f == NULL)

@@ -11,7 +11,7 @@
  * A chunk is its data's length, its 4-letter type, the data, and the CRC-32 of type and
  * data (Sec. 5.3); every multi-byte integer is big-endian (Sec. 7.1), put_u32() alone.
  * The scanlines, top row first, are each filter-type byte 0 ("None", Sec. 9.2) followed
- * by R G B of each pixel left to right: display_encode_row()'s bytes, the PPM's (or a
+ * by R G B of each pixel left to right: display_encode()'s bytes, the PPM's (or a
  * picture's bytes made beforehand, png_write_bytes()).
  *
  * The zlib stream (RFC 1950) is uncompressed deflate (RFC 1951, Sec. 3.2.4: stored
@@ -168,14 +168,9 @@ static void write_ihdr(struct png_stream *s, int width, int height)
     chunk_end(s);
 }
 
-/* A source of the display image's rows: row(context, y, rgb) fills rgb[0 .. 3 width - 1]
- * with row y's bytes, R G B of each pixel from the left. png_write() makes them from an
- * image by display_encode_row(), png_write_bytes() copies them from memory. */
-typedef void (*row_maker)(const void *context, int y, unsigned char *rgb);
-
-/* The file of Sec. 5.2 onwards for width x height pixels whose rows row() makes. */
-static int write_rows(const char *name, int width, int height, row_maker row,
-                      const void *context, struct error *err)
+/* The file of Sec. 5.2 onwards. */
+int png_write_bytes(const char *name, int width, int height, const unsigned char *rgb,
+                    struct error *err)
 {
     static const unsigned char signature[8] = {137, 80, 78, 71, 13, 10, 26, 10}; /* 5.2 */
     FILE *f = output_open(name, err);
@@ -193,7 +188,7 @@ static int write_rows(const char *name, int width, int height, row_maker row,
     unsigned char *scanline = xmalloc(scanline_bytes, 1, "PNG scanline");
     scanline[0] = FILTER_NONE;
     for (int y = 0; y < height; y++) {
-        row(context, y, scanline + 1);
+        memcpy(scanline + 1, rgb + (size_t)y * (scanline_bytes - 1), scanline_bytes - 1);
         put_raw(s, scanline, scanline_bytes);
     }
     send_block(s, 1);
@@ -204,40 +199,10 @@ static int write_rows(const char *name, int width, int height, row_maker row,
     return output_commit(f, err); /* a failed write shows in ferror(), checked there */
 }
 
-/* The image and exposure png_write() was given. */
-struct exposed {
-    const struct image *img;
-    double exposure;
-};
-
-static void exposed_row(const void *context, int y, unsigned char *rgb)
-{
-    const struct exposed *e = context;
-    display_encode_row(e->img, y, e->exposure, rgb);
-}
-
 int png_write(const char *name, const struct image *img, double exposure, struct error *err)
 {
-    struct exposed e = {img, exposure};
-    return write_rows(name, img->width, img->height, exposed_row, &e, err);
-}
-
-/* The bytes png_write_bytes() was given. */
-struct bytes {
-    int width;
-    const unsigned char *rgb;
-};
-
-static void bytes_row(const void *context, int y, unsigned char *rgb)
-{
-    const struct bytes *b = context;
-    size_t row = 3 * (size_t)b->width;
-    memcpy(rgb, b->rgb + (size_t)y * row, row);
-}
-
-int png_write_bytes(const char *name, int width, int height, const unsigned char *rgb,
-                    struct error *err)
-{
-    struct bytes b = {width, rgb};
-    return write_rows(name, width, height, bytes_row, &b, err);
+    unsigned char *rgb = display_encode(img, exposure);
+    int status = png_write_bytes(name, img->width, img->height, rgb, err);
+    xfree(rgb);
+    return status;
 }

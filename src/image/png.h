@@ -6,9 +6,9 @@
 
 #include "image.h"
 
-/* Writes img as an 8-bit RGB PNG (colour type 2) of the bytes display_encode_row() makes
- * (the PPM's), deflate in stored blocks, atomically through output_open()/output_commit().
- * -1 with *err filled when the file cannot be written. exposure: as display_encode_row's. */
+/* Writes img as an 8-bit RGB PNG (colour type 2) of the bytes display_encode() makes (the
+ * PPM's), deflate in stored blocks, atomically through output_open()/output_commit().
+ * -1 with *err filled when the file cannot be written. exposure: as display_encode()'s. */
 int png_write(const char *name, const struct image *img, double exposure, struct error *err);
 
 /* The same file of bytes already made: rgb holds width x height pixels, R G B each, rows

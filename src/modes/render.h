@@ -56,7 +56,7 @@
 #define DEFAULT_SPP 16       /* --spp when not given, for the camera-driven modes */
 #define MAX_DEPTH_LIMIT 1000 /* documented limit on --max-depth */
 /* The luminance below which adaptive sampling measures a pixel's error against this floor
- * instead of its mean. Radiance 1 shows as white at exposure 1 (display_encode_row), and one 8-bit
+ * instead of its mean. Radiance 1 shows as white at exposure 1 (display_encode), and one 8-bit
  * sRGB step near black is 1 / (255 * 12.92) = 3e-4 of it, so a pixel darker than 1e-3 is
  * within about three steps of black, where no one can see its relative error: without
  * the floor, nearly black pixels would spend samples on it. The floor is absolute, so it
