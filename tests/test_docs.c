@@ -74,9 +74,29 @@ static char *unroff(const char *roff)
     return text;
 }
 
-/* truth: help.h: photon.1 (--manual) is written from --help's own text: every line of
- *   --help but the headings (the lines from an empty line to one ending in ':') is a line
- *   of the manual page read back from its roff, the same words in the same order.
+/* --help's text with each option's entry on one line: a line that starts with
+ *   CONTINUED spaces and then a word (help.c's wrapping, under the text column) joined to
+ *   the one above. */
+#define CONTINUED "                             "
+static void join_wrapped(char *help)
+{
+    char *out = help;
+    for (const char *c = help; *c != '\0'; c++) {
+        if (*c == '\n' && strncmp(c + 1, CONTINUED, sizeof CONTINUED - 1) == 0 &&
+            c[sizeof CONTINUED] != ' ') {
+            *out++ = ' ';
+            c += sizeof CONTINUED - 1;
+        } else {
+            *out++ = *c;
+        }
+    }
+    *out = '\0';
+}
+
+/* truth: help.h: photon.1 (--manual) is written from --help's own text: every entry of
+ *   --help (a line, and the lines it is wrapped onto) but the headings (the lines from an
+ *   empty line to one ending in ':') is a line of the manual page read back from its
+ *   roff, the same words in the same order.
  * catches: a page written by hand or from another list of options, drifting from
  *   --help; an option's text escaped so that man shows something else. */
 static void test_manual_is_the_help(struct check *t)
@@ -87,6 +107,8 @@ static void test_manual_is_the_help(struct check *t)
     REQUIRE(t, photon_logged("--help", "", help_log) == 0);
     REQUIRE(t, photon_logged("--manual", "", manual_log) == 0);
     char *help = read_text_file(help_log), *roff = read_text_file(manual_log);
+    if (help != NULL)
+        join_wrapped(help);
     manual = roff != NULL ? unroff(roff) : NULL;
     int heading = 0, lines = 0;
     for (const char *h = help; h != NULL && manual != NULL && next_line(&h, line);) {
@@ -114,8 +136,49 @@ static void test_manual_is_the_help(struct check *t)
     remove(manual_log);
 }
 
+/* Whether --help's text has an entry for option (a line "  OPTION ..."). */
+static int has_entry(const char *help, const char *option)
+{
+    char start[64];
+    snprintf(start, sizeof start, "\n  %s ", option);
+    return strstr(help, start) != NULL;
+}
+
+/* truth: the README's modes table and src/modes/README.md: --passes and
+ *   --disc-coverage belong to 2009, --gather-rays to 1994 and 1996, --spp not to 2009
+ *   (its passes are its samples); photon --help 2009 lists that mode's options alone, and
+ *   its --paper words; the text layout of --help keeps every line within 100 columns but
+ *   the preset and --paper rows, which stay whole to be copied.
+ * catches: --help MODE read as a scene or ignored; another mode's options listed; the
+ *   text run past 100 columns (71 lines did). */
+static void test_help_of_a_mode(struct check *t)
+{
+    char log[256], line[LINE_MAX_BYTES];
+    temp_name(log, sizeof log, "docs", "help_mode.txt");
+    REQUIRE(t, photon_logged("--help", "2009", log) == 0);
+    char *help = read_text_file(log);
+    REQUIRE(t, help != NULL);
+    CHECK(t, has_entry(help, "--passes") && has_entry(help, "--disc-coverage") &&
+             has_entry(help, "--no-turn-photon-directions") && !has_entry(help, "--gather-rays") &&
+             !has_entry(help, "--spp") && has_entry(help, "--mode 2009") &&
+             !has_entry(help, "--mode 1996"));
+    free(help);
+    REQUIRE(t, photon_logged("--help", "", log) == 0);
+    help = read_text_file(log);
+    REQUIRE(t, help != NULL);
+    int wide = 0;
+    for (const char *h = help; *h != '\0'; h += strcspn(h, "\n") + (h[strcspn(h, "\n")] != 0)) {
+        size_t n = strcspn(h, "\n");
+        snprintf(line, sizeof line, "%.*s", (int)n, h);
+        wide += n > 100 && strncmp(line, "  --mode ", 9) != 0;
+    }
+    CHECK(t, wide == 0);
+    free(help);
+}
+
 void test_docs(struct check *t)
 {
     RUN_TEST(t, test_documented_commands_work);
     RUN_TEST(t, test_manual_is_the_help);
+    RUN_TEST(t, test_help_of_a_mode);
 }

@@ -104,8 +104,34 @@ static void test_subcommands(struct check *t)
     run_command("rm -f " OUT "*");
 }
 
+/* truth: getopt_long()'s spelling: --NAME=VALUE is --NAME VALUE for an option of one
+ *   value, so the two spellings parse to the same options (the same options_hash(), the
+ *   same scene, output and mode), the text after the first '=' the value (a file name
+ *   may hold '='); a switch or --crop with '=' is refused, naming the option; a repeat
+ *   across the spellings is refused as a repeat.
+ * catches: '=' taken into the option's name (unknown option), the value cut at a second
+ *   '=', --stats=0 read as --stats. */
+static void test_equals_spelling(struct check *t)
+{
+    struct options a, b;
+    struct error err;
+    CHECK(t, parse_words("--mode=2009 --passes=16 --seed=7 -o " OUT "_a=b.pfm", &a, &err) == 0);
+    CHECK(t, parse_words("--mode 2009 --passes 16 --seed 7 -o " OUT "_a=b.pfm", &b, &err) == 0);
+    CHECK(t, a.mode == MODE_SPPM2009 && options_hash(&a, 0) == options_hash(&b, 0) &&
+             strcmp(a.output, b.output) == 0);
+    CHECK(t, parse_words("--error=" OUT "_e=1.pfm --mode pt", &a, &err) == 0 &&
+             strcmp(a.error, OUT "_e=1.pfm") == 0);
+    CHECK(t, parse_words("--stats=0", &a, &err) < 0 &&
+             strstr(err.message, "--stats takes no value") != NULL);
+    CHECK(t, parse_words("--crop=0", &a, &err) < 0 &&
+             strstr(err.message, "--crop takes four values") != NULL);
+    CHECK(t, parse_words("--spp=4 --spp 8", &a, &err) < 0 &&
+             strstr(err.message, "given after --spp 4") != NULL);
+}
+
 void test_given_once(struct check *t)
 {
     RUN_TEST(t, test_render_command);
     RUN_TEST(t, test_subcommands);
+    RUN_TEST(t, test_equals_spelling);
 }

@@ -71,10 +71,40 @@ void help_lines(enum help_format format, const char *text)
     fputs(".fi\n", stdout);
 }
 
+#define HELP_WIDTH 100      /* the columns a line of the text layout takes at most  */
+#define HELP_TEXT_COLUMN 29 /* where an option's text starts: 2 + 26 + a space       */
+
+/* text from column HELP_TEXT_COLUMN on, broken at spaces so that no line passes
+ * HELP_WIDTH (a word longer than the room stands alone on its line). */
+static void put_wrapped(const char *text)
+{
+    const size_t room = HELP_WIDTH - HELP_TEXT_COLUMN;
+    while (*text != '\0') {
+        size_t cut = strlen(text);
+        if (cut > room) {
+            cut = room;
+            while (cut > 0 && text[cut] != ' ')
+                cut--;
+            if (cut == 0)
+                cut = strcspn(text, " ");
+        }
+        printf("%.*s\n", (int)cut, text);
+        text += cut;
+        while (*text == ' ')
+            text++;
+        if (*text != '\0')
+            printf("%*s", HELP_TEXT_COLUMN, "");
+    }
+}
+
 void help_option(enum help_format format, const char *left, const char *text)
 {
     if (format == HELP_TEXT) {
-        printf("  %-26s %s\n", left, text);
+        if (strlen(left) <= HELP_TEXT_COLUMN - 3)
+            printf("  %-26s ", left);
+        else
+            printf("  %s\n%*s", left, HELP_TEXT_COLUMN, "");
+        put_wrapped(text);
         return;
     }
     fputs(".TP\n.B ", stdout);

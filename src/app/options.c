@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "../base/alloc.h"
 #include "../base/hash.h"
 #include "../modes/ppm2008.h"
 #include "help.h"
@@ -78,6 +79,25 @@ static void value_note(const struct option_spec *spec, char *text, size_t size)
     snprintf(text, size, " (%s: %s)", spec->kind == OPT_CROP ? "each" : spec->args, range);
 }
 
+/* photon --help MODE: the options that mode takes, its presets and --paper's words. */
+static void print_mode_help(enum mode mode)
+{
+    printf("usage: photon --mode %s [options] SCENE\n\noptions of --mode %s (each mode's "
+           "departures from its paper are switches:\n--NAME the default, --no-NAME the "
+           "paper's; src/modes/README.md has why and the figures):\n", mode_name(mode),
+           mode_name(mode));
+    for (size_t i = 0; i < N_OPTION_SPECS; i++) {
+        if (!((option_specs[i].modes >> mode) & 1u))
+            continue;
+        char left[40], range[128], text[1024];
+        snprintf(left, sizeof left, "%s %s", option_specs[i].name, option_specs[i].args);
+        value_note(&option_specs[i], range, sizeof range);
+        snprintf(text, sizeof text, "%s%s", option_specs[i].help, range);
+        help_option(HELP_TEXT, left, text);
+    }
+    print_presets(HELP_TEXT, (int)mode);
+}
+
 static void print_help(enum help_format format)
 {
     help_begin(format, PHOTON_VERSION);
@@ -111,11 +131,12 @@ static void print_help(enum help_format format)
         snprintf(text, sizeof text, "%s%s%s", note, option_specs[i].help, range);
         help_option(format, left, text);
     }
-    help_option(format, "--help", "print this and exit");
+    help_option(format, "--help [MODE]", "print this (with MODE: that mode's options, presets "
+                                         "and --paper alone) and exit");
     help_option(format, "--version", "print the version and exit");
     help_option(format, "--manual", "print this as a manual page (roff; make install writes "
                                     "photon.1 from it) and exit");
-    print_presets(format);
+    print_presets(format, -1);
 }
 
 static const char *mode_at(size_t i) { return mode_name(every_mode[i]); } /* suggest.h */
@@ -269,6 +290,12 @@ static int apply_words(const struct words *w, struct options *o, int given[N_OPT
     char **argv = w->word;
     int argc = w->n;
     for (int i = w->first; i < argc; i++) {
+        enum mode asked;
+        if ((strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) && i + 1 < argc &&
+            read_mode(argv[i + 1], &asked, NULL) == 0) {
+            print_mode_help(asked);
+            return 1;
+        }
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0 ||
             strcmp(argv[i], "--manual") == 0) {
             print_help(strcmp(argv[i], "--manual") == 0 ? HELP_ROFF : HELP_TEXT);
@@ -357,7 +384,60 @@ static int given_word(const void *given, const char *name)
     return ((const int *)given)[spec - option_specs];
 }
 
+/* The option of the table spelt by name[0 .. n - 1], or NULL. */
+static const struct option_spec *find_spec_prefix(const char *name, size_t n)
+{
+    for (size_t i = 0; i < N_OPTION_SPECS; i++)
+        if (strlen(option_specs[i].name) == n && strncmp(option_specs[i].name, name, n) == 0)
+            return &option_specs[i];
+    return NULL;
+}
+
+/* argv with each --NAME=VALUE, NAME an option of one value, as the two words --NAME VALUE
+ * (the spelling of getopt_long(), which users bring from other tools): a new array
+ * (*split, the caller frees it) of argv's words and, for a split word, the table's name
+ * and the text after '='. -1 with *err for --NAME=... of a switch or of --crop. */
+static int split_equals(int argc, char **argv, char ***split, int *split_argc,
+                        struct error *err)
+{
+    *split = xmalloc(2 * (size_t)argc + 1, sizeof **split, "command line");
+    int n = 0;
+    for (int i = 0; i < argc; i++) {
+        const char *equals = strchr(argv[i], '=');
+        const struct option_spec *spec =
+            i > 0 && strncmp(argv[i], "--", 2) == 0 && equals != NULL
+                ? find_spec_prefix(argv[i], (size_t)(equals - argv[i]))
+                : NULL;
+        if (spec == NULL) {
+            (*split)[n++] = argv[i];
+            continue;
+        }
+        if (spec->kind == OPT_FLAG || spec->kind == OPT_OFF || spec->kind == OPT_CROP)
+            return error_set(err, "", 0, "%s: %s takes %s, not '=' and a value", argv[i],
+                             spec->name, spec->kind == OPT_CROP ? "four values" : "no value");
+        (*split)[n++] = (char *)spec->name; /* only read */
+        (*split)[n++] = (char *)equals + 1;
+    }
+    (*split)[n] = NULL;
+    *split_argc = n;
+    return 0;
+}
+
+static int parse_split_options(int argc, char **argv, struct options *o, struct error *err);
+
 int parse_options(int argc, char **argv, struct options *o, struct error *err)
+{
+    char **split;
+    int split_argc = 0;
+    int status = split_equals(argc, argv, &split, &split_argc, err);
+    if (status == 0)
+        status = parse_split_options(split_argc, split, o, err);
+    xfree(split);
+    return status;
+}
+
+/* parse_options() once every --NAME=VALUE is two words. */
+static int parse_split_options(int argc, char **argv, struct options *o, struct error *err)
 {
     int given[N_OPTION_SPECS] = {0};
     int status = apply_preset_and_words(argc, argv, o, given, err);

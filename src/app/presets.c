@@ -141,13 +141,15 @@ void paper_words(enum mode mode, int paper, struct preset_words *out)
     split_words(words, out);
 }
 
-void print_presets(enum help_format format)
+void print_presets(enum help_format format, int only)
 {
     char line[512];
     help_section(format, "quality presets (--quality NAME; default: the defaults above; the "
                          "options given\non the command line win over the preset's, wherever "
                          "they stand)");
     for (size_t i = 0; i < sizeof presets / sizeof presets[0]; i++) {
+        if (only >= 0 && presets[i].mode != (enum mode)only)
+            continue;
         snprintf(line, sizeof line, "  --mode %-7s %-9s  %s\n", mode_name(presets[i].mode),
                  quality_name(presets[i].quality), presets[i].words);
         help_lines(format, line);
@@ -155,6 +157,8 @@ void print_presets(enum help_format format)
     help_section(format, "--paper (the options it stands for, before the command line's; and "
                          "the specular\npixels take --spp samples)");
     for (size_t i = 0; i < sizeof as_written / sizeof as_written[0]; i++) {
+        if (only >= 0 && as_written[i].mode != (enum mode)only)
+            continue;
         snprintf(line, sizeof line, "  --mode %-7s %s\n", mode_name(as_written[i].mode),
                  as_written[i].words);
         help_lines(format, line);

@@ -36,7 +36,8 @@ void preset_words(enum mode mode, enum quality quality, struct preset_words *out
 /* The words --paper stands for in mode (none when paper is 0): its departures off. */
 void paper_words(enum mode mode, int paper, struct preset_words *out);
 
-/* Prints the table for --help: one line for each mode's preview and reference presets. */
-void print_presets(enum help_format format);
+/* Prints the tables for --help: one line for each mode's preview and reference presets,
+ * and each mode's --paper words; only the mode `only` (an enum mode) when it is >= 0. */
+void print_presets(enum help_format format, int only);
 
 #endif
