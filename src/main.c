@@ -82,7 +82,8 @@ static int choose_window(const struct options *o, int width, int height,
 }
 
 /* Progress is shown when asked for, or by default when the environment looks like an
- * interactive terminal: C99 cannot ask whether stderr is one, so TERM stands in for it. */
+ * interactive terminal: C99 cannot ask whether stderr is one, so TERM stands in for it.
+ * Its form, a log's lines or a line in place, is chosen by base/progress.h. */
 static int show_progress(int requested)
 {
     if (requested >= 0)

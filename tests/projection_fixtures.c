@@ -25,6 +25,7 @@ void trace_into(const struct scene *scene, const struct projection_maps *pm, siz
     ts.targets = NULL;
     ts.projection = pm;
     ts.by_parts = 0;
+    ts.watch = NULL;
     unsigned long long rays = 0;
     trace_photons_into(scene, &ts, sink, &rays);
 }

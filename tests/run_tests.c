@@ -42,6 +42,7 @@ static const struct room rooms[] = {
     {"jensen1994", test_jensen1994, 0},
     {"jensen1996", test_jensen1996, 0}, {"report", test_report, 0}, {"merge", test_merge, 0},
     {"merge_work_file", test_merge_work_file, 0},
+    {"progress", test_progress, 0},
     {"cli", test_cli, 0},         {"presets", test_presets, 0},     {"docs", test_docs, 0},
     {"precomputed", test_precomputed, 0}, {"paper", test_paper, 0},
     {"hit_points", test_hit_points, 0}, {"tte_fit", test_tte_fit, 0},

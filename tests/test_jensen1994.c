@@ -375,10 +375,10 @@ static void test_mirror_caustic_profile(struct check *t)
     struct jensen1994_stats stats;
     struct error err;
     struct irradiance_stores photons, maps;
-    int traced = jensen1994_trace(scene, 1, MAX_DEPTH_LIMIT, &js, &photons, &stats, &err) == 0;
+    int traced = jensen1994_trace(scene, 1, MAX_DEPTH_LIMIT, &js, &photons, &stats, 0, &err) == 0;
     js.illumination_maps = 1;
     traced = traced &&
-             jensen1994_trace(scene, 1, MAX_DEPTH_LIMIT, &js, &maps, &stats, &err) == 0;
+             jensen1994_trace(scene, 1, MAX_DEPTH_LIMIT, &js, &maps, &stats, 0, &err) == 0;
     CHECK(t, traced);
     if (traced) {
         CHECK(t, stats.illumination_maps == 1 && stats.illumination_ci_maps > 0);

@@ -174,7 +174,7 @@ static void panel_flux(struct check *t, double rho_d, double rho_s, int by_parts
     if (scene == NULL)
         return;
     struct trace_settings ts = {SEED, 0, n, MAX_PHOTONS, PHOTON_MAP_GLOBAL, 1, NULL, NULL,
-                                by_parts};
+                                by_parts, NULL};
     struct photon_trace tr;
     struct error err;
     CHECK(t, trace_photons(scene, &ts, &tr, &err) == 0);
@@ -310,7 +310,7 @@ static void test_trace_refuses_overflow(struct check *t)
         return;
     struct photon_trace full = trace(scene, 100, PHOTON_MAP_GLOBAL, 0, NULL);
     struct trace_settings ts = {SEED,         0,    100, 0, PHOTON_MAP_GLOBAL, TEST_MAX_DEPTH,
-                                NULL,         NULL, 0};
+                                NULL,         NULL, 0,    NULL};
     struct photon_trace out;
     struct error err;
     ts.max_stored = full.n_photons;

@@ -44,6 +44,7 @@ void test_report(struct check *t); /* test_report.c: --report, --time-limit, ...
 void test_merge(struct check *t);  /* test_merge.c: tile records, photon merge      */
 void test_merge_work_file(struct check *t); /* test_merge_work_file.c: the work file's bytes */
 void test_cli(struct check *t);    /* test_cli.c: the command line, exit statuses */
+void test_progress(struct check *t); /* test_progress.c: the progress line, its forecast */
 void test_docs(struct check *t);   /* test_docs.c: the documentation against the product */
 void test_spd(struct check *t);    /* test_spd.c: all 22 SPD files (PHOTON_SPD), by name only */
 void test_presets(struct check *t); /* test_presets.c: --quality's presets         */

@@ -26,6 +26,7 @@ struct photon_trace trace(const struct scene *scene, size_t n, unsigned store,
     ts.targets = targets;
     ts.projection = NULL;
     ts.by_parts = 0;
+    ts.watch = NULL;
     struct photon_trace out;
     struct error err;
     if (trace_photons(scene, &ts, &out, &err) < 0)

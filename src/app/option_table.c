@@ -251,7 +251,10 @@ const struct option_spec option_specs[] = {
      "PNG or PPM only (not the PFM): multiply radiance by E before sRGB encoding "
      "(default 1)", FOR_ALL},
     {"--stats", OPT_FLAG, FIELD(stats), 0, 0, "", "print key=value statistics on stderr", FOR_ALL},
-    {"--progress", OPT_FLAG, FIELD(progress), 0, 0, "", "show a progress line on stderr", FOR_ALL},
+    {"--progress", OPT_FLAG, FIELD(progress), 0, 0, "",
+     "show each phase's progress and wall-clock time left on stderr: to a file (ftell() "
+     "works) a line at most every 10 s, else one line rewritten at most once a second "
+     "(default: on when TERM names a terminal and CI is unset)", FOR_ALL},
     {"--no-progress", OPT_FLAG, FIELD(progress), 0, 0, "", "never show the progress line", FOR_ALL},
 };
 

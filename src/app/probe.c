@@ -293,9 +293,9 @@ int probe_command(int argc, char **argv)
     struct jensen1994_settings with_maps = args.settings;
     with_maps.illumination_maps = 1;
     int status = jensen1994_trace(scene, args.seed, MAX_DEPTH_LIMIT, &args.settings, &st.photons,
-                                  &stats, &err) == 0 &&
+                                  &stats, 0, &err) == 0 &&
                          jensen1994_trace(scene, args.seed, MAX_DEPTH_LIMIT, &with_maps,
-                                          &st.illumination, &stats, &err) == 0 &&
+                                          &st.illumination, &stats, 0, &err) == 0 &&
                          write_probe(scene, &st, &args, &err) == 0 &&
                          outputs_publish(&err) == 0
                      ? 0

@@ -6,11 +6,18 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <time.h>
+
+#include "../base/progress.h"
 
 void fill_cache_pass(const struct scene *scene, uint64_t seed,
                      struct radiance_estimator estimator, const struct irradiance_cache *cache,
                      int progress, struct render_counters *counters)
 {
+    struct progress line; /* rows are the forecast's work: a rough one, rows of sky cost
+                             less than rows of glass, but the only one known beforehand */
+    progress_begin(&line, progress ? stderr : NULL, "irradiance cache", scene->height,
+                   time(NULL));
     for (int y = 0; y < scene->height; y++) {
         for (int x = 0; x < scene->width; x++) {
             uint64_t pixel = (uint64_t)y * (uint64_t)scene->width + (uint64_t)x;
@@ -18,12 +25,12 @@ void fill_cache_pass(const struct scene *scene, uint64_t seed,
             struct ray ray = camera_ray(&scene->camera, x + 0.5, y + 0.5);
             estimator.radiance(estimator.mode, ray, &rng, counters);
         }
-        if (progress)
-            fprintf(stderr, "\rirradiance cache: row %d of %d, %zu records", y + 1,
-                    scene->height, irradiance_cache_records(cache));
+        int shown = y + 1 == scene->height ? progress_end(&line, y + 1, time(NULL))
+                                           : progress_update(&line, y + 1, time(NULL));
+        if (shown)
+            progress_print(&line, "row %d of %d, %zu records", y + 1, scene->height,
+                           irradiance_cache_records(cache));
     }
-    if (progress)
-        fprintf(stderr, "\n");
 }
 
 /* The ray offset at p (geom/ray.h): the least distance the renderer tells apart there. */

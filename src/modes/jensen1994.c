@@ -537,7 +537,7 @@ static int photon_stores(struct jensen1994 *mode, const struct scene *scene,
 {
     if (work->n_maps == 0) {
         if (jensen1994_trace(scene, rs->seed, rs->max_depth, mode->settings, &mode->stores,
-                             mode->stats, err) < 0)
+                             mode->stats, rs->progress, err) < 0)
             return -1;
         global_work_add_maps(work, 3);
         work->maps[0] = mode->stores.photons;

@@ -14,6 +14,7 @@
 #include "../photon/projection_map.h"
 #include "../photon/trace.h"
 #include "../scene/brdf.h"
+#include "trace_progress.h"
 
 /* ---- Sec. 3, pass 1: light path tracing into the photon map ---- */
 
@@ -65,7 +66,7 @@ static int deposit_photon(void *context, const struct photon_event *e)
 /* Light rays through projection maps (when on) into d; fills the projection stats. */
 static int trace_light_paths(const struct scene *scene, const struct trace_settings *base,
                              const struct jensen1994_settings *settings, struct deposits *d,
-                             struct jensen1994_stats *stats)
+                             struct jensen1994_stats *stats, int progress)
 {
     struct trace_settings ts = *base;
     struct projection_settings ps = {PROJECTION_N_THETA_DEFAULT, PROJECTION_N_PHI_DEFAULT,
@@ -74,7 +75,10 @@ static int trace_light_paths(const struct scene *scene, const struct trace_setti
         settings->projection_maps ? projection_maps_build(scene, &ps) : NULL;
     ts.projection = maps;
     struct photon_sink sink = {deposit_photon, d};
+    struct trace_progress tp;
+    trace_progress_begin(&tp, progress, "photon tracing", &ts);
     int status = trace_photons_into(scene, &ts, &sink, &stats->photon_rays);
+    trace_progress_end(&tp, status == 0);
     if (maps != NULL) {
         struct projection_stats pst = projection_maps_stats(maps);
         stats->projection_maps = pst.n_maps;
@@ -163,7 +167,7 @@ void count_illumination(const struct illumination_maps *maps,
 
 int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
                      const struct jensen1994_settings *settings, struct irradiance_stores *out,
-                     struct jensen1994_stats *stats, struct error *err)
+                     struct jensen1994_stats *stats, int progress, struct error *err)
 {
     struct trace_settings ts;
     memset(&ts, 0, sizeof ts);
@@ -190,7 +194,7 @@ int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
         xfree(receives);
         xfree(footprint);
     }
-    if (trace_light_paths(scene, &ts, settings, &d, stats) < 0) {
+    if (trace_light_paths(scene, &ts, settings, &d, stats, progress) < 0) {
         photon_trace_free(&d.photons);
         photon_trace_free(&d.glossy);
         illumination_maps_free(d.illumination);

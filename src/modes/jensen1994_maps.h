@@ -31,10 +31,11 @@ struct irradiance_stores {
  * seed, followed for at most max_depth bounces, deposited into *out (which the caller
  * releases with irradiance_stores_free()); fills the photon fields of *stats. Returns 0,
  * or -1 with *err filled and nothing left allocated when more than MAX_PHOTONS would be
- * stored. The render's first step, and `photon probe`'s (app/probe.h). */
+ * stored. progress: whether the trace shows a progress line (trace_progress.h). The
+ * render's first step, and `photon probe`'s (app/probe.h). */
 int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
                      const struct jensen1994_settings *settings, struct irradiance_stores *out,
-                     struct jensen1994_stats *stats, struct error *err);
+                     struct jensen1994_stats *stats, int progress, struct error *err);
 void irradiance_stores_free(struct irradiance_stores *stores);
 
 /* Whether a photon landing on primitive prim of material m keeps its direction (in the

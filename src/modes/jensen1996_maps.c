@@ -15,6 +15,7 @@
 #include "../base/alloc.h"
 #include "../photon/trace.h"
 #include "../scene/emit.h"
+#include "trace_progress.h"
 
 /* Where the global trace's photons go: every photon but the shadow ones to the global
  * map, and the direct and shadow photons also to their light's visibility map, since a
@@ -105,7 +106,10 @@ static int build_global_map(const struct scene *scene, const struct render_setti
     if (settings->shadow_photons && scene->n_lights > 0)
         gs.visibility = xcalloc(scene->n_lights, sizeof *gs.visibility, "visibility maps");
     struct photon_sink sink = {store_global, &gs};
+    struct trace_progress tp;
+    trace_progress_begin(&tp, rs->progress, "global photon map", &ts);
     int failed = trace_photons_into(scene, &ts, &sink, &stats->photon_rays) < 0;
+    trace_progress_end(&tp, !failed);
     stats->photons_emitted += ts.n_emit;
     maps->global = balance_trace(&gs.global);
     stats->photons_global = maps->global->n_photons;
@@ -138,8 +142,11 @@ static int build_caustic_map(const struct scene *scene, const struct render_sett
         struct trace_settings ts =
             photon_pass(rs, 1, settings->caustic_photons, PHOTON_MAP_CAUSTIC);
         ts.targets = &targets;
+        struct trace_progress tp;
+        trace_progress_begin(&tp, rs->progress, "caustic photon map", &ts);
         struct photon_trace traced;
         status = trace_photons(scene, &ts, &traced, err);
+        trace_progress_end(&tp, status == 0);
         if (status == 0) {
             stats->photon_rays += traced.rays;
             stats->photons_emitted += traced.n_emitted;

@@ -29,6 +29,7 @@
 #include "../photon/trace.h"
 #include "../scene/brdf.h"
 #include "surface.h"
+#include "trace_progress.h"
 
 struct photons_mode {
     const struct scene *scene;   /* borrowed                                            */
@@ -102,8 +103,12 @@ static struct kdtree *build_global_map(const struct scene *scene,
     ts.targets = NULL;
     ts.projection = NULL;
     clock_t start = clock();
+    struct trace_progress tp;
+    trace_progress_begin(&tp, rs->progress, "global photon map", &ts);
     struct photon_trace traced;
-    if (trace_photons(scene, &ts, &traced, err) < 0)
+    int failed = trace_photons(scene, &ts, &traced, err) < 0;
+    trace_progress_end(&tp, !failed);
+    if (failed)
         return NULL;
     stats->seconds_photons = cpu_seconds(start);
     stats->photons_emitted = traced.n_emitted;

@@ -23,6 +23,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "../base/progress.h"
 #include "../photon/trace.h"
 #include "pixel_error.h"
 
@@ -61,24 +62,21 @@ static size_t photon_tracing_pass(const struct progressive_steps *steps,
     return ts.n_emit;
 }
 
-/* The progress line; with a target error, the blocks within it at the last judgement
- * (none before ERROR_MIN_SPP passes) in place of the time left. */
+/* The progress line's words (base/progress.h adds the time); with a target error, the
+ * blocks within it at the last judgement (none before ERROR_MIN_SPP passes), and no
+ * forecast, since the passes it takes are not known. */
 static void show_progress(const struct progressive_steps *steps,
-                          const struct render_settings *rs, long pass, long passes,
-                          double photons, double seconds, int done)
+                          const struct render_settings *rs, struct progress *line, long pass,
+                          long passes, double photons)
 {
-    double left = seconds * (double)(passes - pass) / (double)pass;
     double mean_radius = steps->mean_radius(steps->mode);
     if (steps->target_reached != NULL)
-        fprintf(stderr, "\rphoton: pass %ld, %d of %d blocks within %g, %.3g photons, mean "
-                "radius %.3g, %.1f s   ", pass, steps->tally->target_within,
-                steps->tally->target_blocks, rs->target_error, photons, mean_radius, seconds);
+        progress_print(line, "pass %ld, %d of %d blocks within %g, %.3g photons, mean "
+                       "radius %.3g", pass, steps->tally->target_within,
+                       steps->tally->target_blocks, rs->target_error, photons, mean_radius);
     else
-        fprintf(stderr, "\rphoton: pass %ld/%ld, %.3g photons, mean radius %.3g, %.1f s, "
-                "about %.0f s left   ", pass, passes, photons, mean_radius, seconds, left);
-    if (done)
-        fputc('\n', stderr);
-    fflush(stderr);
+        progress_print(line, "pass %ld/%ld, %.3g photons, mean radius %.3g", pass, passes,
+                       photons, mean_radius);
 }
 
 /* Calls checkpoint with the image so far; returns the CPU seconds it took. */
@@ -99,7 +97,10 @@ struct progressive_run progressive_passes(const struct progressive_steps *steps,
     struct progressive_run run = {0, 0, 0.0};
     double limit = rs->time_limit;
     clock_t start = clock();
-    double excluded = 0.0, last_shown = 0.0;
+    double excluded = 0.0;
+    struct progress line;
+    progress_begin(&line, rs->progress ? stderr : NULL, "passes",
+                   steps->target_reached != NULL ? 0.0 : (double)ps->passes, time(NULL));
     long first_passes = rs->error_confidence > 0 ? ERROR_MIN_SPP : 1, judged = 0;
     int reached = 0;
     while (run.passes < ps->passes && !reached &&
@@ -125,14 +126,13 @@ struct progressive_run progressive_passes(const struct progressive_steps *steps,
         if (ps->snapshot != NULL && ps->snapshot_every > 0 &&
             run.passes % ps->snapshot_every == 0)
             excluded += call_checkpoint(steps, ps->snapshot, run.photons_emitted, image, at);
-        if (rs->progress && (last || run.seconds - last_shown >= 0.5)) {
-            show_progress(steps, rs, run.passes, ps->passes, (double)run.photons_emitted,
-                          run.seconds, last);
-            last_shown = run.seconds;
-        }
+        if (progress_update(&line, (double)run.passes, time(NULL)))
+            show_progress(steps, rs, &line, run.passes, ps->passes, (double)run.photons_emitted);
     }
     if (steps->target_reached != NULL && judged != run.passes)
         steps->target_reached(steps->mode, (double)run.photons_emitted); /* the last tally */
+    if (progress_end(&line, (double)run.passes, time(NULL)))
+        show_progress(steps, rs, &line, run.passes, ps->passes, (double)run.photons_emitted);
     steps->evaluate(steps->mode, (double)run.photons_emitted, image);
     return run;
 }

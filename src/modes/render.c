@@ -19,6 +19,7 @@
 #include <time.h>
 
 #include "../base/alloc.h"
+#include "../base/progress.h"
 #include "../base/sequence02.h"
 #include "../image/error_image.h"
 #include "pixel_error.h"
@@ -309,36 +310,28 @@ static int target_reached(const struct accumulator *acc, const struct render_set
     return reached;
 }
 
-/* Without adaptive sampling: passes and the time left at the rate so far per sample (shown
- * after a pass, so n_samples > 0); the pixels that see a light through mirrors or glass,
- * when there are any, are named with their own count, so that theirs is not taken for
- * every pixel's. With it: passes, and how many pixels the last pass sampled, since the
- * time left cannot be foreseen. With a target error: passes, and the blocks within it at
- * the last judgement (none before ERROR_MIN_SPP). */
+/* The progress line's words (base/progress.h adds the time, and the time left where the
+ * samples to take are known). Without adaptive sampling: passes, at the rate so far per
+ * sample; the pixels that see a light through mirrors or glass, when there are any, are
+ * named with their own count, so that theirs is not taken for every pixel's. With it:
+ * passes, and how many pixels the last pass sampled, since the time left cannot be
+ * foreseen. With a target error: passes, and the blocks within it at the last judgement
+ * (none before ERROR_MIN_SPP). */
 static void show_progress(const struct accumulator *acc, const struct render_settings *rs,
-                          const struct render_counters *counters, int passes, double seconds,
-                          int done)
+                          const struct render_counters *counters, int passes,
+                          struct progress *line)
 {
-    double left = seconds * (double)(acc->n_target - acc->n_samples) / acc->n_samples;
-    if (rs->target_error > 0) {
-        fprintf(stderr, "\rphoton: %d samples per pixel, %d of %d blocks within %g, %.1f s   ",
-                passes, counters->target_within, counters->target_blocks, rs->target_error,
-                seconds);
-    } else if (acc->lum == NULL && acc->n_specular == 0) {
-        fprintf(stderr, "\rphoton: %d/%d samples per pixel, %.1f s, about %.0f s left   ",
-                passes, acc->most, seconds, left);
-    } else if (acc->lum == NULL) {
-        fprintf(stderr, "\rphoton: pass %d of %d: %d samples per pixel, %d in the %zu "
-                "specular pixels, %.1f s, about %.0f s left   ", passes, acc->most, acc->spp,
-                acc->most, acc->n_specular, seconds, left);
-    } else {
-        fprintf(stderr, "\rphoton: pass %d of at most %d, %zu of %zu pixels sampling, %.1f s   ",
-                passes, acc->most, acc->n_active, (size_t)acc->width * (size_t)acc->height,
-                seconds);
-    }
-    if (done)
-        fputc('\n', stderr);
-    fflush(stderr);
+    if (rs->target_error > 0)
+        progress_print(line, "%d samples per pixel, %d of %d blocks within %g", passes,
+                       counters->target_within, counters->target_blocks, rs->target_error);
+    else if (acc->lum == NULL && acc->n_specular == 0)
+        progress_print(line, "%d/%d samples per pixel", passes, acc->most);
+    else if (acc->lum == NULL)
+        progress_print(line, "pass %d of %d: %d samples per pixel, %d in the %zu specular "
+                       "pixels", passes, acc->most, acc->spp, acc->most, acc->n_specular);
+    else
+        progress_print(line, "pass %d of at most %d, %zu of %zu pixels sampling", passes,
+                       acc->most, acc->n_active, (size_t)acc->width * (size_t)acc->height);
 }
 
 /* Takes sample passes until every pixel has reached its target or stopped, the time limit
@@ -351,8 +344,13 @@ static int run_passes(const struct scene *scene, const struct render_settings *r
                       const struct checkpoint *checkpoint, struct render_counters *counters,
                       double *seconds)
 {
-    double excluded = 0.0, last_shown = 0.0;
+    double excluded = 0.0;
     int passes = 0, checked = 0, judged = 0, reached = 0;
+    struct progress line; /* the forecast's work: samples, whose count is known without
+                             adaptive sampling or a target error */
+    int known = acc->lum == NULL && rs->target_error <= 0;
+    progress_begin(&line, rs->progress ? stderr : NULL, "sample passes",
+                   known ? (double)acc->n_target : 0.0, time(NULL));
     struct image *mean = checkpoint != NULL ? image_create(acc->out_width, acc->out_height)
                                             : NULL;
     /* an error image needs ERROR_MIN_SPP samples of every pixel, time limit or not */
@@ -371,10 +369,8 @@ static int run_passes(const struct scene *scene, const struct render_settings *r
         *seconds = cpu_seconds(start) - excluded;
         int last = passes == acc->most || reached ||
                    (passes >= first_passes && rs->time_limit > 0 && *seconds >= rs->time_limit);
-        if (rs->progress && (last || *seconds - last_shown >= 0.5)) {
-            show_progress(acc, rs, counters, passes, *seconds, passes == acc->most || reached);
-            last_shown = *seconds;
-        }
+        if (progress_update(&line, (double)acc->n_samples, time(NULL)))
+            show_progress(acc, rs, counters, passes, &line);
         if (mean != NULL && (is_power_of_two(passes) || last)) {
             mean_image(acc, mean);
             excluded += checkpoint->at(checkpoint->context, mean, samples_per_pixel(acc),
@@ -386,8 +382,8 @@ static int run_passes(const struct scene *scene, const struct render_settings *r
     }
     if (rs->target_error > 0 && judged != passes)
         target_reached(acc, rs, counters); /* the tally of the image as it ends */
-    if (rs->progress && passes != acc->most && !reached)
-        show_progress(acc, rs, counters, passes, *seconds, 1); /* ended early: end the line */
+    if (progress_end(&line, (double)acc->n_samples, time(NULL)))
+        show_progress(acc, rs, counters, passes, &line);
     if (mean != NULL && checked != passes) {
         mean_image(acc, mean);
         checkpoint->at(checkpoint->context, mean, samples_per_pixel(acc), *seconds);

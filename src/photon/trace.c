@@ -337,9 +337,12 @@ int trace_photons_into(const struct scene *scene, const struct trace_settings *t
                        const struct photon_sink *sink, unsigned long long *rays)
 {
     assert(ts->n_emit <= MAX_PHOTONS && ts->max_depth >= 0);
-    for (size_t i = 0; i < ts->n_emit; i++)
+    for (size_t i = 0; i < ts->n_emit; i++) {
+        if (ts->watch != NULL && i > 0 && i % TRACE_WATCH_EVERY == 0)
+            ts->watch->at(ts->watch->context, i);
         if (trace_photon(scene, ts, i, sink, rays) < 0)
             return -1;
+    }
     return 0;
 }
 

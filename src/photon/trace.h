@@ -46,6 +46,17 @@
 
 struct projection_maps;
 
+/* Told how far a trace has gone: at(context, i) before photon i whenever i is a positive
+ * multiple of TRACE_WATCH_EVERY. The caller's progress line hangs on it; the tracer keeps
+ * no clock and prints nothing. */
+struct trace_watch {
+    void (*at)(void *context, size_t emitted);
+    void *context;
+};
+
+#define TRACE_WATCH_EVERY 4096 /* photons: a few milliseconds of tracing, often enough for
+                                  a line a second, too seldom to cost anything          */
+
 struct trace_settings {
     uint64_t seed;                          /* the run's seed                             */
     uint64_t pass;                          /* photon i uses rng_stream(seed,
@@ -72,6 +83,7 @@ struct trace_settings {
                                                whose every bounce took f_r,s, glossy lobes
                                                included (Jensen 1996, Eq. 2); 0: one whose
                                                every bounce took a delta lobe            */
+    const struct trace_watch *watch;        /* borrowed; NULL: none                       */
 };
 
 /* The traced photons and what it took to make them. */

@@ -22,7 +22,7 @@ void bench_photons(void)
     if (scene == NULL)
         return;
     struct trace_settings ts = {1, 0, BENCH_PHOTONS, MAX_PHOTONS, PHOTON_MAP_GLOBAL,
-                                MAX_DEPTH_LIMIT, NULL, NULL, 0};
+                                MAX_DEPTH_LIMIT, NULL, NULL, 0, NULL};
     double traced[BENCH_REPEATS], stored[BENCH_REPEATS];
     size_t n_stored = 0;
     struct error err;
