@@ -176,9 +176,44 @@ static void test_help_of_a_mode(struct check *t)
     free(help);
 }
 
+/* truth: README.md's table of scene lines (its first column's keywords, read here from
+ *   the README itself) and the manual's usual sections: the page has SCENE FILES naming
+ *   every keyword the README's table does, and EXIT STATUS (0, 1, 2), FILES and EXAMPLES.
+ * catches: a scene keyword added to the README and the parser but not to the page; a
+ *   section dropped. */
+static void test_manual_sections(struct check *t)
+{
+    char log[256];
+    temp_name(log, sizeof log, "docs", "sections.1");
+    REQUIRE(t, photon_logged("--manual", "", log) == 0);
+    char *roff = read_text_file(log), *readme = read_text_file("README.md");
+    REQUIRE(t, roff != NULL && readme != NULL);
+    CHECK(t, strstr(roff, ".SH SCENE FILES") && strstr(roff, ".SH EXIT STATUS") &&
+             strstr(roff, ".SH FILES") && strstr(roff, ".SH EXAMPLES"));
+    const char *table = strstr(readme, "| `image W H`");
+    int keywords = 0;
+    for (const char *row = table; row != NULL && strncmp(row, "| `", 3) == 0;
+         row = strchr(row, '\n') != NULL ? strchr(row, '\n') + 1 : NULL) {
+        char keyword[32];
+        if (sscanf(row + 3, "%31[a-z_]", keyword) != 1)
+            continue;
+        const char *from = strstr(roff, ".SH SCENE FILES"), *to = strstr(roff, ".SH EXIT");
+        const char *at = from != NULL ? strstr(from, keyword) : NULL;
+        int found = at != NULL && to != NULL && at < to; /* in the section */
+        CHECK(t, found);
+        if (!found)
+            fprintf(stderr, "test_docs: the manual's scene files lack %s\n", keyword);
+        keywords++;
+    }
+    CHECK(t, keywords >= 15);
+    free(roff);
+    free(readme);
+}
+
 void test_docs(struct check *t)
 {
     RUN_TEST(t, test_documented_commands_work);
     RUN_TEST(t, test_manual_is_the_help);
     RUN_TEST(t, test_help_of_a_mode);
+    RUN_TEST(t, test_manual_sections);
 }

@@ -113,3 +113,52 @@ void help_option(enum help_format format, const char *left, const char *text)
     put_roff(text);
     putchar('\n');
 }
+
+/* One line of a scene file each: its words, and what it makes (README.md: Scene files). */
+static const char *const scene_lines[][2] = {
+    {"image W H", "the image size in pixels (default 256 x 256)"},
+    {"camera FROM AT UP FOV [aperture R focus D]",
+     "a pinhole or thin-lens camera; FOV the full vertical field of view in degrees"},
+    {"background R G B", "the radiance of rays that leave the scene: a sky that lights it"},
+    {"material NAME lambert|mirror|glass|phong|ward|schlick ...",
+     "a material (README.md lists each model's parameters)"},
+    {"sphere X Y Z R MATERIAL", "a sphere"},
+    {"triangle V0 V1 V2 MATERIAL", "a triangle (smooth_triangle adds three normals)"},
+    {"quad P0 P1 P2 P3 MATERIAL", "a parallelogram by its corners in order"},
+    {"light point X Y Z R G B", "a point light of power R G B watts"},
+    {"light sphere|quad ...", "an area light by the radiance it emits"},
+    {"sphereflake ...", "Haines' sphere flake"},
+    {"heightfield ...", "a fractal heightfield"},
+    {"nff FILE, obj FILE MATERIAL ...", "an NFF scene or an OBJ mesh read in place"},
+    {"include FILE", "another scene file read in place"},
+};
+
+void help_manual_sections(enum help_format format)
+{
+    if (format != HELP_ROFF)
+        return;
+    help_section(format, "scene files (a line each, '#' a comment; README.md: Scene files)");
+    for (size_t i = 0; i < sizeof scene_lines / sizeof scene_lines[0]; i++)
+        help_option(format, scene_lines[i][0], scene_lines[i][1]);
+    help_section(format, "exit status");
+    help_option(format, "0", "the command did its work and wrote its outputs");
+    help_option(format, "1", "a machine failure (out of memory, a write that failed after "
+                             "the work); no partial output is left");
+    help_option(format, "2", "bad input (an option, a scene, an image file): "
+                             "file:line: message on stderr, nothing written");
+    help_option(format, "128 + N", "signal N ended photon, after it undid its files");
+    help_section(format, "files");
+    help_option(format, "PREFIX/share/photon", "the shipped scenes, where make install puts "
+                                               "them (PREFIX /usr/local by default)");
+    help_option(format, "NAME.pfm, NAME.exr, NAME.png, NAME.ppm",
+                "a render's image and its display picture (-o)");
+    help_option(format, "NAME.XXXXXXXX.tmp", "an output being written, renamed into place "
+                                             "at the end and removed if the command fails");
+    help_option(format, "NAME.pfm.window", "a crop's record, for photon merge");
+    help_section(format, "examples");
+    help_lines(format, "photon /usr/local/share/photon/cornell.scene -o cornell.png\n"
+                       "photon --mode 1996 --quality preview cornell-specular.scene -o s.png\n"
+                       "photon --target-error 0.01 --error err.pfm cornell.scene -o ref.pfm\n"
+                       "photon compare s.pfm ref.pfm --block 16 --diff diff.png\n"
+                       "photon convert err.pfm -o err.png --false-colour\n");
+}

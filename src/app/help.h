@@ -20,4 +20,9 @@ void help_lines(enum help_format format, const char *text);
 /* One option: as text "  LEFT (padded to 26) TEXT"; roff a tagged paragraph. */
 void help_option(enum help_format format, const char *left, const char *text);
 
+/* The manual page's sections beyond --help's (roff alone; nothing as text, which stays a
+ * screen's worth of reference): the scene format's lines, EXIT STATUS, FILES (what make
+ * install puts where) and EXAMPLES. */
+void help_manual_sections(enum help_format format);
+
 #endif

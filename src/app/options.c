@@ -137,6 +137,7 @@ static void print_help(enum help_format format)
     help_option(format, "--manual", "print this as a manual page (roff; make install writes "
                                     "photon.1 from it) and exit");
     print_presets(format, -1);
+    help_manual_sections(format);
 }
 
 static const char *mode_at(size_t i) { return mode_name(every_mode[i]); } /* suggest.h */
