@@ -42,9 +42,10 @@
 #                   some; CROSSCHECK_SPP, default 4096: about 35 minutes for all;
 #                   scripts/crosscheck.sh; development)
 #   make install    photon in $(DESTDIR)$(PREFIX)/bin, its manual page photon.1 (written by
-#                   photon --manual: --help's text and the page's own sections) in share/man/man1, the scenes
-#                   in share/photon; PREFIX defaults to /usr/local. make uninstall removes
-#                   exactly those files (and the share/photon folders, once empty)
+#                   photon --manual: --help's text and the page's own sections) in
+#                   share/man/man1, the shipped scenes in share/photon; PREFIX defaults to
+#                   /usr/local. make uninstall removes exactly those files (and the
+#                   share/photon folders, once empty)
 #   make clean
 #
 # BUILD names the object directory, so several compilers can build side by side.
