@@ -26,13 +26,19 @@ void progress_begin(struct progress *p, FILE *out, const char *phase, double tot
     p->now = now;
 }
 
+/* Notes the work done by now, and whether it is the phase's last update. */
+static void record(struct progress *p, double done, time_t now, int last)
+{
+    p->done = done;
+    p->now = now;
+    p->last = last;
+}
+
 int progress_update(struct progress *p, double done, time_t now)
 {
     if (p->out == NULL)
         return 0;
-    p->done = done;
-    p->now = now;
-    p->last = 0;
+    record(p, done, now, 0);
     double every = p->lines ? PROGRESS_FILE_EVERY : PROGRESS_SCREEN_EVERY;
     return difftime(now, p->shown) >= every;
 }
@@ -41,9 +47,7 @@ int progress_end(struct progress *p, double done, time_t now)
 {
     if (p->out == NULL)
         return 0;
-    p->done = done;
-    p->now = now;
-    p->last = 1;
+    record(p, done, now, 1);
     if (difftime(p->shown, p->start) > 0 && p->shown_done == done) {
         if (p->width > 0)
             fputc('\n', p->out);
