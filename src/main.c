@@ -513,6 +513,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
     case MODE_SPPM2009:
         settings_2009.progressive = progressive_settings(&run->o, checkpoint, &snapshot);
         settings_2009.disc_coverage = run->o.disc_coverage;
+        settings_2009.follow_glossy_lobes = run->o.follow_glossy_lobes;
         return render_sppm(run->scene, &run->rs, &settings_2009, &run->counters,
                            &run->ppm_stats);
     case MODE_DIRECT:

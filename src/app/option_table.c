@@ -239,6 +239,12 @@ const struct option_spec option_specs[] = {
      "default)", FOR_PROGRESSIVE},
     {"--no-turn-photon-directions", OPT_FLAG, FIELD(turn_photon_directions), 0, 0, "",
      "f_r of each photon's direction as it arrived, the papers'", FOR_PROGRESSIVE},
+    {"--follow-glossy-lobes", OPT_FLAG, FIELD(follow_glossy_lobes), 0, 0, "",
+     "an eye path samples a glossy lobe and goes on, as through a mirror, its hit point "
+     "taking a surface's diffuse part alone (the default)", FOR_2009},
+    {"--no-follow-glossy-lobes", OPT_FLAG, FIELD(follow_glossy_lobes), 0, 0, "",
+     "the hit point at the first surface with a non-specular part, with its whole BRDF, "
+     "the paper's", FOR_2009},
     {"--direct-light-samples", OPT_FLAG, FIELD(direct_light_samples), 0, 0, "",
      "direct light by a light sample at each hit point each pass, photons only after their "
      "first bounce (the default)", FOR_PROGRESSIVE},

@@ -146,6 +146,7 @@ void option_defaults(struct options *o)
     o->resample_emission = pp.resample_emission;
     o->facing_test = pp.progressive.facing_test;
     o->turn_photon_directions = pp.progressive.turn_photon_directions;
+    o->follow_glossy_lobes = sppm_settings_default().follow_glossy_lobes;
     o->direct_light_samples = !pp.progressive.direct_photons;
     o->cone = -1;
     o->caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;

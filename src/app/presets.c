@@ -108,7 +108,8 @@ static const struct {
                     "--no-fit-radius --no-merge-hit-points --no-resample-emission "
                     "--no-facing-test --no-turn-photon-directions"},
     {MODE_SPPM2009, "--no-direct-light-samples --footprints 1 --no-fit-radius "
-                     "--no-disc-coverage --no-facing-test --no-turn-photon-directions"},
+                     "--no-disc-coverage --no-facing-test --no-turn-photon-directions "
+                     "--no-follow-glossy-lobes"},
 };
 
 /* Splits words, one space apart, into *out. */

@@ -105,6 +105,7 @@ struct options {
     int resample_emission;        /* 2008: each pass's eye ray adds emission       */
     int facing_test;              /* 2008, 2009: photons count where surfaces face */
     int turn_photon_directions;   /* 2008, 2009: w_p turned onto the hit point's surface */
+    int follow_glossy_lobes;      /* 2009: eye paths sample glossy lobes                  */
     int checkpoint;               /* 2008, 2009: write the image every this many passes */
     int direct_light_samples;     /* 2008, 2009: direct light by light samples; 0 =
                                      from photons, the paper's                      */

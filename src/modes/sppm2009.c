@@ -12,9 +12,9 @@
  *   shared statistics: per pixel, the photon count N, the radius R and the unnormalised
  *       flux tau, kept across passes (struct progressive_estimate); nothing else stays;
  *   each pass, the distributed ray tracing pass: one new eye path per pixel (its next
- *       point of the pixel's camera sequence), followed through mirrors, glass and glossy
- *       lobes by sampling them (Russian roulette on long chains) to a diffuse surface:
- *       that pass's hit point of S, with its BRDF and path weight beta;
+ *       point of the pixel's camera sequence), followed through mirrors and glass by
+ *       sampling them (Russian roulette on long chains) to the first non-specular
+ *       surface: that pass's hit point of S, with its BRDF and path weight beta;
  *   then a photon tracing pass with the shared tracer: every photon within R of a hit
  *       point adds f_r Phi' to it, as in 2008 (hit_point_add_photon());
  *   then, per pixel, the progressive update with the pass's Phi = beta (sum f_r Phi'):
@@ -63,7 +63,10 @@
  *       to the user;
  *   the disc coverage (--disc-coverage), above;
  *   the facing test (--facing-test): a photon counts only where the surfaces face alike;
- *   turned photon directions (--turn-photon-directions), as 2008's.
+ *   turned photon directions (--turn-photon-directions), as 2008's;
+ *   glossy lobes followed (--follow-glossy-lobes): the eye path samples a glossy lobe
+ *       as it does a mirror, and the hit point takes the diffuse part alone
+ *       (split_choice()); the paper's hit point takes the whole BRDF (paper_choice()).
  *
  * The error image (--error, --target-error; sppm_error.h): each pass also hands every
  * pixel's pass value y_i and the value y'_i over the inner disc of radius R_i / sqrt(2)
@@ -275,13 +278,50 @@ static void point_lights_through_lobe(struct sppm *sppm, size_t pixel, long pass
                             sppm->counters);
 }
 
+/* How an eye path goes on at a surface: with probability p it ends there in a hit point
+ * that takes the material `stored` (NULL: black, the path ends with nothing); otherwise it
+ * samples `followed` and goes on, a non-delta sample of it ending the path when
+ * delta_only (the hit point holds that light). */
+struct path_choice {
+    double p;
+    const struct material *stored, *followed;
+    int delta_only;
+};
+
+/* The paper's (--no-follow-glossy-lobes): "each ray path includes all specular bounces
+ * until the first non-specular surface seen" (2008, Sec. 3.1, which 2009's pass
+ * repeats), and the hit point there takes the whole BRDF. A surface with both a delta
+ * lobe and a non-delta part (Schlick's r < 1/2) is not specified by the paper, whose
+ * path keeps one hit point: it stores one or follows a delta lobe with even odds. */
+static struct path_choice paper_choice(const struct material *m)
+{
+    struct path_choice c = {0.0, m, m, 1};
+    if (brdf_has_non_delta(m))
+        c.p = brdf_has_delta(m) ? 0.5 : 1.0;
+    return c;
+}
+
+/* The departure (--follow-glossy-lobes): the path ends at a surface's diffuse part (the
+ * split of brdf.h: Lambertian terms, broad lobes), whose hit point takes that part's
+ * BRDF; a specular part -- a mirror, glass, a glossy lobe -- is sampled and followed, as
+ * a path tracer would: a photon estimate behind a narrow lobe is mostly noise
+ * (tests/test_sppm.c's glossy floor). A surface with both chooses one by
+ * hit_point_probability(). */
+static struct path_choice split_choice(const struct brdf_split *part, const struct material *m,
+                                       const struct shading_frame *frame, struct vec3 wo)
+{
+    struct path_choice c;
+    c.p = hit_point_probability(part, frame, wo);
+    c.stored = !part->has_diffuse ? NULL : part->has_specular ? &part->diffuse : m;
+    c.followed = part->has_diffuse ? &part->specular : m;
+    c.delta_only = 0;
+    return c;
+}
+
 /* Eye path `pass` of window pixel `pixel` along ray: what emitters and the background
- * show along it goes to the pixel's seen sum; it ends at a surface's diffuse part (the
- * split of brdf.h: Lambertian terms, broad lobes), where the pass's hit point lies with
- * that part's BRDF. A specular part -- a mirror, glass, a glossy lobe -- is sampled and
- * followed instead, as a path tracer would: a photon estimate behind a narrow lobe would
- * be all noise. A surface with both chooses one by hit_point_probability() p, the
- * weight divided by the probability of the choice, so each part counts once, unbiased. */
+ * show along it goes to the pixel's seen sum; it ends in the pass's hit point at the
+ * surface path_choice names, the weight divided by the probability of each choice made,
+ * so each part counts once, unbiased. */
 static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ray ray,
                            struct rng *rng)
 {
@@ -302,28 +342,31 @@ static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ra
             return;
         struct shading_frame frame = shading_frame_from_normal(s.ns, s.front,
                                                                TRANSPORT_RADIANCE);
-        const struct brdf_split *part = &sppm->parts[s.material - sppm->scene->materials];
-        double p = hit_point_probability(part, &frame, s.wo);
-        if (p < 1 && (p == 0 || rng_uniform(rng) >= p)) {
+        struct path_choice c =
+            sppm->ps->follow_glossy_lobes
+                ? split_choice(&sppm->parts[s.material - sppm->scene->materials], s.material,
+                               &frame, s.wo)
+                : paper_choice(s.material);
+        if (c.p < 1 && (c.p == 0 || rng_uniform(rng) >= c.p)) {
             double u[3];
             for (int k = 0; k < 3; k++)
                 u[k] = rng_uniform(rng); /* one by one: an initializer's order is unspecified */
             struct brdf_sample bs;
-            const struct material *lobe = part->has_diffuse ? &part->specular : s.material;
-            point_lights_through_lobe(sppm, pixel, pass, (uint64_t)depth + 1, &s, lobe, &frame,
-                                      vec3_scale(beta, 1.0 / (1.0 - p)));
-            if (!brdf_sample(lobe, &frame, s.wo, u, &bs))
+            if (!c.delta_only)
+                point_lights_through_lobe(sppm, pixel, pass, (uint64_t)depth + 1, &s,
+                                          c.followed, &frame, vec3_scale(beta, 1.0 / (1.0 - c.p)));
+            if (!brdf_sample(c.followed, &frame, s.wo, u, &bs) || (c.delta_only && !bs.delta))
                 return;
-            beta = vec3_scale(vec3_mul(beta, bs.weight), 1.0 / (1.0 - p));
+            beta = vec3_scale(vec3_mul(beta, bs.weight), 1.0 / (1.0 - c.p));
             ray = surface_ray(&s, bs.wi, bs.transmitted);
             if (!survives_roulette(&beta, depth + 1, rng))
                 return;
             continue;
         }
-        if (!part->has_diffuse)
+        if (c.stored == NULL)
             return; /* black: reflects nothing */
-        s.material = part->has_specular ? &part->diffuse : s.material;
-        beta = vec3_scale(beta, 1.0 / p);
+        s.material = c.stored;
+        beta = vec3_scale(beta, 1.0 / c.p);
         store_hit_point(sppm, pixel, &s, &frame, beta, distance);
         if (sppm->ps->disc_coverage)
             probe_disc(sppm, pixel, pass, &s);
@@ -532,6 +575,7 @@ struct sppm_settings sppm_settings_default(void)
     ps.progressive.passes = SPPM_DEFAULT_PASSES;
     ps.progressive.photons_per_pass = SPPM_DEFAULT_PHOTONS_PER_PASS;
     ps.disc_coverage = 1;
+    ps.follow_glossy_lobes = 1;
     return ps;
 }
 

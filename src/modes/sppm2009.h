@@ -19,10 +19,13 @@ struct sppm_settings {
     int disc_coverage; /* 1: each pixel's estimate over the part of its discs a surface
                           covers, R0 fitted only to walls the surface goes on past
                           (sppm2009.c)                                                 */
+    int follow_glossy_lobes; /* 1: eye paths follow glossy lobes by sampling them, the hit
+                                point at a diffuse part; 0: the paper's, the hit point at
+                                the first non-specular surface with its whole BRDF       */
 };
 
 /* 2009's defaults: 2008's common settings with SPPM_DEFAULT_PASSES passes of
- * SPPM_DEFAULT_PHOTONS_PER_PASS photons, and the disc coverage on. */
+ * SPPM_DEFAULT_PHOTONS_PER_PASS photons, the disc coverage on and glossy lobes followed. */
 struct sppm_settings sppm_settings_default(void);
 
 /* Renders the window of rs: the passes of ps->progressive (fewer when rs->time_limit
