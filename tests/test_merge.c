@@ -65,7 +65,7 @@ static const char *const same_pixels_options[] = {
     "--mode 1996 --gradient-limit" /* the default */,
     "--mode 2008 --fit-radius --merge-hit-points --resample-emission" /* the defaults */,
     "--mode 2008 --facing-test --turn-photon-directions" /* the defaults */,
-    "--mode 2009 --direct-light-samples" /* the default */,
+    "--mode 2009 --direct-light-samples --follow-glossy-lobes" /* the defaults */,
 };
 static const char *const other_pixels_options[] = {
     "--mode pt", "--seed 2", "--spp 3", "--specular-spp 40", "--width 100", "--height 100",
@@ -90,6 +90,7 @@ static const char *const other_pixels_options[] = {
     "--mode 2008 --no-fit-radius", "--mode 2008 --no-merge-hit-points",
     "--mode 2008 --no-resample-emission", "--mode 2008 --no-facing-test",
     "--mode 2008 --no-turn-photon-directions",
+    "--mode 2009 --no-follow-glossy-lobes",
     "--mode 2008 --caustic-footprints 2", "--mode 2008 --no-caustic-footprints",
     "--mode pt --target-error 0.1", "--mode pt --target-error 0.1 --confidence 0.9",
 };
