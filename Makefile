@@ -36,13 +36,14 @@
 #                   worst block, and the ratio of the errors (scripts/bench_pbrt.sh; about 6
 #                   minutes of CPU; ONLY=cornell or cornell-specular; development)
 #   make fuzz       libFuzzer targets for every reader (scene, NFF, OBJ, PFM, OpenEXR, CSV, tile
-#                   record, work file) and the option parser, built with clang (development)
+#                   record, work file), the option parser and deflate's round trip through
+#                   inflate, built with clang (development)
 #   make crosscheck our references against Blender's Cycles, where blender (3.4+) is
 #                   installed: each scene exported, rendered, compared (ONLY=NAME for
 #                   some; CROSSCHECK_SPP, default 4096: about 35 minutes for all;
 #                   scripts/crosscheck.sh; development)
 #   make install    photon in $(DESTDIR)$(PREFIX)/bin, its manual page photon.1 (written by
-#                   photon --manual: --help's text and the page's own sections) in
+#                   photon --manual: --help all's text and the page's own sections) in
 #                   share/man/man1, the shipped scenes in share/photon; PREFIX defaults to
 #                   /usr/local. make uninstall removes exactly those files (and the
 #                   share/photon folders, once empty)
@@ -211,8 +212,8 @@ consistency: $(BIN)
 calibration: $(BIN)
 	PHOTON=./$(BIN) MODES='$(MODES)' sh scripts/calibration.sh $(ONLY)
 
-# Fuzz targets (a development tool, not part of the product build): one per reader and
-# the option parser. Run
+# Fuzz targets (a development tool, not part of the product build): one per reader, the
+# option parser, and deflate's round trip. Run
 # e.g. build/fuzz/fuzz_nff -max_len=8192 -max_total_time=600 CORPUS_DIR < /dev/null
 FUZZ_CC ?= clang
 FUZZ_FLAGS = -std=c99 -g -O1 -ffp-contract=off -fsanitize=fuzzer,address,undefined $(WARN)

@@ -1,5 +1,5 @@
 #!/bin/sh
-# scripts/presets.sh -- measure the quality presets (photon --help, "quality presets") on
+# scripts/presets.sh -- measure the quality presets (photon --help all, "quality presets") on
 # the two Cornell boxes and write them as a markdown table (README, "Presets").
 #
 #   scripts/presets.sh PHOTON OUT.md [MODE ...]
@@ -8,7 +8,7 @@
 # named in PRESETS (default "preview default"; "reference" takes minutes to an hour a
 # render), renders scenes/cornell.scene and scenes/cornell-specular.scene at 256 x 256
 # with `--mode MODE --quality PRESET --stats`, and puts in the table the preset's words as
-# --help prints them, the render's CPU seconds (its own seconds_total), its relmse
+# --help all prints them, the render's CPU seconds (its own seconds_total), its relmse
 # against reference/cornell-pt.pfm or reference/cornell-specular-pt.pfm, and how many of
 # the 256 blocks of 16 x 16 pixels are within 3% of the reference (photon compare
 # --block 16). The renders run one after another; CPU seconds do not depend on what else
@@ -30,9 +30,9 @@ presets=${PRESETS:-preview default}
 work=$(mktemp -d "${TMPDIR:-/tmp}/photon-presets.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
-# The preset's words, from the table --help prints ("--mode MODE QUALITY WORDS...").
+# The preset's words, from the table --help all prints ("--mode MODE QUALITY WORDS...").
 settings() {
-    words=$("$photon" --help | sed -n "s/^  --mode $1  *$2  *//p")
+    words=$("$photon" --help all | sed -n "s/^  --mode $1  *$2  *//p")
     if [ -n "$words" ]; then echo "\`$words\`"; else echo "(the defaults)"; fi
 }
 

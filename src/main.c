@@ -12,12 +12,9 @@
 #include <string.h>
 #include <time.h>
 
-#include "app/convert.h"
-#include "app/export.h"
+#include "app/commands.h"
 #include "app/option_values.h"
 #include "app/options.h"
-#include "app/merge.h"
-#include "app/probe.h"
 #include "app/report.h"
 #include "app/suggest.h"
 #include "app/tile.h"
@@ -25,9 +22,7 @@
 #include "base/alloc.h"
 #include "base/file_kind.h"
 #include "base/output.h"
-#include "image/compare.h"
 #include "image/error_image.h"
-#include "image/plot.h"
 #include "modes/direct.h"
 #include "modes/jensen1994.h"
 #include "modes/jensen1996.h"
@@ -591,16 +586,8 @@ static void finish_run(struct run *run)
     scene_free(run->scene);
 }
 
-/* The commands beside rendering: photon NAME ARGS... runs run(argc - 1, argv + 1). */
-static const struct {
-    const char *name;
-    int (*run)(int argc, char **argv);
-} commands[] = {{"compare", compare_command}, {"plot", plot_command}, {"probe", probe_command},
-                {"merge", merge_command},     {"export", export_command},
-                {"convert", convert_command}};
-#define N_COMMANDS (sizeof commands / sizeof commands[0])
-
-/* For the near miss of a command (app/suggest.h). */
+/* The commands beside rendering (app/commands.h): photon NAME ARGS... runs
+ * run(argc - 1, argv + 1). For the near miss of a command (app/suggest.h). */
 static const char *command_at(size_t i)
 {
     return commands[i].name;
@@ -619,7 +606,8 @@ static int refuse_near_command(int argc, char **argv, struct error *err)
                                        command);
 }
 
-int main(int argc, char **argv)
+/* Runs the command line: a command beside rendering, or a render; its exit status. */
+static int run_command(int argc, char **argv)
 {
     for (size_t i = 0; argc > 1 && i < N_COMMANDS; i++)
         if (strcmp(argv[1], commands[i].name) == 0)
@@ -653,4 +641,10 @@ int main(int argc, char **argv)
         error_print(&err);
     finish_run(&run);
     return status;
+}
+
+/* Every command's status, and 1 when what it printed on the standard output was lost. */
+int main(int argc, char **argv)
+{
+    return standard_output_status(run_command(argc, argv));
 }

@@ -8,7 +8,7 @@
 #  1c. Every section of a mode's paper that a document or a source file cites is one the
 #     paper has (tests/data/paper-sections.txt).
 #  2. Every option a document shows on a `./photon` command line is one that photon's
-#     --help (or, on a subcommand's line, the subcommand's --help) lists.
+#     --help all (or, on a subcommand's line, the subcommand's --help) lists.
 #  3. The README's commands work as shown: every line of its ```sh blocks that starts with
 #     `./photon` or `mkdir` runs, in order, in an empty directory that sees only scenes/ and
 #     reference/, and must exit 0. Renders get `--quality preview` appended (an explicit
@@ -18,7 +18,7 @@
 #     reference/NAME.pfm, NAME.png and, but for 2008 and 2009, NAME-var.pfm, and a
 #     measured row in reference/suite.md; every PFM in reference/ has its line; every
 #     scene the table names exists, every scenes/analytic/ scene has a reference, and
-#     every option the table gives is one photon's --help lists. Nothing is rendered.
+#     every option the table gives is one photon's --help all lists. Nothing is rendered.
 #  5. No include circle: module dir/x is src/dir/x.c with src/dir/x.h, and depends on every
 #     module whose header one of its two files includes (#include "..." resolved from the
 #     including file's folder); no module may depend on itself round a circle (README:
@@ -113,7 +113,7 @@ while read -r line; do problem "$line"; done < docs-sections.tmp
 rm -f docs-sections.tmp
 
 # 2. Options shown on command lines.
-usage=$("$photon" --help 2>&1)
+usage=$("$photon" --help all 2>&1)
 # A subcommand's line may show its own options, listed by its own --help.
 subcommands="compare plot merge probe export convert"
 for doc in $docs; do
@@ -124,7 +124,7 @@ for doc in $docs; do
         printf '%s\n' "$line" | grep -oE '(^|\s)--[a-z][a-z0-9-]*' | tr -d ' \t' |
             while read -r option; do
                 printf '%s\n%s\n' "$usage" "$own" | grep -qe "$option" ||
-                    echo "$doc shows $option, which photon --help does not list"
+                    echo "$doc shows $option, which photon --help all does not list"
             done
     done | sort -u
 done > docs-options.tmp
@@ -177,7 +177,7 @@ sed -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' "$suite" |
         for option in $options $check; do
             case $option in
             --*) printf '%s\n' "$usage" | grep -qe "$option" ||
-                echo "$suite: $name shows $option, which photon --help does not list" ;;
+                echo "$suite: $name shows $option, which photon --help all does not list" ;;
             esac
         done
     done < docs-suite.tmp

@@ -92,8 +92,7 @@ static void trace_eye_path(const struct scene *scene, uint64_t seed, int x, int 
             return;
         }
         double u[3];
-        for (int k = 0; k < 3; k++)
-            u[k] = rng_uniform(&rng);
+        rng_uniforms(&rng, u, 3);
         struct brdf_sample bs;
         if (!brdf_sample(at.material, &frame, at.wo, u, &bs) || !bs.delta)
             return; /* absorbed, or the non-delta part the hit point would have held */

@@ -34,7 +34,7 @@ static int log_contains(const char *text)
  *   option of another mode silently ignored. */
 static void test_options(struct check *t)
 {
-    CHECK(t, photon("--help") == 0 && log_contains("--crop") && log_contains("--spp"));
+    CHECK(t, photon("--help all") == 0 && log_contains("--crop") && log_contains("--spp"));
     CHECK(t, photon("--version") == 0 && log_contains("photon "));
     CHECK(t, photon("--frobnicate scenes/cornell.scene") == 2 && log_contains("unknown option"));
     CHECK(t, photon("--spp 0 scenes/cornell.scene") == 2 && log_contains("--spp"));
@@ -79,7 +79,7 @@ static void test_options(struct check *t)
              log_contains("--irradiance-store: only for --mode 1994"));
     CHECK(t, photon("--mode pt --save-photons w.work scenes/cornell.scene") == 2 &&
              log_contains("no global work to save"));
-    CHECK(t, photon("--help") == 0 && log_contains("2008, 2009: photon passes") &&
+    CHECK(t, photon("--help all") == 0 && log_contains("2008, 2009: photon passes") &&
              log_contains("photons, 1994, 1996: photons emitted") &&
              log_contains("not with 2008 or 2009: also write each pixel's variance") &&
              log_contains("not with 2009: camera samples per pixel"));

@@ -13,9 +13,9 @@
 #include "files.h"
 #include "tests.h"
 
-#define LINE_MAX_BYTES 2048 /* longer than any line of --help */
+#define LINE_MAX_BYTES 2048 /* longer than any line of --help all */
 
-/* truth: the files in the tree, photon's own --help, the papers' section numbers
+/* truth: the files in the tree, photon's own --help all, the papers' section numbers
  *   (tests/data/paper-sections.txt), and the exit status of each README
  *   command run as a user would (with --quality preview appended to renders).
  * catches: a document naming a file that was moved or never committed, an option renamed
@@ -74,7 +74,7 @@ static char *unroff(const char *roff)
     return text;
 }
 
-/* --help's text with each option's entry on one line: a line that starts with
+/* --help all's text with each option's entry on one line: a line that starts with
  *   CONTINUED spaces and then a word (help.c's wrapping, under the text column) joined to
  *   the one above. */
 #define CONTINUED "                             "
@@ -93,18 +93,19 @@ static void join_wrapped(char *help)
     *out = '\0';
 }
 
-/* truth: help.h: photon.1 (--manual) is written from --help's own text: every entry of
- *   --help (a line, and the lines it is wrapped onto) but the headings (the lines from an
- *   empty line to one ending in ':') is a line of the manual page read back from its
- *   roff, the same words in the same order.
+/* truth: help.h: photon.1 (--manual) is written from --help all's own text, the full
+ *   list: every entry of it (a line, and the lines it is wrapped onto) but the headings
+ *   (the lines from an empty line to one ending in ':') is a line of the manual page read
+ *   back from its roff, the same words in the same order.
  * catches: a page written by hand or from another list of options, drifting from
- *   --help; an option's text escaped so that man shows something else. */
+ *   --help all, or from the first screen's shorter one; an option's text escaped so that
+ *   man shows something else. */
 static void test_manual_is_the_help(struct check *t)
 {
     char help_log[256], manual_log[256], line[LINE_MAX_BYTES], *manual = NULL;
     temp_name(help_log, sizeof help_log, "docs", "help.txt");
     temp_name(manual_log, sizeof manual_log, "docs", "photon.1");
-    REQUIRE(t, photon_logged("--help", "", help_log) == 0);
+    REQUIRE(t, photon_logged("--help", "all", help_log) == 0);
     REQUIRE(t, photon_logged("--manual", "", manual_log) == 0);
     char *help = read_text_file(help_log), *roff = read_text_file(manual_log);
     if (help != NULL)
@@ -147,8 +148,8 @@ static int has_entry(const char *help, const char *option)
 /* truth: the README's modes table and src/modes/README.md: --passes and
  *   --disc-coverage belong to 2009, --gather-rays to 1994 and 1996, --spp not to 2009
  *   (its passes are its samples); photon --help 2009 lists that mode's options alone, and
- *   its --paper words; the text layout of --help keeps every line within 100 columns but
- *   the preset and --paper rows, which stay whole to be copied.
+ *   its --paper words; the text layout of --help all keeps every line within 100 columns
+ *   but the preset and --paper rows, which stay whole to be copied.
  * catches: --help MODE read as a scene or ignored; another mode's options listed; the
  *   text run past 100 columns (71 lines did). */
 static void test_help_of_a_mode(struct check *t)
@@ -163,7 +164,7 @@ static void test_help_of_a_mode(struct check *t)
              !has_entry(help, "--spp") && has_entry(help, "--mode 2009") &&
              !has_entry(help, "--mode 1996"));
     free(help);
-    REQUIRE(t, photon_logged("--help", "", log) == 0);
+    REQUIRE(t, photon_logged("--help", "all", log) == 0);
     help = read_text_file(log);
     REQUIRE(t, help != NULL);
     int wide = 0;

@@ -286,17 +286,20 @@ static void test_failures(struct check *t)
     static const struct {
         const char *args, *message;
     } cases[] = {
-        {"--format povray scenes/cornell.scene -o OUT", "--format 'povray': expected pbrt"},
+        {"--format povray scenes/cornell.scene -o OUT.pbrt", "--format 'povray': expected pbrt"},
         {"--format pbrt scenes/cornell.scene -o /nonexistent-dir/x.pbrt", "nonexistent-dir"},
-        {"--format pbrt scenes/no-such.scene -o OUT", "no-such.scene"},
-        {"--format pbrt scenes/cornell.scene -o OUT --channel Y", "--channel 'Y'"},
-        {"--format pbrt scenes/cornell.scene -o OUT --spp 0",
+        {"--format pbrt scenes/no-such.scene -o OUT.pbrt", "no-such.scene"},
+        {"--format pbrt scenes/cornell.scene -o OUT.pbrt --channel Y", "--channel 'Y'"},
+        {"--format pbrt scenes/cornell.scene -o OUT.pbrt --spp 0",
          "--spp: expected a whole number from 1 to 16777216, got '0'"},
         {"--format pbrt scenes/cornell.scene", "needs --format, a scene and -o"},
-        {"--format mitsuba BAD -o OUT", ":2: "},
+        {"--format mitsuba BAD -o OUT.xml", ":2: "},
     };
-    char out[NAME_BYTES], log[NAME_BYTES], bad[NAME_BYTES], args[ARGS_BYTES];
-    temp_name(out, sizeof out, "export", "failed.xml");
+    char out[NAME_BYTES], pbrt[NAME_BYTES + 8], xml[NAME_BYTES + 8], log[NAME_BYTES];
+    char bad[NAME_BYTES], args[ARGS_BYTES];
+    temp_name(out, sizeof out, "export", "failed"); /* OUT: the cases add the ending */
+    snprintf(pbrt, sizeof pbrt, "%s.pbrt", out);
+    snprintf(xml, sizeof xml, "%s.xml", out);
     temp_name(log, sizeof log, "export", "failed.log");
     temp_name(bad, sizeof bad, "export", "bad.scene");
     write_text_file(bad, "image 8 8\nsphere 0 0 0 1 undefined\n");
@@ -304,7 +307,7 @@ static void test_failures(struct check *t)
         substitute(args, sizeof args, cases[i].args, out, bad);
         CHECK(t, photon_logged("export", args, log) == 2);
         CHECK(t, file_contains(log, cases[i].message));
-        CHECK(t, !file_exists(out));
+        CHECK(t, !file_exists(pbrt) && !file_exists(xml));
     }
     CHECK(t, photon_logged("export", "--help", log) == 0);
     CHECK(t, file_contains(log, "usage: photon export --format pbrt|mitsuba|blender SCENE"));

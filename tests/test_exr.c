@@ -258,13 +258,83 @@ static struct image *random_image(int width, int height, uint64_t index)
     return img;
 }
 
-/* truth: (1) float-none.exr, the formula as OpenEXR's library writes it uncompressed in
- * FLOAT: photon's writer must give the same bytes (the same attributes, in the same
- * order, the same table); (2) C's own double -> float rounding, for random values read
- * back. catches: a header, channel order or offset table another reader would take
- * differently, rows written bottom up, a value not rounded to its float. */
+/* The file's bytes into bytes[SAMPLE_MAX_BYTES]: how many (0 when unreadable or larger). */
+static size_t file_bytes(const char *file, unsigned char *bytes)
+{
+    FILE *f = fopen(file, "rb");
+    size_t n = f != NULL ? fread(bytes, 1, SAMPLE_MAX_BYTES, f) : 0;
+    if (f != NULL)
+        fclose(f);
+    return n < SAMPLE_MAX_BYTES ? n : 0;
+}
+
+static uint64_t u64_at(const unsigned char *b)
+{
+    uint64_t v = 0;
+    for (int i = 7; i >= 0; i--)
+        v = v << 8 | b[i];
+    return v;
+}
+
+/* Whether file, a width x height image photon wrote, is laid out as the OpenEXR File Layout
+ * says for ZIP: compression attribute 3; after the header one offset per chunk of 16 rows;
+ * each chunk its first row's y, its data's size (compressed: less than its raw rows; else
+ * exactly those) and the data, the first right after the table, each next right after the
+ * one before, the last ending the file. */
+static int zip_layout_holds(const char *file, int width, int height, int compressed)
+{
+    static unsigned char b[SAMPLE_MAX_BYTES];
+    size_t n = file_bytes(file, b), at = 8;
+    int compression = -1;
+    while (at < n && b[at] != 0) { /* name, type, size, value */
+        const char *name = (const char *)b + at;
+        at += strlen(name) + 1;
+        at += strlen((const char *)b + at) + 1;
+        size_t size = (size_t)(b[at] | b[at + 1] << 8);
+        if (strcmp(name, "compression") == 0 && size == 1)
+            compression = b[at + 4];
+        at += 4 + size;
+    }
+    size_t n_chunks = (size_t)(height + 15) / 16, next = at + 1 + 8 * n_chunks;
+    int ok = compression == EXR_ZIP_COMPRESSION && next <= n;
+    for (size_t i = 0; ok && i < n_chunks; i++) {
+        size_t rows = (size_t)height - 16 * i < 16 ? (size_t)height - 16 * i : 16;
+        size_t raw = rows * (size_t)width * 12, offset = (size_t)u64_at(b + at + 1 + 8 * i);
+        ok = offset == next && offset + 8 <= n && b[offset] == 16 * i && b[offset + 1] == 0;
+        size_t size = ok ? (size_t)(b[offset + 4] | b[offset + 5] << 8 | b[offset + 6] << 16) : 0;
+        ok = ok && (compressed ? size < raw : size == raw);
+        next = offset + 8 + size;
+    }
+    if (!ok || next != n)
+        printf("    %s: compression %d, a chunk or its offset is wrong\n", file, compression);
+    return ok && next == n;
+}
+
+/* Whether img read back from file holds exactly img's values rounded to floats. */
+static int reads_back(const char *file, const struct image *img)
+{
+    struct error err;
+    struct image *back = image_read(file, &err);
+    int same = back != NULL && back->width == img->width && back->height == img->height;
+    for (size_t i = 0; same && i < (size_t)img->width * (size_t)img->height; i++) {
+        volatile float x = (float)img->pixels[i].x, y = (float)img->pixels[i].y,
+                       z = (float)img->pixels[i].z;
+        same = back->pixels[i].x == x && back->pixels[i].y == y && back->pixels[i].z == z;
+    }
+    image_free(back);
+    return same;
+}
+
+/* truth: (1) float-zip.exr, the formula as OpenEXR's library writes it in FLOAT with ZIP:
+ * photon's header (313 bytes), offset table and chunk's y must be its bytes (the same
+ * attributes, in the same order, compression 3, the same table); the compressed bytes
+ * differ, being another compressor's; (2) C's own double -> float rounding, for random
+ * values read back, whose chunk deflate cannot shorten: stored raw. catches: a header,
+ * channel order or offset table another reader would take differently, rows written
+ * bottom up, a value not rounded to its float. */
 static void test_exr_writes_what_openexr_writes(struct check *t)
 {
+    static unsigned char ours[SAMPLE_MAX_BYTES], theirs[SAMPLE_MAX_BYTES];
     char name[NAME_MAX_BYTES];
     struct error err;
     temp_name(name, sizeof name, "exr", "formula.exr");
@@ -273,32 +343,58 @@ static void test_exr_writes_what_openexr_writes(struct check *t)
         for (int x = 0; x < 7; x++)
             image_set(img, x, y, vec3(formula(0, x, y), formula(1, x, y), formula(2, x, y)));
     CHECK(t, image_write(name, img, &err) == 0);
-    CHECK(t, files_equal(name, DATA "float-none.exr"));
+    CHECK(t, file_bytes(name, ours) > 313 + 12 && file_bytes(DATA "float-zip.exr", theirs) > 0 &&
+             memcmp(ours, theirs, 313 + 8 + 4) == 0);
+    CHECK(t, zip_layout_holds(name, 7, 5, 1) && reads_formula(name, 7, 5, NULL));
     CHECK(t, no_temporaries(name));
     image_free(img);
     remove(name);
     temp_name(name, sizeof name, "exr", "random.exr");
     img = random_image(13, 9, 0);
     CHECK(t, image_write(name, img, &err) == 0);
-    struct image *back = image_read(name, &err);
-    REQUIRE(t, back != NULL && back->width == 13 && back->height == 9);
-    int same = 1;
-    for (size_t i = 0; i < 13 * 9; i++) {
-        volatile float x = (float)img->pixels[i].x, y = (float)img->pixels[i].y,
-                       z = (float)img->pixels[i].z;
-        same &= back->pixels[i].x == x && back->pixels[i].y == y && back->pixels[i].z == z;
-    }
-    CHECK(t, same);
-    image_free(back);
+    CHECK(t, zip_layout_holds(name, 13, 9, 0) && reads_back(name, img));
     img->pixels[5].y = 1e39; /* beyond a float: refused, nothing left */
     remove(name);
     CHECK(t, image_write(name, img, &err) < 0 && err.failed_write && !file_exists(name));
     image_free(img);
 }
 
+/* truth: a render (direct light in the Cornell box, 48 x 37: three chunks, the last of 5
+ * rows) read from photon's PFM; the OpenEXR file of it must hold the same floats, be laid
+ * out as the File Layout says (zip_layout_holds), and be noticeably smaller than the same
+ * file uncompressed would be (its header, 8 bytes of offset and 8 of y and size per row,
+ * the rows raw); a smooth ramp too, whose 16-row chunks shrink far more. catches: ZIP
+ * written but not read back bit for bit, compression that does not compress. */
+static void test_exr_zip_of_a_render(struct check *t)
+{
+    char name[NAME_MAX_BYTES];
+    struct error err;
+    struct image *img = photon_render("exr", "--mode direct --width 48 --height 37 --spp 4",
+                                      "scenes/cornell.scene");
+    REQUIRE(t, img != NULL);
+    temp_name(name, sizeof name, "exr", "render.exr");
+    CHECK(t, image_write(name, img, &err) == 0);
+    static unsigned char b[SAMPLE_MAX_BYTES];
+    double size = (double)file_bytes(name, b), raw = 313 + 37 * (8 + 8 + 48 * 12);
+    CHECK(t, size > 0 && size < 0.8 * raw);
+    CHECK(t, zip_layout_holds(name, 48, 37, 1) && reads_back(name, img));
+    image_free(img);
+    img = image_create(64, 40);
+    for (int y = 0; y < 40; y++)
+        for (int x = 0; x < 64; x++)
+            image_set(img, x, y, vec3(0.25 + x / 256.0, 0.5, 1.0 - y / 128.0));
+    CHECK(t, image_write(name, img, &err) == 0);
+    size = (double)file_bytes(name, b);
+    CHECK(t, size > 0 && size < 0.1 * (313 + 40 * (8 + 8 + 64 * 12)));
+    CHECK(t, zip_layout_holds(name, 64, 40, 1) && reads_back(name, img));
+    image_free(img);
+    remove(name);
+}
+
 /* truth: IEEE 754 binary32's NaN and infinities (0x7fc00000, 0x7f800000, 0xff800000),
- * set by hand in the last value of a file photon wrote. catches: a NaN or infinity let
- * into an image, +Inf refused where an error image's bound may be +Inf, -Inf allowed. */
+ * set by hand in the last value of a file photon wrote (of random values, which deflate
+ * cannot shorten: its one chunk is raw). catches: a NaN or infinity let into an image,
+ * +Inf refused where an error image's bound may be +Inf, -Inf allowed. */
 static void test_exr_refuses_nan_and_infinity(struct check *t)
 {
     char name[NAME_MAX_BYTES], bad[NAME_MAX_BYTES];
@@ -480,6 +576,7 @@ void test_exr(struct check *t)
     RUN_TEST(t, test_exr_piz_wide_values);
     RUN_TEST(t, test_exr_refuses_by_name);
     RUN_TEST(t, test_exr_writes_what_openexr_writes);
+    RUN_TEST(t, test_exr_zip_of_a_render);
     RUN_TEST(t, test_exr_refuses_nan_and_infinity);
     RUN_TEST(t, test_exr_damaged_files);
     RUN_TEST(t, test_exr_commands);

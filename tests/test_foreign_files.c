@@ -8,6 +8,7 @@
  */
 #include <signal.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "../src/base/output.h"
 #include "files.h"
@@ -126,9 +127,11 @@ static void test_only_crop_records_removed(struct check *t)
 /* truth: output.h: a failed publish gives back what was there: an output already put in
  *   place is replaced again by the file it replaced (its bytes), and one that replaced
  *   nothing is removed; no temporary is left. Here the last output's name becomes a
- *   directory after the check, so its rename fails after the others' succeeded.
+ *   directory after the check, so its rename fails after the others' succeeded; the
+ *   message names that output and the reason, "Is a directory".
  * catches: the rollback removing the outputs it had renamed, the user's previous file
- *   with them: nothing new and nothing old left. */
+ *   with them: nothing new and nothing old left; the message naming the temporary
+ *   ("d2.pfm: Is a directory" said of d2.pfm.tmp). */
 static void test_failed_publish_gives_back(struct check *t)
 {
     static const char *const names[] = {OUT "_first.txt", OUT "_third.txt",
@@ -150,6 +153,8 @@ static void test_failed_publish_gives_back(struct check *t)
     run_command("rm " OUT "_second.txt && mkdir " OUT "_second.txt && touch " OUT
                 "_second.txt/inside");
     CHECK(t, outputs_publish(&err) < 0 && err.failed_write);
+    CHECK(t, strcmp(err.file, OUT "_second.txt") == 0 &&
+             strcmp(err.message, "cannot write output file: Is a directory") == 0);
     CHECK(t, file_equals_text(OUT "_first.txt", "old first\n") &&
              !file_exists(OUT "_third.txt"));
     CHECK(t, files_are("first.txt second.txt "));

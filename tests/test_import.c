@@ -2,7 +2,8 @@
  * tests/test_import.c -- the importers' readers: the NFF reader (scene/nff.c) on the
  * Standard Procedural Databases and on bad files, the OBJ reader (scene/obj.c), and the
  * scene keywords `nff` and `obj`. The shapes they make, the open cone and ear-clipped
- * polygons, are test_import_geom.c's.
+ * polygons, are test_import_geom.c's; the obj line's rotate and OBJ's usemtl
+ * test_import_obj.c's.
  *
  * Truths: the census of the SPD files kept in tests/data/spd/ (spd.h; test_spd.c checks
  * all 22); the light-power convention written out by hand; the same mesh or cone written
@@ -332,7 +333,8 @@ static int refused_as_expected(const struct bad_input *bad, int obj, double scal
     int refused;
     if (obj) {
         struct scene *scene = material_scene();
-        struct obj_placement place = {0, scale, {0, 0, 0}};
+        struct obj_placement place = obj_unmoved(0);
+        place.scale = scale;
         refused = obj_import(scene, path, &place, &err) < 0;
         scene_free(scene);
     } else {
@@ -371,7 +373,7 @@ static void test_bad_files_are_refused(struct check *t)
     CHECK(t, refused_as_expected(&too_long, 1, 1.0));
     struct error err;
     struct scene *scene = material_scene();
-    struct obj_placement place = {0, 1.0, {0, 0, 0}};
+    struct obj_placement place = obj_unmoved(0);
     CHECK(t, nff_load("scenes", &err) == NULL && strstr(err.message, "directory") != NULL);
     CHECK(t, obj_import(scene, "scenes", &place, &err) < 0 && strstr(err.message, "directory"));
     CHECK(t, nff_load("/nonexistent/a.nff", &err) == NULL && strstr(err.message, "cannot open"));
@@ -394,7 +396,7 @@ static void test_emitting_mesh_power_limit(struct check *t)
     m.emission = vec3(1, 1, 1);
     scene_add_material(scene, &m);
     write_text_file(scratch_obj, "v 0 0 0\nv 7e14 0 0\nv 0 7e14 0\nf 1 2 3\nf 1 2 3\n");
-    struct obj_placement place = {0, 1.0, {0, 0, 0}};
+    struct obj_placement place = obj_unmoved(0);
     struct error err;
     memset(&err, 0, sizeof err);
     CHECK(t, obj_import(scene, scratch_obj, &place, &err) < 0);
@@ -417,7 +419,7 @@ static void test_polygon_limit(struct check *t)
         fputs("\n", f);
         fclose(f);
         struct scene *scene = material_scene();
-        struct obj_placement place = {0, 1.0, {0, 0, 0}};
+        struct obj_placement place = obj_unmoved(0);
         struct error err;
         int status = obj_import(scene, scratch_obj, &place, &err);
         CHECK(t, n == MAX_POLYGON_VERTICES
@@ -433,8 +435,7 @@ static void test_polygon_limit(struct check *t)
 static struct scene *load_obj_text(const char *text, double scale, struct vec3 shift)
 {
     struct scene *scene = material_scene();
-    struct obj_placement place;
-    place.material = 0;
+    struct obj_placement place = obj_unmoved(0);
     place.scale = scale;
     place.translation = shift;
     struct error err;
@@ -461,7 +462,7 @@ static void test_obj_negative_indices(struct check *t)
     struct scene *positive = load_obj_text(PYRAMID_V "f 1//1 2//2 5//5\nf 2//2 3//3 5//5\n"
                                            "f 3//3 4//4 5//5\nf 4//4 1//1 5//5\nf 4 3 2 1\n",
                                            1, vec3_zero());
-    struct scene *negative = load_obj_text(PYRAMID_V "o pyramid\ng sides\ns 1\nusemtl x\n"
+    struct scene *negative = load_obj_text(PYRAMID_V "o pyramid\ng sides\ns 1\n"
                                            "mtllib x.mtl\nl 1 2\np 1\n"
                                            "f -5/1/-5 -4/-1/-4 -1//-1\nf -4//-4 -3//-3 -1//-1\n"
                                            "f -3//-3 -2//-2 -1/1/-1\nf -2//-2 -5//-5 -1//-1\n"
@@ -547,7 +548,7 @@ static void test_scene_keyword_errors(struct check *t)
         {"material m lambert 1 1 1\nobj %s q\n", 0, 2, "undefined material", 0},
         {"material m lambert 1 1 1\nobj %s m scale 0\n", 0, 2, "positive", 0},
         {"material m lambert 1 1 1\nobj %s m translate 1 2\n", 0, 2, "expected 3 numbers", 0},
-        {"material m lambert 1 1 1\nobj %s m rotate 1\n", 0, 2, "unexpected 'rotate'", 0},
+        {"material m lambert 1 1 1\nobj %s m spin 1\n", 0, 2, "unexpected 'spin'", 0},
         {"nff\n", 1, 1, "expected a file name", 0},
         {"nff %s extra\n", 1, 1, "unexpected 'extra'", 0},
         {"nff %s\n", 1, 9, "radius must be positive", 1},

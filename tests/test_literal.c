@@ -40,15 +40,6 @@ static double paper_against_literal(const char *path, int width, int height)
     return worst;
 }
 
-/* A Phong floor (kd 0.3, ks 0.5, n 40) under a point light: the light's highlight, which
- * only the glossy lobe reflects, fills the middle of the image. */
-static const char highlight_floor[] =
-    "image 32 24\n"
-    "camera 0 1.5 -3  0 0 0.5  0 1 0  40\n"
-    "material floor phong 0.3 0.3 0.3  0.5 0.5 0.5  40\n"
-    "quad -5 0 -5  -5 0 5  5 0 5  5 0 -5  floor\n"
-    "light point 0 1.5 1.5  40 40 40\n";
-
 /* truth: the literal program, the paper's algorithm and nothing else, with the same
  *   camera samples and photons (its photons pass through the photon map's records:
  *   float positions, RGBE powers, directions in 256 steps).
@@ -73,7 +64,7 @@ static void test_paper_is_literal(struct check *t)
     };
     char highlight[256];
     temp_name(highlight, sizeof highlight, "literal", "highlight.scene");
-    write_text_file(highlight, highlight_floor);
+    write_text_file(highlight, phong_highlight_scene);
     for (size_t i = 0; i <= sizeof cases / sizeof cases[0]; i++) {
         int last = i == sizeof cases / sizeof cases[0];
         const char *path = last ? highlight : cases[i].path;

@@ -128,11 +128,11 @@ static int listed(const char *option, const char *const *list, size_t n)
     return 0;
 }
 
-/* Whether every option --help lists is in one of the two lists above (or is --help or
+/* Whether every option --help all lists is in one of the two lists above (or is --help or
  * --version), so that an option added later must be put on one side here. */
 static int every_option_classified(void)
 {
-    if (photon("--help") != 0)
+    if (photon("--help all") != 0)
         return 0;
     char *help = read_text_file(OUT ".log");
     int all = help != NULL;

@@ -145,15 +145,18 @@ static void test_work_file_format(struct check *t)
     global_work_free(&work);
 }
 
-/* Whether the n bytes, as a file of global work, are refused with message (and leave
- * nothing allocated: the work stays empty for global_work_free to find so). */
+/* Whether the n bytes, as a file of global work, are refused with message, after the
+ * words that say what was being done, "cannot load the saved work (--load-photons): "
+ * (and leave nothing allocated: the work stays empty for global_work_free to find so). */
 static int example_refused(const unsigned char *bytes, size_t n, const char *message)
 {
     write_bytes_file(OUT "_planted.work", bytes, n);
     struct global_work work = {NULL, 0, NULL, 0, NULL};
     struct error err;
+    static const char doing[] = "cannot load the saved work (--load-photons): ";
     int refused = work_file_read(OUT "_planted.work", UINT64_C(0x0123456789abcdef), &work,
-                                 &err) < 0 && strstr(err.message, message) != NULL;
+                                 &err) < 0 && strncmp(err.message, doing, strlen(doing)) == 0 &&
+                  strstr(err.message, message) != NULL;
     if (!refused)
         fprintf(stderr, "test_merge: planted file not refused with '%s'\n", message);
     global_work_free(&work);
@@ -211,10 +214,14 @@ enum { AT_POSITION = 33, AT_POWER = 45, AT_FLAGS = 52, AT_NORMAL_Z = 102, AT_E =
  *   240 x 2^(250 - 135), photon.h), above WORK_PHOTON_POWER_MAX; a photon at an infinite x;
  *   a flag that is no photon kind; a record's negative irradiance, or its normal of length
  *   2; a negative irradiance in an illumination map. The same planted at the largest
- *   power the file takes (2^110 W, RGBE 128 128 128 238) is read.
+ *   power the file takes (2^110 W, RGBE 128 128 128 238) is read. Each refusal says
+ *   "cannot load ... (--load-photons)"; the 1e37 W photon is not saved either, the
+ *   message saying "cannot save ... (--save-photons)" (a failed write: the work is the
+ *   render's own), and no file is left.
  * tolerance: none.
  * catches: the checksum taken for a proof of sense: a crafted file's 1e37 W photons or
- *   negative irradiance rendered (nonsense pixels, or a NaN from a square root). */
+ *   negative irradiance rendered (nonsense pixels, or a NaN from a square root); a
+ *   message that does not say whether the file was being loaded or saved. */
 static void test_values_out_of_range_are_refused(struct check *t)
 {
     static const struct {
@@ -249,6 +256,13 @@ static void test_values_out_of_range_are_refused(struct check *t)
     struct error err;
     CHECK(t, work_file_read(OUT "_planted.work", UINT64_C(0x0123456789abcdef), &work,
                             &err) == 0);
+    if (work.n_maps > 0 && work.maps[0] != NULL) { /* the same photon at 1e37 W, saved */
+        memcpy(work.maps[0]->photons[1].power, (const unsigned char[]){240, 240, 240, 250}, 4);
+        remove(OUT "_saved.work");
+        CHECK(t, work_file_write(OUT "_saved.work", 1, &work, &err) < 0 && err.failed_write &&
+                 strstr(err.message, "cannot save the work (--save-photons): map 0, photon 1: "
+                        "power 9.9") == err.message && !file_exists(OUT "_saved.work"));
+    }
     global_work_free(&work);
 }
 

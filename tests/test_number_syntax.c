@@ -177,7 +177,7 @@ static int obj_takes(const char *text, struct error *err)
     m.kind = MATERIAL_LAMBERT;
     m.rho = vec3(0.5, 0.5, 0.5);
     scene_add_material(scene, &m);
-    struct obj_placement place = {0, 1.0, {0, 0, 0}};
+    struct obj_placement place = obj_unmoved(0);
     int taken = obj_import(scene, OUT ".obj", &place, err) == 0;
     scene_free(scene);
     return taken;

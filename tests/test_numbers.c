@@ -101,7 +101,7 @@ static int log_contains_words(const char *text)
     return found;
 }
 
-/* truth: options.c's table: --help prints the range of every option that takes a number,
+/* truth: options.c's table: --help all prints the range of every option that takes a number,
  *   from the same limits the parser checks, and the --time-limit's clock (CPU seconds)
  *   and when it stops (the text layout may wrap a phrase onto the next line).
  * catches: a limit documented nowhere, a help text that disagrees with the parser. */
@@ -112,7 +112,7 @@ static void test_help_states_ranges(struct check *t)
         "(A: a number strictly between 0 and 1)", "(each: a whole number from 0 to 32768)",
         "CPU seconds", "(R: a number above 0, at most 1e+30)",
     };
-    CHECK(t, photon("--help") == 0);
+    CHECK(t, photon("--help all") == 0);
     for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++)
         CHECK(t, log_contains_words(lines[i]));
 }

@@ -29,13 +29,13 @@ static const char *const modes[] = {"direct", "pt", "photons", "1994", "1996", "
 /* truth: the contract of --paper (presets.h, options.h): for every mode, the options
  *   of its row in the table, spelled out, with the specular pixels at --spp samples,
  *   give the same options_hash (so the same pixels and tiles); a mode with a row differs
- *   from its defaults; --help prints each row's words.
+ *   from its defaults; --help all prints each row's words.
  * tolerance: none (hashes of the parsed values).
  * catches: --paper applied by another path than the parser, a row the mode refuses,
- *   --paper that leaves the specular pixels at 64 x --spp, a row missing from --help. */
+ *   --paper that leaves the specular pixels at 64 x --spp, a row missing from --help all. */
 static void test_paper_is_its_words(struct check *t)
 {
-    CHECK(t, photon_logged("", "--help", OUT ".log") == 0);
+    CHECK(t, photon_logged("", "--help all", OUT ".log") == 0);
     char *help = read_text_file(OUT ".log");
     CHECK(t, help != NULL);
     for (size_t m = 0; m < N_MODES; m++) {
@@ -78,11 +78,11 @@ static int parses(const char *mode, const char *words, uint64_t *hash)
 }
 
 /* truth: the rule of a departure's switch (the top of app/options.c): every word --paper
- *   stands for, in every mode, is --no-NAME where --help lists --NAME, or an option with
+ *   stands for, in every mode, is --no-NAME where --help all lists --NAME, or an option with
  *   the paper's value, not 0. Such a --NAME is the mode's default: given alone it leaves
  *   the options as they are (a switch), or it takes a value, of which 0 is none (a
  *   departure with a value, whose paper's side is --no-NAME alone); and --no-NAME changes
- *   them. No --no-NAME that --help lists is any mode's default.
+ *   them. No --no-NAME that --help all lists is any mode's default.
  * tolerance: none (hashes of the parsed options).
  * catches: a paper's side spelled as a flag of its own (--rim-photon), a --no-NAME that
  *   is the default (--no-shadow-photons, the paper's being --shadow-photons), 0 for the
@@ -90,7 +90,7 @@ static int parses(const char *mode, const char *words, uint64_t *hash)
  *   --no-NAME without its --NAME. */
 static void test_paper_words_follow_the_rule(struct check *t)
 {
-    CHECK(t, photon_logged("", "--help", OUT ".log") == 0);
+    CHECK(t, photon_logged("", "--help all", OUT ".log") == 0);
     char *help = read_text_file(OUT ".log");
     REQUIRE(t, help != NULL);
     for (size_t m = 0; m < N_MODES; m++) {

@@ -121,7 +121,7 @@ static void test_values_match_linear_scan(struct check *t)
         const struct photon *rec = &records->photons[i];
         double r2;
         struct vec3 e = scanned_irradiance(photons, order, photon_position(rec),
-                                           photon_direction(rec), &r2);
+                                           photon_normal(rec), &r2);
         const struct irradiance_value *v = &pi->value[i];
         bad += !(same_float(v->e[0], e.x) && same_float(v->e[1], e.y) &&
                  same_float(v->e[2], e.z) && v->r2 == (float)r2);
@@ -154,7 +154,7 @@ static size_t scanned_record(const struct precomputed_irradiance *pi, struct sca
         size_t i = order[j].index;
         if (!(order[j].d2 <= MAX_R2))
             break;
-        if (vec3_dot(n, photon_direction(&records->photons[i])) >= PRECOMPUTED_MIN_COS &&
+        if (vec3_dot(n, photon_normal(&records->photons[i])) >= PRECOMPUTED_MIN_COS &&
             order[j].d2 <= pi->value[i].r2)
             return i;
     }

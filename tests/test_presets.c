@@ -37,14 +37,14 @@ static int log_contains(const char *text)
 /* truth: the table's contract (presets.h): every mode has the three presets, each is
  *   accepted by the option parser for its mode, preview and reference change the
  *   settings and default does not, a preset renders as its words spelled out on the
- *   command line do (the same options_hash, so the same tiles), and --help lists each
+ *   command line do (the same options_hash, so the same tiles), and --help all lists each
  *   preset's words.
  * tolerance: none (hashes of the parsed values).
  * catches: a preset word the mode refuses or a value out of its limits, a mode without a
- *   row, words applied by another path than the parser, a preset missing from --help. */
+ *   row, words applied by another path than the parser, a preset missing from --help all. */
 static void test_every_preset_parses_as_its_words(struct check *t)
 {
-    char *help = photon("--help") == 0 ? read_text_file(OUT ".log") : NULL;
+    char *help = photon("--help all") == 0 ? read_text_file(OUT ".log") : NULL;
     CHECK(t, help != NULL);
     for (size_t m = 0; m < N_MODES; m++) {
         char words[512];

@@ -285,6 +285,24 @@ static const char glossy_floor[] =
     "quad -5 0 -5  -5 0 5  5 0 5  5 0 -5  floor\n"
     "light quad -0.5 1.5 1.5  0.5 1.5 1.5  0.5 1.5 2.5  -0.5 1.5 2.5  10 10 10\n";
 
+/* The scene of a scene file's text (written to a temporary file of group sppm, read, and
+ * removed) and pt's image of it at spp samples a pixel, the truth of the cases below;
+ * NULL when it does not load. */
+static struct scene *scene_and_truth(const char *text, int spp, struct render_result *truth)
+{
+    char path[256];
+    temp_name(path, sizeof path, "sppm", "text.scene");
+    write_text_file(path, text);
+    struct scene *scene = load_test_scene(path, 0, 0);
+    remove(path);
+    if (scene != NULL) {
+        struct render_settings rs = render_settings_whole(scene, 1, spp, MAX_DEPTH_LIMIT);
+        struct render_counters counters = {0};
+        *truth = render_pt(scene, &rs, 0, NULL, &counters);
+    }
+    return scene;
+}
+
 /* The relmse against truth of a progressive render of scene the paper's way (photons the
  * only light, R0 one footprint, whole, no facing test): 2009, or 2008 with spp eye rays
  * traced once. */
@@ -318,30 +336,15 @@ static double paper_relmse(const struct scene *scene, const struct image *truth,
  *   probability (the floor's diffuse or glossy light off by the odds). */
 static void test_glossy_floor(struct check *t)
 {
-    char path[256];
-    temp_name(path, sizeof path, "sppm", "glossy.scene");
-    write_text_file(path, glossy_floor);
-    struct scene *scene = load_test_scene(path, 0, 0);
-    remove(path);
+    struct render_result truth;
+    struct scene *scene = scene_and_truth(glossy_floor, 16384, &truth);
     REQUIRE(t, scene != NULL);
-    struct render_settings rs = render_settings_whole(scene, 1, 16384, MAX_DEPTH_LIMIT);
-    struct render_counters counters = {0};
-    struct render_result truth = render_pt(scene, &rs, 0, NULL, &counters);
     double sppm = paper_relmse(scene, truth.image, 1, 0);
     double ppm = paper_relmse(scene, truth.image, 0, 1);
     CHECK(t, sppm < 0.03 && ppm >= 0.03);
     render_result_free(&truth);
     scene_free(scene);
 }
-
-/* A Phong floor (kd 0.3, ks 0.5, n 40) under a point light, 32 x 24 pixels: the light's
- * highlight, which only the glossy lobe reflects, fills the middle of the image. */
-static const char highlight_floor[] =
-    "image 32 24\n"
-    "camera 0 1.5 -3  0 0 0.5  0 1 0  40\n"
-    "material floor phong 0.3 0.3 0.3  0.5 0.5 0.5  40\n"
-    "quad -5 0 -5  -5 0 5  5 0 5  5 0 -5  floor\n"
-    "light point 0 1.5 1.5  40 40 40\n";
 
 /* The worst 8 x 8 block's relative error against truth of 2009 the paper's way (photons
  * the only light), 64 passes of 20,000 photons, its glossy lobes followed or not. */
@@ -362,7 +365,7 @@ static double paper_highlight_error(const struct scene *scene, const struct imag
 }
 
 /* truth: pt, 1,024 samples a pixel, of a Phong floor's highlight under a point light
- *   (highlight_floor).
+ *   (phong_highlight_scene).
  * tolerance: the paper's way (--paper: photons the only light, the hit point at the first
  *   non-specular surface with its whole BRDF) within 5% in every 8 x 8 block. Measured:
  *   2.1% at worst; with the eye path following the glossy lobe instead (the departure
@@ -372,15 +375,9 @@ static double paper_highlight_error(const struct scene *scene, const struct imag
  *   follows the lobe and stores its light (twice the highlight). */
 static void test_paper_highlight(struct check *t)
 {
-    char path[256];
-    temp_name(path, sizeof path, "sppm", "highlight.scene");
-    write_text_file(path, highlight_floor);
-    struct scene *scene = load_test_scene(path, 0, 0);
-    remove(path);
+    struct render_result truth;
+    struct scene *scene = scene_and_truth(phong_highlight_scene, 1024, &truth);
     REQUIRE(t, scene != NULL);
-    struct render_settings rs = render_settings_whole(scene, 1, 1024, MAX_DEPTH_LIMIT);
-    struct render_counters counters = {0};
-    struct render_result truth = render_pt(scene, &rs, 0, NULL, &counters);
     double paper = paper_highlight_error(scene, truth.image, 0);
     double followed = paper_highlight_error(scene, truth.image, 1);
     printf("  sppm: a point light's highlight, the paper's way: worst 8 x 8 block %.3f off; "

@@ -281,7 +281,7 @@ static void test_irradiance_rules(struct check *t)
  *   edge than left of it, the step a caustic's edge makes (Sec. 3.3).
  * tolerance: over 400 estimates with 200 photons each at points within one gathering
  *   radius of the edge, the relative RMS error with checking (runs of 10) is below 0.9
- *   times that without (measured: 0.62 against 0.78, 0.79 times). Far from the edge
+ *   times that without (measured: 0.60 against 0.77, 0.78 times). Far from the edge
  *   checking costs noise, which the test allows.
  * catches: checking that never stops (equal errors), a run that stops on noise before
  *   the disc reaches the edge (no gain), the wrong sign of a run. */

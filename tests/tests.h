@@ -11,6 +11,7 @@ void test_image(struct check *t);  /* test_image.c: PFM/PPM, compare metrics    
 void test_png(struct check *t);    /* test_png.c: PNG files, outside readers      */
 void test_convert(struct check *t); /* test_convert.c: photon convert, compare --diff's picture */
 void test_exr(struct check *t);    /* test_exr.c: OpenEXR files, inflate          */
+void test_deflate(struct check *t); /* test_deflate.c: deflate through our inflate */
 void test_compare(struct check *t); /* test_compare.c: per-pixel statistical test */
 void test_plot(struct check *t);   /* test_plot.c: CSV reading, SVG plots         */
 void test_geom(struct check *t);   /* test_geom.c: the BVH against brute force    */
@@ -24,6 +25,7 @@ void test_shapes(struct check *t); /* test_shapes.c: the sphere flake           
 void test_shapes_heightfield(struct check *t); /* test_shapes_heightfield.c: noise, heightfield */
 void test_import(struct check *t); /* test_import.c: NFF, OBJ, scene keywords     */
 void test_import_geom(struct check *t); /* test_import_geom.c: the cone, ear clipping */
+void test_import_obj(struct check *t); /* test_import_obj.c: obj rotate, usemtl */
 void test_photon(struct check *t); /* test_photon.c: photon record, kd-tree       */
 void test_hit_points(struct check *t); /* test_hit_points.c: 2008's hit-point tree  */
 void test_trace_emission(struct check *t); /* test_trace_emission.c: photon emission */
@@ -56,6 +58,8 @@ void test_literal(struct check *t); /* test_literal.c: 2009 --paper against the 
 void test_export(struct check *t);  /* test_export.c: photon export to pbrt-v4, Mitsuba 3 */
 void test_switches(struct check *t); /* test_switches.c: each paper switch of 1994, 1996 */
 void test_export_blender(struct check *t); /* test_export_blender.c: the Blender script */
+void test_export_output(struct check *t); /* test_export_output.c: size, -o's ending */
+void test_help(struct check *t); /* test_help.c: --help's first screen, --help all */
 void test_outputs(struct check *t); /* test_outputs.c: outputs and inputs of a command */
 void test_foreign_files(struct check *t); /* test_foreign_files.c: files photon did not make */
 void test_numbers(struct check *t); /* test_numbers.c: numbers, ranges, messages       */

@@ -473,3 +473,9 @@ double point_in_sphere_truth(const struct scene *scene, int x, int y)
     (void)y;
     return 4.0;
 }
+
+const char phong_highlight_scene[] = "image 32 24\n"
+                                     "camera 0 1.5 -3  0 0 0.5  0 1 0  40\n"
+                                     "material floor phong 0.3 0.3 0.3  0.5 0.5 0.5  40\n"
+                                     "quad -5 0 -5  -5 0 5  5 0 5  5 0 -5  floor\n"
+                                     "light point 0 1.5 1.5  40 40 40\n";

@@ -218,4 +218,9 @@ void finish_with_camera(struct scene *scene, struct vec3 from, struct vec3 at, d
  * determinism loop; only options that mode takes ("" for direct and pt). */
 const char *mode_work_options(const char *render);
 
+/* A Phong floor (kd 0.3, ks 0.5, n 40) under a point light, 32 x 24 pixels: the light's
+ * highlight, which only the glossy lobe reflects, fills the middle of the image (a scene
+ * file's text, for 2009's paper way: test_sppm.c against pt, test_literal.c). */
+extern const char phong_highlight_scene[];
+
 #endif

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "../base/number.h"
+#include "../base/option_once.h"
 #include "../base/output.h"
 #include "../image/false_colour.h"
 #include "../image/png.h"
@@ -32,6 +33,7 @@ struct convert_args {
     int false_colour, log;              /* --false-colour, --log                          */
     double exposure;                    /* 1 unless given                                 */
     struct false_colour fc;             /* the ends given, in fc.min and fc.max           */
+    struct option_once once;            /* the options with a value read so far           */
 };
 
 /* The options, for the near miss of an unknown one (app/suggest.h). */
@@ -64,14 +66,14 @@ static const char convert_help[] =
     "60 s pixels tall is made that tall, black below the image.\n";
 
 /* An option's value: the next argument, or the text after '=' in "--name=value";
- * *i advanced past what was used. -1 with *err filled when missing or given twice. */
+ * *i advanced past what was used. -1 with *err filled when missing or given twice (once
+ * records the options read). */
 static int option_value(int argc, char **argv, int *i, const char *inline_value,
-                        const char **value, struct error *err)
+                        const char **value, struct option_once *once, struct error *err)
 {
     const char *name = argv[*i];
-    if (*value != NULL)
-        return error_set(err, "", 0, "convert: %.*s given twice", (int)strcspn(name, "="),
-                         name);
+    if (option_once(once, "convert", argc, argv, *i, 1, err) < 0)
+        return -1;
     if (inline_value != NULL)
         *value = inline_value;
     else if (*i + 1 < argc)
@@ -96,7 +98,7 @@ static int parse_option(int argc, char **argv, int *i, struct convert_args *args
                          : strcmp(name, "--max") == 0      ? &args->max_text
                                                            : NULL;
     if (value != NULL)
-        return option_value(argc, argv, i, inline_value, value, err);
+        return option_value(argc, argv, i, inline_value, value, &args->once, err);
     int *flag = strcmp(name, "--false-colour") == 0 || strcmp(name, "--false-color") == 0
                     ? &args->false_colour
                 : strcmp(name, "--log") == 0 ? &args->log

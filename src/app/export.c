@@ -12,11 +12,13 @@
 #include "../base/alloc.h"
 #include "../base/option_once.h"
 #include "../base/output.h"
+#include "../image/image.h"
 #include "option_values.h"
 
-#define EXPORT_USAGE                                                                      \
-    "usage: photon export --format pbrt|mitsuba|blender SCENE -o OUT [--spp N] "         \
-    "[--channel R|G|B]"
+/* The usage in two parts: one line in a message, two in --help (within 100 columns). */
+#define EXPORT_USAGE_NAMES "usage: photon export --format pbrt|mitsuba|blender SCENE -o OUT"
+#define EXPORT_USAGE_OPTIONS "[--spp N] [--channel R|G|B] [--width N] [--height N]"
+#define EXPORT_USAGE EXPORT_USAGE_NAMES " " EXPORT_USAGE_OPTIONS
 
 /* ---- flattening the geometry ---- */
 
@@ -271,13 +273,18 @@ struct export_args {
     enum export_format format;
     int spp;
     int channel;
+    int width, height; /* the image's size; 0: the scene's */
 };
+
+/* By enum export_format: --format's word, and the ending of the file the target reads
+ * (pbrt's scene, Mitsuba's XML, the Python script Blender runs), which -o must have. */
+static const char *const format_names[] = {"pbrt", "mitsuba", "blender"};
+static const char *const format_endings[] = {".pbrt", ".xml", ".py"};
 
 static int parse_format(const char *word, enum export_format *format, struct error *err)
 {
-    static const char *const names[] = {"pbrt", "mitsuba", "blender"};
     for (int i = 0; i < 3; i++)
-        if (strcmp(word, names[i]) == 0) {
+        if (strcmp(word, format_names[i]) == 0) {
             *format = (enum export_format)i;
             return 0;
         }
@@ -296,13 +303,34 @@ static int parse_channel(const char *word, int *channel, struct error *err)
     return error_set(err, "", 0, "export: --channel '%s': expected R, G or B", word);
 }
 
-static int parse_spp(const char *word, int *spp, struct error *err)
+/* A whole number from 1 to max for the option called name (--spp, --width, --height). */
+static int parse_whole(const char *name, const char *word, int max, int *value,
+                       struct error *err)
 {
+    char label[32];
     double v;
-    if (read_number("export: --spp", word, 1, 1 << 24, NUMBER_WHOLE, &v, err) < 0)
+    snprintf(label, sizeof label, "export: %s", name);
+    if (read_number(label, word, 1, max, NUMBER_WHOLE, &v, err) < 0)
         return -1;
-    *spp = (int)v;
+    *value = (int)v;
     return 0;
+}
+
+/* -o's name ends in the format's ending, after a name of its own: "x.xml" for pbrt would
+ * be read by the wrong program, and ".pbrt" (or "out/.pbrt") is a hidden file of no name.
+ * Checked after the scene is read, before anything is written: an -o that is a directory,
+ * or an input of the command (the scene, an OBJ file it reads), is named as that, the
+ * graver fault, by the output checks (base/output.h). */
+static int check_ending(const struct export_args *a, struct error *err)
+{
+    const char *ending = format_endings[a->format];
+    const char *slash = strrchr(a->output, '/');
+    const char *base = slash != NULL ? slash + 1 : a->output;
+    size_t n = strlen(base), length = strlen(ending);
+    if (n > length && strcmp(base + n - length, ending) == 0)
+        return 0;
+    return error_set(err, "", 0, "export: -o: expected a file name ending in %s for --format "
+                     "%s, got '%s'", ending, format_names[a->format], a->output);
 }
 
 static int parse_export_args(int argc, char **argv, struct export_args *a, struct error *err)
@@ -312,14 +340,16 @@ static int parse_export_args(int argc, char **argv, struct export_args *a, struc
     a->format = EXPORT_PBRT;
     a->spp = EXPORT_DEFAULT_SPP;
     a->channel = -1;
+    a->width = a->height = 0;
     struct option_once once = {{0}, 0};
     for (int i = 1; i < argc; i++) {
         const char *opt = argv[i];
         int takes_value = strcmp(opt, "--format") == 0 || strcmp(opt, "-o") == 0 ||
-                          strcmp(opt, "--spp") == 0 || strcmp(opt, "--channel") == 0;
+                          strcmp(opt, "--spp") == 0 || strcmp(opt, "--channel") == 0 ||
+                          strcmp(opt, "--width") == 0 || strcmp(opt, "--height") == 0;
         if (takes_value && i + 1 == argc)
             return error_set(err, "", 0, "export: %s needs a value; " EXPORT_USAGE, opt);
-        if (takes_value && option_once(&once, "export", opt, err) < 0)
+        if (takes_value && option_once(&once, "export", argc, argv, i, 1, err) < 0)
             return -1;
         if (strcmp(opt, "--format") == 0) {
             if (parse_format(argv[++i], &a->format, err) < 0)
@@ -328,7 +358,11 @@ static int parse_export_args(int argc, char **argv, struct export_args *a, struc
         } else if (strcmp(opt, "-o") == 0) {
             a->output = argv[++i];
         } else if (strcmp(opt, "--spp") == 0) {
-            if (parse_spp(argv[++i], &a->spp, err) < 0)
+            if (parse_whole(opt, argv[++i], 1 << 24, &a->spp, err) < 0)
+                return -1;
+        } else if (strcmp(opt, "--width") == 0 || strcmp(opt, "--height") == 0) {
+            int *side = opt[2] == 'w' ? &a->width : &a->height;
+            if (parse_whole(opt, argv[++i], MAX_IMAGE_SIDE, side, err) < 0)
                 return -1;
         } else if (strcmp(opt, "--channel") == 0) {
             if (parse_channel(argv[++i], &a->channel, err) < 0)
@@ -396,16 +430,20 @@ static int check_output_name(const char *output, struct error *err)
 /* `photon export --help`: what each option and format does (README: Rendering our scenes
  * elsewhere). */
 static const char export_help[] =
-    EXPORT_USAGE "\n\n"
+    EXPORT_USAGE_NAMES "\n                     " EXPORT_USAGE_OPTIONS "\n\n"
     "Writes SCENE for another renderer, with the same camera, image size, lights and\n"
     "materials, so that its image can be compared with photon's (photon compare).\n"
-    "  --format pbrt     a pbrt-v4 scene (.pbrt)\n"
-    "  --format mitsuba  a Mitsuba 3 scene (.xml)\n"
-    "  --format blender  a Python script for Blender that builds the scene for Cycles\n"
+    "  --format pbrt     a pbrt-v4 scene: OUT ends in .pbrt\n"
+    "  --format mitsuba  a Mitsuba 3 scene: OUT ends in .xml\n"
+    "  --format blender  a Python script for Blender that builds the scene for Cycles: OUT\n"
+    "                    ends in .py\n"
     "  -o OUT            the file written (mitsuba: its meshes' OBJ files beside it)\n"
     "  --spp N           the samples a pixel the other renderer is told to take\n"
     "                    (default 1024)\n"
     "  --channel R|G|B   one channel's values on every colour: a grey scene\n"
+    "  --width N         the image's width in pixels, as photon's own --width takes it\n"
+    "                    (default: the scene's): to match a reference of that size\n"
+    "  --height N        the image's height likewise (default: the scene's)\n"
     "What a format cannot express exactly is said on stderr, never left out silently.\n"
     "Exit status 0, or 2 for bad input (nothing written).\n";
 
@@ -422,11 +460,13 @@ int export_command(int argc, char **argv)
         return 2;
     }
     struct scene *scene = scene_load(a.scene, &err);
-    if (scene == NULL) {
+    if (scene == NULL || check_ending(&a, &err) < 0) {
         error_print(&err);
+        scene_free(scene);
         return 2;
     }
-    scene_finish(scene, scene->width, scene->height);
+    scene_finish(scene, a.width > 0 ? a.width : scene->width,
+                 a.height > 0 ? a.height : scene->height);
     struct export_scene es;
     export_scene_make(&es, scene, a.spp, a.channel);
     es.scene_path = a.scene;

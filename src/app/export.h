@@ -117,8 +117,10 @@ void export_name(FILE *f, const char *name);
  * floats, which is what every target stores. */
 void export_rgb(FILE *f, const char *separator, struct vec3 c);
 
-/* `photon export --format pbrt|mitsuba|blender SCENE -o OUT [--spp N] [--channel R|G|B]`:
- * argv[0] is "export". Returns the exit status. */
+/* `photon export --format pbrt|mitsuba|blender SCENE -o OUT [--spp N] [--channel R|G|B]
+ * [--width N] [--height N]`: argv[0] is "export"; OUT ends in the format's ending, .pbrt,
+ * .xml or .py, after a name; --width and --height, as the render command's, replace the
+ * scene's image size. Returns the exit status. */
 int export_command(int argc, char **argv);
 
 #endif

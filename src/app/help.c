@@ -129,7 +129,9 @@ static const char *const scene_lines[][2] = {
     {"light sphere|quad ...", "an area light by the radiance it emits"},
     {"sphereflake ...", "Haines' sphere flake"},
     {"heightfield ...", "a fractal heightfield"},
-    {"nff FILE, obj FILE MATERIAL ...", "an NFF scene or an OBJ mesh read in place"},
+    {"nff FILE, obj FILE MATERIAL ...", "an NFF scene, or an OBJ mesh (rotate, scale and "
+                                        "translate it; usemtl names scene materials), read "
+                                        "in place"},
     {"include FILE", "another scene file read in place"},
 };
 

@@ -1,7 +1,8 @@
 /*
- * app/help.h -- photon's help, printed as text (--help) or as the manual page photon.1
- * (--manual, what `make install` puts in share/man/man1): one text, two layouts, so the
- * page and --help cannot say different things (tests/test_docs.c checks that they don't).
+ * app/help.h -- photon's help, printed as text (--help all, the full list) or as the
+ * manual page photon.1 (--manual, what `make install` puts in share/man/man1): one text,
+ * two layouts, so the page and --help all cannot say different things (tests/test_docs.c
+ * checks that they don't). --help's first screen (first_screen.h) uses the text layout.
  */
 #ifndef PHOTON_HELP_H
 #define PHOTON_HELP_H
@@ -20,9 +21,9 @@ void help_lines(enum help_format format, const char *text);
 /* One option: as text "  LEFT (padded to 26) TEXT"; roff a tagged paragraph. */
 void help_option(enum help_format format, const char *left, const char *text);
 
-/* The manual page's sections beyond --help's (roff alone; nothing as text, which stays a
- * screen's worth of reference): the scene format's lines, EXIT STATUS, FILES (what make
- * install puts where) and EXAMPLES. */
+/* The manual page's sections beyond --help all's (roff alone; nothing as text, which
+ * stays a reference of the options): the scene format's lines, EXIT STATUS, FILES (what
+ * make install puts where) and EXAMPLES. */
 void help_manual_sections(enum help_format format);
 
 #endif

@@ -59,7 +59,7 @@ static int parse_merge_args(int argc, char **argv, struct merge_args *args, stru
             return 1;
         }
         if ((strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--exposure") == 0) &&
-            option_once(&once, "merge", argv[i], err) < 0)
+            option_once(&once, "merge", argc, argv, i, 1, err) < 0)
             return -1;
         if (strcmp(argv[i], "-o") == 0 &&
             read_output(value, args->output, &args->display, err) < 0)

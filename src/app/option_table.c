@@ -101,7 +101,8 @@ const struct option_spec option_specs[] = {
      FOR_PHOTON_MAPS},
     {"--caustic-radius-fraction", OPT_REAL, FIELD(caustic_radius_fraction), 0.001, 1, "F",
      "caustic estimates reach F times --max-radius (default 0.25: a wide disc hangs over a "
-     "surface's edges where caustic photons are sparse; the paper's 1)", FOR_1994 | FOR_1996},
+     "surface's edges where caustic photons are sparse; --paper's 1, one maximum for every "
+     "estimate: the papers have none)", FOR_1994 | FOR_1996},
     {"--caustic-photons", OPT_INT, FIELD(caustic_photons), 0, MAX_PHOTONS, "N",
      "photons emitted towards specular objects for the caustic map (default 1000000); with "
      "0 and no --one-map, --caustic-gather, --caustic-radius-fraction and --cone are "
@@ -112,14 +113,17 @@ const struct option_spec option_specs[] = {
      "rays of one final gather (1994: one per stratum; 1996: half stratified, "
      "half by photon importance; default 512)", FOR_1994 | FOR_1996},
     {"--glossy-rays", OPT_INT, FIELD(glossy_rays), 1, 1000, "N",
-     "rays sampling a glossy surface seen accurately (default 6, the paper's)", FOR_1996},
+     "rays sampling a glossy surface seen accurately (default 6, the paper's \"maximum of "
+     "6\")", FOR_1996},
     {"--cache-accuracy", OPT_REAL, FIELD(cache_accuracy), 0, 10, "A",
      "irradiance cache accuracy a (Ward 1988); 1996 only: 0 = gather at every "
      "point, and the switches of a record's R (--bounded-reach, --gradient-limit) are "
      "refused (default 0.15)", FOR_1994 | FOR_1996},
     {"--accurate-distance", OPT_REAL, FIELD(accurate_distance), 0, 1e6, "F",
-     "gather rays shorter than F radii of the estimate they reach are evaluated "
-     "accurately (default 3)", FOR_1996},
+     "gather rays shorter than F radii of the estimate they reach are evaluated as "
+     "accurately, but with the global map's indirect photons for the indirect light (the "
+     "paper's \"small threshold\", its value not specified by the paper; default 3)",
+     FOR_1996},
     {"--accurate-weight", OPT_REAL, FIELD(accurate_weight), 0, 1, "W",
      "rays with throughput below W are evaluated approximately (default 0.1)", FOR_1996},
     {"--shadow-rays", OPT_FLAG, FIELD(shadow_rays), 0, 0, "",
@@ -167,9 +171,10 @@ const struct option_spec option_specs[] = {
      FOR_1994},
     {"--glossy-gather", OPT_FLAG, FIELD(glossy_gather), 0, 0, "",
      "a diffuse-like part that is not Lambertian (Schlick's model, r >= 1/2) reflects what "
-     "each camera sample gathers through its BRDF (the default)", FOR_1994},
+     "each camera sample gathers through its BRDF (the default, and the paper's plain "
+     "recursive Monte Carlo for complex BRDFs)", FOR_1994},
     {"--no-glossy-gather", OPT_FLAG, FIELD(glossy_gather), 0, 0, "",
-     "albedo / pi times the cache's irradiance, as a Lambertian surface (the paper's)",
+     "albedo / pi times the cache's irradiance, as if it were Lambertian (not the paper's)",
      FOR_1994},
     {"--bounded-reach", OPT_FLAG, FIELD(bounded_reach), 0, 0, "",
      "a cache record's R lies between 1.5 pixel footprints / A, as the camera sees its "
@@ -206,8 +211,8 @@ const struct option_spec option_specs[] = {
      "point); --footprints and --fit-radius, which it leaves unused, are refused with it",
      FOR_PROGRESSIVE},
     {"--footprints", OPT_REAL_ABOVE, FIELD(footprints), 0, 1e6, "K",
-     "initial radius in pixel footprints at each hit point (default 4; the paper's: 1); "
-     "refused with --radius", FOR_PROGRESSIVE},
+     "initial radius in pixel footprints at each hit point (default 4; the paper's "
+     "example: 1); refused with --radius", FOR_PROGRESSIVE},
     {"--caustic-footprints", OPT_REAL_ABOVE, FIELD(caustic_footprints), 0, 1e6, "K",
      "caustic photons gather in an estimate of their own, R0 of K footprints (with "
      "--radius: R0 = --radius, whatever K; default 1)", FOR_2008},
@@ -227,12 +232,14 @@ const struct option_spec option_specs[] = {
     {"--resample-emission", OPT_FLAG, FIELD(resample_emission), 0, 0, "",
      "each pass's new eye ray also adds the emission it sees (the default)", FOR_2008},
     {"--no-resample-emission", OPT_FLAG, FIELD(resample_emission), 0, 0, "",
-     "emission only from the --spp eye rays of the ray tracing pass, the paper's", FOR_2008},
+     "emission only from the --spp eye rays of the ray tracing pass, the paper's (its only "
+     "eye rays)", FOR_2008},
     {"--facing-test", OPT_FLAG, FIELD(facing_test), 0, 0, "",
      "a photon counts only at hit points whose surface faces its own (the default)",
      FOR_PROGRESSIVE},
     {"--no-facing-test", OPT_FLAG, FIELD(facing_test), 0, 0, "",
-     "every photon within R counts (the papers leave the test open)", FOR_PROGRESSIVE},
+     "every photon within R counts, as the papers' \"photons within the radius\"",
+     FOR_PROGRESSIVE},
     {"--turn-photon-directions", OPT_FLAG, FIELD(turn_photon_directions), 0, 0, "",
      "f_r sees a photon's direction turned by the rotation taking its surface's normal to "
      "the hit point's, so none within R falls below a curved surface's horizon (the "

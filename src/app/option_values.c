@@ -38,6 +38,13 @@ const char *mode_name(enum mode mode)
     return "?";
 }
 
+const enum mode every_mode[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1994,
+                                MODE_JENSEN1996, MODE_PPM2008, MODE_SPPM2009};
+
+/* An array of -1 chars, which does not compile, unless N_EVERY_MODE counts the list. */
+typedef char every_mode_count_is_right[sizeof every_mode / sizeof every_mode[0] ==
+                                       N_EVERY_MODE ? 1 : -1];
+
 void number_range(enum number_kind kind, double min, double max, char *text, size_t size)
 {
     if (kind == NUMBER_WHOLE)

@@ -16,6 +16,11 @@
 /* --mode's word for mode ("direct", ..., "2009"). */
 const char *mode_name(enum mode mode);
 
+/* Every mode, in the order the help lists them: N_EVERY_MODE of them (option_values.c
+ * does not compile when that is not the list's count). */
+#define N_EVERY_MODE 7
+extern const enum mode every_mode[];
+
 /* What a number must be: whole in [min, max], real in [min, max], real in (min, max], or
  * real in (min, max). */
 enum number_kind { NUMBER_WHOLE, NUMBER_REAL, NUMBER_ABOVE, NUMBER_BETWEEN };

@@ -10,7 +10,9 @@
 
 #include "../base/alloc.h"
 #include "../base/hash.h"
+#include "../base/option_once.h"
 #include "../modes/ppm2008.h"
+#include "first_screen.h"
 #include "help.h"
 #include "option_checks.h"
 #include "option_table.h"
@@ -18,20 +20,15 @@
 #include "presets.h"
 #include "suggest.h"
 
-
-static const enum mode every_mode[] = {MODE_DIRECT, MODE_PT, MODE_PHOTONS, MODE_JENSEN1994,
-                                       MODE_JENSEN1996, MODE_PPM2008, MODE_SPPM2009};
-#define N_MODES (sizeof every_mode / sizeof every_mode[0])
-
 /* The modes of set (an option_spec.modes) into text[size], in the order of every_mode,
  * separated by ", ", the last by last (", " or " or "): "photons, 1994 or 1996". */
 static void mode_list(unsigned set, const char *last, char *text, size_t size)
 {
     size_t n = 0, listed = 0, count = 0;
-    for (size_t m = 0; m < N_MODES; m++)
+    for (size_t m = 0; m < N_EVERY_MODE; m++)
         count += (set >> every_mode[m]) & 1u;
     text[0] = '\0';
-    for (size_t m = 0; m < N_MODES && n < size; m++) {
+    for (size_t m = 0; m < N_EVERY_MODE && n < size; m++) {
         if (!((set >> every_mode[m]) & 1u))
             continue;
         const char *separator = listed == 0 ? "" : listed + 1 == count ? last : ", ";
@@ -119,9 +116,11 @@ static void print_help(enum help_format format)
            "       photon merge -o FULL.pfm|.exr TILE.pfm|.exr [TILE ...] [--exposure E]\n"
            "       photon convert IN.pfm|.exr -o OUT.png|.ppm [--exposure E | --false-colour\n"
            "                      [--min V] [--max V] [--log]]   (pictures of images and errors)\n"
-           "       photon export --format pbrt|mitsuba|blender SCENE -o OUT [--spp N]\n"
-           "                    [--channel R|G|B]   (the scene for pbrt-v4, Mitsuba 3 or\n"
-           "                    Blender; see README: Rendering our scenes elsewhere)\n");
+           "       photon export --format pbrt|mitsuba|blender SCENE -o OUT.pbrt|.xml|.py\n"
+           "                    [--spp N] [--channel R|G|B] [--width N] [--height N]\n"
+           "                    (the scene for pbrt-v4, Mitsuba 3 or Blender; see README:\n"
+           "                    Rendering our scenes elsewhere)\n");
+    help_modes(format);
     help_section(format, "options");
     for (size_t i = 0; i < N_OPTION_SPECS; i++) {
         char left[40], note[80], range[128], text[1024];
@@ -131,8 +130,9 @@ static void print_help(enum help_format format)
         snprintf(text, sizeof text, "%s%s%s", note, option_specs[i].help, range);
         help_option(format, left, text);
     }
-    help_option(format, "--help [MODE]", "print this (with MODE: that mode's options, presets "
-                                         "and --paper alone) and exit");
+    help_option(format, "--help [MODE|all]", "print the first screen (with MODE: that mode's "
+                                             "options, presets and --paper alone; with all: "
+                                             "this) and exit");
     help_option(format, "--version", "print the version and exit");
     help_option(format, "--manual", "print this as a manual page (roff; make install writes "
                                     "photon.1 from it) and exit");
@@ -146,14 +146,27 @@ static const char *spec_at(size_t i) { return option_specs[i].name; }
 static int read_mode(const char *text, enum mode *mode, struct error *err)
 {
     char hint[80];
-    for (size_t i = 0; text != NULL && i < N_MODES; i++)
+    for (size_t i = 0; text != NULL && i < N_EVERY_MODE; i++)
         if (strcmp(text, mode_name(every_mode[i])) == 0) {
             *mode = every_mode[i];
             return 0;
         }
-    did_you_mean(text, mode_at, N_MODES, hint, sizeof hint);
+    did_you_mean(text, mode_at, N_EVERY_MODE, hint, sizeof hint);
     return error_set(err, "", 0, "--mode: unknown mode '%s'%s (available: direct, pt, photons, "
                      "1994, 1996, 2008, 2009)", text != NULL ? text : "nothing", hint);
+}
+
+/* --help, and the word after it (NULL for none): "all" the full list, a mode's name that
+ * mode's help, anything else (a scene, another option) the first screen. */
+static void print_help_about(const char *word)
+{
+    enum mode asked;
+    if (word != NULL && strcmp(word, "all") == 0)
+        print_help(HELP_TEXT);
+    else if (word != NULL && read_mode(word, &asked, NULL) == 0)
+        print_mode_help(asked);
+    else
+        print_first_screen();
 }
 
 static const struct option_spec *find_spec(const char *name)
@@ -270,16 +283,12 @@ static int earlier_word(const struct option_spec *spec, const int given[N_OPTION
     return valued && given[k] > 0 && given[k] != i ? given[k] : 0;
 }
 
-/* The option at argv[i] with the values it takes, as typed ("--spp 4"), into text[size]. */
-static void option_words(char **argv, int argc, int i, char *text, size_t size)
+/* How many words of values follow spec's option: the words a message echoes with it. */
+static int spec_values(const struct option_spec *spec)
 {
-    const struct option_spec *spec = find_spec(argv[i]);
-    int n_values = spec->kind == OPT_FLAG || spec->kind == OPT_OFF ? 0
-                   : spec->kind == OPT_CROP                         ? 4
-                                                                    : 1;
-    size_t n = (size_t)snprintf(text, size, "%s", argv[i]);
-    for (int k = 1; k <= n_values && i + k < argc && n < size; k++)
-        n += (size_t)snprintf(text + n, size - n, " %s", argv[i + k]);
+    return spec->kind == OPT_FLAG || spec->kind == OPT_OFF ? 0
+           : spec->kind == OPT_CROP                         ? 4
+                                                            : 1;
 }
 
 /* Applies the words w to *o: options by option_specs[], any other word as the scene file; given[k]
@@ -291,15 +300,12 @@ static int apply_words(const struct words *w, struct options *o, int given[N_OPT
     char **argv = w->word;
     int argc = w->n;
     for (int i = w->first; i < argc; i++) {
-        enum mode asked;
-        if ((strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) && i + 1 < argc &&
-            read_mode(argv[i + 1], &asked, NULL) == 0) {
-            print_mode_help(asked);
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            print_help_about(i + 1 < argc ? argv[i + 1] : NULL);
             return 1;
         }
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0 ||
-            strcmp(argv[i], "--manual") == 0) {
-            print_help(strcmp(argv[i], "--manual") == 0 ? HELP_ROFF : HELP_TEXT);
+        if (strcmp(argv[i], "--manual") == 0) {
+            print_help(HELP_ROFF);
             return 1;
         }
         if (strcmp(argv[i], "--version") == 0) {
@@ -308,13 +314,8 @@ static int apply_words(const struct words *w, struct options *o, int given[N_OPT
         }
         const struct option_spec *spec = find_spec(argv[i]);
         int earlier = spec != NULL ? earlier_word(spec, given, i) : 0;
-        if (earlier > 0) {
-            char now[160], before[160];
-            option_words(argv, argc, i, now, sizeof now);
-            option_words(argv, argc, earlier, before, sizeof before);
-            return error_set(err, "", 0, "%s: given after %s; give the option once", now,
-                             before);
-        }
+        if (earlier > 0) /* one wording with the subcommands' (base/option_once.h) */
+            return option_given_again("", argc, argv, earlier, i, spec_values(spec), err);
         if (spec != NULL) {
             given[spec - option_specs] = i;
             if (apply_option(spec, argv, argc, &i, o, err) < 0)

@@ -3,7 +3,7 @@
  * struct options (render_options.h).
  *
  * One table (option_table.c) lists every option with its limits, default and help text;
- * --help prints that table, so the help and the parser cannot disagree.
+ * --help all prints that table, so the help and the parser cannot disagree.
  */
 #ifndef PHOTON_OPTIONS_H
 #define PHOTON_OPTIONS_H

@@ -58,7 +58,8 @@ static int read_probe_option(int argc, char **argv, int *i, struct probe_args *a
     const char *value = *i + 1 < argc ? argv[*i + 1] : NULL;
     double v = 0;
     int status = 0;
-    if (option_once(once, "probe", name, err) < 0) /* every probe option takes values */
+    int n_values = strcmp(name, "--line") == 0 ? 6 : strcmp(name, "--normal") == 0 ? 3 : 1;
+    if (option_once(once, "probe", argc, argv, *i, n_values, err) < 0) /* all have values */
         return -1;
     if (strcmp(name, "--line") == 0)
         return read_numbers(argc, argv, i, 6, args->line, err);

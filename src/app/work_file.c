@@ -88,6 +88,19 @@ static int check_work(const struct global_work *work, const char *name, struct e
     return 0;
 }
 
+/* err's message led by what was being done: the checks, the reader's and binary.h's
+ * messages say what is wrong, this says that the file was being saved or loaded, and for
+ * which option. Keeps err's kind (a failed write or bad input). */
+static int say_doing(struct error *err, const char *doing)
+{
+    if (err != NULL) {
+        int failed_write = err->failed_write;
+        error_set(err, err->file, err->line, "%s: %s", doing, err->message);
+        err->failed_write = failed_write;
+    }
+    return -1;
+}
+
 /* ---- Writing ----------------------------------------------------------------------- */
 
 static void put_vec3(struct binary_writer *w, struct vec3 v)
@@ -133,7 +146,7 @@ int work_file_write(const char *name, uint64_t hash, const struct global_work *w
     if (check_work(work, name, err) < 0) {
         if (err != NULL)
             err->failed_write = 1; /* the render's own work: no input of the user's is bad */
-        return -1;
+        return say_doing(err, "cannot save the work (--save-photons)");
     }
     w.f = output_open(name, err);
     if (w.f == NULL)
@@ -311,9 +324,10 @@ int work_file_read(const char *name, uint64_t hash, struct global_work *work,
                    struct error *err)
 {
     struct binary_reader r;
-    if (binary_open(name, &r, err) < 0)
-        return -1;
-    int status = get_work(&r, hash, work, err);
-    fclose(r.f);
-    return status;
+    int status = binary_open(name, &r, err);
+    if (status == 0) {
+        status = get_work(&r, hash, work, err);
+        fclose(r.f);
+    }
+    return status < 0 ? say_doing(err, "cannot load the saved work (--load-photons)") : 0;
 }

@@ -1,5 +1,5 @@
 /*
- * base/error.c -- error records and fatal().
+ * base/error.c -- error records, fatal() and the standard output's last check.
  */
 #include "error.h"
 
@@ -67,6 +67,17 @@ void error_print(const struct error *err)
         fprintf(stderr, "%s:%d: %s\n", err->file, err->line, err->message);
     else
         fprintf(stderr, "%s: %s\n", err->file, err->message);
+}
+
+int standard_output_status(int status)
+{
+    errno = 0; /* a failed write earlier set ferror(), and left errno to later calls */
+    if (fflush(stdout) == 0 && !ferror(stdout))
+        return status;
+    int errnum = errno;
+    fprintf(stderr, "photon: cannot write the standard output%s%s\n", errnum > 0 ? ": " : "",
+            errnum > 0 ? strerror(errnum) : "");
+    return status != 0 ? status : 1;
 }
 
 void fatal(const char *format, ...)

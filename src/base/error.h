@@ -45,6 +45,12 @@ void error_print(const struct error *err);
 /* The exit status for err: 1 when a write failed, 2 for bad input. */
 int error_exit_status(const struct error *err);
 
+/* The exit status once the standard output is flushed: status, unless what was printed
+ * there could not all be written (photon --manual > /dev/full: a full disk); then
+ * "photon: cannot write the standard output: reason" is printed, and a status of 0
+ * becomes 1 (a failed write). main() returns through it. */
+int standard_output_status(int status);
+
 /* Prints "photon: message" and exits with status 1; exit() runs the output registry's
  * cleanup, which removes every temporary output (output.h registers it by atexit()). */
 void fatal(const char *format, ...);

@@ -20,10 +20,11 @@
 #include <stdint.h>
 #include <string.h>
 
-#define MAX_BITS 15      /* the longest Huffman code deflate allows            */
-#define N_LITLEN 288     /* literal/length symbols in the fixed code (286 used) */
-#define N_DIST 30        /* distance symbols                                    */
-#define N_CODE_LENGTHS 19 /* symbols of the code that codes the code lengths    */
+/* Short names for inflate.h's numbers of RFC 1951. */
+#define MAX_BITS DEFLATE_MAX_BITS
+#define N_LITLEN DEFLATE_N_LITLEN
+#define N_DIST DEFLATE_N_DIST
+#define N_CODE_LENGTHS DEFLATE_N_CODE_LENGTHS
 
 struct bits {
     const unsigned char *in;
@@ -141,18 +142,35 @@ static int stored(struct bits *s)
 }
 
 /* RFC 1951 3.2.5: each length symbol 257..285 and distance symbol 0..29 stands for a base
- * value plus that many extra bits read after it. */
-static const short length_base[29] = {3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 15, 17, 19, 23, 27,
-                                      31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195,
-                                      227, 258};
-static const short length_extra[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
-                                       2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
-static const short dist_base[N_DIST] = {1, 2, 3, 4, 5, 7, 9, 13, 17, 25, 33, 49, 65, 97,
-                                        129, 193, 257, 385, 513, 769, 1025, 1537, 2049,
-                                        3073, 4097, 6145, 8193, 12289, 16385, 24577};
-static const short dist_extra[N_DIST] = {0, 0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5,
-                                         6, 6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12,
-                                         13, 13};
+ * value plus that many extra bits read after it (inflate.h: deflate.c codes with them). */
+const short deflate_length_base[DEFLATE_N_LENGTHS] = {3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 15,
+                                                      17, 19, 23, 27, 31, 35, 43, 51, 59, 67,
+                                                      83, 99, 115, 131, 163, 195, 227, 258};
+const short deflate_length_extra[DEFLATE_N_LENGTHS] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2,
+                                                       2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5,
+                                                       5, 5, 0};
+const short deflate_dist_base[DEFLATE_N_DIST] = {1, 2, 3, 4, 5, 7, 9, 13, 17, 25, 33, 49, 65,
+                                                 97, 129, 193, 257, 385, 513, 769, 1025, 1537,
+                                                 2049, 3073, 4097, 6145, 8193, 12289, 16385,
+                                                 24577};
+const short deflate_dist_extra[DEFLATE_N_DIST] = {0, 0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6,
+                                                  6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12,
+                                                  13, 13};
+
+/* RFC 1951 3.2.7: the order in which a dynamic block states the code-length code's
+ * lengths, the ones most often used first, so that HCLEN can leave off the rarest. */
+const unsigned char deflate_code_length_order[DEFLATE_N_CODE_LENGTHS] = {
+    16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};
+
+/* RFC 1951 3.2.6: the fixed codes' lengths. */
+void deflate_fixed_lengths(unsigned char litlen[DEFLATE_N_LITLEN],
+                           unsigned char dist[DEFLATE_N_DIST])
+{
+    for (int i = 0; i < DEFLATE_N_LITLEN; i++)
+        litlen[i] = i < 144 ? 8 : i < 256 ? 9 : i < 280 ? 7 : 8;
+    for (int i = 0; i < DEFLATE_N_DIST; i++)
+        dist[i] = 5;
+}
 
 /* The symbols of a compressed block, up to its end symbol 256. */
 static int codes(struct bits *s, const struct huffman *litlen, const struct huffman *dist)
@@ -169,19 +187,19 @@ static int codes(struct bits *s, const struct huffman *litlen, const struct huff
         if (symbol == 256)
             return 0;
         symbol -= 257;
-        if (symbol >= 29)
+        if (symbol >= DEFLATE_N_LENGTHS)
             return fail(s, "a length symbol beyond 285");
-        int extra = get_bits(s, length_extra[symbol]);
+        int extra = get_bits(s, deflate_length_extra[symbol]);
         int d = decode(s, dist);
         if (extra < 0 || d < 0)
             return -1;
         if (d >= N_DIST)
             return fail(s, "a distance symbol beyond 29");
-        int dextra = get_bits(s, dist_extra[d]);
+        int dextra = get_bits(s, deflate_dist_extra[d]);
         if (dextra < 0)
             return -1;
-        size_t length = (size_t)(length_base[symbol] + extra);
-        size_t distance = (size_t)(dist_base[d] + dextra);
+        size_t length = (size_t)(deflate_length_base[symbol] + extra);
+        size_t distance = (size_t)(deflate_dist_base[d] + dextra);
         if (distance > s->out_at)
             return fail(s, "a distance back before the start of the data");
         if (s->out_size - s->out_at < length)
@@ -196,21 +214,11 @@ static int codes(struct bits *s, const struct huffman *litlen, const struct huff
 /* A block with the fixed codes of RFC 1951 3.2.6. */
 static int fixed(struct bits *s)
 {
-    unsigned char length[N_LITLEN];
+    unsigned char litlen_length[N_LITLEN], dist_length[N_DIST];
     struct huffman litlen, dist;
-    int i = 0;
-    for (; i < 144; i++)
-        length[i] = 8;
-    for (; i < 256; i++)
-        length[i] = 9;
-    for (; i < 280; i++)
-        length[i] = 7;
-    for (; i < N_LITLEN; i++)
-        length[i] = 8;
-    build(&litlen, length, N_LITLEN);
-    for (i = 0; i < N_DIST; i++)
-        length[i] = 5;
-    build(&dist, length, N_DIST);
+    deflate_fixed_lengths(litlen_length, dist_length);
+    build(&litlen, litlen_length, N_LITLEN);
+    build(&dist, dist_length, N_DIST);
     return codes(s, &litlen, &dist);
 }
 
@@ -219,8 +227,6 @@ static int fixed(struct bits *s)
  * with it (16: repeat the previous length 3..6 times, 17 and 18: 3..10 and 11..138 zeros). */
 static int dynamic(struct bits *s)
 {
-    static const unsigned char order[N_CODE_LENGTHS] = {16, 17, 18, 0, 8, 7, 9, 6, 10, 5,
-                                                        11, 4, 12, 3, 13, 2, 14, 1, 15};
     unsigned char length[N_LITLEN + N_DIST];
     struct huffman lencode, litlen, dist;
     int nlen = get_bits(s, 5), ndist = get_bits(s, 5), ncode = get_bits(s, 4);
@@ -236,7 +242,7 @@ static int dynamic(struct bits *s)
         int len = get_bits(s, 3);
         if (len < 0)
             return -1;
-        length[order[i]] = (unsigned char)len;
+        length[deflate_code_length_order[i]] = (unsigned char)len;
     }
     if (build(&lencode, length, N_CODE_LENGTHS) < 0)
         return fail(s, "a block's code-length code is over-subscribed");
@@ -277,14 +283,22 @@ static int dynamic(struct bits *s)
     return codes(s, &litlen, &dist);
 }
 
-unsigned long adler32(const unsigned char *bytes, size_t n)
+/* RFC 1950 Sec. 2.2 (ADLER32) and Sec. 9: s1 = 1 + the sum of the bytes, s2 = the sum of
+ * the s1 after each byte, both modulo 65521, the largest prime below 65536; the checksum
+ * is s2 * 65536 + s1. */
+unsigned long adler32_update(unsigned long adler, const unsigned char *bytes, size_t n)
 {
-    uint32_t a = 1, b = 0;
+    uint32_t a = (uint32_t)(adler & 0xFFFF), b = (uint32_t)(adler >> 16 & 0xFFFF);
     for (size_t i = 0; i < n; i++) {
         a = (a + bytes[i]) % 65521u;
         b = (b + a) % 65521u;
     }
     return (unsigned long)b << 16 | a;
+}
+
+unsigned long adler32(const unsigned char *bytes, size_t n)
+{
+    return adler32_update(1, bytes, n);
 }
 
 int zlib_inflate(const unsigned char *in, size_t in_size, unsigned char *out,

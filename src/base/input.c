@@ -21,9 +21,10 @@ static int measure(struct input *in, struct error *err)
     if (fseek(in->f, 0, SEEK_END) != 0 || (in->size = ftell(in->f)) < 0)
         return error_set(err, in->name, 0, "not a regular file (it cannot tell its size: "
                          "a pipe or a terminal?)");
+    errno = 0;
     int c = getc(in->f);
     if (ferror(in->f))
-        return error_set(err, in->name, 0, "cannot be read (is it a directory?)");
+        return error_set(err, in->name, 0, "cannot be read: %s", input_failure());
     if (c != EOF)
         return error_set(err, in->name, 0, "not a regular file (it gives bytes past its "
                          "size of %ld: a device such as /dev/zero?)", in->size);
@@ -31,6 +32,11 @@ static int measure(struct input *in, struct error *err)
         return error_set(err, in->name, 0, "not a regular file (it cannot go back to its "
                          "start)");
     return 0;
+}
+
+const char *input_failure(void)
+{
+    return errno != 0 ? strerror(errno) : "unknown reason";
 }
 
 int input_open(struct input *in, const char *name, struct error *err)
@@ -51,8 +57,7 @@ int input_open(struct input *in, const char *name, struct error *err)
         return error_set(err, name, 0, "is a FIFO or a terminal, not a regular file (photon "
                          "reads files it can measure)");
     if (in->f == NULL)
-        return error_set(err, name, 0, "cannot open: %s",
-                         errno != 0 ? strerror(errno) : "unknown reason");
+        return error_set(err, name, 0, "cannot open: %s", input_failure());
     if (measure(in, err) < 0 || output_refuse_input(name, in->size, err) < 0) {
         input_close(in);
         return -1;
@@ -64,6 +69,7 @@ int input_line(struct input *in, char *text, size_t size, struct error *err)
 {
     size_t n = 0;
     int c = EOF;
+    errno = 0;
     while (n + 1 < size && (c = getc(in->f)) != EOF) {
         if (c == '\0')
             return error_set(err, in->name, in->line + 1, "a NUL byte in the line (is it a "
@@ -74,7 +80,7 @@ int input_line(struct input *in, char *text, size_t size, struct error *err)
     }
     text[n] = '\0';
     if (ferror(in->f))
-        return error_set(err, in->name, 0, "cannot read the file (is it a directory?)");
+        return error_set(err, in->name, 0, "cannot be read: %s", input_failure());
     if (n == 0)
         return 0;
     in->line++;

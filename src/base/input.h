@@ -44,6 +44,10 @@ int input_open(struct input *in, const char *name, struct error *err);
  * fails, or bytes past the measured size. */
 int input_line(struct input *in, char *text, size_t size, struct error *err);
 
+/* Why the open or read that just failed failed, for a message: strerror(errno), or
+ * "unknown reason" where the library set none (errno set to 0 before it). */
+const char *input_failure(void);
+
 /* Closes what input_open() opened; a closed or never opened input is left alone. */
 void input_close(struct input *in);
 

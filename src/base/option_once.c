@@ -3,16 +3,47 @@
  */
 #include "option_once.h"
 
+#include <stdio.h>
 #include <string.h>
 
-int option_once(struct option_once *once, const char *command, const char *name,
-                struct error *err)
+#define TYPED_MAX 160 /* an option and its values as typed, in a message */
+
+/* The option's name in word: all of it, or what comes before '=' in "--NAME=VALUE". */
+static size_t name_length(const char *word)
 {
-    for (int k = 0; k < once->n; k++)
-        if (strcmp(once->seen[k], name) == 0)
-            return error_set(err, "", 0, "%s: %s is given twice: it takes one value, and a "
-                             "second would silently replace the first", command, name);
+    return strncmp(word, "--", 2) == 0 ? strcspn(word, "=") : strlen(word);
+}
+
+/* argv[i] and the n_values words after it (none after "--NAME=VALUE"), as typed, into
+ * text[TYPED_MAX]; cut where it is full. */
+static void as_typed(int argc, char **argv, int i, int n_values, char text[TYPED_MAX])
+{
+    int n_words = name_length(argv[i]) < strlen(argv[i]) ? 0 : n_values;
+    size_t n = (size_t)snprintf(text, TYPED_MAX, "%s", argv[i]);
+    for (int k = 1; k <= n_words && i + k < argc && n < TYPED_MAX; k++)
+        n += (size_t)snprintf(text + n, TYPED_MAX - n, " %s", argv[i + k]);
+}
+
+int option_given_again(const char *command, int argc, char **argv, int earlier, int i,
+                       int n_values, struct error *err)
+{
+    char now[TYPED_MAX], before[TYPED_MAX];
+    as_typed(argc, argv, i, n_values, now);
+    as_typed(argc, argv, earlier, n_values, before);
+    return error_set(err, "", 0, "%s%s%s: given after %s; give the option once", command,
+                     command[0] != '\0' ? ": " : "", now, before);
+}
+
+int option_once(struct option_once *once, const char *command, int argc, char **argv, int i,
+                int n_values, struct error *err)
+{
+    size_t n = name_length(argv[i]);
+    for (int k = 0; k < once->n; k++) {
+        const char *seen = argv[once->at[k]];
+        if (name_length(seen) == n && strncmp(seen, argv[i], n) == 0)
+            return option_given_again(command, argc, argv, once->at[k], i, n_values, err);
+    }
     if (once->n < OPTION_ONCE_MAX)
-        once->seen[once->n++] = name;
+        once->at[once->n++] = i;
     return 0;
 }

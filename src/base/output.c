@@ -17,16 +17,14 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "alloc.h"
 #include "file_kind.h"
-#include "hash.h"
+#include "temporary_name.h"
 #include "undo.h"
 
 #define PROBE_MARKER_MAX 64 /* "photon-output-check" + two numbers */
 #define COMPARE_CHUNK 65536 /* bytes compared at a time when an output may be an input */
-#define TEMPORARY_SUFFIX ".XXXXXXXX.tmp" /* what a name of ours adds: 8 hex digits   */
 #define TEMPORARY_TRIES 16  /* names tried for one file of ours before giving up     */
 #define NO_OUTPUT SIZE_MAX  /* "no output" where an index of outputs[] is expected   */
 
@@ -129,56 +127,11 @@ static void forget(size_t i)
 
 /* ---- files of ours ------------------------------------------------------------------- */
 
-/* This run's token, in its probes' markers and its temporaries' names: the clock, the
- * time and where the OS put a static and the stack (C99 has no process id). Two runs may
- * still draw the same: what keeps them apart is the exclusive create (create_ours). */
-static uint64_t run_token(void)
-{
-    static uint64_t token = 0;
-    int on_stack = 0;
-    if (token == 0) {
-        uintptr_t where[2] = {(uintptr_t)(void *)&token, (uintptr_t)(void *)&on_stack};
-        time_t now = time(NULL);
-        clock_t ticks = clock();
-        token = fnv1a(FNV1A_OFFSET_BASIS, where, sizeof where);
-        token = fnv1a(token, &now, sizeof now);
-        token = fnv1a(fnv1a(token, &ticks, sizeof ticks), "", 1) | 1;
-    }
-    return token;
-}
-
-/* The number of this run's first temporary name: 32 bits of run_token(), or the 8 hex
- * digits of PHOTON_TEMPORARY_MARK, with which the tests make two runs try the same names
- * (as two runs started in one clock tick without address randomisation would). */
-static unsigned long run_mark(void)
-{
-    static int known = 0;
-    static unsigned long mark;
-    if (!known) {
-        const char *fixed = getenv("PHOTON_TEMPORARY_MARK");
-        char *end = NULL;
-        mark = fixed != NULL ? strtoul(fixed, &end, 16) : 0;
-        if (fixed == NULL || end == fixed || *end != '\0')
-            mark = (unsigned long)(run_token() >> 32);
-        mark &= 0xffffffffUL;
-        known = 1;
-    }
-    return mark;
-}
-
-/* name + ".XXXXXXXX.tmp", XXXXXXXX the run's mark + attempt in hex (a new string). */
-static char *temporary_name(const char *name, unsigned long attempt)
-{
-    char *t = xmalloc(strlen(name) + sizeof TEMPORARY_SUFFIX, 1, "temporary name");
-    sprintf(t, "%s.%08lx.tmp", name, (run_mark() + attempt) & 0xffffffffUL);
-    return t;
-}
-
 /* What outputs_check() writes in outputs[k]'s probe: this run and k. */
 static void probe_marker(size_t k, char marker[PROBE_MARKER_MAX])
 {
     snprintf(marker, PROBE_MARKER_MAX, "photon-output-check %016llx %zu\n",
-             (unsigned long long)run_token(), k);
+             (unsigned long long)temporary_run_token(), k);
 }
 
 /* The earlier output (j < k) whose probe f holds, or NO_OUTPUT. */
@@ -237,15 +190,36 @@ static FILE *create_ours(const char *name, struct undo *u, char **made, size_t p
     return NULL;
 }
 
-/* The message's ": reason" for an errno, "" for none. */
+/* The message's ": reason" for an errno, "" for none (0, or -1: none known). */
 static const char *colon(int errnum)
 {
-    return errnum != 0 ? ": " : "";
+    return errnum > 0 ? ": " : "";
 }
 
 static const char *reason(int errnum)
 {
-    return errnum != 0 ? strerror(errnum) : "";
+    return errnum > 0 ? strerror(errnum) : "";
+}
+
+/* Closes f, a file of ours written to: 0, or why a write or the close failed, an errno
+ * (-1 when none is known). C99's stdio keeps that a write failed (ferror()), not why, and
+ * errno may have changed since; so the file is asked again: one byte more, written at its
+ * end and flushed, fails as the first write did (a full disk, a file size limit, an I/O
+ * error) and errno says why. The byte goes to a file of ours that is then removed. */
+static int close_written(FILE *f)
+{
+    int why = 0;
+    if (ferror(f)) {
+        clearerr(f);
+        errno = 0;
+        if (fseek(f, 0, SEEK_END) != 0 || putc(0, f) == EOF || fflush(f) != 0)
+            why = errno;
+        why = why > 0 ? why : -1;
+    }
+    errno = 0;
+    if (fclose(f) != 0 && why == 0)
+        why = errno > 0 ? errno : -1;
+    return why;
 }
 
 /* ---- identity -------------------------------------------------------------------------- */
@@ -405,10 +379,10 @@ static int make_probe(size_t k, struct error *err)
     char marker[PROBE_MARKER_MAX];
     probe_marker(k, marker);
     fputs(marker, f);
-    int failed = ferror(f) != 0;
-    failed |= fclose(f) != 0;
-    if (failed)
-        return error_set(err, o->name, 0, "cannot write output file (%s)", o->role);
+    int why = close_written(f);
+    if (why != 0)
+        return error_set(err, o->name, 0, "cannot write output file%s%s (%s)", colon(why),
+                         reason(why), o->role);
     return 0;
 }
 
@@ -539,17 +513,17 @@ int output_commit(FILE *f, struct error *err)
     struct output *o = find_stream(f);
     if (o == NULL)
         return error_set(err, "", 0, "output_commit: stream was not opened by output_open");
-    int failed = ferror(f) != 0;
-    failed |= fclose(f) != 0;
+    int why = close_written(f);
     o->stream = NULL;
     o->state = OUTPUT_COMMITTED;
-    if (!failed && o->lone)
-        failed = put_in_place(o, 0) != 0;
-    if (failed) {
+    if (why == 0 && o->lone)
+        why = put_in_place(o, 0);
+    if (why != 0) {
         drop_temporary(o);
         o->state = OUTPUT_DECLARED;
     }
-    int status = failed ? write_failed(err, o->name, "cannot write output file", "") : 0;
+    int status = why != 0 ? write_failed(err, o->name, "cannot write output file", reason(why))
+                          : 0;
     if (o->lone)
         forget((size_t)(o - outputs));
     return status;
@@ -613,7 +587,7 @@ int outputs_publish(struct error *err)
                                                           fail, and is replaced at once */
         if (why != 0)
             status = write_failed(err, outputs[i].name, "cannot write output file",
-                                  why > 0 ? strerror(why) : "");
+                                  reason(why));
     }
     if (end_publish(status != 0, err) < 0)
         status = -1;

@@ -40,9 +40,9 @@
  * one, and a FIFO without waiting); a C99 library that ignored it would be left with the
  * rename test alone. So a user's file at any of these
  * names, a scene named NAME.tmp, a link, stay untouched; and two runs writing the same
- * NAME at once each write their own temporary (the one renamed last is NAME, whole). The
- * run's mark comes from the clock and addresses (C99 has no process id);
- * PHOTON_TEMPORARY_MARK (8 hex digits) sets it, for tests that make runs collide.
+ * NAME at once each write their own temporary (the one renamed last is NAME, whole).
+ * temporary_name.h makes the names: the run's mark, and a long NAME's names of ours cut
+ * to the 255 bytes a file system takes.
  *
  * Identity, with C99's files only (no stat(), no inode numbers):
  *   - Two outputs. outputs_check() makes each output's probe in turn, holding a marker
@@ -92,7 +92,9 @@ FILE *output_open(const char *name, struct error *err);
 
 /* Closes the stream of output_open(); its bytes wait in the temporary for
  * outputs_publish() (a lone file is renamed now). A failed write or close removes the
- * temporary and returns -1 with *err filled (a failed write). */
+ * temporary and returns -1 with *err filled (a failed write): "NAME: cannot write output
+ * file: REASON", NAME the output's own name, REASON strerror()'s ("No space left on
+ * device"), learnt by asking the file again, as stdio keeps no errno (output.c). */
 int output_commit(FILE *f, struct error *err);
 
 /* Closes and removes a temporary that will not be completed. */

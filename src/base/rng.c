@@ -31,3 +31,9 @@ struct rng rng_stream(uint64_t seed, enum stream purpose, uint64_t index, uint64
     r.state = h;
     return r;
 }
+
+void rng_uniforms(struct rng *r, double *u, int n)
+{
+    for (int k = 0; k < n; k++)
+        u[k] = rng_uniform(r);
+}

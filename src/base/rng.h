@@ -42,4 +42,9 @@ static inline double rng_uniform(struct rng *r)
     return (double)(rng_next(r) >> 11) * (1.0 / 9007199254740992.0);
 }
 
+/* u[0..n-1] = n draws of rng_uniform(r), u[0] first. A helper, not an initializer: in
+ * {rng_uniform(r), rng_uniform(r), rng_uniform(r)} the order of the draws is unspecified
+ * (C99 6.7.8), so which number lands in which slot could differ between compilers. */
+void rng_uniforms(struct rng *r, double *u, int n);
+
 #endif

@@ -40,6 +40,7 @@
 
 #include "../base/input.h"
 #include "../base/number.h"
+#include "../base/option_once.h"
 #include "../base/output.h"
 #include "error_image.h"
 #include "diff_picture.h"
@@ -406,6 +407,7 @@ static int parse_compare_args(int argc, char **argv, struct compare_args *args,
 {
     const char *files[2] = {NULL, NULL};
     int n_files = 0;
+    struct option_once once = {{0}, 0};
     memset(args, 0, sizeof *args);
     for (int i = 1; i < argc; i++) {
         const char **value = option_value(args, argv[i]);
@@ -415,9 +417,8 @@ static int parse_compare_args(int argc, char **argv, struct compare_args *args,
                                  argv[i], value == &args->alpha_text ||
                                  value == &args->block_text ||
                                  value == &args->confidence_text ? "number" : "file name");
-            if (*value != NULL) /* a second value would silently replace the first */
-                return error_set(err, "", 0, "compare: %s is given twice: it takes one "
-                                 "value; " COMPARE_USAGE, argv[i]);
+            if (option_once(&once, "compare", argc, argv, i, 1, err) < 0)
+                return -1;
             *value = argv[++i];
         } else if (strcmp(argv[i], "--exit-status") == 0) {
             args->exit_status = 1;

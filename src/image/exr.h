@@ -43,9 +43,10 @@ enum exr_compression {
  * for a value that is NaN or infinite; +Inf is allowed when plus_infinity is set. */
 struct image *exr_read(const char *name, int plus_infinity, struct error *err);
 
-/* Writes img as a scanline OpenEXR of FLOAT channels B, G, R, uncompressed, its data and
- * display windows (0, 0) - (width - 1, height - 1), atomically through output_open() and
- * output_commit(). A value beyond the float range is refused as pfm_write() refuses it. */
+/* Writes img as a scanline OpenEXR of FLOAT channels B, G, R, ZIP-compressed (a chunk that
+ * deflate does not shorten stored raw), its data and display windows (0, 0) - (width - 1,
+ * height - 1), atomically through output_open() and output_commit(). A value beyond the
+ * float range is refused as pfm_write() refuses it. */
 int exr_write(const char *name, const struct image *img, struct error *err);
 
 /* The shape of a chunk's rows, which PIZ needs: its width and rows, and each channel's
@@ -68,5 +69,9 @@ int exr_piz_decompress(const struct exr_block *block, const unsigned char *in, s
 
 /* How many rows a chunk holds under compression (1 for NO, RLE and ZIPS). */
 int exr_lines_per_block(enum exr_compression compression);
+
+/* What RLE and ZIP do to a chunk's n raw bytes before compressing them, which
+ * exr_decompress() undoes (exr_decompress.c): raw into out (n bytes, not raw). */
+void exr_interleave_and_predict(const unsigned char *raw, size_t n, unsigned char *out);
 
 #endif

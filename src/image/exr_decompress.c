@@ -1,6 +1,7 @@
 /*
  * image/exr_decompress.c -- undoing an OpenEXR chunk's compression: RLE, ZIPS and ZIP
- * here, PIZ in exr_piz.c.
+ * here, PIZ in exr_piz.c; and the steps ZIP takes before deflate, for the writer
+ * (exr_write.c), beside their inverse so that both use one definition of the byte order.
  *
  * RLE and ZIP share two steps the writer takes before compressing, which make the bytes of
  * slowly changing values alike: the chunk's bytes are split into two halves, the bytes at
@@ -69,14 +70,31 @@ static int rle_expand(const unsigned char *in, size_t in_size, unsigned char *ou
     return 0;
 }
 
+/* Where byte i of a chunk of n bytes stands once interleaved: the bytes at even positions
+ * first, then those at odd positions. */
+static size_t interleaved_at(size_t i, size_t n)
+{
+    return i % 2 == 0 ? i / 2 : (n + 1) / 2 + i / 2;
+}
+
+/* The writer's two steps (exr.h), in the order OpenEXR's compressor takes them: the
+ * interleave, then each byte but the first replaced by its difference from the byte
+ * before it, plus 128 (from the end backwards, so each difference uses the byte as it was). */
+void exr_interleave_and_predict(const unsigned char *raw, size_t n, unsigned char *out)
+{
+    for (size_t i = 0; i < n; i++)
+        out[interleaved_at(i, n)] = raw[i];
+    for (size_t i = n; i-- > 1;)
+        out[i] = (unsigned char)(out[i] - out[i - 1] + 128);
+}
+
 /* The predictor and the interleave undone: t (n bytes) into out. */
 static void undo_predictor_and_interleave(unsigned char *t, size_t n, unsigned char *out)
 {
     for (size_t i = 1; i < n; i++)
         t[i] = (unsigned char)(t[i - 1] + t[i] - 128);
-    size_t half = (n + 1) / 2; /* the even positions' bytes come first */
     for (size_t i = 0; i < n; i++)
-        out[i] = i % 2 == 0 ? t[i / 2] : t[half + i / 2];
+        out[i] = t[interleaved_at(i, n)];
 }
 
 int exr_decompress(enum exr_compression compression, const struct exr_block *block,

@@ -1,18 +1,32 @@
 /*
  * image/exr_write.c -- writing a struct image as a scanline OpenEXR file (exr.h).
  *
- * The simplest file every OpenEXR reader takes: FLOAT channels B, G, R (a channel list is
- * sorted by name), no compression (so one row a chunk), the data and display windows both
- * (0, 0) - (width - 1, height - 1), INCREASING_Y, and the other attributes the format
- * requires (pixelAspectRatio 1, screenWindowCenter (0, 0), screenWindowWidth 1). Each
- * double is rounded to the nearest float as pfm.c rounds it, so a PFM and an OpenEXR
- * written from one image hold the same floats, and exr_read() gives them back exactly.
+ * A file every OpenEXR reader takes: FLOAT channels B, G, R (a channel list is sorted by
+ * name), ZIP compression, the data and display windows both (0, 0) - (width - 1,
+ * height - 1), INCREASING_Y, and the other attributes the format requires
+ * (pixelAspectRatio 1, screenWindowCenter (0, 0), screenWindowWidth 1): the header
+ * OpenEXR's library writes for such an image, byte for byte. Each double is rounded to the
+ * nearest float as pfm.c rounds it, so a PFM and an OpenEXR written from one image hold
+ * the same floats, and exr_read() gives them back exactly.
+ *
+ * A ZIP chunk ("OpenEXR File Layout": ZIP_COMPRESSION, 16 scanlines) is its rows' raw bytes
+ * (each row its B values, then G, then R, as an uncompressed file holds them), interleaved
+ * and predicted (exr_decompress.c), in one zlib stream (base/deflate.h). A chunk that
+ * deflate does not shorten is stored raw: every reader takes a chunk whose data is as long
+ * as its raw rows as raw, so compression never costs a byte. The chunks' offsets are
+ * known only once they are written: the offset table is written as zeros first and
+ * filled in at the end, as OpenEXR's library does too.
+ *
+ * There is no uncompressed choice: ZIP is lossless, it is the OpenEXR library's own
+ * default (so every reader reads it), and a chunk it does not shrink is raw anyway.
  */
 #include "exr.h"
 
 #include <stdint.h>
 #include <string.h>
 
+#include "../base/alloc.h"
+#include "../base/deflate.h"
 #include "../base/output.h"
 
 #define ROW_CHANNELS 3 /* B, G, R */
@@ -68,7 +82,7 @@ static void put_header(FILE *f, const struct image *img)
     }
     putc(0, f);
     put_attribute(f, "compression", "compression", 1);
-    putc(EXR_NO_COMPRESSION, f);
+    putc(EXR_ZIP_COMPRESSION, f);
     for (int w = 0; w < 2; w++) {
         put_attribute(f, w == 0 ? "dataWindow" : "displayWindow", "box2i", 16);
         put_u32(0, f);
@@ -103,6 +117,56 @@ static uint64_t header_bytes(void)
     return n + 1;
 }
 
+/* v's 4 bytes at p, lowest first. */
+static void u32_to(unsigned char *p, uint32_t v)
+{
+    for (int i = 0; i < 4; i++)
+        p[i] = (unsigned char)(v >> (8 * i) & 0xFF);
+}
+
+/* The raw bytes of rows y0 .. y0 + n_rows - 1 into raw: each row's B, G, R values in turn. */
+static void fill_rows(const struct image *img, int y0, int n_rows, unsigned char *raw)
+{
+    for (int y = y0; y < y0 + n_rows; y++)
+        for (int c = ROW_CHANNELS - 1; c >= 0; c--) /* B, G, R: vec3's z, y, x */
+            for (int x = 0; x < img->width; x++) {
+                struct vec3 v = image_get(img, x, y);
+                u32_to(raw, float_bits(c == 0 ? v.x : c == 1 ? v.y : v.z));
+                raw += 4;
+            }
+}
+
+static void put_table(FILE *f, const uint64_t *offsets, size_t n_chunks)
+{
+    for (size_t i = 0; i < n_chunks; i++)
+        put_u64(offsets[i], f);
+}
+
+/* Every chunk, the first at file position first: its first row's y, its data's size, its
+ * data, compressed or raw (above). Sets offsets[i] to chunk i's position. */
+static void put_chunks(FILE *f, const struct image *img, uint64_t first, uint64_t *offsets)
+{
+    int lines = exr_lines_per_block(EXR_ZIP_COMPRESSION);
+    size_t row_bytes = (size_t)img->width * ROW_CHANNELS * 4;
+    size_t most = (size_t)(img->height < lines ? img->height : lines) * row_bytes;
+    unsigned char *raw = xmalloc(3, most, "an OpenEXR chunk"); /* and the two below */
+    unsigned char *predicted = raw + most, *packed = raw + 2 * most;
+    for (int i = 0, y = 0; y < img->height; i++, y += lines) {
+        int n_rows = img->height - y < lines ? img->height - y : lines;
+        size_t n = (size_t)n_rows * row_bytes;
+        fill_rows(img, y, n_rows, raw);
+        exr_interleave_and_predict(raw, n, predicted);
+        size_t packed_size = zlib_deflate(predicted, n, packed, n - 1); /* 0: not shorter */
+        size_t size = packed_size > 0 ? packed_size : n;
+        offsets[i] = first;
+        put_u32((uint32_t)y, f);
+        put_u32((uint32_t)size, f);
+        fwrite(packed_size > 0 ? packed : raw, 1, size, f);
+        first += 8 + size;
+    }
+    xfree(raw);
+}
+
 int exr_write(const char *name, const struct image *img, struct error *err)
 {
     if (image_check_float_range(name, img, "an OpenEXR FLOAT's", err) < 0)
@@ -110,19 +174,22 @@ int exr_write(const char *name, const struct image *img, struct error *err)
     FILE *f = output_open(name, err);
     if (f == NULL)
         return -1;
+    int lines = exr_lines_per_block(EXR_ZIP_COMPRESSION);
+    size_t n_chunks = (size_t)((img->height + lines - 1) / lines);
+    uint64_t *offsets = xcalloc(n_chunks, sizeof *offsets, "an OpenEXR offset table");
     put_header(f, img);
-    uint64_t row_bytes = (uint64_t)img->width * ROW_CHANNELS * 4;
-    uint64_t first = header_bytes() + 8 * (uint64_t)img->height; /* after the table */
-    for (int y = 0; y < img->height; y++)
-        put_u64(first + (uint64_t)y * (8 + row_bytes), f);
-    for (int y = 0; y < img->height; y++) {
-        put_u32((uint32_t)y, f);
-        put_u32((uint32_t)row_bytes, f);
-        for (int c = ROW_CHANNELS - 1; c >= 0; c--) /* B, G, R: vec3's z, y, x */
-            for (int x = 0; x < img->width; x++) {
-                struct vec3 v = image_get(img, x, y);
-                put_u32(float_bits(c == 0 ? v.x : c == 1 ? v.y : v.z), f);
-            }
+    put_table(f, offsets, n_chunks); /* zeros, until the chunks are written */
+    put_chunks(f, img, header_bytes() + 8 * (uint64_t)n_chunks, offsets);
+    int back = fseek(f, (long)header_bytes(), SEEK_SET) == 0;
+    if (back)
+        put_table(f, offsets, n_chunks);
+    xfree(offsets);
+    if (!back) {
+        output_abandon(f);
+        error_set(err, name, 0, "cannot go back to the offset table to write it");
+        if (err != NULL)
+            err->failed_write = 1;
+        return -1;
     }
     return output_commit(f, err); /* a failed write shows in ferror(), checked there */
 }

@@ -50,8 +50,8 @@ struct image *pfm_read_bounds(const char *name, struct error *err);
 struct image *image_read(const char *name, struct error *err);
 struct image *image_read_bounds(const char *name, struct error *err);
 
-/* The one entry for writing an image's floats: an OpenEXR file (exr.h: FLOAT RGB,
- * uncompressed) when name ends in ".exr", a PFM (pfm_write) otherwise. */
+/* The one entry for writing an image's floats: an OpenEXR file (exr.h: FLOAT RGB, ZIP)
+ * when name ends in ".exr", a PFM (pfm_write) otherwise. */
 int image_write(const char *name, const struct image *img, struct error *err);
 /* Whether name ends in ".exr". */
 int image_name_is_exr(const char *name);

@@ -28,6 +28,7 @@
 #include "../base/output.h"
 
 #include <assert.h>
+#include <errno.h>
 #include <float.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -123,11 +124,12 @@ static int is_space(int c)
 /* "PF" and one whitespace byte. */
 static int read_magic(FILE *f, const char *name, struct error *err)
 {
+    errno = 0;
     int c0 = getc(f);
     int c1 = getc(f);
     int c2 = getc(f);
     if (ferror(f))
-        return error_set(err, name, 0, "cannot read the file (is it a directory?)");
+        return error_set(err, name, 0, "cannot be read: %s", input_failure());
     if (c0 == EOF)
         return error_set(err, name, 0, "empty file, expected a PFM image");
     if (c0 == 'P' && c1 == 'f')

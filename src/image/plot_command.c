@@ -25,32 +25,32 @@ struct plot_args {
 };
 
 /* The value after option argv[*i] into *value (advancing *i); -1 with *err filled when
- * it is missing or was given before (for options given once). */
-static int option_value(int argc, char **argv, int *i, const char **value, int once,
-                        struct error *err)
+ * it is missing, or when once is not NULL and the option was recorded there before. */
+static int option_value(int argc, char **argv, int *i, const char **value,
+                        struct option_once *once, struct error *err)
 {
-    if (*i + 1 == argc || (once && *value != NULL))
-        return error_set(err, "", 0, "plot: %s needs one value%s; " PLOT_USAGE, argv[*i],
-                         once ? ", once" : "");
+    if (once != NULL && option_once(once, "plot", argc, argv, *i, 1, err) < 0)
+        return -1;
+    if (*i + 1 == argc)
+        return error_set(err, "", 0, "plot: %s needs one value; " PLOT_USAGE, argv[*i]);
     *value = argv[++*i];
     return 0;
 }
 
 /* One option at argv[*i] into args; -1 with *err filled. */
 static int parse_plot_option(int argc, char **argv, int *i, struct plot_args *args,
-                             int *y_given, struct option_once *x_once, struct error *err)
+                             int *y_given, struct option_once *once, struct error *err)
 {
     struct plot_spec *spec = &args->spec;
     const char *name = argv[*i];
     if (strcmp(name, "-o") == 0)
-        return option_value(argc, argv, i, &args->svg, 1, err);
+        return option_value(argc, argv, i, &args->svg, once, err);
     if (strcmp(name, "--x") == 0) /* once, though it has a default (seconds) */
-        return option_once(x_once, "plot", name, err) < 0 ? -1
-               : option_value(argc, argv, i, &spec->x, 0, err);
+        return option_value(argc, argv, i, &spec->x, once, err);
     if (strcmp(name, "--x-title") == 0)
-        return option_value(argc, argv, i, &spec->x_title, 1, err);
+        return option_value(argc, argv, i, &spec->x_title, once, err);
     if (strcmp(name, "--y-title") == 0)
-        return option_value(argc, argv, i, &spec->y_title, 1, err);
+        return option_value(argc, argv, i, &spec->y_title, once, err);
     if (strcmp(name, "--linear") == 0) {
         spec->linear = 1;
         return 0;
@@ -59,7 +59,7 @@ static int parse_plot_option(int argc, char **argv, int *i, struct plot_args *ar
         if (*y_given == PLOT_MAX_SERIES)
             return error_set(err, "", 0, "plot: more than %d --y columns", PLOT_MAX_SERIES);
         spec->n_y = ++*y_given; /* the first --y replaces the default relmse */
-        return option_value(argc, argv, i, &spec->y[*y_given - 1], 0, err);
+        return option_value(argc, argv, i, &spec->y[*y_given - 1], NULL, err);
     }
     return error_set(err, "", 0, "plot: unknown option '%s'; " PLOT_USAGE, name);
 }
@@ -72,7 +72,7 @@ static int parse_plot_args(int argc, char **argv, struct plot_args *args, struct
     args->svg = NULL;
     args->spec = plot_spec_errors();
     int y_given = 0;
-    struct option_once x_once = {{0}, 0};
+    struct option_once once = {{0}, 0};
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             printf("%s\n\nDraws columns of CSV files (first line: the column names) as an "
@@ -84,7 +84,7 @@ static int parse_plot_args(int argc, char **argv, struct plot_args *args, struct
         }
         if (argv[i][0] != '-')
             args->csv[args->n_csv++] = argv[i];
-        else if (parse_plot_option(argc, argv, &i, args, &y_given, &x_once, err) != 0)
+        else if (parse_plot_option(argc, argv, &i, args, &y_given, &once, err) != 0)
             return -1;
     }
     if (args->svg == NULL)

@@ -27,10 +27,10 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "../base/inflate.h"
 #include "../base/output.h"
 
 #define STORED_BLOCK_MAX 65535 /* RFC 1951 Sec. 3.2.4: LEN is 16 bits                */
-#define ADLER_BASE 65521       /* RFC 1950 Sec. 2.2: the largest prime below 65536    */
 #define FILTER_NONE 0          /* ISO/IEC 15948 Sec. 9.2: filter type 0, bytes as they are */
 
 /* One PNG being written: the CRC table, the running Adler-32 and the block of raw
@@ -94,18 +94,6 @@ static void chunk_end(struct png_stream *s)
     fwrite(bytes, 1, 4, s->f);
 }
 
-/* RFC 1950 Sec. 2.2 (ADLER32) and Sec. 9: s1 = 1 + the sum of the bytes, s2 = the sum of
- * the s1 after each byte, both modulo 65521; the checksum is s2 * 65536 + s1. */
-static uint32_t update_adler32(uint32_t adler, const unsigned char *bytes, size_t n)
-{
-    uint32_t s1 = adler & 0xFFFF, s2 = adler >> 16;
-    for (size_t i = 0; i < n; i++) {
-        s1 = (s1 + bytes[i]) % ADLER_BASE;
-        s2 = (s2 + s1) % ADLER_BASE;
-    }
-    return (s2 << 16) | s1;
-}
-
 /* Sends block[] as one IDAT chunk holding one stored block (RFC 1951 Sec. 3.2.4): a
  * header byte of BFINAL (bit 0) and BTYPE 00 (bits 1-2, Sec. 3.2.3), then LEN and its
  * one's complement NLEN, 16 bits each with the least significant byte first (Sec. 3.1.1),
@@ -140,7 +128,7 @@ static void send_block(struct png_stream *s, int final)
  * so the block png_write() sends last, marked final, is never empty. */
 static void put_raw(struct png_stream *s, const unsigned char *bytes, size_t n)
 {
-    s->adler = update_adler32(s->adler, bytes, n);
+    s->adler = (uint32_t)adler32_update(s->adler, bytes, n);
     while (n > 0) {
         if (s->n == STORED_BLOCK_MAX)
             send_block(s, 0);

@@ -54,8 +54,7 @@ static struct vec3 specular_ray(const struct direct_mode *dm, const struct surfa
                                 struct render_counters *counters)
 {
     double u[3];
-    for (int k = 0; k < 3; k++)
-        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+    rng_uniforms(rng, u, 3);
     struct brdf_sample bs;
     if (!brdf_sample(s->material, frame, s->wo, u, &bs) || !bs.delta)
         return vec3_zero();

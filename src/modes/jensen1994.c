@@ -19,8 +19,8 @@
  *   L_p = L_e + L_r,   L_r = L_r,s + L_r,d,   L_r,d = L_r,d,l + L_r,d,s + L_r,d,d,
  * with the BRDF split into a specular-like part f_r,s (mirror, glass, glossy lobes:
  * highly directional) and a diffuse-like part f_r,d (brdf_split(), scene/brdf.h):
- *   L_r,s    recursive ray tracing of f_r,s: every lobe of a mirror or glass, one ray
- *            sampled from a glossy lobe;
+ *   L_r,s    recursive ray tracing of f_r,s: every lobe of a mirror or glass (a
+ *            departure, below), one ray sampled from a glossy lobe;
  *   L_r,d,l  direct light: stratified samples of each light through f_r,d (4.0.1);
  *   L_r,d,s  caustics: f_r,d times the irradiance of the CP photons alone (4.0.2);
  *   L_r,d,d  multiple diffuse reflections: f_r,d times the irradiance of Ward's cache
@@ -36,7 +36,28 @@
  * The sky is a light like the others (scene/light.h): sampled in L_r,d,l, its photons in
  * the map, and what a ray that leaves the scene sees counts as emission does.
  * The diffuse-like part reflects irradiance as its directional albedo over pi: exact
- * for a Lambertian part, the paper's only diffuse-like kind.
+ * for a Lambertian part, the paper's only diffuse-like kind (Sec. 5: "specular, rough
+ * specular and lambertian"). A part that is not gathers at each camera sample instead, as
+ * Sec. 4.0.3 treats "surfaces with complex BRDF's" (eye_radiance()), and reads its photons
+ * by their direction, which the paper does not specify (stored_reflection()).
+ *
+ * Departures, each a switch that --paper turns to the paper's side (src/modes/README.md:
+ * why, and what each measured):
+ *   --both-lobes  L_r,s follows both of glass's lobes, as Whitted's ray tracer does (the
+ *       paper's recursive Monte Carlo: one, chosen by the BRDF's sampling);
+ *   --glossy-photons  a surface seen through a glossy lobe reads the photon map, as a
+ *       gather ray's end does (the paper's: evaluated in full, with its own gather);
+ *   --lobe-lights  area lights and the sky are sampled through a glossy lobe too, weighted
+ *       against the lobe's ray by the power heuristic (the paper's: the ray alone);
+ *   --exclude-rim-photon, --caustic-radius-fraction 0.25  (photon/estimate.h; the paper
+ *       has no maximum radius, so --paper's fraction is 1, one for every estimate);
+ *   --bounded-reach, --gradient-limit  a cache record's R (photon/irradiance_cache.h);
+ *   --specular-spp  a pixel that sees a light through mirrors or glass takes 64 x --spp
+ *       samples (--paper: --spp, as every pixel).
+ * --paper keeps --glossy-gather (above) and leaves --adaptive off: the paper sampled
+ * adaptively (Sec. 5), by a rule and threshold not specified by the paper. The departures
+ * without a switch (the CP photons' own tree, the cache's pre-pass, point lights sampled
+ * through a glossy lobe, the maximum radius) are listed in src/modes/README.md.
  *
  * Determinism: every random number comes from the camera sample's stream, or in the
  * cache's pre-pass from rng_stream(seed, STREAM_CACHE, pixel, 0); the pre-pass fills the
@@ -206,10 +227,10 @@ static struct vec3 surface_emission_found(const struct jensen1994 *mode,
 
 /* The radiance the diffuse-like part reflects from the photons of estimate `is`: albedo
  * / pi times their irradiance (Sec. 4.0.2-4.0.3: the paper's diffuse-like surfaces are
- * Lambertian). Departs from them where the photons kept their direction (glossy_gather,
- * keeps_direction()): through a part that is not Lambertian, the reflected light depends
- * on where it came from, so it is Jensen 1996's Eq. 3 through f_r,d (no differential
- * checking). */
+ * Lambertian). Where the photons kept their direction (glossy_gather, keeps_direction()),
+ * on a part that is not Lambertian, the reflected light depends on where it came from, so
+ * it is the 1996 paper's Eq. 3 through f_r,d (no differential checking): how photons are
+ * read there is not specified by the paper, whose photons keep a normal, no direction. */
 static struct vec3 stored_reflection(const struct jensen1994 *mode, const struct surface *s,
                                      const struct material *diffuse,
                                      const struct shading_frame *frame,
@@ -295,8 +316,7 @@ static struct vec3 specular_light(const struct jensen1994 *mode, const struct su
         return sum;
     }
     double u[3];
-    for (int k = 0; k < 3; k++)
-        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+    rng_uniforms(rng, u, 3);
     struct brdf_sample bs;
     if (brdf_sample(specular, frame, s->wo, u, &bs))
         sum = follow_lobe(mode, s, &bs, path, rng, counters);
@@ -417,11 +437,12 @@ static struct vec3 eye_radiance(const struct jensen1994 *mode, const struct surf
         l = vec3_add(l, direct_light(mode, s, &split.diffuse, &frame, rng, counters));
         l = vec3_add(l, caustic_light(mode, s, &split.diffuse, &frame));
         if (!split.lambertian && mode->settings->glossy_gather) {
-            /* Departs from Sec. 4.0.3, whose diffuse-like surfaces are Lambertian and
-             * reflect the cache's irradiance as albedo / pi: a part that is not (a broad
-             * lobe: Schlick's model with r >= 1/2) reflects int f_r,d L cos, which depends
-             * on where the light comes from, so each camera sample gathers its share
-             * through f_r,d itself, no cache (glossy_gather; off, the paper's). */
+            /* Sec. 4.0.3: "surfaces with complex BRDF's are treated using plain recursive
+             * Monte Carlo ray tracing". A diffuse-like part that is not Lambertian (a
+             * broad lobe: Schlick's model with r >= 1/2) reflects int f_r,d L cos, which
+             * depends on where the light comes from, so each camera sample gathers its
+             * share through f_r,d itself, no cache (glossy_gather; off: albedo / pi times
+             * the cache's irradiance, as if it were Lambertian). */
             l = vec3_add(l,
                          sample_gather(mode, s, &split.diffuse, &frame, path, rng, counters));
         } else {

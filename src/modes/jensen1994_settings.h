@@ -46,8 +46,8 @@ struct jensen1994_settings {
     double cache_accuracy; /* Ward's a, > 0                                                 */
     int light_samples;     /* stratified samples of each light, 1..J94_MAX_LIGHT_SAMPLES    */
     double caustic_radius_fraction; /* caustic estimates reach this fraction of the
-                              largest radius, in (0, 1] (CAUSTIC_RADIUS_FRACTION; the
-                              paper's 1: a departure, src/modes/README.md)                 */
+                              largest radius, in (0, 1] (CAUSTIC_RADIUS_FRACTION, a
+                              departure; --paper's 1: the paper has no largest radius)     */
     int both_lobes;        /* 1: L_r,s follows both lobes of glass (Whitted's way, a
                               departure); 0: one lobe sampled by the BRDF, the paper's
                               "recursive Monte Carlo ray tracing"                       */
@@ -58,8 +58,11 @@ struct jensen1994_settings {
                               power heuristic (a departure); 0: the traced ray alone finds
                               them, the paper's                                         */
     int glossy_gather;     /* 1: a diffuse-like part that is not Lambertian reflects the
-                              light each camera sample gathers through it (a departure);
-                              0: albedo / pi times the cache's irradiance, the paper's   */
+                              light each camera sample gathers through it (Sec. 4.0.3's
+                              rule for complex BRDFs), its photons read by their
+                              direction; 0: albedo / pi times the cache's irradiance, as
+                              if it were Lambertian (neither is a departure --paper
+                              undoes: src/modes/README.md)                               */
     int bounded_reach;     /* 1: cache records' R bounded from the camera's view
                            (record_radius_bounds(), a departure); 0: Ward's R alone     */
     int gradient_limit;    /* 1: a record's R at most E / |grad E| (a departure); 0: not */

@@ -7,8 +7,8 @@
  * f_r,s only (L S+ D, S "highly glossy and ideal specular": a glossy lobe as well as a
  * mirror; each photon bounce chooses its part, photon/trace.h),
  * and a global map of photons emitted towards everything and stored at every diffuse hit,
- * with shadow photons behind each first hit (Jensen and Christensen 1995); it lives in
- * jensen1996_maps.c.
+ * with shadow photons behind each first hit (Jensen and Christensen 1995; with
+ * --no-shadow-rays, below); it lives in jensen1996_maps.c.
  *
  * Pass 2 (Sec. 4) is distribution ray tracing of Eq. 2,
  *   Lr = int f_r L_l cos + int f_r,s (L_c + L_d) cos + int f_r,d L_c cos + int f_r,d L_d cos,
@@ -22,8 +22,9 @@
  *                cone filter (4.3); soft indirect light by a final gather guided by the
  *                global map's photons, through Ward's irradiance cache on Lambertian
  *                surfaces (4.4);
- *   corner       (at the end of a short gather ray) as accurate, except that the soft
- *                indirect light is the global map's estimate from its indirect photons;
+ *   corner       (at the end of a short gather ray: a departure, below) as accurate,
+ *                except that the soft indirect light is the global map's estimate from
+ *                its indirect photons, where the paper's accurate one gathers;
  *   through gloss (seen through a glossy lobe: a departure) direct light as accurate, the
  *                caustics and soft indirect light in one estimate from the global map's
  *                photons that are not direct;
@@ -49,15 +50,24 @@
  * equals the same window of the whole image. Every crop repeats the maps and the cache;
  * --load-photons reads them from a file (photon/global_work.h) and remakes the records.
  *
- * Departures (each with its figures in src/modes/README.md; --paper undoes them all):
- * approximate points on Lambertian surfaces, gather rays' ends among them, read irradiance
- * precomputed at every N-th global photon (Christensen 1999; --no-precomputed-irradiance:
- * the paper's estimate at each), which makes the pre-pass many times faster at the same
- * error; every shadow ray is cast, cheaper among 13 objects than a 16-photon search
- * (--no-shadow-rays: Sec. 4.1's); a record of precomputed irradiance divides its photons
- * by the part of its disc a surface covers (photon/disc_coverage.h), not Eq. 3's pi r^2
- * (--no-disc-coverage): a disc past the floor's open front edge darkens the balls'
- * fronts, which see it.
+ * Departures, each a switch whose --no-NAME (or value) is the paper's; --paper turns all
+ * nine to the paper's side (src/modes/README.md: why, and what each measured):
+ *   --precomputed-irradiance N  approximate Lambertian points, gather rays' ends among
+ *       them, read irradiance precomputed at every N-th global photon (Christensen 1999),
+ *       the pre-pass many times faster at the same error;
+ *   --shadow-rays  every shadow ray is cast, among 13 objects cheaper than a 16-photon
+ *       search (Sec. 4.1's shadow photons: --no-shadow-rays);
+ *   --disc-coverage  a record divides its photons by the part of its disc a surface covers
+ *       (photon/disc_coverage.h), not Eq. 3's pi r^2: past the floor's open front a disc
+ *       darkens the balls' fronts, which see it;
+ *   --both-lobes  glass at accurate points traces both its rays, as Whitted's;
+ *   --glossy-corner  a surface seen through a glossy lobe is evaluated through gloss;
+ *   --exclude-rim-photon, --caustic-radius-fraction 0.25  (photon/estimate.h; the paper
+ *       has no maximum radius, so --paper's fraction is 1, one for every estimate);
+ *   --bounded-reach, --gradient-limit  a cache record's R (photon/irradiance_cache.h).
+ * Without a switch: the corner evaluation, whose soft indirect light is the photons',
+ * where the paper's accurate one would start a final gather at the end of a final
+ * gather's ray (jensen1996_evaluation.c), and those src/modes/README.md lists.
  */
 #include "jensen1996.h"
 
@@ -264,8 +274,7 @@ static struct vec3 specular_reflection(const struct jensen1996 *mode, const stru
         path.eval == ACCURATE && glossy && !path.branched ? mode->settings->glossy_rays : 1;
     for (int r = 0; r < n_rays; r++) {
         double u[3];
-        for (int k = 0; k < 3; k++)
-            u[k] = rng_uniform(rng);
+        rng_uniforms(rng, u, 3);
         struct brdf_sample bs;
         if (brdf_sample(&split->specular, frame, s->wo, u, &bs))
             sum = vec3_add(sum, follow_specular(mode, s, &bs, 1.0 / n_rays,

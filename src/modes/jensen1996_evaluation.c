@@ -10,12 +10,17 @@
  * threshold value [...]. The approximate evaluation is used if the ray intersecting the
  * surface has been reflected diffusely since it left the eye or if the weight of the ray
  * is low." The few reflections: from an accurate point, with weight --accurate-weight or
- * more. The small threshold: --accurate-distance radii of the global estimate at the ray's
- * end, whose disc reaches back towards the gathering point ("colour bleeding effects in
- * corners"); that end gets the corner evaluation (the top of jensen1996.c). Departure: a
- * surface seen through a glossy lobe, whose blur hides the global map's, gets the
- * through-gloss evaluation (glossy_corner; off, the paper's: glossy lobes count as
- * specular), sparing a gather and a search of the caustic map for every glossy ray. */
+ * more. The small threshold, whose value is not specified by the paper: --accurate-distance
+ * radii of the global estimate at the ray's end, whose disc reaches back towards the
+ * gathering point ("colour bleeding effects in corners"). Departure, without a switch:
+ * that end gets the corner evaluation (the top of jensen1996.c), whose soft indirect
+ * light is the global map's indirect photons, where the paper's accurate evaluation
+ * would make a final gather at the end of a final gather's ray; the rays of that gather
+ * into the same corner are short again, and whether their length or their low weight
+ * then decides is not specified by the paper. Departure, with a switch: a surface seen
+ * through a glossy lobe, whose blur hides the global map's, gets the through-gloss
+ * evaluation (glossy_corner; off, the paper's: glossy lobes count as specular), sparing
+ * a gather and a search of the caustic map for every glossy ray. */
 enum evaluation accurate_or_approximate(const struct jensen1996_settings *settings,
                                         const struct arrival *a)
 {

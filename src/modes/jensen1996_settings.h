@@ -64,7 +64,8 @@ struct jensen1996_settings {
     double max_radius;        /* > 0: the global estimates' largest radius; <= 0: the
                                  photons mode's default (1/10 of the scene's diagonal)   */
     double caustic_radius_fraction; /* caustic estimates reach this fraction of it, in
-                                 (0, 1] (CAUSTIC_RADIUS_FRACTION; the paper's 1)         */
+                                 (0, 1] (CAUSTIC_RADIUS_FRACTION; --paper's 1, the nearest
+                                 to the paper, which has no maximum radius)              */
     double cone_k;            /* cone filter of the caustic estimate (Eq. 4-5); 0: none */
     int count_rim;            /* 1: estimates count the rim photon, as Eq. 3 is printed */
     int gather_rays;          /* rays of one final gather, 2..J96_MAX_GATHER_RAYS        */
@@ -73,7 +74,7 @@ struct jensen1996_settings {
     double cache_accuracy;    /* Ward's a, > 0; 0 turns the irradiance cache off: every
                                  accurate Lambertian point gathers                       */
     double accurate_distance; /* a gather ray shorter than this many radii of the global
-                                 estimate at its end is evaluated accurately (>= 0)      */
+                                 estimate at its end gets the corner evaluation (>= 0)   */
     double accurate_weight;   /* a ray whose throughput falls below this is evaluated
                                  approximately, in [0, 1]                                */
     int shadow_photons;       /* 1: decide visibility from shadow photons where they
@@ -90,8 +91,8 @@ struct jensen1996_settings {
                                  reflected and refracted rays (Whitted's way, a
                                  departure); 0: one, sampled by the BRDF (4.2's Monte
                                  Carlo, the paper's)                                     */
-    int glossy_corner;        /* 1: a surface seen through a glossy lobe is evaluated in
-                                 the corner way (a departure); 0: accurately, as one
+    int glossy_corner;        /* 1: a surface seen through a glossy lobe is evaluated
+                                 through gloss (a departure); 0: accurately, as one
                                  seen "via a few specular reflections" (the paper's)     */
     int bounded_reach;        /* 1: cache records' R bounded from the camera's view
                                  (record_radius_bounds(), a departure); 0: Ward's R     */

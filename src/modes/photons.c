@@ -14,6 +14,10 @@
  * No direct lighting is computed: everything a diffuse surface shows comes from the
  * photons, which is why the picture is blotchy at low photon counts, and why its
  * brightness is right (the estimate is consistent) where it is not blotchy.
+ * The one departure, which --paper undoes: each estimate leaves out the photon on its rim
+ * (--exclude-rim-photon; photon/estimate.h says why). Without a switch: the estimates'
+ * maximum radius (PHOTONS_RADIUS_FRACTION), where the paper's sphere grows until it holds
+ * its photons (src/modes/README.md, Estimates).
  *
  * The estimate's scratch (struct nearest) is made once before render_pixels() and
  * reached through the mode struct: render_pixels() estimates one pixel at a time, so a

@@ -16,12 +16,14 @@
 #define MAX_GATHER 100000          /* documented limit on --gather: the scratch holds
                                       this many pointers and distances (1.6 MB)          */
 #define PHOTONS_RADIUS_FRACTION 0.1 /* default maximum radius: this fraction of the
-                                       diagonal of the scene's bounding box             */
+                                       diagonal of the scene's bounding box (the papers
+                                       have none: src/modes/README.md, Estimates)       */
 #define CAUSTIC_RADIUS_FRACTION 0.25 /* caustic estimates (1994, 1996) reach this much of
                                         the maximum radius by default (--caustic-radius-
-                                        fraction; the papers' 1): caustic photons are
-                                        dense where they are, and a wide disc hangs over
-                                        the edges of the surface where they are sparse  */
+                                        fraction; --paper's 1, as the papers have no
+                                        maximum): caustic photons are dense where they
+                                        are, and a wide disc hangs over the edges of the
+                                        surface where they are sparse                   */
 
 struct photon_settings {
     size_t n_photons;  /* N emitted, 1..MAX_PHOTONS (trace.h)                           */

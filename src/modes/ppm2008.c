@@ -4,16 +4,16 @@
  *
  *   3.1 the ray tracing pass stores a hit point wherever an eye path, followed through
  *       every mirror and glass bounce (both of glass's lobes, as standard ray tracing
- *       does), meets a surface with a non-specular part;
+ *       does; Russian roulette ends long ones), meets a surface with a non-specular part;
  *   3.1 each photon tracing pass shoots photons with the shared tracer; every photon that
- *       lands on a non-specular surface adds f_r Phi' to each hit point whose disc holds it
- *       and whose surface faces the photon's; no photon is kept after its pass;
+ *       lands on a non-specular surface adds f_r Phi' to each hit point whose disc holds
+ *       it; no photon is kept after its pass;
  *   4.1 after each pass every hit point shrinks its radius (Eq. 9), keeping alpha of the
  *       new photons (Eq. 7); 4.2 corrects its flux (Eq. 12);
  *   4.3 the image at any time: each hit point's radiance (Eq. 13) times its pixel weight,
- *       plus the emission the eye paths saw directly.
+ *       plus the emission the eye paths saw directly, which the paper does not mention.
  *
- * Each departure from the paper below has a switch; --paper turns them all off
+ * Each departure from the paper below has a switch; --paper turns all seven off
  * (src/modes/README.md has the figures of each).
  *
  * The direct light (--no-direct-light-samples is the paper's way). The paper estimates it
@@ -340,8 +340,7 @@ static int specular_lobes(const struct surface *s, const struct shading_frame *f
     if (!brdf_has_delta(s->material))
         return 0;
     double u[3];
-    for (int k = 0; k < 3; k++)
-        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+    rng_uniforms(rng, u, 3);
     return brdf_sample(s->material, frame, s->wo, u, &lobes[0]) && lobes[0].delta;
 }
 

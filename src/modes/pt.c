@@ -104,8 +104,7 @@ static struct vec3 trace_path(const struct pt_mode *pt, struct ray ray, struct r
         if (brdf_has_non_delta(s.material))
             l = vec3_add(l, vec3_mul(beta, sample_one_light(scene, &s, &frame, rng, counters)));
         double u[3];
-        for (int k = 0; k < 3; k++)
-            u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+        rng_uniforms(rng, u, 3);
         struct brdf_sample bs;
         if (!brdf_sample(s.material, &frame, s.wo, u, &bs))
             return l;

@@ -349,8 +349,7 @@ static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ra
                 : paper_choice(s.material);
         if (c.p < 1 && (c.p == 0 || rng_uniform(rng) >= c.p)) {
             double u[3];
-            for (int k = 0; k < 3; k++)
-                u[k] = rng_uniform(rng); /* one by one: an initializer's order is unspecified */
+            rng_uniforms(rng, u, 3);
             struct brdf_sample bs;
             if (!c.delta_only)
                 point_lights_through_lobe(sppm, pixel, pass, (uint64_t)depth + 1, &s,

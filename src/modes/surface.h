@@ -90,8 +90,7 @@ static inline int specular_bounce(const struct surface *s, const struct shading_
                                   struct rng *rng, struct vec3 *beta, struct ray *ray)
 {
     double u[3];
-    for (int k = 0; k < 3; k++)
-        u[k] = rng_uniform(rng); /* one by one: an initializer list's order is unspecified */
+    rng_uniforms(rng, u, 3);
     struct brdf_sample bs;
     if (!brdf_sample(s->material, frame, s->wo, u, &bs) || !bs.delta)
         return 0;

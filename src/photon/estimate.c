@@ -66,10 +66,12 @@ struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_po
 
 /* The energy photon p adds at a surface with normal n: all of it when it landed on a
  * surface facing the same way (its stored normal . n > 0), else none (Sec. 3.3's
- * rejection: a photon on the other side of a thin wall, or around a corner). */
+ * rejection: a photon on the other side of a thin wall, or around a corner). Over 1996's
+ * global map (precomputed irradiance) the bytes hold wi instead, and the same test keeps
+ * the photons that arrived from n's side (estimate.h). */
 static struct vec3 accepted_energy(const struct photon *p, struct vec3 n)
 {
-    return vec3_dot(photon_direction(p), n) > 0 ? photon_power(p) : vec3_zero();
+    return vec3_dot(photon_normal(p), n) > 0 ? photon_power(p) : vec3_zero();
 }
 
 struct vec3 irradiance_estimate(const struct kdtree *map, struct vec3 x, struct vec3 n,

@@ -60,10 +60,11 @@ struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_po
 
 /* DIFFERENTIAL_RUN: the default run length of differential checking below. Measured on a
  * synthetic caustic edge (Poisson photons, density 6 : 1 across a straight edge, 200
- * photons per estimate): with runs of 10 the relative RMS error within a disc radius of
- * the edge falls from 1.22 to 1.08, while far from it the noise rises from 0.074 to
- * 0.103 (the early stops of a noisy estimate); runs of 8 stop too often (0.135 far),
- * runs of 15 too rarely (1.17 near). */
+ * photons per estimate; tests/test_trace_estimates.c's test_differential_checking_edge):
+ * with runs of 10 the relative RMS error within a disc radius of the edge falls from 0.77
+ * to 0.60, while far from it (x from 0.1 to 0.4, the edge at 0.5) the noise rises from
+ * 0.076 to 0.105 (the early stops of a noisy estimate); runs of 8 stop too often (0.54
+ * near, 0.146 far), runs of 15 too rarely (0.72 near, 0.080 far). */
 #define DIFFERENTIAL_RUN 10
 
 /* What an irradiance estimate gathers. */
@@ -79,13 +80,16 @@ struct irradiance_settings {
 
 /* Irradiance (W / m^2 per channel in the map's units) at x on a surface with unit normal
  * n, from a map whose photons hold the SURFACE NORMAL where they landed in their
- * direction bytes (the 1994 record: position, normal, energy, caustic bit):
+ * direction bytes (the 1994 record: position, normal, energy, caustic bit; read by
+ * photon_normal()):
  *   E_x = sum_{i=1..n-1} e_i / (pi r^2),
  * r the distance of the n-th nearest photon, and only photons whose normal faces n
- * (positive dot product) adding their energy e_i. The paper sums to n; the n-th photon, on
- * the rim, only marks r here, which takes away the sum's bias of n / (n - 1) (see
- * estimate.c), unless count_rim asks for the paper's sum. With fewer than n photons within
- * max_r2, all count over that disc.
+ * (positive dot product) adding their energy e_i. (1996's precomputed irradiance runs it
+ * over its global map, whose bytes hold wi: the same test then keeps the photons that
+ * arrived from n's side.) The paper sums to n; the n-th photon, on the rim, only marks r
+ * here, which takes away the sum's bias of n / (n - 1) (see estimate.c), unless count_rim
+ * asks for the paper's sum. With fewer than n photons within max_r2, all count over that
+ * disc.
  * Differential checking (run R > 0): the photons are added nearest first; E_j is the
  * estimate from the j - 1 nearest over r = the j-th distance. From the 2R-th photon on, the
  * estimate stops at the first j where each of the last R additions raised it

@@ -3,9 +3,10 @@
  * (Jensen 1996, Sec. 3), and the searches the radiance estimates make in it.
  *
  * Life of a map: the photon tracer fills an array of photons, balance_kdtree() takes it
- * and returns the map, estimates call locate_photons() (the k nearest) or
- * for_each_photon_within() (a fixed radius) any number of times with a struct nearest
- * made once per render, and kdtree_free() releases the map. A built map is only read.
+ * and returns the map, estimates call locate_photons() (the k nearest) any number of
+ * times with a struct nearest made once per render, and kdtree_free() releases the map.
+ * A built map is only read. for_each_photon_within() (a fixed radius) serves no mode: the
+ * literal programs in tests/ gather with it, as the progressive papers do.
  * The tree's layout and invariants are described at the top of kdtree.c.
  */
 #ifndef PHOTON_KDTREE_H
@@ -92,7 +93,10 @@ void nearest_sort(struct nearest *nn);
 
 /* Calls visit(context, p, d2) for every photon p with d2 = |p - x|^2 <= r2 (r2 >= 0),
  * in the tree's order (deterministic for a given map), and returns how many it visited.
- * For fixed-radius gathering (progressive photon mapping). Allocates nothing. */
+ * Fixed-radius gathering, as the progressive papers find "the photons within the radius"
+ * of a hit point in a photon map: the literal programs in tests/ (literal_sppm2009.c)
+ * do, while 2008 and 2009 search their hit points for each photon instead
+ * (photon/hit_points.h, hit_point_grid.h). Allocates nothing. */
 size_t for_each_photon_within(const struct kdtree *map, struct vec3 x, double r2,
                               void (*visit)(void *context, const struct photon *p,
                                             double d2),

@@ -127,3 +127,8 @@ struct vec3 photon_direction(const struct photon *p)
     return vec3(sin_theta * tables.cos_phi[p->phi], sin_theta * tables.sin_phi[p->phi],
                 tables.cos_theta[p->theta]);
 }
+
+struct vec3 photon_normal(const struct photon *p)
+{
+    return photon_direction(p); /* the bytes are one; what they mean is the map's */
+}

@@ -1,15 +1,17 @@
 /*
  * photon/photon.h -- the photon record: 20 bytes, as Jensen 1996 (Sec. 3) stores it.
  *
- * A photon is a position, a power and the direction it arrived from. The paper keeps
- * each in as few bytes as will do: the position as three floats, the power in Ward's
- * RGBE shared-exponent format (4 bytes), the direction as two angles of 256 steps each,
- * plus one byte for the kd-tree's split axis and one for flags. Only photon.c packs
- * and unpacks these bytes; everything else calls photon_pack() and the three getters,
- * which compute in double. The two direction bytes hold whatever unit direction the
- * map's mode gives: the incoming direction wi in the 1996 and photons modes' maps, the
- * surface normal in mode 1994's (its record is position, normal, energy and a caustic
- * bit, Jensen and Christensen 1994, Sec. 3.3).
+ * A photon is a position, a power and the direction it arrived from, each in as few
+ * bytes as will do (the paper gives the 20 bytes, not their layout; this one follows
+ * Jensen's book, Jensen 2001): the position as three floats, the power in Ward's RGBE
+ * shared-exponent format (4 bytes), the direction as two angles of 256 steps each, plus
+ * one byte for the kd-tree's split axis and one for flags. Only photon.c packs and
+ * unpacks these bytes; everything else calls photon_pack() and the getters, which
+ * compute in double. The two direction bytes hold whatever unit direction the map's mode
+ * gives: the incoming direction wi in the 1996 and photons modes' maps, read by
+ * photon_direction(); the surface normal where the photon landed in mode 1994's (its
+ * record is position, normal, energy and a caustic bit, Jensen and Christensen 1994,
+ * Sec. 3.3) and in 1996's records of precomputed irradiance, read by photon_normal().
  *
  * Accuracy of the round trip photon_pack() -> getters:
  *   position:  each coordinate rounded to the nearest float (relative error <= 2^-24);
@@ -42,7 +44,7 @@
 struct photon {
     float pos[3];             /* bytes 0-11: position (float only here)                      */
     unsigned char power[4];   /* 12-15: RGB power, Ward's RGBE: mantissas R, G, B, exponent */
-    unsigned char theta, phi; /* 16-17: direction wi (see photon_pack), 256 steps each      */
+    unsigned char theta, phi; /* 16-17: direction wi or normal (photon_pack), 256 steps each */
     unsigned char plane;      /* 18: split axis 0..2 of this kd-tree node, set by
                                  balance_kdtree(); 0 until then                            */
     unsigned char flags;      /* 19: PHOTON_DIRECT | PHOTON_CAUSTIC | ... bits              */
@@ -69,5 +71,9 @@ struct vec3 photon_position(const struct photon *p); /* pos[] converted to doubl
 struct vec3 photon_power(const struct photon *p);    /* watts per channel, >= 0         */
 /* Unit wi, away from the surface. The first call fills photon.c's sin/cos tables. */
 struct vec3 photon_direction(const struct photon *p);
+/* The unit surface normal where the photon landed, in a map whose records hold it in
+ * place of wi (1994's photons; 1996's records of precomputed irradiance): the same
+ * bytes, rounding and tables as photon_direction(), named for what they hold there. */
+struct vec3 photon_normal(const struct photon *p);
 
 #endif

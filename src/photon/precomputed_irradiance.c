@@ -31,7 +31,7 @@ struct precomputed_irradiance *precompute_irradiance(const struct kdtree *map,
     struct nearest *nn = nearest_create(is->n);
     for (size_t i = 1; i <= records->n_photons; i++) {
         const struct photon *p = &records->photons[i];
-        struct vec3 x = photon_position(p), n = photon_direction(p);
+        struct vec3 x = photon_position(p), n = photon_normal(p);
         struct vec3 e = coverage != NULL
                             ? covered_irradiance_estimate(map, coverage, x, n, is, nn)
                             : irradiance_estimate(map, x, n, is, nn);
@@ -62,7 +62,7 @@ size_t precomputed_irradiance_bytes(const struct precomputed_irradiance *pi)
 static int serves(const struct precomputed_irradiance *pi, size_t i, double d2, struct vec3 n)
 {
     return d2 <= pi->value[i].r2 &&
-           vec3_dot(n, photon_direction(&pi->records->photons[i])) >= PRECOMPUTED_MIN_COS;
+           vec3_dot(n, photon_normal(&pi->records->photons[i])) >= PRECOMPUTED_MIN_COS;
 }
 
 /* The node of the nearest record that serves (x, n), 0 for none. On a surface away from

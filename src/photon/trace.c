@@ -255,8 +255,7 @@ static int scatter(const struct photon_hit *h, int by_parts, struct rng *rng,
                    struct photon_path *path, struct ray *ray)
 {
     double u[3];
-    for (int k = 0; k < 3; k++)
-        u[k] = rng_uniform(rng);
+    rng_uniforms(rng, u, 3);
     const struct material *through = h->material;
     double probability = 1.0;
     int specular = 0;
@@ -304,8 +303,7 @@ static int trace_photon(const struct scene *scene, const struct trace_settings *
     struct photon_path path = {-1, {0, 0, 0}, 1};
     struct ray ray;
     double u[6];
-    for (int k = 0; k < 6; k++)
-        u[k] = rng_uniform(&rng); /* one by one: an initializer list's order is unspecified */
+    rng_uniforms(&rng, u, 6);
     if (ts->projection != NULL) /* Sec. 3 (Jensen and Christensen 1994): stratified */
         u[0] = ((double)i + u[0]) / (double)ts->n_emit; /* i < N */
     if (!emit_photon(scene, ts, u, &ray, &path))

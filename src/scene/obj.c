@@ -2,33 +2,39 @@
  * scene/obj.c -- the Wavefront OBJ reader: polygon meshes, as triangles.
  *
  * What is read (README, "Scene files", in short):
- *   v x y z [w | r g b]  a vertex, placed at scale * (x, y, z) + translation; a fourth
- *                        number (w) or three more (a vertex colour) are read and ignored.
- *   vn x y z             a vertex normal (normalised; a zero normal is refused).
+ *   v x y z [w | r g b]  a vertex, placed at scale * R (x, y, z) + translation (obj.h); a
+ *                        fourth number (w) or three more (a vertex colour) are ignored.
+ *   vn x y z             a vertex normal (normalised, turned by R; zero is refused).
  *   vt u [v [w]]         a texture coordinate: only counted, so faces may name it.
  *   f c1 c2 c3 ...       a face of 3 <= n <= MAX_POLYGON_VERTICES corners, each `v`,
  *                        `v/vt`, `v//vn` or `v/vt/vn`. Indices count from 1; a negative
  *                        index counts back from the last element defined (-1 is the last).
  *                        An index must name an element defined above its line. The face
- *                        becomes n - 2 triangles by ear clipping (geom/polygon.h), all with the
- *                        placement's material; the vertex normals are interpolated when
+ *                        becomes n - 2 triangles by ear clipping (geom/polygon.h), all of
+ *                        the current material; the vertex normals are interpolated when
  *                        every corner names one, else the face is flat.
- *   o g s usemtl mtllib l p   tolerated and ignored (names, groups, smoothing groups,
- *                        materials, and lines and points, which have no area).
+ *   usemtl NAME          the faces below take the scene's material NAME, if the scene
+ *                        defines one above the obj line; else the placement's, with one
+ *                        warning per such NAME (the rest of the line, spaces and all): an
+ *                        OBJ file's material names are often the exporter's own, so a
+ *                        mesh still loads, and the warning says why it looks uniform.
+ *   o g s mtllib l p     tolerated and ignored (names, groups, smoothing groups, material
+ *                        libraries, and lines and points, which have no area).
  *   # ...                a comment, to the end of the line; blank lines are skipped.
  * Any other keyword is refused by name: free-form curves and surfaces are not supported,
  * and a mesh silently missing parts would be worse than a clear message. So is a file
  * with no face at all. Numbers are in base/number.h's syntax ("1.0e-05", "-0.5"; not
  * "0x1"), indices whole ("-1", not "+1"); the file is read a line at a time.
- * Placement keeps normals as they are: a positive uniform scale and a translation do not
+ * Placement turns normals by R only: a positive uniform scale and a translation do not
  * turn them.
  *
- * The reader owns its arrays (vertices, normals, scratch) and frees them however it ends;
- * the triangles it adds are the scene's.
+ * The reader owns its arrays (vertices, normals, scratch, names warned of) and frees them
+ * however it ends; the triangles it adds are the scene's.
  */
 #include "obj.h"
 
 #include <ctype.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -46,6 +52,12 @@
 struct obj_reader {
     struct scene *scene;               /* borrowed                                      */
     const struct obj_placement *place; /* borrowed                                      */
+    struct vec3 axis;                  /* the turn R: unit axis (zero for no turn),     */
+    double cos_turn, sin_turn;         /*   cosine and sine of its angle                */
+    int material;                      /* the current material (usemtl), for new faces  */
+    char *unknown;                     /* owned: the usemtl names warned of, each ended
+                                          by '\0', unknown_length bytes of unknown_cap   */
+    size_t unknown_length, unknown_cap;
     const char *file;
     struct input *in;                  /* borrowed from obj_import(): the file read     */
     int line;                          /* 1-based number of the line in text            */
@@ -149,6 +161,34 @@ static void *reserve_one(void *array, size_t *cap, size_t n, size_t size, const 
     return xrealloc(array, *cap, size, what);
 }
 
+/* The sine and cosine of an angle in degrees, exact at multiples of 90: a quarter turn
+ * then takes axis-aligned faces to axis-aligned faces exactly (a floor stays flat), where
+ * cos(pi / 2) in doubles is 6e-17, not 0. */
+static void sin_cos_degrees(double degrees, double *s, double *c)
+{
+    static const double quarter_sin[4] = {0, 1, 0, -1}; /* sin(k 90 degrees), k = 0..3 */
+    double quarters = degrees / 90.0;
+    if (quarters == floor(quarters)) {
+        int k = ((int)fmod(quarters, 4.0) + 4) % 4; /* fmod: no int overflow */
+        *s = quarter_sin[k];
+        *c = quarter_sin[(k + 1) % 4]; /* cos(k 90) = sin((k + 1) 90) */
+        return;
+    }
+    *s = sin(degrees * (PI / 180.0));
+    *c = cos(degrees * (PI / 180.0));
+}
+
+/* p turned by the placement's R, about the unit axis k by Rodrigues' formula:
+ * p cos + (k x p) sin + k (k . p) (1 - cos), counter-clockwise seen from k's tip. */
+static struct vec3 turned(const struct obj_reader *rd, struct vec3 p)
+{
+    if (rd->sin_turn == 0 && rd->cos_turn == 1)
+        return p; /* no turn (0 or 360 degrees): p exactly */
+    struct vec3 k = rd->axis;
+    struct vec3 q = vec3_madd(vec3_scale(p, rd->cos_turn), vec3_cross(k, p), rd->sin_turn);
+    return vec3_madd(q, k, vec3_dot(k, p) * (1.0 - rd->cos_turn));
+}
+
 /* "v x y z [w | r g b]" */
 static int read_position(struct obj_reader *rd, struct error *err)
 {
@@ -158,7 +198,8 @@ static int read_position(struct obj_reader *rd, struct error *err)
     if (rd->n_positions == OBJ_MAX_VERTICES)
         return obj_error(rd, err, "more than %d vertices", OBJ_MAX_VERTICES);
     const struct obj_placement *place = rd->place;
-    struct vec3 p = vec3_madd(place->translation, vec3(v[0], v[1], v[2]), place->scale);
+    struct vec3 p = vec3_madd(place->translation, turned(rd, vec3(v[0], v[1], v[2])),
+                              place->scale);
     if (!vec3_is_finite(p))
         return obj_error(rd, err, "the placed vertex is not finite (scale too large?)");
     rd->positions = reserve_one(rd->positions, &rd->cap_positions, rd->n_positions,
@@ -175,7 +216,7 @@ static int read_normal(struct obj_reader *rd, struct error *err)
         return -1;
     if (rd->n_normals == OBJ_MAX_VERTICES)
         return obj_error(rd, err, "more than %d normals", OBJ_MAX_VERTICES);
-    struct vec3 n = unit_normal(vec3(v[0], v[1], v[2]));
+    struct vec3 n = turned(rd, unit_normal(vec3(v[0], v[1], v[2]))); /* unit: no overflow */
     if (vec3_length2(n) == 0)
         return obj_error(rd, err, "the normal is zero");
     rd->normals = reserve_one(rd->normals, &rd->cap_normals, rd->n_normals,
@@ -257,7 +298,7 @@ static int add_face(struct obj_reader *rd, int n, int smooth, struct error *err)
             v[j] = rd->face_v[rd->triangles[3 * k + j]];
             normals[j] = rd->face_n[rd->triangles[3 * k + j]];
         }
-        int id = scene_add_triangle(rd->scene, v, smooth ? normals : NULL, rd->place->material);
+        int id = scene_add_triangle(rd->scene, v, smooth ? normals : NULL, rd->material);
         if (scene_add_error(id, rd->file, rd->line, rd->keyword, err) < 0)
             return -1;
     }
@@ -282,6 +323,50 @@ static int read_face(struct obj_reader *rd, struct error *err)
     return add_face(rd, n, smooth, err);
 }
 
+/* The rest of the line without the white space around it, cut off at a '#'. */
+static char *rest_of_line(struct obj_reader *rd)
+{
+    char *s = rd->cursor + strspn(rd->cursor, " \t\r\n\f\v");
+    char *end = s + strcspn(s, "#");
+    while (end > s && isspace((unsigned char)end[-1]))
+        end--;
+    *end = '\0';
+    rd->cursor = end;
+    return s;
+}
+
+/* Whether name is among the usemtl names warned of; adds it if not. */
+static int warned_before(struct obj_reader *rd, const char *name)
+{
+    for (size_t at = 0; at < rd->unknown_length; at += strlen(rd->unknown + at) + 1)
+        if (strcmp(rd->unknown + at, name) == 0)
+            return 1;
+    size_t length = strlen(name) + 1;
+    if (rd->unknown_length + length > rd->unknown_cap) {
+        rd->unknown_cap = 2 * (rd->unknown_length + length);
+        rd->unknown = xrealloc(rd->unknown, rd->unknown_cap, 1, "OBJ material names");
+    }
+    memcpy(rd->unknown + rd->unknown_length, name, length);
+    rd->unknown_length += length;
+    return 0;
+}
+
+/* "usemtl NAME": the scene's material NAME for the faces below, or the placement's. */
+static int read_usemtl(struct obj_reader *rd, struct error *err)
+{
+    const char *name = rest_of_line(rd);
+    if (*name == '\0')
+        return obj_error(rd, err, "expected a material name");
+    int m = scene_find_material(rd->scene, name);
+    rd->material = m >= 0 ? m : rd->place->material;
+    if (m < 0 && !warned_before(rd, name))
+        message_print("photon: warning: %s:%d: usemtl '%.200s': no material of that name "
+                      "above the obj line; its faces keep the obj line's '%s'",
+                      rd->file, rd->line, name,
+                      rd->scene->materials[rd->place->material].name);
+    return 0;
+}
+
 struct obj_keyword {
     const char *name;
     int (*read)(struct obj_reader *rd, struct error *err); /* NULL: tolerated, ignored */
@@ -289,7 +374,7 @@ struct obj_keyword {
 
 static const struct obj_keyword obj_keywords[] = {
     {"v", read_position}, {"vn", read_normal}, {"vt", read_texcoord}, {"f", read_face},
-    {"o", NULL},          {"g", NULL},         {"s", NULL},           {"usemtl", NULL},
+    {"o", NULL},          {"g", NULL},         {"s", NULL},           {"usemtl", read_usemtl},
     {"mtllib", NULL},     {"l", NULL},         {"p", NULL},
 };
 
@@ -303,7 +388,7 @@ static int read_statement(struct obj_reader *rd, struct error *err)
         k++;
     if (k == n_keywords)
         return error_set(err, rd->file, rd->line, "unknown keyword '%.40s' (read here: v vn vt "
-                         "f; ignored: o g s usemtl mtllib l p)", word);
+                         "f usemtl; ignored: o g s mtllib l p)", word);
     snprintf(rd->keyword, sizeof rd->keyword, "%s", word);
     return obj_keywords[k].read != NULL ? obj_keywords[k].read(rd, err) : 0;
 }
@@ -322,6 +407,17 @@ static int read_statements(struct obj_reader *rd, struct error *err)
     return status;
 }
 
+struct obj_placement obj_unmoved(int material)
+{
+    struct obj_placement place;
+    place.material = material;
+    place.scale = 1.0;
+    place.translation = vec3_zero();
+    place.degrees = 0.0;
+    place.axis = vec3_zero();
+    return place;
+}
+
 int obj_import(struct scene *scene, const char *path, const struct obj_placement *place,
                struct error *err)
 {
@@ -333,6 +429,10 @@ int obj_import(struct scene *scene, const char *path, const struct obj_placement
     rd->place = place;
     rd->file = path;
     rd->in = &in;
+    rd->material = place->material;
+    rd->unknown = NULL;
+    rd->axis = place->degrees != 0 ? unit_normal(place->axis) : vec3_zero();
+    sin_cos_degrees(place->degrees, &rd->sin_turn, &rd->cos_turn);
     rd->positions = NULL;
     rd->normals = NULL;
     rd->text = xmalloc(OBJ_MAX_LINE, 1, "OBJ line");
@@ -346,6 +446,7 @@ int obj_import(struct scene *scene, const char *path, const struct obj_placement
     xfree(rd->text);
     xfree(rd->normals);
     xfree(rd->positions);
+    xfree(rd->unknown);
     xfree(rd);
     input_close(&in);
     return status;

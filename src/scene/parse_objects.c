@@ -288,33 +288,62 @@ int parse_nff(struct parser *ps, struct error *err)
     return nff_import(ps->scene, path, err);
 }
 
-/* "obj FILE MATERIAL [scale S] [translate X Y Z]": the OBJ mesh's faces (scene/obj.c),
- * each vertex p placed at S p + (X, Y, Z); S = 1 and no translation by default. */
-int parse_obj(struct parser *ps, struct error *err)
+/* "rotate AX AY AZ DEGREES" on an obj line: a turn about an axis through the origin. */
+static int read_rotation(struct parser *ps, struct obj_placement *place, struct error *err)
 {
-    char path[MAX_PATH_LENGTH];
-    struct obj_placement place = {0, 1.0, {0.0, 0.0, 0.0}};
-    double v[3];
-    if (read_path(ps, path, err) < 0 || (place.material = read_material(ps, err)) < 0)
+    double v[4];
+    if (read_numbers(ps, v, 4, "rotation axis x y z, degrees", err) < 0)
         return -1;
+    if (vec3_max_abs(vec3_at(v)) == 0)
+        return parse_error(ps, err, "the rotation axis must not be zero");
+    if (!(fabs(v[3]) <= 360))
+        return parse_error(ps, err, "the rotation must be from -360 to 360 degrees");
+    place->axis = vec3_at(v);
+    place->degrees = v[3];
+    return 0;
+}
+
+/* The rest of an obj line: "[rotate AX AY AZ DEGREES] [scale S] [translate X Y Z]", each
+ * optional, in this order, the order in which they apply (obj.h). */
+static int read_placement(struct parser *ps, struct obj_placement *place, struct error *err)
+{
     const char *word = read_word(ps);
-    if (word != NULL && strcmp(word, "scale") == 0) {
-        if (read_numbers(ps, &place.scale, 1, "scale", err) < 0)
+    if (word != NULL && strcmp(word, "rotate") == 0) {
+        if (read_rotation(ps, place, err) < 0)
             return -1;
-        if (!(place.scale > 0))
+        word = read_word(ps);
+    }
+    if (word != NULL && strcmp(word, "scale") == 0) {
+        if (read_numbers(ps, &place->scale, 1, "scale", err) < 0)
+            return -1;
+        if (!(place->scale > 0))
             return parse_error(ps, err, "the scale must be positive");
         word = read_word(ps);
     }
     if (word != NULL && strcmp(word, "translate") == 0) {
+        double v[3];
         if (read_numbers(ps, v, 3, "translation x y z", err) < 0)
             return -1;
-        place.translation = vec3_at(v);
+        place->translation = vec3_at(v);
         word = read_word(ps);
     }
     if (word != NULL)
-        return error_set(err, ps->file, ps->line, "obj: unexpected '%s' (expected scale S, "
-                         "then translate X Y Z)", word);
-    if (check_named_file(ps, path, err) < 0)
+        return error_set(err, ps->file, ps->line, "obj: unexpected '%s' (expected rotate AX AY "
+                         "AZ DEGREES, scale S, then translate X Y Z)", word);
+    return 0;
+}
+
+/* "obj FILE MATERIAL [rotate AX AY AZ DEGREES] [scale S] [translate X Y Z]": the OBJ
+ * mesh's faces (scene/obj.c), each vertex p placed at S R p + (X, Y, Z), R the turn;
+ * no turn, S = 1 and no translation by default. */
+int parse_obj(struct parser *ps, struct error *err)
+{
+    char path[MAX_PATH_LENGTH];
+    if (read_path(ps, path, err) < 0)
+        return -1;
+    struct obj_placement place = obj_unmoved(read_material(ps, err));
+    if (place.material < 0 || read_placement(ps, &place, err) < 0 ||
+        check_named_file(ps, path, err) < 0)
         return -1;
     return obj_import(ps->scene, path, &place, err);
 }

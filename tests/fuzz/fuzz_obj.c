@@ -21,8 +21,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memset(&m, 0, sizeof m);
     m.kind = MATERIAL_LAMBERT;
     m.rho = vec3(0.5, 0.5, 0.5);
-    struct obj_placement place = {0, 1.0, {0.0, 0.0, 0.0}};
-    place.material = scene_add_material(scene, &m);
+    struct obj_placement place = obj_unmoved(scene_add_material(scene, &m));
     scene->camera.from = vec3(0, 0, 5);
     scene->camera.up = vec3(0, 1, 0);
     scene->camera.fov = 40;
