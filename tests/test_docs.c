@@ -211,10 +211,35 @@ static void test_manual_sections(struct check *t)
     free(readme);
 }
 
+/* truth: error.h: a command whose write of the standard output fails says why and exits
+ *   1, as a failed write of a file does; the manual's EXIT STATUS and the README's Errors
+ *   paragraph (read with its line breaks as spaces) say so.
+ * catches: documents that leave a failed stdout to "a write that failed after the work",
+ *   which a reader takes for a file (photon --manual > photon.1 on a full disk). */
+static void test_exit_status_of_stdout(struct check *t)
+{
+    char log[256];
+    temp_name(log, sizeof log, "docs", "status.1");
+    REQUIRE(t, photon_logged("--manual", "", log) == 0);
+    char *roff = read_text_file(log), *readme = read_text_file("README.md");
+    REQUIRE(t, roff != NULL && readme != NULL);
+    const char *from = strstr(roff, ".SH EXIT STATUS"), *to = strstr(roff, ".SH FILES");
+    const char *at = from != NULL ? strstr(from, "the standard output's too") : NULL;
+    CHECK(t, at != NULL && to != NULL && at < to);
+    for (char *c = readme; *c != '\0'; c++)
+        *c = *c == '\n' ? ' ' : *c;
+    CHECK(t, strstr(readme, "a failed write, of stdout too) says why and exits with status "
+                            "1") != NULL);
+    free(roff);
+    free(readme);
+    remove(log);
+}
+
 void test_docs(struct check *t)
 {
     RUN_TEST(t, test_documented_commands_work);
     RUN_TEST(t, test_manual_is_the_help);
     RUN_TEST(t, test_help_of_a_mode);
     RUN_TEST(t, test_manual_sections);
+    RUN_TEST(t, test_exit_status_of_stdout);
 }

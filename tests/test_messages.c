@@ -168,15 +168,20 @@ static void test_one_failed_checkpoint_message(struct check *t)
  *   (photon_small_files()), so one large output of each command fails with EFBIG,
  *   strerror()'s "File too large" (the render's PFM and its --save-photons, merge's,
  *   convert's and compare --diff's pictures, export's scene, probe's CSV, plot's SVG:
- *   every writer reaches output_commit()). Nothing is left of it.
+ *   every writer reaches output_commit()). Nothing is left of it. The render's OpenEXR
+ *   (3.3 KB) sits in stdio's buffer until the seek back to its offset table flushes it:
+ *   there the write fails.
  * catches: "cannot write output file" alone: stdio keeps that a write failed (ferror()),
  *   not why, and errno has changed by the commit; the reason printed twice; a message
- *   naming NAME.XXXXXXXX.tmp. */
+ *   naming NAME.XXXXXXXX.tmp; the OpenEXR's failed seek said without why ("cannot go
+ *   back to the offset table to write it"). */
 static void test_failed_write_says_why(struct check *t)
 {
     static const char *const cases[][2] = {
         {"--no-progress --spp 1 --width 64 --height 64 -o " OUT "_r.pfm scenes/cornell.scene",
          OUT "_r.pfm"},
+        {"--no-progress --spp 1 --width 16 --height 16 -o " OUT "_x.exr scenes/cornell.scene",
+         OUT "_x.exr"},
         {"--no-progress --mode photons --photons 20000 --width 4 --height 4 --save-photons "
          OUT "_w.work -o " OUT "_w.pfm scenes/cornell.scene", OUT "_w.work"},
         {"merge -o " OUT "_m.pfm " OUT "_t.pfm", OUT "_m.pfm"},

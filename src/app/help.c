@@ -145,7 +145,8 @@ void help_manual_sections(enum help_format format)
     help_section(format, "exit status");
     help_option(format, "0", "the command did its work and wrote its outputs");
     help_option(format, "1", "a machine failure (out of memory, a write that failed after "
-                             "the work); no partial output is left");
+                             "the work, the standard output's too), said with its reason; no "
+                             "partial output file is left");
     help_option(format, "2", "bad input (an option, a scene, an image file): "
                              "file:line: message on stderr, nothing written");
     help_option(format, "128 + N", "signal N ended photon, after it undid its files");

@@ -17,6 +17,7 @@
  */
 #include "exr.h"
 
+#include <errno.h>
 #include <float.h>
 #include <stdint.h>
 #include <string.h>
@@ -426,8 +427,14 @@ struct image *exr_read(const char *name, int plus_infinity, struct error *err)
         return NULL;
     unsigned char *bytes = xmalloc(in.size > 0 ? (size_t)in.size : 1, 1, "an OpenEXR file");
     struct image *img = NULL;
-    if (fread(bytes, 1, (size_t)in.size, in.f) != (size_t)in.size)
-        error_set(err, name, 0, "cannot read the file's %ld bytes", in.size);
+    errno = 0;
+    size_t got = fread(bytes, 1, (size_t)in.size, in.f);
+    if (ferror(in.f))
+        error_set(err, name, 0, "cannot read the file's %ld bytes: %s", in.size,
+                  input_failure());
+    else if (got != (size_t)in.size) /* shorter than input_open() measured */
+        error_set(err, name, 0, "the file ends after %zu of the %ld bytes it had when "
+                  "opened (not a regular file?)", got, in.size);
     else {
         struct reader r = {bytes, (size_t)in.size, 0, name, err};
         img = read_image(&r, plus_infinity);

@@ -6,6 +6,8 @@
 
 #include <math.h>
 
+#include "../photon/irradiance_cache.h"
+
 struct gather_plan gather_plan_of(int gather_rays)
 {
     struct gather_plan plan;
@@ -47,4 +49,14 @@ struct vec3 strata_integral(const struct gather_plan *plan, const struct vec3 *m
     for (int i = 0; i < mn; i++)
         sum = vec3_add(sum, mean[i]);
     return vec3_scale(sum, PI / mn);
+}
+
+int gather_direction(const struct shading_frame *frame, struct vec3 ng, int m, int n, int j,
+                     int k, struct rng *rng, struct vec3 *wi)
+{
+    double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
+    struct vec3 local = stratum_direction(m, n, j, k, u1, u2);
+    *wi = vec3_add(vec3_add(vec3_scale(frame->t, local.x), vec3_scale(frame->b, local.y)),
+                   vec3_scale(frame->n, local.z));
+    return vec3_dot(*wi, ng) > 0;
 }

@@ -2,12 +2,15 @@
  * modes/gather_plan.h -- how a final gather of mode 1996 (Jensen 1996, Sec. 4.4) spends
  * its rays: Ward and Heckbert's m x n strata of equal projected solid angle, one ray
  * each, and the rest of the rays allotted to the strata by Jensen 1995's importance (the
- * flux of the nearest photons through each stratum, which jensen1996.c measures).
+ * flux of the nearest photons through each stratum, which jensen1996.c measures); and
+ * the direction of a ray in a stratum, which 1994's gathers (one ray a stratum) share.
  */
 #ifndef PHOTON_GATHER_PLAN_H
 #define PHOTON_GATHER_PLAN_H
 
+#include "../base/rng.h"
 #include "../base/vec3.h"
+#include "../scene/brdf.h"
 
 /* A final gather's size: m x n strata (Ward and Heckbert's), one ray each, and the rest
  * of its rays spread by importance. */
@@ -34,5 +37,12 @@ void allot_rays(const struct gather_plan *plan, double total, double *share, int
  * found: every stratum spans a projected solid angle of pi / (m n), so this is the
  * integral over the hemisphere of the mean times cos (the irradiance, for mean L). */
 struct vec3 strata_integral(const struct gather_plan *plan, const struct vec3 *mean);
+
+/* A gather ray's direction *wi in stratum (j, k) of m x n around frame->n (world space),
+ * cosine-distributed within it by two numbers drawn from rng (stratum_direction()).
+ * Returns 0 when *wi lies below the geometric surface of normal ng, where no light
+ * arrives (a shading normal can lean a stratum past it), else 1. */
+int gather_direction(const struct shading_frame *frame, struct vec3 ng, int m, int n, int j,
+                     int k, struct rng *rng, struct vec3 *wi);
 
 #endif

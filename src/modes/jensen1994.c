@@ -79,8 +79,10 @@
 #include "../photon/projection_map.h"
 #include "../photon/trace.h"
 #include "cache_pass.h"
+#include "gather_plan.h"
 #include "jensen1994_maps.h"
 #include "photons.h"
+#include "specular_rays.h"
 #include "surface.h"
 
 /* ---- Sec. 4, pass 2: Monte Carlo ray tracing ---- */
@@ -280,26 +282,26 @@ static struct path after_bounce(const struct jensen1994 *mode, const struct surf
     return path;
 }
 
-/* The radiance arriving along lobe bs of f_r,s times its weight, with Russian roulette
- * after ROULETTE_DEPTH bounces. */
-static struct vec3 follow_lobe(const struct jensen1994 *mode, const struct surface *s,
-                               const struct brdf_sample *bs, struct path path, struct rng *rng,
-                               struct render_counters *counters)
+/* The radiance arriving along lobe bs of f_r,s (specular_rays()' step): the path after
+ * the bounce, its throughput scaled as specular_rays.h says. 1994 samples one ray at a
+ * time, so `several` is always 0. */
+static struct vec3 follow_lobe(const struct specular_step *step, const struct brdf_sample *bs,
+                               double scale, int several)
 {
-    path.beta = vec3_mul(path.beta, bs->weight);
-    double q = roulette_odds(path.beta, path.depth);
-    if (q < 1 && !(rng_uniform(rng) < q))
-        return vec3_zero(); /* absorbed (always when q = 0) */
-    path.beta = vec3_scale(path.beta, 1.0 / q);
-    path = after_bounce(mode, s, bs, path);
-    struct vec3 li = trace(mode, surface_ray(s, bs->wi, bs->transmitted), path, rng, counters);
-    return vec3_mul(vec3_scale(bs->weight, 1.0 / q), li);
+    const struct jensen1994 *mode = step->mode;
+    struct path path = *(const struct path *)step->path;
+    (void)several;
+    path.beta = vec3_scale(vec3_mul(path.beta, bs->weight), scale);
+    path = after_bounce(mode, step->s, bs, path);
+    return trace(mode, surface_ray(step->s, bs->wi, bs->transmitted), path, step->rng,
+                 step->counters);
 }
 
 /* Recursive ray tracing of f_r,s: an ideal mirror's or glass's every lobe (reflection and
  * refraction both, as Whitted's ray tracer, so glass shows no noise from choosing
  * between them; with both_lobes off, the paper's Monte Carlo: one lobe, chosen by the
- * BRDF's sampling), else one direction sampled from the glossy lobe. */
+ * BRDF's sampling), else one direction sampled from the glossy lobe; Russian roulette
+ * after ROULETTE_DEPTH bounces (specular_rays(), which 1996 shares). */
 static struct vec3 specular_light(const struct jensen1994 *mode, const struct surface *s,
                                   const struct material *specular,
                                   const struct shading_frame *frame, struct path path,
@@ -307,20 +309,9 @@ static struct vec3 specular_light(const struct jensen1994 *mode, const struct su
 {
     if (path.depth >= mode->max_depth)
         return vec3_zero();
-    struct vec3 sum = vec3_zero();
-    if (mode->settings->both_lobes && brdf_is_delta(specular)) {
-        struct brdf_sample lobes[2];
-        int n_lobes = brdf_delta_lobes(specular, frame, s->wo, lobes);
-        for (int k = 0; k < n_lobes; k++)
-            sum = vec3_add(sum, follow_lobe(mode, s, &lobes[k], path, rng, counters));
-        return sum;
-    }
-    double u[3];
-    rng_uniforms(rng, u, 3);
-    struct brdf_sample bs;
-    if (brdf_sample(specular, frame, s->wo, u, &bs))
-        sum = follow_lobe(mode, s, &bs, path, rng, counters);
-    return sum;
+    struct specular_step step = {follow_lobe, mode, &path, s, rng, counters};
+    return specular_rays(specular, frame, mode->settings->both_lobes, 1, path.beta,
+                         path.depth, &step);
 }
 
 /* -- 4.0.3 L_r,d,d: multiple diffuse reflections by irradiance gradients -- */
@@ -337,11 +328,7 @@ static struct stratum_sample gather_stratum(const struct jensen1994 *mode,
                                             struct render_counters *counters)
 {
     struct stratum_sample sample = {{0.0, 0.0, 0.0}, INFINITY};
-    double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
-    struct vec3 local = stratum_direction(n_theta, n_phi, j, k, u1, u2);
-    *wi = vec3_add(vec3_add(vec3_scale(frame->t, local.x), vec3_scale(frame->b, local.y)),
-                   vec3_scale(frame->n, local.z));
-    if (!(vec3_dot(*wi, s->ng) > 0))
+    if (!gather_direction(frame, s->ng, n_theta, n_phi, j, k, rng, wi))
         return sample; /* below the geometric surface: no light arrives */
     struct surface at;
     double t;
@@ -514,14 +501,13 @@ static void set_up(struct jensen1994 *mode, const struct scene *scene,
     mode->settings = settings;
     mode->max_depth = rs->max_depth;
     mode->diagonal = scene_diagonal(scene);
-    double max_radius = settings->max_radius > 0 ? settings->max_radius
-                                           : PHOTONS_RADIUS_FRACTION * mode->diagonal;
-    struct irradiance_settings all = {settings->gather, max_radius * max_radius, 0,
+    struct max_radii radii =
+        max_radii_of(settings->max_radius, settings->caustic_radius_fraction, mode->diagonal);
+    struct irradiance_settings all = {settings->gather, radii.all_r2, 0,
                                       settings->differential_run, settings->count_rim};
     mode->all_photons = all;
     mode->caustic_photons = all;
-    mode->caustic_photons.max_r2 *=
-        settings->caustic_radius_fraction * settings->caustic_radius_fraction;
+    mode->caustic_photons.max_r2 = radii.caustic_r2;
     mode->caustic_photons.kinds = PHOTON_CAUSTIC;
     /* Ward and Heckbert's strata, m x n with n about pi m, one ray each */
     mode->strata_theta = (int)floor(sqrt(settings->gather_rays / PI) + 0.5);

@@ -85,6 +85,7 @@
 #include "jensen1996_evaluation.h"
 #include "jensen1996_maps.h"
 #include "photons.h"
+#include "specular_rays.h"
 #include "surface.h"
 
 /* ---- Sec. 4, pass 2: rendering ---- */
@@ -213,45 +214,42 @@ static struct vec3 direct_illumination(const struct jensen1996 *mode, const stru
 
 /* -- 4.2 specular reflection -- */
 
-/* Follows one direction out of the specular part: the path after the bounce (its
- * evaluation and emission rule) and Russian roulette. share: the part of the estimate the
- * direction stands for (1 / rays for one of several samples, 1 for a whole lobe);
- * branched: whether the path has branched into glossy rays. */
-static struct vec3 follow_specular(const struct jensen1996 *mode, const struct surface *s,
-                                   const struct brdf_sample *bs, double share, int branched,
-                                   struct path path, struct rng *rng,
-                                   struct render_counters *counters)
+/* Follows one direction out of the specular part (specular_rays()' step): the path after
+ * the bounce, its evaluation and emission rule; it has branched into glossy rays once it
+ * had or this direction is one of several. */
+static struct vec3 follow_specular(const struct specular_step *step,
+                                   const struct brdf_sample *bs, double scale, int several)
 {
+    const struct jensen1996 *mode = step->mode;
+    const struct path *path = step->path;
     struct path next;
-    next.beta = vec3_mul(path.beta, bs->weight);
-    next.depth = path.depth + 1;
-    next.branched = branched;
-    double q = roulette_odds(next.beta, path.depth);
-    if (q < 1 && !(rng_uniform(rng) < q))
-        return vec3_zero();
-    struct arrival bounce = {.last = SPECULAR_BOUNCE, .from = path.eval, .glossy = !bs->delta,
+    next.beta = vec3_mul(path->beta, bs->weight);
+    next.depth = path->depth + 1;
+    next.branched = path->branched || several;
+    struct arrival bounce = {.last = SPECULAR_BOUNCE, .from = path->eval, .glossy = !bs->delta,
                              .weight = vec3_luminance(next.beta)};
     next.eval = accurate_or_approximate(mode->settings, &bounce);
-    if (path.rule == EMISSION_SKIP_ALL)
+    if (path->rule == EMISSION_SKIP_ALL)
         next.rule = EMISSION_SKIP_ALL; /* still on a gather ray's chain through f_r,s */
     else if (bs->delta)
         next.rule = EMISSION_COUNTED;
     else
-        next.rule = path.eval == APPROXIMATE ? EMISSION_COUNTED : EMISSION_SKIP_DIRECT;
-    next.beta = vec3_scale(next.beta, share / q);
-    struct vec3 li = trace(mode, surface_ray(s, bs->wi, bs->transmitted), next, rng, counters);
-    return vec3_mul(vec3_scale(bs->weight, share / q), li);
+        next.rule = path->eval == APPROXIMATE ? EMISSION_COUNTED : EMISSION_SKIP_DIRECT;
+    next.beta = vec3_scale(next.beta, scale);
+    return trace(mode, surface_ray(step->s, bs->wi, bs->transmitted), next, step->rng,
+                 step->counters);
 }
 
 /* The second term of Eq. 2: Monte Carlo through the specular part, importance-sampled by
- * the BRDF; glossy_rays rays at the first accurate point of a path with a glossy lobe,
- * else one (a path that branched at every glossy hit of a sphere flake would grow
- * exponentially). An ideal specular surface evaluated accurately has nothing to sample:
- * its reflected and refracted rays are both followed, as in Whitted's ray tracer (1980),
- * so a glass ball seen directly shows no noise from choosing between them (both_lobes;
- * off, the paper's one sampled ray, as at approximate points). A lobe whose
- * path weight falls below --accurate-weight turns approximate and stops branching, which
- * bounds the number of rays. */
+ * the BRDF, with Russian roulette (specular_rays(), which 1994 shares); glossy_rays rays
+ * at the first accurate point of a path with a glossy lobe, else one (a path that
+ * branched at every glossy hit of a sphere flake would grow exponentially). An ideal
+ * specular surface evaluated accurately has nothing to sample: its reflected and
+ * refracted rays are both followed, as in Whitted's ray tracer (1980), so a glass ball
+ * seen directly shows no noise from choosing between them (both_lobes; off, the paper's
+ * one sampled ray, as at approximate points). A lobe whose path weight falls below
+ * --accurate-weight turns approximate and stops branching, which bounds the number of
+ * rays. */
 static struct vec3 specular_reflection(const struct jensen1996 *mode, const struct surface *s,
                                        const struct brdf_split *split,
                                        const struct shading_frame *frame, struct path path,
@@ -259,29 +257,13 @@ static struct vec3 specular_reflection(const struct jensen1996 *mode, const stru
 {
     if (path.depth >= mode->max_depth)
         return vec3_zero();
-    struct vec3 sum = vec3_zero();
-    if (path.eval == ACCURATE && mode->settings->both_lobes &&
-        brdf_is_delta(&split->specular)) {
-        struct brdf_sample lobes[2];
-        int n_lobes = brdf_delta_lobes(&split->specular, frame, s->wo, lobes);
-        for (int k = 0; k < n_lobes; k++)
-            sum = vec3_add(sum, follow_specular(mode, s, &lobes[k], 1.0, path.branched, path,
-                                                rng, counters));
-        return sum;
-    }
     int glossy = brdf_has_non_delta(&split->specular); /* a non-delta lobe */
     int n_rays =
         path.eval == ACCURATE && glossy && !path.branched ? mode->settings->glossy_rays : 1;
-    for (int r = 0; r < n_rays; r++) {
-        double u[3];
-        rng_uniforms(rng, u, 3);
-        struct brdf_sample bs;
-        if (brdf_sample(&split->specular, frame, s->wo, u, &bs))
-            sum = vec3_add(sum, follow_specular(mode, s, &bs, 1.0 / n_rays,
-                                                path.branched || n_rays > 1, path, rng,
-                                                counters));
-    }
-    return sum;
+    struct specular_step step = {follow_specular, mode, &path, s, rng, counters};
+    return specular_rays(&split->specular, frame,
+                         path.eval == ACCURATE && mode->settings->both_lobes, n_rays,
+                         path.beta, path.depth, &step);
 }
 
 /* -- 4.3 caustics -- */
@@ -401,12 +383,8 @@ static void final_gather(const struct jensen1996 *mode, const struct gather_plan
             struct vec3 sum = vec3_zero(), reflected = vec3_zero();
             double nearest = INFINITY;
             for (int r = 0; r < sc->rays_in[i]; r++) {
-                double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
-                struct vec3 local = stratum_direction(plan->theta, plan->phi, j, k, u1, u2);
-                struct vec3 wi = vec3_add(vec3_add(vec3_scale(frame->t, local.x),
-                                                   vec3_scale(frame->b, local.y)),
-                                          vec3_scale(frame->n, local.z));
-                if (!(vec3_dot(wi, s->ng) > 0))
+                struct vec3 wi;
+                if (!gather_direction(frame, s->ng, plan->theta, plan->phi, j, k, rng, &wi))
                     continue; /* below the geometric surface: no light arrives */
                 struct hit hit;
                 counters->rays++;
@@ -608,16 +586,15 @@ static void set_up(struct jensen1996 *mode, const struct scene *scene,
     mode->scene = scene;
     mode->settings = settings;
     mode->diagonal = scene_diagonal(scene);
-    double max_radius = settings->max_radius > 0 ? settings->max_radius
-                                           : PHOTONS_RADIUS_FRACTION * mode->diagonal;
+    struct max_radii radii =
+        max_radii_of(settings->max_radius, settings->caustic_radius_fraction, mode->diagonal);
     mode->global_es.k = settings->global_gather;
-    mode->global_es.max_r2 = max_radius * max_radius;
+    mode->global_es.max_r2 = radii.all_r2;
     mode->global_es.cone_k = 0;
     mode->global_es.kinds = 0;
     mode->global_es.count_rim = settings->count_rim;
     mode->caustic_es.k = settings->caustic_gather;
-    mode->caustic_es.max_r2 = mode->global_es.max_r2 * settings->caustic_radius_fraction *
-                           settings->caustic_radius_fraction;
+    mode->caustic_es.max_r2 = radii.caustic_r2;
     mode->caustic_es.cone_k = settings->cone_k;
     mode->caustic_es.kinds = settings->one_map ? PHOTON_CAUSTIC : 0;
     mode->caustic_es.count_rim = settings->count_rim;

@@ -90,6 +90,15 @@ static double default_max_radius(const struct scene *scene)
     return isfinite(diagonal) && diagonal > 0 ? PHOTONS_RADIUS_FRACTION * diagonal : HUGE_VAL;
 }
 
+struct max_radii max_radii_of(double max_radius, double caustic_fraction, double diagonal)
+{
+    double r = max_radius > 0 ? max_radius : PHOTONS_RADIUS_FRACTION * diagonal;
+    struct max_radii radii;
+    radii.all_r2 = r * r;
+    radii.caustic_r2 = radii.all_r2 * caustic_fraction * caustic_fraction;
+    return radii;
+}
+
 /* Steps 1 and 2: the balanced global map, or NULL with *err filled. */
 static struct kdtree *build_global_map(const struct scene *scene,
                                        const struct render_settings *rs,

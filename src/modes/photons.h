@@ -25,6 +25,18 @@
                                         are, and a wide disc hangs over the edges of the
                                         surface where they are sparse                   */
 
+/* The squared maximum radii of modes 1994's and 1996's photon estimates: every
+ * estimate's, from max_radius (> 0) or else PHOTONS_RADIUS_FRACTION of the scene's
+ * diagonal (scene_diagonal(): 1 for a scene with no extent), and the caustic estimates',
+ * caustic_fraction of that radius. One set-up, so --max-radius and
+ * --caustic-radius-fraction mean the same in both modes. (`--mode photons` sets its own
+ * radius up: no limit at all for a scene with no extent.) */
+struct max_radii {
+    double all_r2;     /* every estimate's, or the global map's                         */
+    double caustic_r2; /* the caustic estimates': all_r2 times the fraction squared     */
+};
+struct max_radii max_radii_of(double max_radius, double caustic_fraction, double diagonal);
+
 struct photon_settings {
     size_t n_photons;  /* N emitted, 1..MAX_PHOTONS (trace.h)                           */
     size_t gather;     /* k, photons per estimate, 1..MAX_GATHER                        */
