@@ -5,7 +5,8 @@
  * kd-tree; it has none of the mode's departures (light samples, new eye rays each pass,
  * merged hit points, fitted radii, caustic estimates apart, the facing test, turned
  * directions), none of its bookkeeping and no search structure of its own.
- * `photon --mode 2008 --paper` must agree with it (tests/test_literal.c).
+ * `photon --mode 2008 --paper` must agree with it (tests/test_literal.c). The photon pass,
+ * Eq. 11 and the update, which 2009's literal program shares, are in literal_photons.c.
  *
  * The algorithm (Sec. 3.1 and 4):
  *   1. the ray tracing pass, once: --spp eye rays a pixel "using standard ray tracing",
@@ -28,17 +29,13 @@
  */
 #include "literal_ppm2008.h"
 
-#include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../src/base/alloc.h"
 #include "../src/modes/render.h"
 #include "../src/modes/surface.h"
-#include "../src/photon/kdtree.h"
-#include "../src/photon/trace.h"
+#include "literal_photons.h"
 
-#define ALPHA 0.7           /* the fraction of new photons kept                        */
 #define ROULETTE_BOUNCES 8  /* mirror and glass bounces before Russian roulette         */
 
 /* A hit point of step 1 with its statistics. */
@@ -50,8 +47,6 @@ struct hit_point {
     struct vec3 weight; /* the path's throughput over the pixel's eye rays            */
     double n, radius;
     struct vec3 tau;
-    struct vec3 tau_m; /* this pass: Eq. 11's sum                                    */
-    double m;          /* this pass: the photons within R                            */
 };
 
 /* What step 1 makes: the hit points and each pixel's emission seen. */
@@ -121,49 +116,13 @@ static void trace_eye_ray(struct ray_tracing_pass *pass, struct ray ray, size_t 
     }
 }
 
-/* Eq. 11's sum for one photon p within R of hit point hp. */
-static void add_photon(void *context, const struct photon *p, double d2)
-{
-    struct hit_point *hp = context;
-    (void)d2;
-    struct vec3 f = brdf_eval(hp->brdf, &hp->frame, hp->wo, photon_direction(p));
-    hp->tau_m = vec3_add(hp->tau_m, vec3_mul(f, photon_power(p)));
-    hp->m += 1.0;
-}
-
-/* Step 2: the pass's M photons, in a photon map. */
-static struct kdtree *photon_tracing_pass(const struct scene *scene, uint64_t seed, long pass,
-                                          size_t photons)
-{
-    struct trace_settings ts;
-    struct photon_trace trace;
-    struct error err;
-    memset(&ts, 0, sizeof ts);
-    ts.seed = seed;
-    ts.pass = (uint64_t)pass;
-    ts.n_emit = photons;
-    ts.max_stored = MAX_PHOTONS;
-    ts.store = PHOTON_MAP_GLOBAL;
-    ts.max_depth = MAX_DEPTH_LIMIT;
-    if (trace_photons(scene, &ts, &trace, &err) != 0)
-        return NULL;
-    return balance_kdtree(trace.photons, trace.n_photons); /* the map owns them now */
-}
-
-/* Step 3 for one hit point (each Phi_p carries the tracer's 1 / M, which times M is the
- * photon's own power). */
+/* Step 3 for one hit point: Eq. 11's sum over the photons within R, and the update. */
 static void progressive_update(struct hit_point *hp, const struct kdtree *map, size_t photons)
 {
-    hp->tau_m = vec3_zero();
-    hp->m = 0.0;
-    if (map != NULL)
-        for_each_photon_within(map, hp->x, hp->radius * hp->radius, add_photon, hp);
-    if (hp->n + hp->m == 0)
-        return;
-    double shrink = (hp->n + ALPHA * hp->m) / (hp->n + hp->m); /* R'^2 / R^2 */
-    hp->tau = vec3_scale(vec3_add(hp->tau, vec3_scale(hp->tau_m, (double)photons)), shrink);
-    hp->radius *= sqrt(shrink);
-    hp->n += ALPHA * hp->m;
+    double m;
+    struct vec3 tau_m = literal_photons_within(map, hp->x, hp->radius, hp->brdf, &hp->frame,
+                                               hp->wo, photons, &m);
+    literal_update(&hp->n, &hp->radius, &hp->tau, tau_m, m);
 }
 
 struct image *literal_ppm2008(const struct scene *scene, uint64_t seed, int spp, long passes,
@@ -182,7 +141,7 @@ struct image *literal_ppm2008(const struct scene *scene, uint64_t seed, int spp,
                               &rng);
             }
     for (long p = 0; p < passes; p++) {
-        struct kdtree *map = photon_tracing_pass(scene, seed, p, photons_per_pass);
+        struct kdtree *map = literal_photon_map(scene, seed, p, photons_per_pass);
         for (size_t i = 0; i < pass.n; i++)
             progressive_update(&pass.points[i], map, photons_per_pass);
         kdtree_free(map);

@@ -6,7 +6,8 @@
  * coverage, the facing test, turned directions, glossy lobes followed), none of its
  * bookkeeping (error images, crops, time limits, progress, checkpoints) and no search
  * structure of its own. `photon --mode 2009 --paper` must agree with it
- * (tests/test_literal.c), so that the mode and the paper cannot drift apart.
+ * (tests/test_literal.c), so that the mode and the paper cannot drift apart. The photon
+ * pass, Eq. 11 and the update, as 2008's, are in literal_photons.c.
  *
  * The algorithm, one pass after another:
  *   1. the distributed ray tracing pass: one new eye path a pixel, through the pixel's
@@ -30,17 +31,10 @@
  */
 #include "literal_sppm2009.h"
 
-#include <math.h>
-#include <stdlib.h>
-#include <string.h>
-
 #include "../src/base/alloc.h"
 #include "../src/modes/render.h"
 #include "../src/modes/surface.h"
-#include "../src/photon/kdtree.h"
-#include "../src/photon/trace.h"
-
-#define ALPHA 0.7 /* the fraction of new photons kept, 2008's alpha */
+#include "literal_photons.h"
 
 /* What one pixel's region S keeps across passes (step 3), and its pass's hit point. */
 struct region {
@@ -52,8 +46,6 @@ struct region {
     struct shading_frame frame;
     const struct material *brdf;
     struct vec3 beta;      /* the eye path's weight                                     */
-    struct vec3 phi;       /* this pass: sum of f_r Phi_p over the photons within R     */
-    double m;              /* this pass: M, the photons within R                        */
 };
 
 /* Step 1 for one pixel: its eye path of pass `pass`. */
@@ -103,52 +95,16 @@ static void trace_eye_path(const struct scene *scene, uint64_t seed, int x, int 
     }
 }
 
-/* Step 3's sum for one photon p within R of region s's hit point. */
-static void add_photon(void *context, const struct photon *p, double d2)
-{
-    struct region *s = context;
-    (void)d2;
-    struct vec3 f = brdf_eval(s->brdf, &s->frame, s->wo, photon_direction(p));
-    s->phi = vec3_add(s->phi, vec3_mul(f, photon_power(p)));
-    s->m += 1.0;
-}
-
-/* Step 2: the pass's M photons, in a photon map. */
-static struct kdtree *photon_tracing_pass(const struct scene *scene, uint64_t seed, long pass,
-                                          size_t photons)
-{
-    struct trace_settings ts;
-    struct photon_trace trace;
-    struct error err;
-    memset(&ts, 0, sizeof ts);
-    ts.seed = seed;
-    ts.pass = (uint64_t)pass;
-    ts.n_emit = photons;
-    ts.max_stored = MAX_PHOTONS;
-    ts.store = PHOTON_MAP_GLOBAL;
-    ts.max_depth = MAX_DEPTH_LIMIT;
-    if (trace_photons(scene, &ts, &trace, &err) != 0)
-        return NULL;
-    return balance_kdtree(trace.photons, trace.n_photons); /* the map owns them now */
-}
-
-/* Step 3 for one region: its photons (each Phi_p carries the tracer's 1 / M, which
- * times M is the photon's own power), then 2008's Eq. 7, 9 and 12. */
+/* Step 3 for one region: the photons within R of its hit point bring beta times Eq. 11's
+ * sum, and the statistics are updated. */
 static void progressive_update(struct region *s, const struct kdtree *map, size_t photons)
 {
     if (!s->has_point)
         return;
-    s->phi = vec3_zero();
-    s->m = 0.0;
-    if (map != NULL)
-        for_each_photon_within(map, s->x, s->radius * s->radius, add_photon, s);
-    if (s->n + s->m == 0)
-        return;
-    double shrink = (s->n + ALPHA * s->m) / (s->n + s->m); /* R'^2 / R^2 */
-    struct vec3 phi = vec3_mul(s->beta, vec3_scale(s->phi, (double)photons));
-    s->tau = vec3_scale(vec3_add(s->tau, phi), shrink);
-    s->radius *= sqrt(shrink);
-    s->n += ALPHA * s->m;
+    double m;
+    struct vec3 found = literal_photons_within(map, s->x, s->radius, s->brdf, &s->frame, s->wo,
+                                               photons, &m);
+    literal_update(&s->n, &s->radius, &s->tau, vec3_mul(s->beta, found), m);
 }
 
 struct image *literal_sppm2009(const struct scene *scene, uint64_t seed, long passes,
@@ -161,7 +117,7 @@ struct image *literal_sppm2009(const struct scene *scene, uint64_t seed, long pa
         for (int y = 0; y < height; y++)
             for (int x = 0; x < width; x++)
                 trace_eye_path(scene, seed, x, y, pass, &regions[(size_t)y * width + x]);
-        struct kdtree *map = photon_tracing_pass(scene, seed, pass, photons_per_pass);
+        struct kdtree *map = literal_photon_map(scene, seed, pass, photons_per_pass);
         for (size_t i = 0; i < (size_t)width * (size_t)height; i++)
             progressive_update(&regions[i], map, photons_per_pass);
         kdtree_free(map);
