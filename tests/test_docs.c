@@ -175,6 +175,26 @@ static void test_help_of_a_mode(struct check *t)
     }
     CHECK(t, wide == 0);
     free(help);
+    remove(log);
+}
+
+/* photon --manual's text (NULL when it fails), its temporary file removed. */
+static char *manual_text(void)
+{
+    char log[256];
+    temp_name(log, sizeof log, "docs", "manual.1");
+    char *roff = photon_logged("--manual", "", log) == 0 ? read_text_file(log) : NULL;
+    remove(log);
+    return roff;
+}
+
+/* Whether text is in roff's section `section`, before the section `next` begins. */
+static int in_section(const char *roff, const char *section, const char *next,
+                      const char *text)
+{
+    const char *from = strstr(roff, section), *to = strstr(roff, next);
+    const char *at = from != NULL ? strstr(from, text) : NULL;
+    return at != NULL && to != NULL && at < to;
 }
 
 /* truth: README.md's table of scene lines (its first column's keywords, read here from
@@ -184,10 +204,7 @@ static void test_help_of_a_mode(struct check *t)
  *   section dropped. */
 static void test_manual_sections(struct check *t)
 {
-    char log[256];
-    temp_name(log, sizeof log, "docs", "sections.1");
-    REQUIRE(t, photon_logged("--manual", "", log) == 0);
-    char *roff = read_text_file(log), *readme = read_text_file("README.md");
+    char *roff = manual_text(), *readme = read_text_file("README.md");
     REQUIRE(t, roff != NULL && readme != NULL);
     CHECK(t, strstr(roff, ".SH SCENE FILES") && strstr(roff, ".SH EXIT STATUS") &&
              strstr(roff, ".SH FILES") && strstr(roff, ".SH EXAMPLES"));
@@ -198,9 +215,7 @@ static void test_manual_sections(struct check *t)
         char keyword[32];
         if (sscanf(row + 3, "%31[a-z_]", keyword) != 1)
             continue;
-        const char *from = strstr(roff, ".SH SCENE FILES"), *to = strstr(roff, ".SH EXIT");
-        const char *at = from != NULL ? strstr(from, keyword) : NULL;
-        int found = at != NULL && to != NULL && at < to; /* in the section */
+        int found = in_section(roff, ".SH SCENE FILES", ".SH EXIT", keyword);
         CHECK(t, found);
         if (!found)
             fprintf(stderr, "test_docs: the manual's scene files lack %s\n", keyword);
@@ -218,21 +233,15 @@ static void test_manual_sections(struct check *t)
  *   which a reader takes for a file (photon --manual > photon.1 on a full disk). */
 static void test_exit_status_of_stdout(struct check *t)
 {
-    char log[256];
-    temp_name(log, sizeof log, "docs", "status.1");
-    REQUIRE(t, photon_logged("--manual", "", log) == 0);
-    char *roff = read_text_file(log), *readme = read_text_file("README.md");
+    char *roff = manual_text(), *readme = read_text_file("README.md");
     REQUIRE(t, roff != NULL && readme != NULL);
-    const char *from = strstr(roff, ".SH EXIT STATUS"), *to = strstr(roff, ".SH FILES");
-    const char *at = from != NULL ? strstr(from, "the standard output's too") : NULL;
-    CHECK(t, at != NULL && to != NULL && at < to);
+    CHECK(t, in_section(roff, ".SH EXIT STATUS", ".SH FILES", "the standard output's too"));
     for (char *c = readme; *c != '\0'; c++)
         *c = *c == '\n' ? ' ' : *c;
     CHECK(t, strstr(readme, "a failed write, of stdout too) says why and exits with status "
                             "1") != NULL);
     free(roff);
     free(readme);
-    remove(log);
 }
 
 void test_docs(struct check *t)
