@@ -13,7 +13,8 @@
 # MODES is pt and 2009 by default. compare judges pt's blocks from its pixels' bounds,
 # their noise in quadrature, which holds for pt's independent pixels; 2008's and 2009's
 # pixels share photons, so their blocks are judged by the mode's own block statement
-# (--block-error, src/image/error_image.h).
+# (--block-error, src/image/error_image.h); so are photons', whose pixels share one map.
+# photons has no --target-error: its one map cannot refine.
 #
 # The renders take seed 7, which no bound was measured on. A --target-error render stops
 # at CALIBRATION_LIMIT CPU seconds (default 600) if it has not reached the target, and the
@@ -35,6 +36,10 @@ suite_names calibration "$@"
 # cell NAME MODE KIND: the table's cell from build/calibration/NAME-MODE-KIND.*.
 cell() {
     base=$work/$1-$2-$3
+    if [ "$2-$3" = photons-target ]; then
+        echo "none: its one map cannot refine"
+        return
+    fi
     if [ ! -f "$base.log" ]; then
         kept "calibration $2" "$1" "$([ "$3" = defaults ] && echo 1 || echo 2)"
         return
@@ -105,9 +110,9 @@ write_table() {
         echo "of 256 is); otherwise it \"holds\" at a median ratio of 4.4 or less (1.5 times the"
         echo "exact bound's, as an rms ratio of 3 is of 1.96), and is \"loose\" above. pt's"
         echo "blocks are judged by its pixels' bounds in quadrature (\`compare --test-error\`), 2008's"
-        echo "and 2009's, whose pixels share photons, by their block statements"
+        echo "and 2009's and photons', whose pixels share photons, by their block statements"
         echo "(\`--block-error\`, \`compare --test-block-error\`)."
-        for mode in pt 2008 2009; do
+        for mode in pt photons 2008 2009; do
             if printf ' %s ' "$modes" | grep -q " $mode "; then
                 echo
                 mode_table "$mode"
@@ -141,6 +146,7 @@ for name in $names; do
     scene_of "$name"
     for mode in $modes; do
         for kind in defaults target; do
+            [ "$mode-$kind" != photons-target ] || continue
             base=$work/$name-$mode-$kind
             rm -f "$base.compare"
             how=
@@ -148,7 +154,7 @@ for name in $names; do
             echo "calibration: $name, --mode $mode $how $options"
             statement="--error $base-error.pfm"
             judged="--test-error $base-error.pfm"
-            case $mode in 2008 | 2009)
+            case $mode in photons | 2008 | 2009)
                 statement="$statement --block-error $base-blocks.pfm"
                 judged="--test-block-error $base-blocks.pfm" ;;
             esac

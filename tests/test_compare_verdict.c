@@ -224,11 +224,6 @@ static void test_error_image_read(struct check *t)
     image_free(like);
 }
 
-static double sky_over_floor_with_sphere(struct ray r)
-{
-    return sky_over_floor(r, 1);
-}
-
 /* Runs "PHOTON compare args" with its output in log; the exit status. */
 static int compare_status(const char *args, const char *log)
 {

@@ -16,11 +16,6 @@
 
 #define OUT "/tmp/photon_test_error"
 
-static double sky_over_floor_with_sphere(struct ray r)
-{
-    return sky_over_floor(r, 1);
-}
-
 /* pt's image and error image at 0.95 of the scene at path, width x height, against the
  * closed form along() (coverage_of()). */
 static struct coverage pt_coverage(const char *path, int width, int height, int spp,

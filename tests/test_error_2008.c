@@ -21,11 +21,6 @@
 #define PHOTONS 20000 /* photons a pass: few, so that a test case takes about a second */
 #define MOST_BLOCKS 64 /* the blocks of ERROR_BLOCK pixels a case's image holds at most */
 
-static double sky_over_floor_with_sphere(struct ray r)
-{
-    return sky_over_floor(r, 1);
-}
-
 /* scenes/analytic/point-in-sphere.scene's closed form (point_in_sphere_truth()), the same
  * along every camera ray: light the photons bring after their first bounce, the only
  * closed form whose light 2008's hit points carry at its defaults. */

@@ -16,11 +16,6 @@
 #define OUT "/tmp/photon_test_error_2009"
 #define PHOTONS 20000 /* photons a pass: few, so that a test case takes about a second */
 
-static double sky_over_floor_with_sphere(struct ray r)
-{
-    return sky_over_floor(r, 1);
-}
-
 /* 2009 at its defaults but for the passes, PHOTONS a pass and the direct light: from the
  * photons (the paper's way, direct_photons 1), whose density estimate then carries the
  * light a closed form knows and so its bias, or by light samples (the default). */

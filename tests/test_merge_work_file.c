@@ -233,7 +233,7 @@ static void test_values_out_of_range_are_refused(struct check *t)
     } planted[] = {
         {AT_POWER, 0, {240, 240, 240, 250}, 4, "map 0, photon 1: power 9.9"},
         {AT_POSITION, 0, {0, 0, 0x80, 0x7f}, 4, "map 0, photon 1: its position is not finite"},
-        {AT_FLAGS, 0, {16}, 1, "map 0, photon 1: flags 16 are not photon kinds"},
+        {AT_FLAGS, 0, {3}, 1, "map 0, photon 1: flags 3 are not one photon kind"},
         {AT_E, 0, {0, 0, 0, 0, 0, 0, 0xf0, 0xbf}, 8, "cache record 0: irradiance (-1, 0, 0)"},
         {AT_NORMAL_Z, 0, {0, 0, 0, 0, 0, 0, 0, 0x40}, 8, "cache record 0: its normal is not "
          "of unit length (2)"},

@@ -114,7 +114,7 @@ static void test_values_match_linear_scan(struct check *t)
     struct kdtree *map = balance_kdtree(corner_photons(0), N_PHOTONS);
     struct kdtree *records = balance_kdtree(corner_photons(1), N_PHOTONS / RECORD_STEP);
     struct irradiance_settings is = {K, MAX_R2, 0, 0, 0};
-    struct precomputed_irradiance *pi = precompute_irradiance(map, records, &is, NULL);
+    struct precomputed_irradiance *pi = precompute_irradiance(map, records, &is, NULL, NULL);
     struct scan *order = xmalloc(N_PHOTONS, sizeof *order, "test scan");
     size_t full = 0, sparse = 0, bad = 0;
     for (size_t i = 1; i <= records->n_photons; i++) {
@@ -190,8 +190,8 @@ static void test_lookup_matches_linear_scan(struct check *t)
     struct kdtree *records = balance_kdtree(corner_photons(1), N_PHOTONS / RECORD_STEP);
     struct kdtree *none = balance_kdtree(NULL, 0);
     struct irradiance_settings is = {K, MAX_R2, 0, 0, 0};
-    struct precomputed_irradiance *pi = precompute_irradiance(map, records, &is, NULL);
-    struct precomputed_irradiance *empty = precompute_irradiance(map, none, &is, NULL);
+    struct precomputed_irradiance *pi = precompute_irradiance(map, records, &is, NULL, NULL);
+    struct precomputed_irradiance *empty = precompute_irradiance(map, none, &is, NULL, NULL);
     struct nearest *nn = nearest_create(K);
     struct scan *order = xmalloc(records->n_photons, sizeof *order, "test scan");
     size_t served = 0, declined = 0, bad = 0;

@@ -1,14 +1,18 @@
 /*
  * tests/test_progress.c -- the progress line (base/progress.h): its forecast, its two
- * forms and when each shows a line, and what photon writes with --progress to a log file
- * and to a pipe.
+ * forms and when each shows a line, what the photon/ code that keeps no clock tells its
+ * watch (base/watch.h), and what photon writes with --progress to a log file and to a
+ * pipe.
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
+#include "../src/base/alloc.h"
 #include "../src/base/progress.h"
+#include "../src/base/rng.h"
+#include "../src/photon/precomputed_irradiance.h"
 #include "files.h"
 #include "tests.h"
 
@@ -73,6 +77,77 @@ static void test_forecast_and_forms(struct check *t)
     CHECK(t, !progress_update(&p, 5.0, t0 + 100) && !progress_end(&p, 10.0, t0 + 100));
 }
 
+/* What a watch was told: how often, the last count, and whether each count was the next
+ * multiple of every. */
+struct told {
+    size_t every, calls, last;
+    int in_steps;
+};
+
+static void tell(void *context, size_t done)
+{
+    struct told *w = context;
+    w->calls++;
+    w->in_steps = w->in_steps && done == w->calls * w->every;
+    w->last = done;
+}
+
+/* n photons spread over the unit square of the floor y = 0, facing up (their direction
+ * bytes hold the normal, as a record's do), from the test stream seed. */
+static struct photon *floor_photons(size_t n, uint64_t seed)
+{
+    struct photon *photons = xmalloc(n, sizeof *photons, "test photons");
+    struct rng rng = rng_stream(seed, STREAM_TEST, 0, 0);
+    for (size_t i = 0; i < n; i++) {
+        double u[2];
+        rng_uniforms(&rng, u, 2);
+        photons[i] = photon_pack(vec3(u[0], 0, u[1]), vec3(1, 1, 1), vec3(0, 1, 0),
+                                 PHOTON_DIRECT);
+    }
+    return photons;
+}
+
+/* truth: kdtree.h and precomputed_irradiance.h: balancing n photons takes 2n steps, and
+ *   the watch is told each positive multiple of KDTREE_WATCH_EVERY up to 2n, in order
+ *   (2047 photons: none; 2048: once, at the last step; 10000: 4096 to 16384); the
+ *   precomputed irradiance tells the records estimated at each multiple of
+ *   PRECOMPUTED_WATCH_EVERY (1000 records: 256, 512, 768). Watched or not, the map and
+ *   the values are the same, byte for byte.
+ * tolerance: none.
+ * catches: a phase that tells its watch nothing (no progress line before its end), or
+ *   counts past its total (a forecast beyond the end), or out of order; a watch that
+ *   changes the map or the values. */
+static void test_watched_work(struct check *t)
+{
+    static const size_t sizes[] = {1, 2047, 2048, 10000};
+    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
+        size_t n = sizes[s];
+        struct told w = {KDTREE_WATCH_EVERY, 0, 0, 1};
+        struct work_watch watch = {tell, &w};
+        struct kdtree *plain = balance_kdtree(floor_photons(n, 1), n);
+        struct kdtree *watched = balance_kdtree_watched(floor_photons(n, 1), n, &watch);
+        CHECK(t, w.in_steps && w.calls == 2 * n / KDTREE_WATCH_EVERY && w.last <= 2 * n);
+        CHECK(t, memcmp(plain->photons, watched->photons, (n + 1) * sizeof *plain->photons)
+                     == 0);
+        kdtree_free(watched);
+        kdtree_free(plain);
+    }
+    struct kdtree *map = balance_kdtree(floor_photons(4000, 2), 4000);
+    struct kdtree *records = balance_kdtree(floor_photons(1000, 3), 1000);
+    struct irradiance_settings is = {30, 0.01, 0, 0, 0};
+    struct told w = {PRECOMPUTED_WATCH_EVERY, 0, 0, 1};
+    struct work_watch watch = {tell, &w};
+    struct precomputed_irradiance *plain = precompute_irradiance(map, records, &is, NULL, NULL);
+    struct precomputed_irradiance *watched =
+        precompute_irradiance(map, records, &is, NULL, &watch);
+    CHECK(t, w.in_steps && w.calls == 3 && w.last == 768);
+    CHECK(t, memcmp(plain->value, watched->value, 1001 * sizeof *plain->value) == 0);
+    precomputed_irradiance_free(watched);
+    precomputed_irradiance_free(plain);
+    kdtree_free(records);
+    kdtree_free(map);
+}
+
 /* Whether every line of text is a progress line ("photon: "), ends with a newline, holds
  * no carriage return, and says "left" unless it names the target error (whose passes
  * are not known beforehand); *n: the lines. */
@@ -96,6 +171,20 @@ static int whole_lines(const char *text, int *n)
     return 1;
 }
 
+/* The total of the line "photon: PHASE: DONE of TOTAL UNITS, ..." in text when DONE is
+ * TOTAL (the phase's work all done); 0 when it is not, or there is no such line. */
+static unsigned long all_done(const char *text, const char *phase, const char *units)
+{
+    char start[96], format[160];
+    snprintf(start, sizeof start, "photon: %s: ", phase);
+    snprintf(format, sizeof format, "%%lu of %%lu %s,", units);
+    const char *line = text != NULL ? strstr(text, start) : NULL;
+    unsigned long done = 0, total = 0;
+    if (line == NULL || sscanf(line + strlen(start), format, &done, &total) != 2)
+        return 0;
+    return done == total ? total : 0;
+}
+
 /* Runs photon with args and --progress, stderr to log (a file) or through a pipe (cat)
  * into it; its exit status (the pipe's: cat's). */
 static int photon_progress(const char *args, const char *log, int pipe)
@@ -112,24 +201,31 @@ static int photon_progress(const char *args, const char *log, int pipe)
 
 /* truth: README, "Options": with stderr a file, --progress writes whole lines, each a
  *   phase's ("photon: PHASE: ...") with the time left where its work is known: 1996's
- *   two photon maps, its irradiance cache and its sample passes, 2009's passes; with
- *   --target-error the passes' line names the blocks instead. Through a pipe, the line is
+ *   two photon maps' traces and balancing, its precomputed irradiance, its irradiance
+ *   cache and its sample passes, seven phases; 2009's passes; with --target-error the
+ *   passes' line names the blocks instead. A phase's last line says all its work is done
+ *   (a balancing's steps, 2 a photon, an even number). Through a pipe, the line is
  *   rewritten in place: carriage returns, each phase ended by a newline.
  * tolerance: none.
  * catches: carriage returns in a log, a phase with no line (the photon maps once had
- *   none), a forecast missing, the form chosen by TERM rather than by where stderr goes. */
+ *   none, and their balancing and the precomputed irradiance), a forecast missing, the
+ *   form chosen by TERM rather than by where stderr goes. */
 static void test_render_progress(struct check *t)
 {
     const char *file_log = OUT "_file.log";
     CHECK(t, photon_progress(TINY_1996, file_log, 0) == 0);
     char *text = read_text_file(file_log);
     int n = 0;
-    CHECK(t, text != NULL && whole_lines(text, &n) && n == 4);
+    CHECK(t, text != NULL && whole_lines(text, &n) && n == 7);
     CHECK(t, text != NULL && strstr(text, "photon: global photon map: 20000 of 20000 photons "
                                           "emitted, ") != NULL &&
              strstr(text, "photon: caustic photon map: ") != NULL &&
              strstr(text, "photon: irradiance cache: row 16 of 16, ") != NULL &&
              strstr(text, "photon: sample passes: ") != NULL);
+    unsigned long global = all_done(text, "global photon map balancing", "steps"),
+                  caustic = all_done(text, "caustic photon map balancing", "steps");
+    CHECK(t, global > 0 && global % 2 == 0 && caustic > 0 && caustic % 2 == 0 &&
+             all_done(text, "precomputed irradiance", "records estimated") > 0);
     free(text);
     CHECK(t, photon_progress("--mode 2009 --passes 4 --width 16 --height 16 -o " OUT ".pfm "
                              "scenes/cornell.scene", file_log, 0) == 0);
@@ -151,7 +247,7 @@ static void test_render_progress(struct check *t)
         returns += *c == '\r';
         newlines += *c == '\n';
     }
-    CHECK(t, text != NULL && returns >= 4 && newlines == 4 &&
+    CHECK(t, text != NULL && returns >= 7 && newlines == 7 &&
              strncmp(text, "\rphoton: global photon map: ", 28) == 0 &&
              text[strlen(text) - 1] == '\n');
     free(text);
@@ -164,5 +260,6 @@ static void test_render_progress(struct check *t)
 void test_progress(struct check *t)
 {
     run_test(t, test_forecast_and_forms, "progress: forecast and forms");
+    run_test(t, test_watched_work, "progress: what balancing and precomputing tell a watch");
     run_test(t, test_render_progress, "progress: photon --progress to a file and a pipe");
 }

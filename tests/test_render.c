@@ -212,7 +212,7 @@ static struct render_result render_synthetic(const struct fixture *f,
                                              const struct checkpoint *checkpoint,
                                              struct render_counters *counters)
 {
-    struct radiance_estimator estimator = {synthetic_radiance, &f->mode};
+    struct radiance_estimator estimator = {synthetic_radiance, &f->mode, NULL};
     return render_pixels(f->scene, &f->rs, estimator, 1, checkpoint, counters);
 }
 

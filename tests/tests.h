@@ -69,6 +69,7 @@ void test_messages(struct check *t); /* test_messages.c: what photon prints */
 void test_sky(struct check *t);     /* test_sky.c: the background as a light, every mode */
 void test_error(struct check *t);   /* test_error.c: error images against closed forms */
 void test_error_2009(struct check *t); /* test_error_2009.c: 2009's error images, the same */
+void test_error_photons(struct check *t); /* test_error_photons.c: the photons mode's */
 void test_error_2008(struct check *t); /* test_error_2008.c: 2008's error images, the same */
 void test_compare_verdict(struct check *t); /* test_compare_verdict.c: compare's block test */
 void test_shading(struct check *t); /* test_shading.c: shading normals, every mode */

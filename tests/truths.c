@@ -77,6 +77,11 @@ static double plane_radiance(const struct scene *scene, double px, double py)
     return 0.5 * 1000 * 1.0 / (4 * PI * PI * d * d * d);
 }
 
+double sky_over_floor_with_sphere(struct ray r)
+{
+    return sky_over_floor(r, 1);
+}
+
 double point_over_plane(struct ray r)
 {
     struct vec3 x = ray_at(r, -r.origin.y / r.dir.y);

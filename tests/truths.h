@@ -36,6 +36,10 @@ double area_over_floor(struct ray r);
 #define SKY_H 1.0
 double sky_over_floor(struct ray r, int sphere);
 
+/* sky_over_floor() with the sphere, as the scene file has it: a closed form with
+ * the signature coverage_of() takes. */
+double sky_over_floor_with_sphere(struct ray r);
+
 /* scenes/analytic/point-over-plane.scene's closed form along camera ray r: where r meets
  * the plane y = 0, L = rho Phi h / (4 pi^2 d^3) (test_error_2009.c). */
 double point_over_plane(struct ray r);

@@ -14,12 +14,17 @@
  * summaries are the first screen's, each within the 71 columns its text has there. */
 const struct command commands[] = {
     {"compare", compare_command, "two images' error (rmse, relmse, worst block) and whether "
-                                 "they agree"},
-    {"plot", plot_command, "reports' relmse against CPU seconds (or any columns) as an SVG"},
-    {"probe", probe_command, "1994's irradiance estimate sampled along a line, as CSV"},
-    {"merge", merge_command, "tiles rendered with --crop put together into the whole image"},
-    {"export", export_command, "the scene for pbrt-v4, Mitsuba 3 or Blender (Cycles)"},
-    {"convert", convert_command, "an image (a render, an error image) as a PNG or PPM picture"},
+                                 "they agree", compare_options},
+    {"plot", plot_command, "reports' relmse against CPU seconds (or any columns) as an SVG",
+     plot_options},
+    {"probe", probe_command, "1994's irradiance estimate sampled along a line, as CSV",
+     probe_options},
+    {"merge", merge_command, "tiles rendered with --crop put together into the whole image",
+     merge_options},
+    {"export", export_command, "the scene for pbrt-v4, Mitsuba 3 or Blender (Cycles)",
+     export_options},
+    {"convert", convert_command, "an image (a render, an error image) as a PNG or PPM picture",
+     convert_options},
 };
 
 /* An array of -1 chars, which does not compile, unless N_COMMANDS counts the rows. */

@@ -36,14 +36,17 @@ struct convert_args {
     struct option_once once;            /* the options with a value read so far           */
 };
 
-/* The options, for the near miss of an unknown one (app/suggest.h). */
-static const char *const option_names[] = {"-o", "--exposure", "--false-colour", "--min",
-                                           "--max", "--log", "--help"};
-#define N_OPTION_NAMES (sizeof option_names / sizeof option_names[0])
+/* Also the names for the near miss of an unknown option (app/suggest.h). */
+const struct option_arity convert_options[] = {
+    {"-o", 1},  {"--exposure", 1}, {"--false-colour", 0}, {"--false-color", 0},
+    {"--min", 1}, {"--max", 1},    {"--log", 0},          {"--help", 0},
+    {NULL, 0},
+};
+#define N_OPTION_NAMES (sizeof convert_options / sizeof convert_options[0] - 1)
 
 static const char *option_at(size_t i)
 {
-    return option_names[i];
+    return convert_options[i].name;
 }
 
 /* `photon convert --help`. */
@@ -65,21 +68,17 @@ static const char convert_help[] =
     "longest label's characters, s = image height / 256 (1 to 4); a picture less than\n"
     "60 s pixels tall is made that tall, black below the image.\n";
 
-/* An option's value: the next argument, or the text after '=' in "--name=value";
- * *i advanced past what was used. -1 with *err filled when missing or given twice (once
- * records the options read). */
-static int option_value(int argc, char **argv, int *i, const char *inline_value,
-                        const char **value, struct option_once *once, struct error *err)
+/* An option's value: the next argument; *i advanced past it. -1 with *err filled when
+ * missing or given twice (once records the options read). */
+static int option_value(int argc, char **argv, int *i, const char **value,
+                        struct option_once *once, struct error *err)
 {
     const char *name = argv[*i];
     if (option_once(once, "convert", argc, argv, *i, 1, err) < 0)
         return -1;
-    if (inline_value != NULL)
-        *value = inline_value;
-    else if (*i + 1 < argc)
-        *value = argv[++*i];
-    else
+    if (*i + 1 == argc)
         return error_set(err, "", 0, "convert: %s needs a value; " CONVERT_USAGE, name);
+    *value = argv[++*i];
     return 0;
 }
 
@@ -87,31 +86,25 @@ static int option_value(int argc, char **argv, int *i, const char *inline_value,
 static int parse_option(int argc, char **argv, int *i, struct convert_args *args,
                         struct error *err)
 {
-    char name[64];
-    const char *arg = argv[*i], *equals = strchr(arg, '=');
-    size_t n = equals != NULL && arg[1] == '-' ? (size_t)(equals - arg) : strlen(arg);
-    snprintf(name, sizeof name, "%.*s", (int)(n < sizeof name ? n : sizeof name - 1), arg);
-    const char *inline_value = n < strlen(arg) ? arg + n + 1 : NULL;
+    const char *name = argv[*i];
     const char **value = strcmp(name, "-o") == 0           ? &args->output
                          : strcmp(name, "--exposure") == 0 ? &args->exposure_text
                          : strcmp(name, "--min") == 0      ? &args->min_text
                          : strcmp(name, "--max") == 0      ? &args->max_text
                                                            : NULL;
     if (value != NULL)
-        return option_value(argc, argv, i, inline_value, value, &args->once, err);
+        return option_value(argc, argv, i, value, &args->once, err);
     int *flag = strcmp(name, "--false-colour") == 0 || strcmp(name, "--false-color") == 0
                     ? &args->false_colour
                 : strcmp(name, "--log") == 0 ? &args->log
                                              : NULL;
-    if (flag != NULL && inline_value == NULL) {
+    if (flag != NULL) {
         *flag = 1;
         return 0;
     }
-    if (flag != NULL)
-        return error_set(err, "", 0, "convert: %s takes no value", name);
     char hint[96];
     did_you_mean(name, option_at, N_OPTION_NAMES, hint, sizeof hint);
-    return error_set(err, "", 0, "convert: unknown option '%s'%s; " CONVERT_USAGE, arg, hint);
+    return error_set(err, "", 0, "convert: unknown option '%s'%s; " CONVERT_USAGE, name, hint);
 }
 
 /* A --min or --max value into *value: any finite number. */

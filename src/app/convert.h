@@ -5,9 +5,14 @@
 #ifndef PHOTON_CONVERT_H
 #define PHOTON_CONVERT_H
 
+#include "../base/option_equals.h"
+
 /* `photon convert IN.pfm -o OUT.png|.ppm [--exposure E | --false-colour [--min V]
  * [--max V] [--log]]`: argv[0] is "convert". Returns the exit status: 0, 2 for bad input
  * (messages on stderr), 1 when the output could not be written. */
 int convert_command(int argc, char **argv);
+
+/* Its options, for --NAME=VALUE (app/commands.h); a NULL name ends them. */
+extern const struct option_arity convert_options[];
 
 #endif

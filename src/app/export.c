@@ -333,6 +333,11 @@ static int check_ending(const struct export_args *a, struct error *err)
                      "%s, got '%s'", ending, format_names[a->format], a->output);
 }
 
+const struct option_arity export_options[] = {
+    {"--format", 1}, {"-o", 1}, {"--spp", 1}, {"--channel", 1}, {"--width", 1},
+    {"--height", 1}, {"--help", 0}, {NULL, 0},
+};
+
 static int parse_export_args(int argc, char **argv, struct export_args *a, struct error *err)
 {
     int has_format = 0;

@@ -22,6 +22,7 @@
 
 #include <stdio.h>
 
+#include "../base/option_equals.h"
 #include "../scene/scene.h"
 
 #define EXPORT_DEFAULT_SPP 1024
@@ -122,5 +123,8 @@ void export_rgb(FILE *f, const char *separator, struct vec3 c);
  * .xml or .py, after a name; --width and --height, as the render command's, replace the
  * scene's image size. Returns the exit status. */
 int export_command(int argc, char **argv);
+
+/* Its options, for --NAME=VALUE (app/commands.h); a NULL name ends them. */
+extern const struct option_arity export_options[];
 
 #endif

@@ -34,6 +34,10 @@ struct merge_args {
     int n_tiles;
 };
 
+const struct option_arity merge_options[] = {
+    {"-o", 1}, {"--exposure", 1}, {"--help", 0}, {NULL, 0},
+};
+
 /* The arguments after "merge"; 1 when --help was printed. */
 static int parse_merge_args(int argc, char **argv, struct merge_args *args, struct error *err)
 {

@@ -17,8 +17,13 @@
 #ifndef PHOTON_MERGE_H
 #define PHOTON_MERGE_H
 
+#include "../base/option_equals.h"
+
 /* argv[0] is "merge". Returns the exit status: 0, or 2 for bad input or an output that
  * cannot be written (the message is printed). */
 int merge_command(int argc, char **argv);
+
+/* Its options, for --NAME=VALUE (app/commands.h); a NULL name ends them. */
+extern const struct option_arity merge_options[];
 
 #endif

@@ -237,15 +237,18 @@ static int check_error_bound(const struct options *o, const struct command_words
     if (o->mode == MODE_DIRECT)
         return error_set(err, "", 0, "%s: --mode direct states no bound: it leaves out "
                          "indirect light by design, a bias no spread of its samples shows; "
-                         "pt, 2008 and 2009 state one", name);
-    if (o->mode != MODE_PT && o->mode != MODE_SPPM2009 && o->mode != MODE_PPM2008)
+                         "pt, photons, 2008 and 2009 state one", name);
+    if (o->mode == MODE_JENSEN1994 || o->mode == MODE_JENSEN1996)
         return error_set(err, "", 0, "%s: --mode %s states no bound yet: every pixel shares "
-                         "its photon maps%s, whose noise and bias no spread of one pixel's "
-                         "samples shows; pt, 2008 and 2009 state one", name,
-                         mode_name(o->mode),
-                         o->mode == MODE_PHOTONS ? "" : " and irradiance cache");
+                         "its photon maps and irradiance cache, whose noise and bias no "
+                         "spread of one pixel's samples shows; pt, photons, 2008 and 2009 "
+                         "state one", name, mode_name(o->mode));
+    if (o->mode == MODE_PHOTONS && o->target_error > 0)
+        return error_set(err, "", 0, "--target-error: --mode photons cannot refine its image: "
+                         "its one photon map is made before the pixels; give --photons and "
+                         "--gather, and --error states how far the image is");
     int passes = o->mode != MODE_PT, n = passes ? o->passes : o->spp;
-    if (n < ERROR_MIN_SPP)
+    if (o->mode != MODE_PHOTONS && n < ERROR_MIN_SPP)
         return error_set(err, "", 0, "%s: needs %s >= %d (with %d, even the spread "
                          "pooled over 5 x 5 pixels misses the rare bright samples, and the "
                          "bound with it)", name, passes ? "--passes" : "--spp", ERROR_MIN_SPP,

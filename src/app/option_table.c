@@ -63,13 +63,15 @@ const struct option_spec option_specs[] = {
      "also write each pixel's bound on |pixel - truth| at --confidence, from its samples' "
      "and its 5 x 5 neighbours' spread (needs --spp >= 16); 2008, 2009: from its passes' "
      "spread and, added, its photon estimates' bias, from discs of half the area (needs "
-     "--passes >= 16)", FOR_PT | FOR_PROGRESSIVE},
+     "--passes >= 16); photons: the same from its map's 8 batches of photons",
+     FOR_PT | FOR_PHOTONS | FOR_PROGRESSIVE},
     {"--block-error", OPT_FILE, FIELD(block_error), 0, 0, "FILE.pfm|.exr",
      "with --error: also write each 16 x 16 block's bound on |block mean - truth|, one pixel "
-     "a block, for photon compare --test-block-error (not with --crop)", FOR_PT | FOR_PROGRESSIVE},
+     "a block, for photon compare --test-block-error (not with --crop)",
+     FOR_PT | FOR_PHOTONS | FOR_PROGRESSIVE},
     {"--confidence", OPT_REAL_BETWEEN, FIELD(confidence), 0, 1, "C",
      "the confidence of --error's bound: the truth is within it in a fraction C of the "
-     "pixels (default 0.95)", FOR_PT | FOR_PROGRESSIVE},
+     "pixels (default 0.95)", FOR_PT | FOR_PHOTONS | FOR_PROGRESSIVE},
     {"--target-error", OPT_REAL_ABOVE, FIELD(target_error), 0, 1, "E",
      "sample until every 16 x 16 block's bound at --confidence is at most E times its mean "
      "(blocks darker than 1e-3 aside), --spp at most (default with it: 1048576), or the "

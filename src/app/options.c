@@ -10,6 +10,7 @@
 
 #include "../base/alloc.h"
 #include "../base/hash.h"
+#include "../base/option_equals.h"
 #include "../base/option_once.h"
 #include "../modes/ppm2008.h"
 #include "first_screen.h"
@@ -386,52 +387,19 @@ static int given_word(const void *given, const char *name)
     return ((const int *)given)[spec - option_specs];
 }
 
-/* The option of the table spelt by name[0 .. n - 1], or NULL. */
-static const struct option_spec *find_spec_prefix(const char *name, size_t n)
-{
-    for (size_t i = 0; i < N_OPTION_SPECS; i++)
-        if (strlen(option_specs[i].name) == n && strncmp(option_specs[i].name, name, n) == 0)
-            return &option_specs[i];
-    return NULL;
-}
-
-/* argv with each --NAME=VALUE, NAME an option of one value, as the two words --NAME VALUE
- * (the spelling of getopt_long(), which users bring from other tools): a new array
- * (*split, the caller frees it) of argv's words and, for a split word, the table's name
- * and the text after '='. -1 with *err for --NAME=... of a switch or of --crop. */
-static int split_equals(int argc, char **argv, char ***split, int *split_argc,
-                        struct error *err)
-{
-    *split = xmalloc(2 * (size_t)argc + 1, sizeof **split, "command line");
-    int n = 0;
-    for (int i = 0; i < argc; i++) {
-        const char *equals = strchr(argv[i], '=');
-        const struct option_spec *spec =
-            i > 0 && strncmp(argv[i], "--", 2) == 0 && equals != NULL
-                ? find_spec_prefix(argv[i], (size_t)(equals - argv[i]))
-                : NULL;
-        if (spec == NULL) {
-            (*split)[n++] = argv[i];
-            continue;
-        }
-        if (spec->kind == OPT_FLAG || spec->kind == OPT_OFF || spec->kind == OPT_CROP)
-            return error_set(err, "", 0, "%s: %s takes %s, not '=' and a value", argv[i],
-                             spec->name, spec->kind == OPT_CROP ? "four values" : "no value");
-        (*split)[n++] = (char *)spec->name; /* only read */
-        (*split)[n++] = (char *)equals + 1;
-    }
-    (*split)[n] = NULL;
-    *split_argc = n;
-    return 0;
-}
-
 static int parse_split_options(int argc, char **argv, struct options *o, struct error *err);
 
 int parse_options(int argc, char **argv, struct options *o, struct error *err)
 {
+    struct option_arity arity[N_OPTION_SPECS + 1]; /* for --NAME=VALUE (option_equals.h) */
+    for (size_t k = 0; k < N_OPTION_SPECS; k++) {
+        arity[k].name = option_specs[k].name;
+        arity[k].values = spec_values(&option_specs[k]);
+    }
+    arity[N_OPTION_SPECS].name = NULL;
     char **split;
     int split_argc = 0;
-    int status = split_equals(argc, argv, &split, &split_argc, err);
+    int status = split_equals("", argc, argv, arity, &split, &split_argc, err);
     if (status == 0)
         status = parse_split_options(split_argc, split, o, err);
     xfree(split);

@@ -36,6 +36,11 @@ struct probe_args {
     struct jensen1994_settings settings;
 };
 
+const struct option_arity probe_options[] = {
+    {"--line", 6},   {"--normal", 3}, {"--samples", 1},      {"-o", 1},    {"--seed", 1},
+    {"--photons", 1}, {"--gather", 1}, {"--differential", 1}, {"--help", 0}, {NULL, 0},
+};
+
 /* Reads count numbers after argv[*i] into values, advancing *i. */
 static int read_numbers(int argc, char **argv, int *i, int count, double *values,
                         struct error *err)

@@ -29,7 +29,12 @@
 #ifndef PHOTON_PROBE_H
 #define PHOTON_PROBE_H
 
+#include "../base/option_equals.h"
+
 /* argv[0] is "probe". Returns the exit status: 0, 1 (a failed write) or 2 (bad input). */
 int probe_command(int argc, char **argv);
+
+/* Its options, for --NAME=VALUE (app/commands.h); a NULL name ends them. */
+extern const struct option_arity probe_options[];
 
 #endif

@@ -27,8 +27,7 @@ extern char float_is_4_bytes[sizeof(float) == 4 ? 1 : -1];
 
 /* ---- Ranges: what the writer refuses to save and the reader to load (work_file.h) ---- */
 
-#define PHOTON_FLAGS (PHOTON_DIRECT | PHOTON_CAUSTIC | PHOTON_INDIRECT | PHOTON_SHADOW | \
-                      PHOTON_BACK)
+#define PHOTON_KINDS (PHOTON_DIRECT | PHOTON_CAUSTIC | PHOTON_INDIRECT | PHOTON_SHADOW)
 #define UNIT_TOLERANCE 1e-9 /* |n| of a record's unit normal: normalised in double */
 
 /* Photon i of map m within its ranges; name the file, for messages. */
@@ -39,8 +38,10 @@ static int check_photon(const struct photon *p, size_t m, size_t i, const char *
     if (!isfinite(p->pos[0]) || !isfinite(p->pos[1]) || !isfinite(p->pos[2]))
         return error_set(err, name, 0, "map %zu, photon %zu: its position is not finite", m,
                          i);
-    if ((p->flags & ~PHOTON_FLAGS) != 0)
-        return error_set(err, name, 0, "map %zu, photon %zu: flags %u are not photon kinds",
+    unsigned kind = p->flags & PHOTON_KINDS; /* the other bits, side and batch, take any value */
+    if (kind != PHOTON_DIRECT && kind != PHOTON_CAUSTIC && kind != PHOTON_INDIRECT &&
+        kind != PHOTON_SHADOW)
+        return error_set(err, name, 0, "map %zu, photon %zu: flags %u are not one photon kind",
                          m, i, (unsigned)p->flags);
     if (vec3_max_component(power) > WORK_PHOTON_POWER_MAX)
         return error_set(err, name, 0, "map %zu, photon %zu: power %g W is more than any "

@@ -31,7 +31,7 @@
  *
  * and nothing after. Every value is checked for its range as it is read, not only the
  * checksum (which anyone can compute for a file made by hand): a photon's position is
- * finite, its flags PHOTON_* bits, its power at most WORK_PHOTON_POWER_MAX in each
+ * finite, its flags one photon kind (with any side and batch bits), its power at most WORK_PHOTON_POWER_MAX in each
  * channel; a record's position, irradiance and gradients are finite, its irradiance not
  * negative, its normal of unit length, its radius positive; an illumination map's
  * irradiances are finite and not negative. The writer refuses work outside the same

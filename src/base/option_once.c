@@ -8,19 +8,12 @@
 
 #define TYPED_MAX 160 /* an option and its values as typed, in a message */
 
-/* The option's name in word: all of it, or what comes before '=' in "--NAME=VALUE". */
-static size_t name_length(const char *word)
-{
-    return strncmp(word, "--", 2) == 0 ? strcspn(word, "=") : strlen(word);
-}
-
-/* argv[i] and the n_values words after it (none after "--NAME=VALUE"), as typed, into
- * text[TYPED_MAX]; cut where it is full. */
+/* argv[i] and the n_values words after it, as typed, into text[TYPED_MAX]; cut where it
+ * is full. */
 static void as_typed(int argc, char **argv, int i, int n_values, char text[TYPED_MAX])
 {
-    int n_words = name_length(argv[i]) < strlen(argv[i]) ? 0 : n_values;
     size_t n = (size_t)snprintf(text, TYPED_MAX, "%s", argv[i]);
-    for (int k = 1; k <= n_words && i + k < argc && n < TYPED_MAX; k++)
+    for (int k = 1; k <= n_values && i + k < argc && n < TYPED_MAX; k++)
         n += (size_t)snprintf(text + n, TYPED_MAX - n, " %s", argv[i + k]);
 }
 
@@ -37,10 +30,8 @@ int option_given_again(const char *command, int argc, char **argv, int earlier, 
 int option_once(struct option_once *once, const char *command, int argc, char **argv, int i,
                 int n_values, struct error *err)
 {
-    size_t n = name_length(argv[i]);
     for (int k = 0; k < once->n; k++) {
-        const char *seen = argv[once->at[k]];
-        if (name_length(seen) == n && strncmp(seen, argv[i], n) == 0)
+        if (strcmp(argv[once->at[k]], argv[i]) == 0)
             return option_given_again(command, argc, argv, once->at[k], i, n_values, err);
     }
     if (once->n < OPTION_ONCE_MAX)

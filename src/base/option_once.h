@@ -4,7 +4,7 @@
  *
  * An option that holds one value keeps only one: "--diff a.png --diff b.png" would write
  * b.png alone and say nothing of a.png, so the second is refused rather than silently
- * replacing the first, naming both as typed, values and all:
+ * replacing the first, naming both with their values (--NAME=VALUE as --NAME VALUE):
  *
  *   compare: --diff b.png: given after --diff a.png; give the option once
  *
@@ -24,15 +24,16 @@ struct option_once {
     int n;
 };
 
-/* Records the option at argv[i], which takes n_values words after it (none when written
- * "--NAME=VALUE"). -1 with *err filled by option_given_again() when an option of its name
- * (the word up to an '=' in "--NAME=VALUE") was recorded before. once starts as {{0}, 0}. */
+/* Records the option at argv[i], which takes n_values words after it (argv with each
+ * "--NAME=VALUE" already two words: option_equals.h). -1 with *err filled by
+ * option_given_again() when an option of its name was recorded before. once starts as
+ * {{0}, 0}. */
 int option_once(struct option_once *once, const char *command, int argc, char **argv, int i,
                 int n_values, struct error *err);
 
 /* Fills *err with "COMMAND: NOW: given after BEFORE; give the option once" ("NOW: ..."
  * for command ""), NOW argv[i] and BEFORE argv[earlier], each followed by its n_values
- * words as typed ("--spp 8", "--crop 0 0 4 4"; "--spp=8" alone); returns -1. */
+ * words ("--spp 8", "--crop 0 0 4 4"; "--spp=8" is "--spp 8" by then); returns -1. */
 int option_given_again(const char *command, int argc, char **argv, int earlier, int i,
                        int n_values, struct error *err);
 

@@ -343,6 +343,14 @@ struct block_error image_worst_block(const struct image *a, const struct image *
     return worst;
 }
 
+const struct option_arity compare_options[] = {
+    {"--diff", 1},          {"--diff-absolute", 0},   {"--ref-variance", 1},
+    {"--test-variance", 1}, {"--ref-error", 1},       {"--test-error", 1},
+    {"--ref-block-error", 1}, {"--test-block-error", 1}, {"--confidence", 1},
+    {"--alpha", 1},         {"--block", 1},           {"--exit-status", 0},
+    {"--help", 0},          {NULL, 0},
+};
+
 /* The field an option's value goes to, or NULL when arg is not an option with a value. */
 static const char **option_value(struct compare_args *args, const char *arg)
 {

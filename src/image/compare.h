@@ -7,6 +7,7 @@
 #define PHOTON_COMPARE_H
 
 #include "../base/normal.h"
+#include "../base/option_equals.h"
 #include "image.h"
 
 /* The metrics `photon compare` prints; definitions in compare.c and the README. */
@@ -142,5 +143,8 @@ struct block_verdict image_block_test(const struct image *a, const struct image 
  * bad input (messages on stderr), 1 for a --diff that could not be written; with
  * --exit-status 0 consistent, 1 inconsistent, 2 bad input or no block testable. */
 int compare_command(int argc, char **argv);
+
+/* Its options, for --NAME=VALUE (app/commands.h); a NULL name ends them. */
+extern const struct option_arity compare_options[];
 
 #endif

@@ -25,6 +25,16 @@ struct image *image_create(int width, int height)
     return img;
 }
 
+struct image *image_window(const struct image *img, int x0, int y0, int width, int height)
+{
+    assert(x0 >= 0 && y0 >= 0 && x0 + width <= img->width && y0 + height <= img->height);
+    struct image *window = image_create(width, height);
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++)
+            image_set(window, x, y, image_get(img, x0 + x, y0 + y));
+    return window;
+}
+
 void image_free(struct image *img)
 {
     if (img == NULL)

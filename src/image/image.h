@@ -23,6 +23,8 @@ struct image {
 
 struct image *image_create(int width, int height); /* all pixels zero */
 void image_free(struct image *img);                 /* NULL is a no-op */
+/* A copy of img's width x height pixels from (x0, y0), a window inside it. */
+struct image *image_window(const struct image *img, int x0, int y0, int width, int height);
 
 static inline struct vec3 image_get(const struct image *img, int x, int y)
 {

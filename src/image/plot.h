@@ -7,6 +7,7 @@
 #define PHOTON_PLOT_H
 
 #include "../base/error.h"
+#include "../base/option_equals.h"
 
 /* Runs per plot: each has its own colour, marker and dash pattern (plot.c's styles). */
 #define PLOT_MAX_SERIES 8
@@ -54,5 +55,8 @@ int plot_files(const char *const *csv, int n_csv, const struct plot_spec *spec,
  * [B.csv ...] -o PLOT.svg`: argv[0] is "plot". Returns the exit status: 0, or 2 for bad
  * input (messages on stderr). */
 int plot_command(int argc, char **argv);
+
+/* Its options, for --NAME=VALUE (app/commands.h); a NULL name ends them. */
+extern const struct option_arity plot_options[];
 
 #endif

@@ -24,6 +24,11 @@ struct plot_args {
     struct plot_spec spec;
 };
 
+const struct option_arity plot_options[] = {
+    {"-o", 1}, {"--x", 1}, {"--y", 1}, {"--x-title", 1}, {"--y-title", 1}, {"--linear", 0},
+    {"--help", 0}, {NULL, 0},
+};
+
 /* The value after option argv[*i] into *value (advancing *i); -1 with *err filled when
  * it is missing, or when once is not NULL and the option was recorded there before. */
 static int option_value(int argc, char **argv, int *i, const char **value,

@@ -102,5 +102,6 @@ struct render_result render_direct(const struct scene *scene, const struct rende
     struct radiance_estimator estimator;
     estimator.radiance = direct_radiance;
     estimator.mode = &dm;
+    estimator.sample_taken = NULL;
     return render_pixels(scene, rs, estimator, want_variance, checkpoint, counters);
 }

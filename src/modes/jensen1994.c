@@ -598,7 +598,7 @@ struct render_result render_jensen1994(const struct scene *scene,
     stats->strata_theta = mode.strata_theta;
     stats->strata_phi = mode.strata_phi;
     start = clock();
-    struct radiance_estimator estimator = {camera_ray_radiance, &mode};
+    struct radiance_estimator estimator = {camera_ray_radiance, &mode, NULL};
     if (loaded) {
         global_work_fill_cache(work, mode.cache);
     } else {

@@ -143,8 +143,9 @@ static unsigned char *receiving_primitives(const struct scene *scene)
  * keeps one map and tells CP photons by their bit: searched for CP photons alone, that
  * map must visit every photon within the radius wherever caustics are sparse or absent,
  * so the Cornell box's final pass would grow with the photons: src/modes/measured.md.
- * The copies cost 20 bytes per CP photon.) */
-static struct kdtree *caustic_photons_of(const struct photon_trace *traced)
+ * The copies cost 20 bytes per CP photon.) The next part of balancing's line. */
+static struct kdtree *caustic_photons_of(const struct photon_trace *traced,
+                                         struct watched_progress *balancing)
 {
     struct photon *cp = xmalloc(traced->n_caustic > 0 ? traced->n_caustic : 1, sizeof *cp,
                                 "caustic photons");
@@ -152,7 +153,7 @@ static struct kdtree *caustic_photons_of(const struct photon_trace *traced)
     for (size_t i = 0; i < traced->n_photons; i++)
         if (traced->photons[i].flags & PHOTON_CAUSTIC)
             cp[n++] = traced->photons[i];
-    return balance_kdtree(cp, n); /* takes them */
+    return balance_part(cp, n, balancing); /* takes them */
 }
 
 void count_illumination(const struct illumination_maps *maps,
@@ -204,9 +205,15 @@ int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
     }
     stats->photons_emitted = ts.n_emit;
     stats->photons_caustic = d.photons.n_caustic;
-    out->caustics = caustic_photons_of(&d.photons);
-    out->photons = balance_kdtree(d.photons.photons, d.photons.n_photons); /* takes them */
-    out->glossy = balance_kdtree(d.glossy.photons, d.glossy.n_photons);
+    struct watched_progress balancing; /* the three maps on one line */
+    watched_progress_begin(&balancing, progress, "photon map balancing",
+                           KDTREE_BALANCE_STEPS(d.photons.n_caustic + d.photons.n_photons +
+                                                d.glossy.n_photons), "steps");
+    out->caustics = caustic_photons_of(&d.photons, &balancing);
+    /* the maps take the photons */
+    out->photons = balance_part(d.photons.photons, d.photons.n_photons, &balancing);
+    out->glossy = balance_part(d.glossy.photons, d.glossy.n_photons, &balancing);
+    watched_progress_end(&balancing, 1);
     stats->photons_stored = out->photons->n_photons + out->glossy->n_photons;
     stats->photons_glossy = out->glossy->n_photons;
     stats->bytes_photon_map = kdtree_bytes(out->photons) + kdtree_bytes(out->glossy);

@@ -87,6 +87,7 @@
 #include "photons.h"
 #include "specular_rays.h"
 #include "surface.h"
+#include "trace_progress.h"
 
 /* ---- Sec. 4, pass 2: rendering ---- */
 
@@ -610,8 +611,13 @@ static void set_up(struct jensen1996 *mode, const struct scene *scene,
         clock_t start = clock();
         struct irradiance_settings is = {mode->global_es.k, mode->global_es.max_r2, 0, 0,
                                          settings->count_rim};
+        struct watched_progress line;
+        watched_progress_begin(&line, rs->progress, "precomputed irradiance",
+                               mode->maps.records->n_photons, "records estimated");
         mode->precomputed = precompute_irradiance(mode->maps.global, mode->maps.records, &is,
-                                               settings->disc_coverage ? scene : NULL);
+                                               settings->disc_coverage ? scene : NULL,
+                                               watched_progress_watch(&line));
+        watched_progress_end(&line, 1);
         stats->seconds_precompute = cpu_seconds(start);
         stats->bytes_precomputed += precomputed_irradiance_bytes(mode->precomputed);
     }
@@ -648,7 +654,7 @@ struct render_result render_jensen1996(const struct scene *scene,
     if (mode.cache != NULL && loaded) {
         global_work_fill_cache(settings->work, mode.cache);
     } else if (mode.cache != NULL) {
-        struct radiance_estimator filler = {camera_ray_radiance, &mode};
+        struct radiance_estimator filler = {camera_ray_radiance, &mode, NULL};
         mode.filling_cache = 1;
         fill_cache_pass(scene, rs->seed, filler, mode.cache, rs->progress, counters);
         mode.filling_cache = 0;
@@ -657,7 +663,7 @@ struct render_result render_jensen1996(const struct scene *scene,
     stats->seconds_cache = cpu_seconds(start);
     stats->cache_records = mode.cache != NULL ? irradiance_cache_records(mode.cache) : 0;
     stats->bytes_cache = mode.cache != NULL ? irradiance_cache_bytes(mode.cache) : 0;
-    struct radiance_estimator estimator = {camera_ray_radiance, &mode};
+    struct radiance_estimator estimator = {camera_ray_radiance, &mode, NULL};
     double before = stats->seconds_photons + stats->seconds_cache;
     struct pass2_checkpoint jc = {settings->report, before, stats};
     struct checkpoint report = {pass2_checkpoint_at, &jc};

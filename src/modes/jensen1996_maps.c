@@ -6,7 +6,8 @@
  * one sink that sends it to the global map and, when it is a direct or shadow photon,
  * to its light's visibility map; the caustic trace emits towards bounding spheres of the
  * specular objects. Each trace is balanced into a kd-tree (photon/kdtree.h) as soon as it
- * is complete, and the maps go to the render's global work, which owns them from then on.
+ * is complete, the maps of one trace on one progress line, and the maps go to the render's
+ * global work, which owns them from then on.
  */
 #include "jensen1996_maps.h"
 
@@ -51,9 +52,22 @@ static int store_global(void *context, const struct photon_event *e)
     return 0;
 }
 
-static struct kdtree *balance_trace(struct photon_trace *traced)
+/* The photons of every map the global trace made: the global map's, the records',
+ * the visibility maps'. */
+static size_t photons_stored(const struct global_sink *gs, size_t n_lights)
 {
-    struct kdtree *map = balance_kdtree(traced->photons, traced->n_photons); /* takes them */
+    size_t n = gs->global.n_photons + gs->records.n_photons;
+    for (size_t l = 0; gs->visibility != NULL && l < n_lights; l++)
+        n += gs->visibility[l].n_photons;
+    return n;
+}
+
+/* traced's photons as a map (which takes them), the next part of balancing's line;
+ * traced is left empty. */
+static struct kdtree *balance_trace(struct photon_trace *traced,
+                                    struct watched_progress *balancing)
+{
+    struct kdtree *map = balance_part(traced->photons, traced->n_photons, balancing);
     traced->photons = NULL;
     photon_trace_free(traced);
     return map;
@@ -111,18 +125,22 @@ static int build_global_map(const struct scene *scene, const struct render_setti
     int failed = trace_photons_into(scene, &ts, &sink, &stats->photon_rays) < 0;
     trace_progress_end(&tp, !failed);
     stats->photons_emitted += ts.n_emit;
-    maps->global = balance_trace(&gs.global);
+    struct watched_progress balancing;
+    watched_progress_begin(&balancing, rs->progress, "global photon map balancing",
+                           KDTREE_BALANCE_STEPS(photons_stored(&gs, scene->n_lights)), "steps");
+    maps->global = balance_trace(&gs.global, &balancing);
     stats->photons_global = maps->global->n_photons;
-    maps->records = gs.step > 0 ? balance_trace(&gs.records) : NULL;
+    maps->records = gs.step > 0 ? balance_trace(&gs.records, &balancing) : NULL;
     if (gs.visibility != NULL) {
         maps->visibility = xcalloc(scene->n_lights, sizeof *maps->visibility, "visibility");
         maps->n_lights = scene->n_lights;
         for (size_t l = 0; l < scene->n_lights; l++) {
             stats->photons_shadow += gs.visibility[l].n_shadow;
-            maps->visibility[l] = balance_trace(&gs.visibility[l]);
+            maps->visibility[l] = balance_trace(&gs.visibility[l], &balancing);
         }
         xfree(gs.visibility);
     }
+    watched_progress_end(&balancing, 1);
     return failed ? too_many_photons(err) : 0;
 }
 
@@ -150,7 +168,11 @@ static int build_caustic_map(const struct scene *scene, const struct render_sett
         if (status == 0) {
             stats->photon_rays += traced.rays;
             stats->photons_emitted += traced.n_emitted;
-            maps->caustic = balance_trace(&traced);
+            struct watched_progress balancing;
+            watched_progress_begin(&balancing, rs->progress, "caustic photon map balancing",
+                                   KDTREE_BALANCE_STEPS(traced.n_photons), "steps");
+            maps->caustic = balance_trace(&traced, &balancing);
+            watched_progress_end(&balancing, 1);
             stats->photons_caustic = maps->caustic->n_photons;
         }
     }

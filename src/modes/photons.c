@@ -32,6 +32,7 @@
 #include "../photon/estimate.h"
 #include "../photon/trace.h"
 #include "../scene/brdf.h"
+#include "photons_error.h"
 #include "surface.h"
 #include "trace_progress.h"
 
@@ -42,11 +43,13 @@ struct photons_mode {
     struct nearest *nn;          /* borrowed from render_photons(): the one scratch,
                                     overwritten by every estimate                       */
     int max_depth;               /* longest chain of specular bounces from the camera   */
+    struct photons_error *error; /* borrowed, NULL without an error image: every
+                                    estimate's batches go there (photons_error.h)       */
 };
 
-/* Eq. 3 / Eq. 5 at the surface s, seen along s->wo. */
+/* Eq. 3 / Eq. 5 at the surface s, seen along s->wo through the path weight beta. */
 static struct vec3 estimate_at(const struct photons_mode *pm, const struct surface *s,
-                               const struct shading_frame *frame)
+                               const struct shading_frame *frame, struct vec3 beta)
 {
     struct estimate_point at;
     at.x = s->p;
@@ -55,7 +58,12 @@ static struct vec3 estimate_at(const struct photons_mode *pm, const struct surfa
     at.material = s->material;
     at.frame = frame;
     at.back = !s->front;
-    return radiance_estimate(pm->map, &at, &pm->es, pm->nn);
+    if (pm->error == NULL)
+        return radiance_estimate(pm->map, &at, &pm->es, pm->nn);
+    struct estimate_batches batches;
+    struct vec3 l = radiance_estimate_in_batches(pm->map, &at, &pm->es, pm->nn, &batches);
+    photons_error_add_estimate(pm->error, beta, &batches);
+    return l;
 }
 
 static struct vec3 photons_radiance(const void *mode, struct ray ray, struct rng *rng,
@@ -73,12 +81,18 @@ static struct vec3 photons_radiance(const void *mode, struct ray ray, struct rng
                                                                TRANSPORT_RADIANCE);
         struct vec3 le = surface_emission(&s);
         if (brdf_has_non_delta(s.material))
-            le = vec3_add(le, estimate_at(pm, &s, &frame));
+            le = vec3_add(le, estimate_at(pm, &s, &frame, beta));
         l = vec3_add(l, vec3_mul(beta, le));
         if (!brdf_has_delta(s.material) || depth >= pm->max_depth ||
             !specular_bounce(&s, &frame, rng, &beta, &ray))
             return l;
     }
+}
+
+static void photons_sample_taken(const void *mode, size_t pixel, int counted)
+{
+    const struct photons_mode *pm = mode;
+    photons_error_sample_taken(pm->error, pixel, counted);
 }
 
 /* PHOTONS_RADIUS_FRACTION of the diagonal of the scene's bounding box, so the limit
@@ -127,7 +141,12 @@ static struct kdtree *build_global_map(const struct scene *scene,
     stats->photons_emitted = traced.n_emitted;
     stats->photon_rays = traced.rays;
     start = clock();
-    struct kdtree *map = balance_kdtree(traced.photons, traced.n_photons); /* takes them */
+    struct watched_progress balancing;
+    watched_progress_begin(&balancing, rs->progress, "global photon map balancing",
+                           KDTREE_BALANCE_STEPS(traced.n_photons), "steps");
+    struct kdtree *map = balance_part(traced.photons, traced.n_photons, &balancing); /* takes
+                                                                                    them */
+    watched_progress_end(&balancing, 1);
     stats->seconds_balance = cpu_seconds(start);
     traced.photons = NULL;
     photon_trace_free(&traced);
@@ -162,17 +181,37 @@ static const struct kdtree *global_map(const struct scene *scene,
     return map;
 }
 
-/* A checkpoint that adds the photon pass's seconds to the render's before passing on. */
+/* The written window of an image of kept's window (freed); NULL stays NULL. */
+static struct image *written_window(const struct kept_window *kept, struct image *img)
+{
+    if (img == NULL || (img->width == kept->out_width && img->height == kept->out_height))
+        return img;
+    struct image *written = image_window(img, kept->out_x0, kept->out_y0, kept->out_width,
+                                         kept->out_height);
+    image_free(img);
+    return written;
+}
+
+/* A checkpoint that adds the photon pass's seconds to the render's and shows only the
+ * written window before passing on. */
 struct shifted_checkpoint {
-    const struct checkpoint *inner; /* borrowed                        */
-    double seconds;                 /* added to every checkpoint's time */
+    const struct checkpoint *inner;  /* borrowed                        */
+    double seconds;                  /* added to every checkpoint's time */
+    const struct kept_window *kept;  /* borrowed: the window rendered and the one written */
 };
 
 static double shifted_at(void *context, const struct image *mean, long long work,
                          double seconds)
 {
     const struct shifted_checkpoint *sc = context;
-    return sc->inner->at(sc->inner->context, mean, work, seconds + sc->seconds);
+    const struct kept_window *k = sc->kept;
+    if (mean->width == k->out_width && mean->height == k->out_height)
+        return sc->inner->at(sc->inner->context, mean, work, seconds + sc->seconds);
+    struct image *written = image_window(mean, k->out_x0, k->out_y0, k->out_width,
+                                         k->out_height);
+    double spent = sc->inner->at(sc->inner->context, written, work, seconds + sc->seconds);
+    image_free(written);
+    return spent;
 }
 
 struct render_result render_photons(const struct scene *scene, const struct render_settings *rs,
@@ -203,15 +242,36 @@ struct render_result render_photons(const struct scene *scene, const struct rend
     pm.es.count_rim = ps->count_rim;
     pm.nn = nearest_create(ps->gather);
     pm.max_depth = rs->max_depth;
+    int want_error = rs->error_confidence > 0;
+    struct photons_error error;
+    struct kept_window kept; /* without an error image, the window asked for */
+    if (want_error) {
+        photons_error_create(&error, rs, scene->width, scene->height);
+        kept = error.kept;
+    } else {
+        kept_window_init(&kept, rs, scene->width, scene->height, 0);
+    }
+    pm.error = want_error ? &error : NULL;
+    struct render_settings pixels = kept.grown;
+    pixels.error_confidence = 0.0; /* the map's batches state the error, not the samples */
     struct radiance_estimator estimator;
     estimator.radiance = photons_radiance;
     estimator.mode = &pm;
+    estimator.sample_taken = want_error ? photons_sample_taken : NULL;
     double photon_seconds = stats->seconds_photons + stats->seconds_balance;
-    struct shifted_checkpoint shifted = {checkpoint, photon_seconds};
+    struct shifted_checkpoint shifted = {checkpoint, photon_seconds, &kept};
     struct checkpoint at_shifted = {shifted_at, &shifted};
-    result = render_pixels(scene, rs, estimator, want_variance,
+    result = render_pixels(scene, &pixels, estimator, want_variance,
                            checkpoint != NULL ? &at_shifted : NULL, counters);
     result.seconds += photon_seconds;
+    if (want_error) {
+        clock_t start = clock();
+        photons_error_result(&error, result.image, &result);
+        result.seconds += cpu_seconds(start);
+        photons_error_free(&error);
+    }
+    result.image = written_window(&kept, result.image);
+    result.variance = written_window(&kept, result.variance);
     nearest_free(pm.nn);
     global_work_free(&own_work);
     return result;

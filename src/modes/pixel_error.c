@@ -97,7 +97,7 @@ struct image *pooled_error_image(const struct pixel_sums *sums, int x0, int y0, 
     size_t n_pixels = (size_t)sums->width * (size_t)sums->height;
     struct spread *spread = xcalloc(n_pixels, sizeof *spread, "pixel spreads");
     for (size_t i = 0; i < n_pixels; i++) {
-        assert(sums->n[i] >= ERROR_MIN_SPP);
+        assert(sums->n[i] >= 2);
         for (int c = 0; c < 3; c++) {
             spread[i].mean[c] = sums->sum[3 * i + c] / sums->n[i];
             spread[i].deviations[c] = batch_deviations(sums, i, c, &spread[i].freedom);

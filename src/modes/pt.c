@@ -152,5 +152,6 @@ struct render_result render_pt(const struct scene *scene, const struct render_se
     struct radiance_estimator estimator;
     estimator.radiance = pt_radiance;
     estimator.mode = &pt;
+    estimator.sample_taken = NULL;
     return render_pixels(scene, rs, estimator, want_variance, checkpoint, counters);
 }

@@ -211,11 +211,14 @@ static void render_pass(const struct scene *scene, const struct render_settings 
             struct rng rng;
             struct ray ray = camera_sample(scene, rs->seed, x, y, s, &rng);
             struct vec3 l = est.radiance(est.mode, ray, &rng, counters);
-            if (!vec3_is_finite(l)) {
+            int counted = vec3_is_finite(l);
+            if (!counted) {
                 counters->nonfinite_samples++;
                 l = vec3_zero();
             }
             add_sample(acc, i, l);
+            if (est.sample_taken != NULL)
+                est.sample_taken(est.mode, i, counted);
         }
 }
 

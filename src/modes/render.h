@@ -101,6 +101,11 @@ struct radiance_estimator {
     struct vec3 (*radiance)(const void *mode, struct ray ray, struct rng *rng,
                             struct render_counters *counters);
     const void *mode; /* borrowed; passed back to radiance() */
+    /* NULL, or called after each radiance() with the index of the pixel whose sample it
+     * was, row-major in the window render_pixels() renders (rs's, with no error image),
+     * and whether the sample counted (a non-finite one counts as zero): for a mode that
+     * keeps more of a sample than its radiance (photons.c's batches). */
+    void (*sample_taken)(const void *mode, size_t pixel, int counted);
 };
 
 /* CPU seconds since start, a clock() reading: what every mode's timings count. */

@@ -1,38 +1,64 @@
 /*
- * modes/trace_progress.c -- the progress line of a photon map's trace (trace_progress.h).
+ * modes/trace_progress.c -- the progress lines of watched phases (trace_progress.h).
  */
 #include "trace_progress.h"
 
 #include <time.h>
 
-static void show(struct trace_progress *tp, size_t emitted)
+static void show(struct watched_progress *wp, size_t done)
 {
-    progress_print(&tp->line, "%zu of %zu photons emitted", emitted, tp->n_emit);
+    progress_print(&wp->line, "%zu of %zu %s", done, wp->total, wp->units);
 }
 
-/* The tracer's watch: a line when one is due. */
-static void at(void *context, size_t emitted)
+/* The work's watch: a line when one is due. */
+static void at(void *context, size_t done)
 {
-    struct trace_progress *tp = context;
-    tp->emitted = emitted;
-    if (progress_update(&tp->line, (double)emitted, time(NULL)))
-        show(tp, emitted);
+    struct watched_progress *wp = context;
+    wp->done = wp->before + done;
+    if (progress_update(&wp->line, (double)wp->done, time(NULL)))
+        show(wp, wp->done);
+}
+
+void watched_progress_begin(struct watched_progress *wp, int on, const char *phase,
+                            size_t total, const char *units)
+{
+    wp->units = units;
+    wp->total = total;
+    wp->before = 0;
+    wp->done = 0;
+    progress_begin(&wp->line, on ? stderr : NULL, phase, (double)total, time(NULL));
+    wp->watch.at = at;
+    wp->watch.context = wp;
+}
+
+const struct work_watch *watched_progress_watch(const struct watched_progress *wp)
+{
+    return wp->line.out != NULL ? &wp->watch : NULL;
+}
+
+void watched_progress_end(struct watched_progress *wp, int finished)
+{
+    size_t done = finished ? wp->total : wp->done;
+    if (progress_end(&wp->line, (double)done, time(NULL)))
+        show(wp, done);
+}
+
+struct kdtree *balance_part(struct photon *photons, size_t n, struct watched_progress *wp)
+{
+    struct kdtree *map = balance_kdtree_watched(photons, n, watched_progress_watch(wp));
+    wp->before += KDTREE_BALANCE_STEPS(n);
+    wp->done = wp->before;
+    return map;
 }
 
 void trace_progress_begin(struct trace_progress *tp, int on, const char *phase,
                           struct trace_settings *ts)
 {
-    tp->n_emit = ts->n_emit;
-    tp->emitted = 0;
-    progress_begin(&tp->line, on ? stderr : NULL, phase, (double)ts->n_emit, time(NULL));
-    tp->watch.at = at;
-    tp->watch.context = tp;
-    ts->watch = on ? &tp->watch : NULL;
+    watched_progress_begin(&tp->phase, on, phase, ts->n_emit, "photons emitted");
+    ts->watch = watched_progress_watch(&tp->phase);
 }
 
 void trace_progress_end(struct trace_progress *tp, int finished)
 {
-    size_t emitted = finished ? tp->n_emit : tp->emitted;
-    if (progress_end(&tp->line, (double)emitted, time(NULL)))
-        show(tp, emitted);
+    watched_progress_end(&tp->phase, finished);
 }

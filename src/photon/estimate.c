@@ -18,11 +18,17 @@
 #include "estimate.h"
 
 #include <assert.h>
+#include <string.h>
 
-struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_point *at,
-                              const struct estimate_settings *es, struct nearest *nn)
+/* Eq. 3 / Eq. 5 at at->x; with batches also each batch's share and the inner disc's
+ * (estimate.h). */
+static struct vec3 estimate(const struct kdtree *map, const struct estimate_point *at,
+                            const struct estimate_settings *es, struct nearest *nn,
+                            struct estimate_batches *batches)
 {
     assert(es->cone_k == 0 || es->cone_k >= 1);
+    if (batches != NULL)
+        memset(batches, 0, sizeof *batches);
     struct photon_query q;
     q.x = at->x;
     q.max_r2 = es->max_r2;
@@ -31,6 +37,12 @@ struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_po
     locate_photons_of_kinds(map, &q, nn); /* sets found, photon[], d2[], r2 */
     if (nn->found == 0 || !(nn->r2 > 0))
         return vec3_zero(); /* no photons, or all exactly at x: no area */
+    /* Eq. 3: L = sum f_r Delta Phi_p / (pi r^2). Eq. 5 also divides by the cone's
+     * normalisation 1 - 2/(3k), which is at least 1/3 because k >= 1. The inner disc, of
+     * radius r / sqrt(2), has half the area, and its cone half the cone's. */
+    double area = PI * nn->r2;
+    if (es->cone_k > 0)
+        area *= 1.0 - 2.0 / (3.0 * es->cone_k);
     struct vec3 sum = vec3_zero();
     /* A photon marks r when k were found, or when the search had no maximum radius (a
      * map of fewer than k photons): that one, on the rim, is still to be left out. */
@@ -50,18 +62,42 @@ struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_po
         struct vec3 wi = photon_direction(p);
         if (((p->flags & PHOTON_BACK) != 0) != (at->back != 0) || !(vec3_dot(wi, at->ng) > 0))
             continue;
-        struct vec3 fr = brdf_eval(at->material, at->frame, at->wo, wi);
+        struct vec3 flux = vec3_mul(brdf_eval(at->material, at->frame, at->wo, wi),
+                                    photon_power(p));
         double w = 1.0;
         if (es->cone_k > 0) /* Eq. 4: w_p = max(0, 1 - d_p / (k r)) */
             w = fmax(0.0, 1.0 - sqrt(nn->d2[i] / nn->r2) / es->cone_k);
-        sum = vec3_add(sum, vec3_scale(vec3_mul(fr, photon_power(p)), w));
+        sum = vec3_add(sum, vec3_scale(flux, w));
+        if (batches == NULL)
+            continue;
+        unsigned b = photon_batch(p);
+        batches->disc[b] = vec3_add(batches->disc[b], vec3_scale(flux, w));
+        if (2.0 * nn->d2[i] < nn->r2) {
+            double w_inner = 1.0;
+            if (es->cone_k > 0)
+                w_inner = fmax(0.0, 1.0 - sqrt(2.0 * nn->d2[i] / nn->r2) / es->cone_k);
+            batches->inner[b] = vec3_add(batches->inner[b], vec3_scale(flux, w_inner));
+        }
     }
-    /* Eq. 3: L = sum f_r Delta Phi_p / (pi r^2). Eq. 5 also divides by the cone's
-     * normalisation 1 - 2/(3k), which is at least 1/3 because k >= 1. */
-    double area = PI * nn->r2;
-    if (es->cone_k > 0)
-        area *= 1.0 - 2.0 / (3.0 * es->cone_k);
+    for (int b = 0; batches != NULL && b < PHOTON_BATCHES; b++) {
+        batches->disc[b] = vec3_scale(batches->disc[b], 1.0 / area);
+        batches->inner[b] = vec3_scale(batches->inner[b], 2.0 / area);
+    }
     return vec3_scale(sum, 1.0 / area);
+}
+
+struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_point *at,
+                              const struct estimate_settings *es, struct nearest *nn)
+{
+    return estimate(map, at, es, nn, NULL);
+}
+
+struct vec3 radiance_estimate_in_batches(const struct kdtree *map,
+                                         const struct estimate_point *at,
+                                         const struct estimate_settings *es,
+                                         struct nearest *nn, struct estimate_batches *batches)
+{
+    return estimate(map, at, es, nn, batches);
 }
 
 /* The energy photon p adds at a surface with normal n: all of it when it landed on a

@@ -56,6 +56,27 @@ struct estimate_settings {
 struct vec3 radiance_estimate(const struct kdtree *map, const struct estimate_point *at,
                               const struct estimate_settings *es, struct nearest *nn);
 
+/* The estimate split by the photons' batches (photon.h, PHOTON_BATCHES), for a bound on
+ * its error (modes/photons.c):
+ *   disc[b]:  batch b's photons' part of the estimate: the estimate is the sum over b;
+ *   inner[b]: the same over the inner disc of radius r / sqrt(2), half the area (the
+ *             cone's radius scaled with it), whose density estimate's bias, Lap(L) r^2 / 16
+ *             for the plain disc, is half the whole disc's, so 2 (sum disc - sum inner)
+ *             estimates the estimate's bias (modes/sppm_error.h).
+ * PHOTON_BATCHES times one batch's part is an estimate from that batch alone, at the
+ * whole map's radius: the batches' photons are independent of each other, so the
+ * spread of those estimates states the map's noise. */
+struct estimate_batches {
+    struct vec3 disc[PHOTON_BATCHES];
+    struct vec3 inner[PHOTON_BATCHES];
+};
+
+/* radiance_estimate(), and its batches into *batches. */
+struct vec3 radiance_estimate_in_batches(const struct kdtree *map,
+                                         const struct estimate_point *at,
+                                         const struct estimate_settings *es,
+                                         struct nearest *nn, struct estimate_batches *batches);
+
 /* ---- irradiance (Jensen and Christensen 1994, Sec. 3.3) ---- */
 
 /* DIFFERENTIAL_RUN: the default run length of differential checking below. Measured on a

@@ -23,7 +23,8 @@
  * memory of a map of millions of photons: the selections leave the traced array holding
  * the tree laid out in order (left subtree, root, right subtree at every node), and
  * heap_from_inorder() then moves each record to its heap slot by following the
- * permutation's cycles, marking what it placed in the plane byte's spare bit.
+ * permutation's cycles, marking what it placed in the plane byte's spare bit. Both count
+ * the photons they place for a watch (balance_kdtree_watched()).
  *
  * Owns photons[]: taken from the caller by balance_kdtree(), released by kdtree_free().
  * Elsewhere: photon.c packs the records; the radiance estimates read the search results.
@@ -118,19 +119,33 @@ static void select_nth(struct photon *photons, size_t m, size_t nth, int axis)
     }
 }
 
+/* A balancing's count of its steps, for its watch (balance_kdtree_watched()). */
+struct balancing {
+    const struct work_watch *watch; /* NULL: none */
+    size_t steps;                   /* photons placed so far, each counted twice */
+};
+
+/* One photon placed: the watch is told every KDTREE_WATCH_EVERY steps. */
+static void step(struct balancing *b)
+{
+    if (++b->steps % KDTREE_WATCH_EVERY == 0 && b->watch != NULL)
+        b->watch->at(b->watch->context, b->steps);
+}
+
 /* Orders photons[0..m-1] (m >= 1) as the subtree they make laid out in order: the
  * left subtree first, then the root (its plane set), then the right subtree. Recursion
  * depth is the tree's depth, at most KDTREE_MAX_DEPTH. */
-static void order_subtree(struct photon *photons, size_t m)
+static void order_subtree(struct photon *photons, size_t m, struct balancing *b)
 {
     int axis = widest_axis(photons, m);
     size_t n_left = left_subtree_size(m);
     select_nth(photons, m, n_left, axis);
     photons[n_left].plane = (unsigned char)axis;
+    step(b);
     if (n_left > 0)
-        order_subtree(photons, n_left);
+        order_subtree(photons, n_left, b);
     if (m - n_left > 1)
-        order_subtree(photons + n_left + 1, m - n_left - 1);
+        order_subtree(photons + n_left + 1, m - n_left - 1, b);
 }
 
 static int floor_log2(size_t v) /* v >= 1 */
@@ -160,7 +175,7 @@ static size_t inorder_rank(size_t h, size_t n, int depth)
 
 /* Moves nodes a[1..n], laid out in order, to heap order in place: node h takes the
  * record at inorder_rank(h), following each cycle of that permutation once. */
-static void heap_from_inorder(struct photon *a, size_t n)
+static void heap_from_inorder(struct photon *a, size_t n, struct balancing *b)
 {
     int depth = floor_log2(n);
     for (size_t h = 1; h <= n; h++) {
@@ -172,10 +187,12 @@ static void heap_from_inorder(struct photon *a, size_t n)
              from = inorder_rank(to, n, depth)) {
             a[to] = a[from];
             a[to].plane |= PLACED;
+            step(b);
             to = from;
         }
         a[to] = first;
         a[to].plane |= PLACED;
+        step(b);
     }
     for (size_t h = 1; h <= n; h++)
         a[h].plane &= (unsigned char)~PLACED;
@@ -183,15 +200,22 @@ static void heap_from_inorder(struct photon *a, size_t n)
 
 struct kdtree *balance_kdtree(struct photon *photons, size_t n)
 {
+    return balance_kdtree_watched(photons, n, NULL);
+}
+
+struct kdtree *balance_kdtree_watched(struct photon *photons, size_t n,
+                                      const struct work_watch *watch)
+{
     assert(n < SIZE_MAX / 2 && (n == 0 || photons != NULL));
+    struct balancing b = {watch, 0};
     struct kdtree *map = xmalloc(1, sizeof *map, "photon map");
     /* in place: one record more for the unused heap[0], none beside the array */
     photons = xrealloc(photons, n + 1, sizeof *photons, "photon map");
     memmove(photons + 1, photons, n * sizeof *photons);
     memset(&photons[0], 0, sizeof photons[0]);
     if (n > 0) {
-        order_subtree(photons + 1, n);
-        heap_from_inorder(photons, n);
+        order_subtree(photons + 1, n, &b);
+        heap_from_inorder(photons, n, &b);
     }
     map->photons = photons;
     map->n_photons = n;

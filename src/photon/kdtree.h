@@ -14,6 +14,7 @@
 
 #include <stddef.h>
 
+#include "../base/watch.h"
 #include "photon.h"
 
 struct kdtree {
@@ -28,6 +29,17 @@ struct kdtree {
  * time. Sets every photon's plane. Never fails (out of memory is fatal()). */
 struct kdtree *balance_kdtree(struct photon *photons, size_t n);
 void kdtree_free(struct kdtree *map); /* NULL is a no-op */
+
+/* balance_kdtree(), telling watch (NULL: none) how far it has gone, in steps of 2n: a
+ * step places one photon, first at its node among the others (the selections, most of
+ * the time), then in its heap slot (a pass of its own, a fifth of the time or less).
+ * watch->at(context, steps) whenever steps is a positive multiple of
+ * KDTREE_WATCH_EVERY. The map is the same, watched or not. */
+struct kdtree *balance_kdtree_watched(struct photon *photons, size_t n,
+                                      const struct work_watch *watch);
+
+#define KDTREE_WATCH_EVERY 4096 /* steps: about a millisecond of balancing */
+#define KDTREE_BALANCE_STEPS(n) (2 * (size_t)(n)) /* the steps for n photons */
 
 /* A map made from records already in heap order, as a map holds them: heap[1..n] (heap[0]
  * is unused and set to zeros here), n + 1 records, taken over as they are, so a map read

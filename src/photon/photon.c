@@ -132,3 +132,8 @@ struct vec3 photon_normal(const struct photon *p)
 {
     return photon_direction(p); /* the bytes are one; what they mean is the map's */
 }
+
+unsigned photon_batch(const struct photon *p)
+{
+    return ((unsigned)p->flags & PHOTON_BATCH_BITS) >> PHOTON_BATCH_SHIFT;
+}

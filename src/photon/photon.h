@@ -39,6 +39,14 @@
  * as one from outside, and a curved surface turns the normal between a photon and the
  * point estimated (radiance_estimate, estimate.h). Bit 7, apart from the kinds. */
 #define PHOTON_BACK 128u
+/* Not a kind either: the photon's batch, its emission index modulo PHOTON_BATCHES, in
+ * bits 4-6. The batches split a map into PHOTON_BATCHES independent maps (the photons of
+ * one emitted path share one batch), each with 1 / PHOTON_BATCHES of the photons, whose
+ * estimates' spread states the noise every pixel sharing the map shares
+ * (estimate.h, struct estimate_batches). */
+#define PHOTON_BATCHES 8
+#define PHOTON_BATCH_SHIFT 4
+#define PHOTON_BATCH_BITS (7u << PHOTON_BATCH_SHIFT)
 
 /* The paper's 20 bytes per photon; photon.c alone packs and unpacks them. */
 struct photon {
@@ -75,5 +83,7 @@ struct vec3 photon_direction(const struct photon *p);
  * place of wi (1994's photons; 1996's records of precomputed irradiance): the same
  * bytes, rounding and tables as photon_direction(), named for what they hold there. */
 struct vec3 photon_normal(const struct photon *p);
+/* The photon's batch, 0..PHOTON_BATCHES - 1 (PHOTON_BATCH_BITS). */
+unsigned photon_batch(const struct photon *p);
 
 #endif

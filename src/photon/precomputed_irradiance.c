@@ -21,7 +21,8 @@
 struct precomputed_irradiance *precompute_irradiance(const struct kdtree *map,
                                                      const struct kdtree *records,
                                                      const struct irradiance_settings *is,
-                                                     const struct scene *coverage)
+                                                     const struct scene *coverage,
+                                                     const struct work_watch *watch)
 {
     assert(is->run == 0 && is->n >= 1);
     struct precomputed_irradiance *pi = xmalloc(1, sizeof *pi, "precomputed irradiance");
@@ -39,6 +40,8 @@ struct precomputed_irradiance *precompute_irradiance(const struct kdtree *map,
         pi->value[i].e[1] = (float)e.y;
         pi->value[i].e[2] = (float)e.z;
         pi->value[i].r2 = (float)nn->r2;
+        if (watch != NULL && i % PRECOMPUTED_WATCH_EVERY == 0)
+            watch->at(watch->context, i);
     }
     nearest_free(nn);
     return pi;

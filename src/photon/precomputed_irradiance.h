@@ -22,6 +22,7 @@
 
 #include <stddef.h>
 
+#include "../base/watch.h"
 #include "../scene/scene.h"
 #include "estimate.h"
 #include "kdtree.h"
@@ -59,11 +60,16 @@ struct precomputed_irradiance {
  * coverage: NULL, or the scene the photons were traced in: then each E is divided by the
  * share of its disc that can hold photons (disc_coverage.h), so that a record by an open
  * edge or a wall is not dark by the part of pi r^2 that lies beyond.
+ * watch (NULL: none) is told the records estimated so far whenever they are a positive
+ * multiple of PRECOMPUTED_WATCH_EVERY (base/watch.h); the values do not depend on it.
  * Allocates its own scratch; never fails (out of memory is fatal()). */
 struct precomputed_irradiance *precompute_irradiance(const struct kdtree *map,
                                                      const struct kdtree *records,
                                                      const struct irradiance_settings *is,
-                                                     const struct scene *coverage);
+                                                     const struct scene *coverage,
+                                                     const struct work_watch *watch);
+
+#define PRECOMPUTED_WATCH_EVERY 256 /* records: a few milliseconds of estimates */
 void precomputed_irradiance_free(struct precomputed_irradiance *pi); /* NULL: no-op */
 
 /* Bytes the values take (the records' tree is counted with the maps: kdtree_bytes). */

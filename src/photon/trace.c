@@ -83,6 +83,7 @@ struct photon_path {
     struct vec3 power; /* Delta Phi it carries, W per channel */
     int specular_only; /* whether every bounce so far was specular (L S* so far): a
                           delta lobe, or with by_parts the specular part f_r,s          */
+    unsigned batch;    /* its emission index modulo PHOTON_BATCHES (photon.h)          */
 };
 
 static struct photon_hit photon_hit_at(const struct scene *scene, const struct hit *hit,
@@ -118,10 +119,11 @@ int photons_land_at(const struct scene *scene, const struct hit *hit, struct vec
 
 /* The photon stored at h: what the tracer hands to its sink. */
 static struct photon_event photon_event_at(const struct photon_hit *h, struct vec3 power,
-                                           unsigned kind, int light)
+                                           unsigned kind, const struct photon_path *path)
 {
     struct photon_event e;
-    e.light = light;
+    e.light = path->light;
+    e.batch = path->batch;
     e.position = h->p;
     e.normal = h->ng;
     e.wi = h->wi;
@@ -147,7 +149,9 @@ int photon_trace_store(struct photon_trace *out, size_t max_stored, const struct
         out->capacity = grown;
     }
     unsigned side = e->back ? PHOTON_BACK : 0u; /* exact here; wi is rounded in the record */
-    out->photons[out->n_photons++] = photon_pack(e->position, e->power, e->wi, e->kind | side);
+    unsigned batch = e->batch << PHOTON_BATCH_SHIFT;
+    out->photons[out->n_photons++] = photon_pack(e->position, e->power, e->wi,
+                                                 e->kind | side | batch);
     out->n_direct += (e->kind & PHOTON_DIRECT) != 0;
     out->n_caustic += (e->kind & PHOTON_CAUSTIC) != 0;
     out->n_indirect += (e->kind & PHOTON_INDIRECT) != 0;
@@ -203,7 +207,8 @@ static int emit_photon(const struct scene *scene, const struct trace_settings *t
  * its first hit (at most max_depth of them), a zero-power shadow photon at each one that
  * holds photons. ray: the emitted ray; first: its first hit. -1 when the map is full. */
 static int store_shadow_photons(const struct scene *scene, const struct trace_settings *ts,
-                                struct ray ray, const struct photon_hit *first, int light,
+                                struct ray ray, const struct photon_hit *first,
+                                const struct photon_path *path,
                                 const struct photon_sink *sink, unsigned long long *rays)
 {
     struct photon_hit h = *first;
@@ -215,7 +220,7 @@ static int store_shadow_photons(const struct scene *scene, const struct trace_se
             return 0;
         h = photon_hit_at(scene, &hit, ray.dir);
         if (holds_photons(&h)) {
-            struct photon_event e = photon_event_at(&h, vec3_zero(), PHOTON_SHADOW, light);
+            struct photon_event e = photon_event_at(&h, vec3_zero(), PHOTON_SHADOW, path);
             if (sink->store(sink->context, &e) < 0)
                 return -1;
         }
@@ -300,7 +305,8 @@ static int trace_photon(const struct scene *scene, const struct trace_settings *
                         const struct photon_sink *sink, unsigned long long *rays)
 {
     struct rng rng = rng_stream(ts->seed, STREAM_PHOTON, ts->pass, i);
-    struct photon_path path = {-1, {0, 0, 0}, 1};
+    struct photon_path path = {-1, {0, 0, 0}, 1, 0};
+    path.batch = (unsigned)(i % PHOTON_BATCHES);
     struct ray ray;
     double u[6];
     rng_uniforms(&rng, u, 6);
@@ -315,13 +321,13 @@ static int trace_photon(const struct scene *scene, const struct trace_settings *
             return 0;
         struct photon_hit h = photon_hit_at(scene, &hit, ray.dir);
         if (depth == 0 && (ts->store & PHOTON_SHADOW) &&
-            store_shadow_photons(scene, ts, ray, &h, path.light, sink, rays) < 0)
+            store_shadow_photons(scene, ts, ray, &h, &path, sink, rays) < 0)
             return -1;
         unsigned kind = depth == 0 ? PHOTON_DIRECT
                                    : path.specular_only ? PHOTON_CAUSTIC : PHOTON_INDIRECT;
         struct vec3 stored = vec3_scale(path.power, shading_share(&h.frame, h.ng, h.wi));
         if ((ts->store & kind) && holds_photons(&h) && photon_power_fits(stored)) {
-            struct photon_event e = photon_event_at(&h, stored, kind, path.light);
+            struct photon_event e = photon_event_at(&h, stored, kind, &path);
             if (sink->store(sink->context, &e) < 0)
                 return -1;
         }

@@ -31,6 +31,7 @@
 #include <stdint.h>
 
 #include "../base/error.h"
+#include "../base/watch.h"
 #include "../scene/emit.h"
 #include "../scene/scene.h"
 #include "photon.h"
@@ -46,13 +47,6 @@
 
 struct projection_maps;
 
-/* Told how far a trace has gone: at(context, i) before photon i whenever i is a positive
- * multiple of TRACE_WATCH_EVERY. The caller's progress line hangs on it; the tracer keeps
- * no clock and prints nothing. */
-struct trace_watch {
-    void (*at)(void *context, size_t emitted);
-    void *context;
-};
 
 #define TRACE_WATCH_EVERY 4096 /* photons: a few milliseconds of tracing, often enough for
                                   a line a second, too seldom to cost anything          */
@@ -83,7 +77,10 @@ struct trace_settings {
                                                whose every bounce took f_r,s, glossy lobes
                                                included (Jensen 1996, Eq. 2); 0: one whose
                                                every bounce took a delta lobe            */
-    const struct trace_watch *watch;        /* borrowed; NULL: none                       */
+    const struct work_watch *watch; /* borrowed; NULL: none. Told how far the trace has
+                                       gone (base/watch.h), its work the photons
+                                       emitted, before photon i whenever i is a positive
+                                       multiple of TRACE_WATCH_EVERY                    */
 };
 
 /* The traced photons and what it took to make them. */
@@ -109,6 +106,7 @@ struct photon_event {
     int prim;             /* the primitive it hit, and where on it: struct hit's u, v   */
     double u, v;
     int back;             /* 1: it arrived on the primitive's back (PHOTON_BACK)        */
+    unsigned batch;       /* its path's emission index modulo PHOTON_BATCHES            */
 };
 
 /* Where stored photons go: a photon map packs them (trace_photons), progressive photon

@@ -1,0 +1,79 @@
+/*
+ * modes/photons_error.c -- the error image of `--mode photons` (photons_error.h).
+ */
+#include "photons_error.h"
+
+#include <string.h>
+
+#include "../base/alloc.h"
+
+void photons_error_create(struct photons_error *pe, const struct render_settings *rs,
+                          int width, int height)
+{
+    kept_window_init(&pe->kept, rs, width, height, SPPM_ERROR_MARGIN);
+    size_t n = (size_t)pe->kept.width * (size_t)pe->kept.height;
+    memset(&pe->sample, 0, sizeof pe->sample);
+    pe->pixels = xcalloc(n, sizeof *pe->pixels, "photon batches");
+    pe->samples = xcalloc(n, sizeof *pe->samples, "photon batch samples");
+}
+
+static void add_batches(struct estimate_batches *to, struct vec3 weight,
+                        const struct estimate_batches *from)
+{
+    for (int b = 0; b < PHOTON_BATCHES; b++) {
+        to->disc[b] = vec3_add(to->disc[b], vec3_mul(weight, from->disc[b]));
+        to->inner[b] = vec3_add(to->inner[b], vec3_mul(weight, from->inner[b]));
+    }
+}
+
+void photons_error_add_estimate(struct photons_error *pe, struct vec3 beta,
+                                const struct estimate_batches *batches)
+{
+    add_batches(&pe->sample, beta, batches);
+}
+
+void photons_error_sample_taken(struct photons_error *pe, size_t i, int counted)
+{
+    if (counted)
+        add_batches(&pe->pixels[i], vec3(1.0, 1.0, 1.0), &pe->sample);
+    pe->samples[i]++;
+    memset(&pe->sample, 0, sizeof pe->sample);
+}
+
+/* Kept pixel i's batches as 2009's passes (photons_error.h): y_b = e + B P_b over the disc
+ * and over the inner disc, e the pixel's mean less its photons' part. */
+static void add_pixel_passes(const struct photons_error *pe, struct sppm_error *e, size_t i,
+                             struct vec3 mean)
+{
+    const struct estimate_batches *sum = &pe->pixels[i];
+    double per_sample = 1.0 / pe->samples[i];
+    struct vec3 photons = vec3_zero();
+    for (int b = 0; b < PHOTON_BATCHES; b++)
+        photons = vec3_add(photons, sum->disc[b]);
+    struct vec3 seen = vec3_sub(mean, vec3_scale(photons, per_sample));
+    double scale = PHOTON_BATCHES * per_sample;
+    for (int b = 0; b < PHOTON_BATCHES; b++)
+        sppm_error_add_pass(e, i, b, seen, vec3_scale(sum->disc[b], scale),
+                            vec3_scale(sum->inner[b], scale));
+}
+
+void photons_error_result(const struct photons_error *pe, const struct image *kept_image,
+                          struct render_result *result)
+{
+    const struct kept_window *k = &pe->kept;
+    struct sppm_error e;
+    sppm_error_create(&e, k->width, k->height);
+    for (int y = 0; y < k->height; y++)
+        for (int x = 0; x < k->width; x++)
+            add_pixel_passes(pe, &e, (size_t)y * (size_t)k->width + (size_t)x,
+                             image_get(kept_image, x, y));
+    sppm_error_result(&e, k, PHOTON_BATCHES, result);
+    sppm_error_free(&e);
+}
+
+void photons_error_free(struct photons_error *pe)
+{
+    xfree(pe->pixels);
+    xfree(pe->samples);
+    memset(pe, 0, sizeof *pe);
+}
