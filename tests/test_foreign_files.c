@@ -162,6 +162,26 @@ static void test_failed_publish_gives_back(struct check *t)
     clean();
 }
 
+/* truth: output.h: no file of ours takes the name of a declared output, even one not yet
+ *   on disk. Here --save-photons is named as -o's previous PFM would wait aside (the run's
+ *   mark fixed, so the name NAME.XXXXXXXX.tmp is known: the temporary takes the mark, the
+ *   place aside the mark + 1): every output is written, the work file with the bytes a run
+ *   saving it under another name writes; -o's previous PFM is replaced; nothing else left.
+ * catches: the replaced PFM kept aside under the work file's name, then removed once the
+ *   publish succeeded: the work file gone, status 0. */
+static void test_output_named_like_a_file_of_ours(struct check *t)
+{
+    clean();
+    CHECK(t, photon("", "--no-progress --mode photons --photons 1000 --width 4 --height 4 -o "
+                    OUT "_a.pfm --save-photons " OUT "_plain.work " SCENE) == 0);
+    CHECK(t, photon("PHOTON_TEMPORARY_MARK=0000abcc", "--no-progress --mode photons --photons "
+                    "1000 --width 4 --height 4 -o " OUT "_a.pfm --save-photons " OUT
+                    "_a.pfm.0000abcd.tmp " SCENE) == 0);
+    CHECK(t, files_equal(OUT "_a.pfm.0000abcd.tmp", OUT "_plain.work"));
+    CHECK(t, files_are("a.pfm a.pfm.0000abcd.tmp a.png plain.work "));
+    clean();
+}
+
 /* truth: output.h: what cannot be put in place is refused before the work, status 2: here
  *   a PNG of another owner in a sticky directory (mode 1777, as /tmp), which the user may
  *   write (mode 666) but not replace ("cannot be replaced"; or "cannot be written" where
@@ -393,6 +413,7 @@ void test_foreign_files(struct check *t)
     RUN_TEST(t, test_user_files_beside_outputs_kept);
     RUN_TEST(t, test_only_crop_records_removed);
     RUN_TEST(t, test_failed_publish_gives_back);
+    RUN_TEST(t, test_output_named_like_a_file_of_ours);
     RUN_TEST(t, test_unreplaceable_output_refused);
     RUN_TEST(t, test_two_runs_one_output);
     RUN_TEST(t, test_signals_leave_nothing);

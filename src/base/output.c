@@ -150,16 +150,24 @@ static size_t probe_owner(FILE *f, size_t k)
 
 /* A new file of ours beside name, open for binary writing, its name in *made (a new
  * string) and in u, as a file to remove: the first of this run's temporary names that no
- * file has, made by an exclusive create (output.h). A name that is taken is passed over:
- * when it holds the probe of an earlier output than probe_k (NO_OUTPUT: not a probe),
- * *same is set to that output and NULL returned. NULL with *errnum the last errno (0 when
- * every name was taken) when no name could be made. */
+ * file has and, but for a probe, no output is declared as, made by an exclusive create
+ * (output.h). A name that is taken is passed over: when it holds the probe of an earlier
+ * output than probe_k (NO_OUTPUT: not a probe), *same is set to that output and NULL
+ * returned. NULL with *errnum the last errno (0 when every name was taken) when no name
+ * could be made. */
 static FILE *create_ours(const char *name, struct undo *u, char **made, size_t probe_k,
                          size_t *same, int *errnum)
 {
     *errnum = 0;
     for (unsigned long attempt = 0; attempt < TEMPORARY_TRIES; attempt++) {
         char *t = temporary_name(name, attempt);
+        if (probe_k == NO_OUTPUT && find_name(t) != NULL) {
+            xfree(t); /* an output's name (nothing need be there yet): a temporary there
+                         would be taken for it, or a replaced file kept aside there removed
+                         in its stead. Probes, gone by the end of the check, try every
+                         name, so that two spellings of one file meet (output.h) */
+            continue;
+        }
         if (file_is_there(t)) { /* taken, a FIFO too, found without opening it (C11's "x"
                                    below is the check that counts) */
             int pipe;
@@ -542,10 +550,32 @@ void output_abandon(FILE *f)
         forget((size_t)(o - outputs));
 }
 
+/* *err, which says why a publish failed, made to say first what its rollback could not
+ * undo for o, and why (errnum, the failed rename's or remove's errno): the user must learn
+ * where a replaced file waits, or that a new file stayed, not only that a write failed. */
+static void rollback_failed(const struct output *o, int errnum, struct error *err)
+{
+    if (err == NULL)
+        return;
+    char cause[ERROR_FILE_MAX + 2 + ERROR_MESSAGE_MAX]; /* "FILE: MESSAGE" */
+    snprintf(cause, sizeof cause, "%s%s%s", err->file, err->file[0] != '\0' ? ": " : "",
+             err->message);
+    if (o->aside_name != NULL)
+        error_set(err, o->name, 0, "the file it replaced cannot be put back%s%s; the new "
+                  "file stays, and the one it replaced is kept as %s (the write that "
+                  "failed: %s)", colon(errnum), reason(errnum), o->aside_name, cause);
+    else
+        error_set(err, o->name, 0, "this new file cannot be removed%s%s; it stays where "
+                  "there was none (the write that failed: %s)", colon(errnum),
+                  reason(errnum), cause);
+    err->failed_write = 1;
+}
+
 /* The end of a publish: each output it put in place keeps it (the file it replaced,
  * kept aside, is removed), or, when it failed, gives back what was there (the file kept
- * aside is renamed back; a name that held nothing is removed). -1 with *err when a file
- * kept aside cannot be renamed back (it stays, and the message says where). */
+ * aside is renamed back; a name that held nothing is removed). -1 with *err when that
+ * cannot be done for an output: rollback_failed() says so for the first such output (a
+ * file kept aside stays where it is, never removed). */
 static int end_publish(int failed, struct error *err)
 {
     int status = 0;
@@ -557,11 +587,11 @@ static int end_publish(int failed, struct error *err)
             undo_set(o->aside_undo, UNDO_REMOVE, o->aside_name, NULL);
         else if (!failed)
             undo_set(o->aside_undo, UNDO_NOTHING, NULL, NULL);
-        if (undo_now(o->aside_undo) != 0 && failed && o->aside_name != NULL) {
-            status = error_set(err, o->name, 0, "cannot write output file, and the file it "
-                               "replaced cannot be put back: it is kept as %s", o->aside_name);
-            if (err != NULL)
-                err->failed_write = 1;
+        errno = 0;
+        if (undo_now(o->aside_undo) != 0 && failed) {
+            if (status == 0)
+                rollback_failed(o, errno, err);
+            status = -1;
             undo_set(o->aside_undo, UNDO_NOTHING, NULL, NULL); /* the user's: never removed */
         }
         xfree(o->aside_name);

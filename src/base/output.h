@@ -33,7 +33,8 @@
  * a probe of the check, the place a replaced file waits is NAME.XXXXXXXX.tmp, beside
  * NAME so that the final rename stays within its directory (atomic), XXXXXXXX 8 hex
  * digits: the run's mark, then the mark + 1, ... for the next name (16 in all) when one
- * is taken. A name is taken when renaming it onto itself succeeds (file_is_there(), which
+ * is taken, or (but for a probe) is the name of a declared output, which may not be on
+ * disk yet. A name is taken when renaming it onto itself succeeds (file_is_there(), which
  * opens nothing, so a FIFO there is passed over without waiting) or when fopen()'s
  * exclusive create, mode "wbx", refuses it. "x" is C11's, not C99's: glibc and musl
  * honour it (O_EXCL: any existing entry refuses it, a symbolic link too, even a dangling
@@ -103,9 +104,10 @@ void output_abandon(FILE *f);
 /* Renames every committed output to its name, in the order declared. -1 with *err filled
  * (a failed write) when a rename fails: the outputs it renamed give back the files they
  * replaced (or are removed), and the committed temporaries are removed; open ones stay
- * open. A signal meanwhile waits until the publish is over, either way. Outputs stay
- * declared, so a command may write and publish again (2008's checkpoints publish -o's
- * pair as they go). */
+ * open. Where giving back fails too, *err names the first output left so, the system's
+ * reason and where the file it replaced is kept, then the write that failed. A signal
+ * meanwhile waits until the publish is over, either way. Outputs stay declared, so a
+ * command may write and publish again (2008's checkpoints publish -o's pair as they go). */
 int outputs_publish(struct error *err);
 
 /* Removes every temporary and forgets every output and input; at exit, by atexit(). */

@@ -65,7 +65,8 @@ void undo_hold(void);
 void undo_release(void);
 
 /* Does what u says now, under a hold: 0, and u is set to UNDO_NOTHING; -1 when the
- * remove() or rename() failed, and u still says it (a later undo_now() may try again). */
+ * remove() or rename() failed, errno as it left it, and u still says it (a later
+ * undo_now() may try again). */
 int undo_now(struct undo *u);
 
 #endif
