@@ -1,7 +1,7 @@
 /*
- * tests/test_literal.c -- `--mode 2008 --paper` and `--mode 2009 --paper` against the
- * papers written literally (literal_ppm2008.c, literal_sppm2009.c): on the analytic scenes,
- * both Cornell boxes, museum and a point light's highlight on a Phong floor, each mode and
+ * tests/test_literal.c -- `--mode 1994 --paper`, `--mode 2008 --paper` and `--mode 2009
+ * --paper` against the papers written literally (literal_jensen1994.c, literal_ppm2008.c,
+ * literal_sppm2009.c): on the analytic scenes, both Cornell boxes and more, each mode and
  * its literal program agree block by block.
  */
 #include <math.h>
@@ -11,68 +11,118 @@
 #include "../src/image/compare.h"
 #include "check.h"
 #include "files.h"
+#include "literal_jensen1994.h"
 #include "literal_ppm2008.h"
 #include "literal_sppm2009.h"
 #include "tests.h"
 #include "truths.h"
 
-#define SPP 4 /* 2008's eye rays a pixel, traced once (2009 refuses --spp) */
+#define SPP 4 /* eye rays a pixel of 1994 and 2008 (2008's traced once; 2009 refuses --spp) */
 #define PASSES 16
 #define PHOTONS 10000 /* a pass: a case takes a fraction of a second          */
 
-/* The worst 8 x 8 block's relative difference between `--mode MODE --paper` (the photon
- * binary, the preset's own words) and the mode's literal program, both with seed 1, at
- * the scene's size or width x height (0: the scene's). */
-static double paper_against_literal(const char *mode, const char *path, int width,
-                                    int height)
+/* 1994's parameters (seed, spp, light rays, n, gather rays, a, light samples): a case
+ * takes a few seconds, most of it the irradiance records' gathers. */
+static const struct literal_jensen1994_settings jensen1994 = {1, SPP, 30000, 50, 512, 0.15, 4};
+
+/* How far `--mode MODE --paper` is from the mode's literal program: the worst 8 x 8
+ * block's relative difference of mean luminance, and the whole image's. */
+struct agreement {
+    double worst_block, image;
+};
+
+/* The options of `--mode MODE --paper` (the preset's own words) for scene: seed 1 and the
+ * parameters the mode's literal program is given. */
+static void paper_options(const char *mode, const struct scene *scene, char *out, size_t size)
 {
+    int n = snprintf(out, size, "--mode %s --paper --seed 1 --width %d --height %d", mode,
+                     scene->width, scene->height);
+    if (strcmp(mode, "2009") != 0)
+        n += snprintf(out + n, size - (size_t)n, " --spp %d", SPP);
+    if (strcmp(mode, "1994") == 0)
+        snprintf(out + n, size - (size_t)n,
+                 " --photons %zu --gather %zu --gather-rays %d --cache-accuracy %g "
+                 "--light-samples %d", jensen1994.photons, jensen1994.gather,
+                 jensen1994.gather_rays, jensen1994.accuracy, jensen1994.light_samples);
+    else
+        snprintf(out + n, size - (size_t)n, " --passes %d --photons-per-pass %d", PASSES,
+                 PHOTONS);
+}
+
+/* The image of scene by the literal program of `mode`, with seed 1. */
+static struct image *literal_image(const char *mode, const struct scene *scene)
+{
+    if (strcmp(mode, "1994") == 0)
+        return literal_jensen1994(scene, &jensen1994);
+    if (strcmp(mode, "2008") == 0)
+        return literal_ppm2008(scene, 1, SPP, PASSES, PHOTONS);
+    return literal_sppm2009(scene, 1, PASSES, PHOTONS);
+}
+
+/* `--mode MODE --paper` (the photon binary) against the mode's literal program, at the
+ * scene's size or width x height (0: the scene's). */
+static struct agreement paper_against_literal(const char *mode, const char *path, int width,
+                                              int height)
+{
+    struct agreement a = {HUGE_VAL, HUGE_VAL};
     char options[256];
     struct scene *scene = load_test_scene(path, width, height);
     if (scene == NULL)
-        return HUGE_VAL;
-    int sppm = strcmp(mode, "2009") == 0;
-    char spp[32] = "";
-    if (!sppm)
-        snprintf(spp, sizeof spp, " --spp %d", SPP);
-    snprintf(options, sizeof options,
-             "--mode %s --paper --seed 1 --passes %d --photons-per-pass %d --width %d "
-             "--height %d%s", mode, PASSES, PHOTONS, scene->width, scene->height, spp);
+        return a;
+    paper_options(mode, scene, options, sizeof options);
     struct image *image = photon_render("literal", options, path);
-    struct image *literal = sppm ? literal_sppm2009(scene, 1, PASSES, PHOTONS)
-                                 : literal_ppm2008(scene, 1, SPP, PASSES, PHOTONS);
-    double worst = image != NULL ? image_worst_block(image, literal, NULL, 8).relative_error
-                                 : HUGE_VAL;
+    struct image *literal = literal_image(mode, scene);
+    if (image != NULL && literal != NULL) {
+        int whole = scene->width > scene->height ? scene->width : scene->height;
+        a.worst_block = image_worst_block(image, literal, NULL, 8).relative_error;
+        a.image = image_worst_block(image, literal, NULL, whole).relative_error;
+    }
     image_free(image);
     image_free(literal);
     scene_free(scene);
-    return worst;
+    return a;
 }
 
-/* Every case of test_paper_is_literal() for one mode. */
-static void check_mode(struct check *t, const char *mode)
+/* Every case of test_paper_is_literal() that `mode` takes, each 8 x 8 block within
+ * block_tolerance and the whole image within image_tolerance. 1994's literal program
+ * holds the paper's surfaces (Sec. 5: "specular, rough specular and lambertian"), so
+ * museum, whose Schlick floor's diffuse-like part is not Lambertian, is not its case;
+ * nor is the Phong highlight, a point light seen through a glossy lobe, which the paper
+ * (with no point lights) never meets and the mode samples (src/modes/README.md). Its
+ * glossy lobe is cornell-glossy's Ward floor. */
+static void check_mode(struct check *t, const char *mode, double block_tolerance,
+                       double image_tolerance)
 {
     static const struct {
         const char *path;
         int width, height;
+        const char *modes; /* the modes that take the case */
     } cases[] = {
-        {"scenes/analytic/point-in-sphere.scene", 16, 16},
-        {"scenes/analytic/point-over-plane.scene", 0, 0},
-        {"scenes/analytic/sky-over-floor.scene", 0, 0},
-        {"scenes/analytic/furnace.scene", 16, 16},
-        {"scenes/cornell.scene", 32, 32},
-        {"scenes/cornell-specular.scene", 32, 32},
-        {"scenes/museum.scene", 32, 32}, /* Schlick's r < 1/2: a delta lobe and a glossy one */
-        {NULL, 0, 0},                    /* phong_highlight_scene */
+        {"scenes/analytic/point-in-sphere.scene", 16, 16, "1994 2008 2009"},
+        {"scenes/analytic/point-over-plane.scene", 0, 0, "1994 2008 2009"},
+        {"scenes/analytic/sky-over-floor.scene", 0, 0, "1994 2008 2009"},
+        {"scenes/analytic/furnace.scene", 16, 16, "1994 2008 2009"},
+        {"scenes/cornell.scene", 32, 32, "1994 2008 2009"},
+        {"scenes/cornell-specular.scene", 32, 32, "1994 2008 2009"},
+        {"scenes/cornell-glossy.scene", 32, 32, "1994"},
+        {"scenes/museum.scene", 32, 32, "2008 2009"}, /* Schlick's r < 1/2: a delta lobe and
+                                                         a glossy one */
+        {NULL, 0, 0, "2008 2009"},                    /* phong_highlight_scene */
     };
     char highlight[256];
     temp_name(highlight, sizeof highlight, "literal", "highlight.scene");
     write_text_file(highlight, phong_highlight_scene);
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        if (strstr(cases[i].modes, mode) == NULL)
+            continue;
         const char *path = cases[i].path != NULL ? cases[i].path : highlight;
-        double worst = paper_against_literal(mode, path, cases[i].width, cases[i].height);
-        printf("  literal: %s --paper, %s: worst 8 x 8 block %.4f from the literal program\n",
-               mode, cases[i].path != NULL ? path : "a Phong floor's highlight", worst);
-        CHECK(t, worst <= 0.01);
+        struct agreement a = paper_against_literal(mode, path, cases[i].width,
+                                                   cases[i].height);
+        printf("  literal: %s --paper, %s: worst 8 x 8 block %.4f, image %.4f from the "
+               "literal program\n", mode, cases[i].path != NULL ? path : "a Phong floor's "
+               "highlight", a.worst_block, a.image);
+        CHECK(t, a.worst_block <= block_tolerance);
+        CHECK(t, a.image <= image_tolerance);
     }
     remove(highlight);
 }
@@ -80,15 +130,32 @@ static void check_mode(struct check *t, const char *mode)
 /* truth: the literal programs, each paper's algorithm and nothing else, with the same
  *   camera samples and photons (their photons pass through the photon map's records:
  *   float positions, RGBE powers, directions in 256 steps).
- * tolerance: every 8 x 8 block within 1%. Measured: at most 0.3% over these scenes; a
- *   2009 --paper whose hit point took the diffuse part and whose eye path followed the
- *   glossy lobes (--follow-glossy-lobes) was 60% off on museum's and 92% on the highlight.
+ * tolerance: 2008 and 2009, every 8 x 8 block within 1%. Measured: at most 0.3% over
+ *   these scenes; a 2009 --paper whose hit point took the diffuse part and whose eye path
+ *   followed the glossy lobes (--follow-glossy-lobes) was 60% off on museum's and 92% on
+ *   the highlight.
+ *   1994, every 8 x 8 block within 3% and the whole image within 0.3%: its irradiance
+ *   records lie elsewhere than the mode's (literal_jensen1994.c says why), and a camera
+ *   sample's random numbers part once either gathers, so the two agree statistically.
+ *   Measured over seeds 1-6, the worst block and image: point-in-sphere 0.20%, 0.11%;
+ *   furnace 0.18%, 0.06%; cornell 0.43%, 0.08%; cornell-specular 1.8%, 0.09%;
+ *   cornell-glossy 2.1%, 0.15%; point-over-plane and sky-over-floor 0 (nothing to
+ *   gather: bit for bit). Each departure --paper turns off, turned on alone (seed 1):
+ *   --specular-spp 64 39% in a block, --glossy-photons 5.0% (cornell-glossy),
+ *   --both-lobes 4.0% (cornell-specular), --exclude-rim-photon 0.37-0.51% on the image
+ *   (cornell, cornell-specular, cornell-glossy); a literal program that left the rim
+ *   photon out failed on five scenes, one whose gather rays added emission by 22-23% on the
+ *   image. Within the records' noise, so not caught here: --caustic-radius-fraction 0.25
+ *   (1.5%), --bounded-reach (2.6%, 0.2%), --gradient-limit (1.0%), differential checking
+ *   (no caustic edge at 32 x 32); --lobe-lights changes no image of these scenes.
  * catches: a departure left on under --paper, or a mode's paper way drifting from its
- *   paper (the hit point's BRDF, the update, the emission seen, R0, the eye paths). */
+ *   paper (the hit point's BRDF, the update, the emission seen, R0, the eye paths; 1994's
+ *   terms, their photons and which paths add emission). */
 static void test_paper_is_literal(struct check *t)
 {
-    check_mode(t, "2008");
-    check_mode(t, "2009");
+    check_mode(t, "1994", 0.03, 0.003);
+    check_mode(t, "2008", 0.01, 0.01); /* the whole image: the blocks' bound, which it */
+    check_mode(t, "2009", 0.01, 0.01); /* cannot exceed                                */
 }
 
 void test_literal(struct check *t)

@@ -54,7 +54,7 @@ void test_paper(struct check *t);  /* test_paper.c: --paper and its switches    
 void test_tte_fit(struct check *t); /* test_tte_fit.c: make bench's fit of pt's error */
 void test_ppm_departures(struct check *t); /* test_ppm_departures.c: 2008's departures */
 void test_sppm(struct check *t);    /* test_sppm.c: --mode 2009, stochastic PPM        */
-void test_literal(struct check *t); /* test_literal.c: 2008, 2009 --paper against the papers written out */
+void test_literal(struct check *t); /* test_literal.c: 1994, 2008, 2009 --paper against the papers written out */
 void test_export(struct check *t);  /* test_export.c: photon export to pbrt-v4, Mitsuba 3 */
 void test_switches(struct check *t); /* test_switches.c: each paper switch of 1994, 1996 */
 void test_export_blender(struct check *t); /* test_export_blender.c: the Blender script */
