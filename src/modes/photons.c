@@ -89,10 +89,11 @@ static struct vec3 photons_radiance(const void *mode, struct ray ray, struct rng
     }
 }
 
-static void photons_sample_taken(const void *mode, size_t pixel, int counted)
+static void photons_sample_taken(const void *mode, size_t pixel, struct vec3 value,
+                                 int counted)
 {
     const struct photons_mode *pm = mode;
-    photons_error_sample_taken(pm->error, pixel, counted);
+    photons_error_sample_taken(pm->error, pixel, value, counted);
 }
 
 /* PHOTONS_RADIUS_FRACTION of the diagonal of the scene's bounding box, so the limit

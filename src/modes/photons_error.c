@@ -6,6 +6,10 @@
 #include <string.h>
 
 #include "../base/alloc.h"
+#include "pixel_error.h"
+
+/* The photons' batches and the samples' are paired, one y_b each (photons_error.h). */
+extern char batches_pair[PHOTON_BATCHES == ERROR_BATCHES ? 1 : -1];
 
 void photons_error_create(struct photons_error *pe, const struct render_settings *rs,
                           int width, int height)
@@ -14,6 +18,8 @@ void photons_error_create(struct photons_error *pe, const struct render_settings
     size_t n = (size_t)pe->kept.width * (size_t)pe->kept.height;
     memset(&pe->sample, 0, sizeof pe->sample);
     pe->pixels = xcalloc(n, sizeof *pe->pixels, "photon batches");
+    pe->sample_batches = xcalloc(3 * ERROR_BATCHES * n, sizeof *pe->sample_batches,
+                                 "sample batches");
     pe->samples = xcalloc(n, sizeof *pe->samples, "photon batch samples");
 }
 
@@ -32,16 +38,39 @@ void photons_error_add_estimate(struct photons_error *pe, struct vec3 beta,
     add_batches(&pe->sample, beta, batches);
 }
 
-void photons_error_sample_taken(struct photons_error *pe, size_t i, int counted)
+void photons_error_sample_taken(struct photons_error *pe, size_t i, struct vec3 value,
+                                int counted)
 {
     if (counted)
         add_batches(&pe->pixels[i], vec3(1.0, 1.0, 1.0), &pe->sample);
+    double v[3] = {value.x, value.y, value.z};
+    error_batches_add(pe->sample_batches + 3 * ERROR_BATCHES * i, pe->samples[i], v);
     pe->samples[i]++;
     memset(&pe->sample, 0, sizeof pe->sample);
 }
 
-/* Kept pixel i's batches as 2009's passes (photons_error.h): y_b = e + B P_b over the disc
- * and over the inner disc, e the pixel's mean less its photons' part. */
+/* c_b of kept pixel i (photons_error.h): the mean of its samples' pair of batches b mod h
+ * (the h = k / 2 pairs of its k full batches of m) less the mean of the pairs; zero with
+ * fewer than two pairs. */
+static struct vec3 sample_deviation(const struct photons_error *pe, size_t i, int b)
+{
+    int n = pe->samples[i], m = error_batch_size(n), h = n / m / 2;
+    if (h < 2)
+        return vec3_zero();
+    const double *batch = pe->sample_batches + 3 * ERROR_BATCHES * i;
+    double d[3];
+    for (int c = 0; c < 3; c++) {
+        double all = 0.0;
+        for (int j = 0; j < 2 * h; j++)
+            all += batch[3 * j + c];
+        int pair = 2 * (b % h);
+        d[c] = (batch[3 * pair + c] + batch[3 * (pair + 1) + c] - all / h) / (2 * m);
+    }
+    return vec3(d[0], d[1], d[2]);
+}
+
+/* Kept pixel i's batches as 2009's passes (photons_error.h): y_b = e + c_b + B P_b over
+ * the disc and over the inner disc, e the pixel's mean less its photons' part. */
 static void add_pixel_passes(const struct photons_error *pe, struct sppm_error *e, size_t i,
                              struct vec3 mean)
 {
@@ -53,8 +82,8 @@ static void add_pixel_passes(const struct photons_error *pe, struct sppm_error *
     struct vec3 seen = vec3_sub(mean, vec3_scale(photons, per_sample));
     double scale = PHOTON_BATCHES * per_sample;
     for (int b = 0; b < PHOTON_BATCHES; b++)
-        sppm_error_add_pass(e, i, b, seen, vec3_scale(sum->disc[b], scale),
-                            vec3_scale(sum->inner[b], scale));
+        sppm_error_add_pass(e, i, b, vec3_add(seen, sample_deviation(pe, i, b)),
+                            vec3_scale(sum->disc[b], scale), vec3_scale(sum->inner[b], scale));
 }
 
 void photons_error_result(const struct photons_error *pe, const struct image *kept_image,
@@ -74,6 +103,7 @@ void photons_error_result(const struct photons_error *pe, const struct image *ke
 void photons_error_free(struct photons_error *pe)
 {
     xfree(pe->pixels);
+    xfree(pe->sample_batches);
     xfree(pe->samples);
     memset(pe, 0, sizeof *pe);
 }

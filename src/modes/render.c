@@ -218,7 +218,7 @@ static void render_pass(const struct scene *scene, const struct render_settings 
             }
             add_sample(acc, i, l);
             if (est.sample_taken != NULL)
-                est.sample_taken(est.mode, i, counted);
+                est.sample_taken(est.mode, i, l, counted);
         }
 }
 

@@ -103,9 +103,10 @@ struct radiance_estimator {
     const void *mode; /* borrowed; passed back to radiance() */
     /* NULL, or called after each radiance() with the index of the pixel whose sample it
      * was, row-major in the window render_pixels() renders (rs's, with no error image),
-     * and whether the sample counted (a non-finite one counts as zero): for a mode that
-     * keeps more of a sample than its radiance (photons.c's batches). */
-    void (*sample_taken)(const void *mode, size_t pixel, int counted);
+     * the value the pixel took, and whether it counted (a non-finite one counts as
+     * zero): for a mode that keeps more of a sample than its radiance (photons.c's
+     * batches). */
+    void (*sample_taken)(const void *mode, size_t pixel, struct vec3 value, int counted);
 };
 
 /* CPU seconds since start, a clock() reading: what every mode's timings count. */
