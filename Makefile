@@ -14,7 +14,7 @@
 #   make figures    re-measure the figures README.md states and write them into it (long;
 #                   ONLY=presets|bench for one part; bench is the tte workload's table);
 #                   ONLY=rays SPD=DIR writes bench-embree's table into tests/bench/README.md,
-#                   ONLY=pbrt PBRT=PATH bench-pbrt's
+#                   ONLY=pbrt PBRT=PATH bench-pbrt's, ONLY=cycles bench-cycles'
 #   make reference  render the converged references of reference/suite.txt and write
 #                   reference/suite.md (hours; says how long first; ONLY=NAME for one)
 #   make consistency
@@ -35,6 +35,13 @@
 #                   equal CPU seconds, on both Cornell boxes: each one's seconds, relmse and
 #                   worst block, and the ratio of the errors (scripts/bench_pbrt.sh; about 6
 #                   minutes of CPU; ONLY=cornell or cornell-specular; development)
+#   make bench-cycles
+#                   --mode pt against Blender's Cycles (blender 3.4+, as for crosscheck),
+#                   one thread, equal CPU seconds (Cycles' render's, then pt's
+#                   --time-limit), on both Cornell boxes at CYCLES_SPP Cycles samples
+#                   (default "16 64 256"): each one's seconds, relmse and worst block, and
+#                   the ratio of the errors (scripts/bench_cycles.sh; about 4 minutes of
+#                   CPU; ONLY=cornell or cornell-specular; BLENDER=PATH; development)
 #   make fuzz       libFuzzer targets for every reader (scene, NFF, OBJ, PFM, OpenEXR, CSV, tile
 #                   record, work file), the option parser and deflate's round trip through
 #                   inflate, built with clang (development)
@@ -75,8 +82,8 @@ MAIN_OBJ := $(BUILD)/src/main.o
 TEST_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/*.c)) tests/bench/tte_fit.c)
 BENCH_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(sort $(wildcard tests/bench/*.c)))
 
-.PHONY: all run test test-spd check bench bench-embree bench-pbrt figures reference \
-        consistency calibration fuzz crosscheck install uninstall clean
+.PHONY: all run test test-spd check bench bench-embree bench-pbrt bench-cycles figures \
+        reference consistency calibration fuzz crosscheck install uninstall clean
 
 # test-spd refuses at once, before building anything, when it has no folder of SPD files.
 ifneq ($(filter test-spd,$(MAKECMDGOALS)),)
@@ -190,8 +197,21 @@ here = $(if $(filter /%,$(1)),$(1),./$(1))
 $(BUILD)/pbrt-channels: tests/bench/pbrt/pbrt_channels.c $(LIB_OBJ) $(HEADERS)
 	$(CC) $(CFLAGS) -o $@ $< $(LIB_OBJ) $(LDLIBS)
 
-# The figures README.md states, re-measured and written into it (ONLY=presets, bench, rays
-# or pbrt; rays and pbrt write into tests/bench/README.md).
+# Blender's Cycles against --mode pt at equal CPU seconds (scripts/bench_cycles.sh; a
+# development tool: BLENDER names Blender 3.4 or newer, which the product never needs).
+# Refused at once where there is no such program, as bench-pbrt is without pbrt.
+BLENDER ?= blender
+CYCLES_SPP ?= 16 64 256
+bench-cycles:
+	@command -v '$(BLENDER)' > /dev/null 2>&1 || { echo "make bench-cycles needs Blender 3.4" \
+	    "or newer, and '$(BLENDER)' is not installed (Debian, Ubuntu: apt-get install" \
+	    "blender; or BLENDER=PATH)" >&2; exit 2; }
+	@$(MAKE) --no-print-directory $(BIN)
+	PHOTON=$(call here,$(BIN)) BLENDER='$(BLENDER)' BENCH_CYCLES_SPP='$(CYCLES_SPP)' \
+	    sh scripts/bench_cycles.sh $(ONLY)
+
+# The figures README.md states, re-measured and written into it (ONLY=presets, bench, rays,
+# pbrt or cycles; rays, pbrt and cycles write into tests/bench/README.md).
 figures: $(BIN) $(BUILD)/bench
 	sh scripts/figures.sh $(ONLY)
 

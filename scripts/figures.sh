@@ -1,9 +1,9 @@
 #!/bin/sh
-# scripts/figures.sh [presets] [bench] [rays] [pbrt] -- re-measures the figures README.md
-# (and, for bench's phases, rays and pbrt, tests/bench/README.md) states and writes them in,
-# between the lines <!-- figures:NAME --> and <!-- /figures:NAME -->. Run by `make figures`
-# (ONLY=presets, bench, rays or pbrt for one part) from the top of the repository, after
-# ./photon and build/bench are built.
+# scripts/figures.sh [presets] [bench] [rays] [pbrt] [cycles] -- re-measures the figures
+# README.md (and, for bench's phases, rays, pbrt and cycles, tests/bench/README.md) states
+# and writes them in, between the lines <!-- figures:NAME --> and <!-- /figures:NAME -->.
+# Run by `make figures` (ONLY=presets, bench, rays, pbrt or cycles for one part) from the
+# top of the repository, after ./photon and build/bench are built.
 #
 #   presets  scripts/presets.sh: every mode's presets on both Cornell boxes against the
 #            references (about 15 minutes of CPU; two renders run at once)
@@ -18,6 +18,10 @@
 #   pbrt     `make bench-pbrt`, --mode 2009 beside pbrt-v4's SPPM at equal CPU seconds on
 #            both Cornell boxes, into tests/bench/README.md (needs PBRT=PATH, pbrt-v4's
 #            pbrt; about 6 minutes of CPU; not part of the default parts)
+#   cycles   `make bench-cycles`, --mode pt beside Blender's Cycles at equal CPU seconds on
+#            both Cornell boxes at a few sample counts, into tests/bench/README.md (needs
+#            Blender 3.4+, BLENDER=PATH where it is not `blender`; CYCLES_SPP="N ..." for
+#            other counts; about 4 minutes of CPU; not part of the default parts)
 #
 # Each part prints how long it took. Nothing in README.md changes unless the part succeeded.
 set -eu
@@ -141,6 +145,52 @@ pbrt_table() {
         }' "$1"
 }
 
+# bench-cycles' cycles.SCENE.N.KEY=VALUE lines as a table: a row a scene and Cycles' sample
+# count N, in the order printed, each renderer's figures and the ratio of the errors, raw
+# and with the reference's own noise (cycles.SCENE.reference_noise) taken from both.
+cycles_table() {
+    echo "| scene | Cycles: samples | Cycles: CPU s | Cycles: relmse | Cycles: worst 16 × 16 block (at) | pt: CPU s | pt: samples | pt: relmse | pt: worst 16 × 16 block (at) | relmse ratio (pt / Cycles) | less the reference's noise |"
+    echo "|---|---|---|---|---|---|---|---|---|---|---|"
+    awk '/^cycles\.[^.=]+\.[0-9]+\.[a-z_]+=/ {
+            i = index($0, "=")
+            split(substr($0, 1, i - 1), part, ".")
+            row = part[2] SUBSEP part[3]
+            if (!(row in seen)) { seen[row] = 1; order[++n] = row }
+            value[row, part[4]] = substr($0, i + 1)
+        }
+        END {
+            for (k = 1; k <= n; k++) {
+                r = order[k]
+                split(r, sn, SUBSEP)
+                printf "| %s | %s | %s | %s | %.2f%% (%s) | %s | %d | %s | %.2f%% (%s) | %s | %s |\n",
+                    sn[1], sn[2], value[r, "cycles_seconds"], value[r, "cycles_relmse"],
+                    100 * value[r, "cycles_worst_block"], value[r, "cycles_worst_block_at"],
+                    value[r, "pt_seconds"], value[r, "pt_spp"], value[r, "pt_relmse"],
+                    100 * value[r, "pt_worst_block"], value[r, "pt_worst_block_at"],
+                    value[r, "ratio"], value[r, "ratio_net"]
+            }
+            exit n == 0
+        }' "$1"
+}
+
+# The words under bench-cycles' table: the version, how the seconds were taken, each
+# reference's noise and what the export approximates.
+cycles_notes() {
+    version=$(sed -n 's/^cycles\.version=//p' "$1")
+    noise=$(sed -n 's/^cycles\.\([^.]*\)\.reference_noise=\(.*\)/\2 (\1)/p' "$1" |
+        awk '{ s = s (NR > 1 ? ", " : "") $0 } END { print s }')
+    echo "Blender $version's Cycles (\`blender -b -t 1\`, the scene of \`photon export" \
+        "--format blender\`, as \`make crosscheck\` renders it) and photon's pt, one thread" \
+        "each; seconds are user + system CPU seconds, Cycles' from its render_pre to its" \
+        "render_post handler (scene sync, BVH and samples; not Blender's start-up), pt's" \
+        "those of its whole run with \`--time-limit\` at Cycles' seconds. Both against" \
+        "\`reference/SCENE-pt.pfm\`, whose own noise adds about $noise to every relmse;" \
+        "the last column takes it from both."
+    sed -n 's/^cycles\.\([^.]*\)\.approximated=\(.*\)/\1 \2/p' "$1" | while read -r scene what; do
+        [ "$what" = - ] || echo "In $scene the export says: $what."
+    done
+}
+
 for part in $parts; do
     start=$(date +%s)
     case $part in
@@ -181,8 +231,17 @@ for part in $parts; do
             "of its three channels' renders." >> build/figures-pbrt.md
         splice pbrt build/figures-pbrt.md tests/bench/README.md
         ;;
+    cycles)
+        # ONLY= : as for pbrt, the ONLY=cycles of `make figures` would reach this make too
+        make --no-print-directory bench-cycles BLENDER="${BLENDER:-blender}" ONLY= \
+            > build/figures-cycles.txt
+        cycles_table build/figures-cycles.txt > build/figures-cycles.md
+        echo "" >> build/figures-cycles.md
+        cycles_notes build/figures-cycles.txt >> build/figures-cycles.md
+        splice cycles build/figures-cycles.md tests/bench/README.md
+        ;;
     *)
-        echo "figures: unknown part '$part' (presets, bench, rays, pbrt)" >&2
+        echo "figures: unknown part '$part' (presets, bench, rays, pbrt, cycles)" >&2
         exit 2
         ;;
     esac
