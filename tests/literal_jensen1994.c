@@ -46,12 +46,10 @@
  * (src/modes/README.md, "A pre-pass fills the cache"), so records lie elsewhere, and a
  * camera sample's later random numbers differ once a gather took some. Here CP photons
  * are told by their bit in the one map; the mode keeps copies in a tree of their own,
- * which gives the same estimate. Here the sphere grows without bound; the mode's stops at
- * a tenth of the scene's diagonal (--max-radius, which --paper keeps). A point light
- * seen through a glossy lobe, which the paper (no point lights, Sec. 5) never meets, is
- * lost here as its ray tracing would lose it; the mode samples it. Everything else draws
- * the mode's random numbers in the mode's order: the same light rays, camera points and
- * light samples.
+ * which gives the same estimate. A point light seen through a glossy lobe, which the
+ * paper (no point lights, Sec. 5) never meets, is lost here as its ray tracing would lose
+ * it; the mode samples it. Everything else draws the mode's random numbers in the mode's
+ * order: the same light rays, camera points and light samples.
  */
 #include "literal_jensen1994.h"
 
@@ -274,10 +272,7 @@ struct image *literal_jensen1994(const struct scene *scene,
     struct pass2 p2 = {scene, ls, map, nearest_create(ls->gather),
                        irradiance_cache_create(geometry_bounds(scene->geometry), ls->accuracy),
                        0, 0, NULL, (int)floor(sqrt((double)ls->light_samples))};
-    /* Ward and Heckbert's strata: m x n with n about pi m */
-    p2.strata_theta = (int)floor(sqrt(ls->gather_rays / PI) + 0.5);
-    p2.strata_theta = p2.strata_theta < 1 ? 1 : p2.strata_theta;
-    p2.strata_phi = ls->gather_rays / p2.strata_theta;
+    ward_strata(ls->gather_rays, &p2.strata_theta, &p2.strata_phi); /* one ray each */
     p2.strata = xmalloc((size_t)p2.strata_theta * (size_t)p2.strata_phi, sizeof *p2.strata,
                         "literal strata");
     struct image *image = image_create(scene->width, scene->height);

@@ -1,10 +1,10 @@
 /*
  * tests/literal_ppm2008.c -- progressive photon mapping (Hachisuka, Ogaki and Jensen 2008)
  * as the paper writes it, and nothing else: the program to read before
- * src/modes/ppm2008.c. It calls the shared camera, ray casting, BRDFs, photon tracer and
- * kd-tree; it has none of the mode's departures (light samples, new eye rays each pass,
- * merged hit points, fitted radii, caustic estimates apart, the facing test, turned
- * directions), none of its bookkeeping and no search structure of its own.
+ * src/modes/ppm2008.c. It calls the shared camera, ray casting, BRDFs and photon tracer;
+ * it has none of the mode's departures (light samples, new eye rays each pass, merged hit
+ * points, fitted radii, caustic estimates apart, the facing test, turned directions),
+ * none of its bookkeeping and no index of hit points (each finds its photons itself).
  * `photon --mode 2008 --paper` must agree with it (tests/test_literal.c). The photon pass,
  * Eq. 11 and the update, which 2009's literal program shares, are in literal_photons.c.
  *
@@ -117,11 +117,12 @@ static void trace_eye_ray(struct ray_tracing_pass *pass, struct ray ray, size_t 
 }
 
 /* Step 3 for one hit point: Eq. 11's sum over the photons within R, and the update. */
-static void progressive_update(struct hit_point *hp, const struct kdtree *map, size_t photons)
+static void progressive_update(struct hit_point *hp, const struct literal_photons *pass,
+                               size_t photons)
 {
     double m;
-    struct vec3 tau_m = literal_photons_within(map, hp->x, hp->radius, hp->brdf, &hp->frame,
-                                               hp->wo, photons, &m);
+    struct vec3 tau_m = literal_photons_within(pass, hp->x, hp->radius, hp->brdf,
+                                               &hp->frame, hp->wo, photons, &m);
     literal_update(&hp->n, &hp->radius, &hp->tau, tau_m, m);
 }
 
@@ -141,10 +142,10 @@ struct image *literal_ppm2008(const struct scene *scene, uint64_t seed, int spp,
                               &rng);
             }
     for (long p = 0; p < passes; p++) {
-        struct kdtree *map = literal_photon_map(scene, seed, p, photons_per_pass);
+        struct literal_photons photons = literal_photon_pass(scene, seed, p, photons_per_pass);
         for (size_t i = 0; i < pass.n; i++)
-            progressive_update(&pass.points[i], map, photons_per_pass);
-        kdtree_free(map);
+            progressive_update(&pass.points[i], &photons, photons_per_pass);
+        literal_photons_free(&photons);
     }
     struct image *image = image_create(width, height);
     for (size_t i = 0; i < (size_t)width * (size_t)height; i++)

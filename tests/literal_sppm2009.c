@@ -1,11 +1,11 @@
 /*
  * tests/literal_sppm2009.c -- stochastic progressive photon mapping (Hachisuka and Jensen
  * 2009) as the paper writes it, and nothing else: the program to read before
- * src/modes/sppm2009.c. It calls the shared camera, ray casting, BRDFs, photon tracer and
- * kd-tree; it has none of the mode's departures (light samples, fitted radii, disc
+ * src/modes/sppm2009.c. It calls the shared camera, ray casting, BRDFs and photon
+ * tracer; it has none of the mode's departures (light samples, fitted radii, disc
  * coverage, the facing test, turned directions, glossy lobes followed), none of its
- * bookkeeping (error images, crops, time limits, progress, checkpoints) and no search
- * structure of its own. `photon --mode 2009 --paper` must agree with it
+ * bookkeeping (error images, crops, time limits, progress, checkpoints) and no index of
+ * hit points (each finds its photons itself). `photon --mode 2009 --paper` must agree with it
  * (tests/test_literal.c), so that the mode and the paper cannot drift apart. The photon
  * pass, Eq. 11 and the update, as 2008's, are in literal_photons.c.
  *
@@ -97,13 +97,14 @@ static void trace_eye_path(const struct scene *scene, uint64_t seed, int x, int 
 
 /* Step 3 for one region: the photons within R of its hit point bring beta times Eq. 11's
  * sum, and the statistics are updated. */
-static void progressive_update(struct region *s, const struct kdtree *map, size_t photons)
+static void progressive_update(struct region *s, const struct literal_photons *pass,
+                               size_t photons)
 {
     if (!s->has_point)
         return;
     double m;
-    struct vec3 found = literal_photons_within(map, s->x, s->radius, s->brdf, &s->frame, s->wo,
-                                               photons, &m);
+    struct vec3 found = literal_photons_within(pass, s->x, s->radius, s->brdf, &s->frame,
+                                               s->wo, photons, &m);
     literal_update(&s->n, &s->radius, &s->tau, vec3_mul(s->beta, found), m);
 }
 
@@ -117,10 +118,11 @@ struct image *literal_sppm2009(const struct scene *scene, uint64_t seed, long pa
         for (int y = 0; y < height; y++)
             for (int x = 0; x < width; x++)
                 trace_eye_path(scene, seed, x, y, pass, &regions[(size_t)y * width + x]);
-        struct kdtree *map = literal_photon_map(scene, seed, pass, photons_per_pass);
+        struct literal_photons photons = literal_photon_pass(scene, seed, pass,
+                                                             photons_per_pass);
         for (size_t i = 0; i < (size_t)width * (size_t)height; i++)
-            progressive_update(&regions[i], map, photons_per_pass);
-        kdtree_free(map);
+            progressive_update(&regions[i], &photons, photons_per_pass);
+        literal_photons_free(&photons);
     }
     struct image *image = image_create(width, height);
     double emitted = (double)passes * (double)photons_per_pass; /* N_e */

@@ -179,14 +179,14 @@ static void test_user_options_win_over_paper(struct check *t)
 static void test_paper_renders_as_its_words(struct check *t)
 {
     static const char *const runs[][2] = {
-        {"--mode photons --photons 20000", "--no-exclude-rim-photon"},
+        {"--mode photons --photons 20000", "--no-exclude-rim-photon --no-max-radius"},
         {"--mode 1994 --photons 20000 --gather-rays 16 --spp 2",
-         "--no-exclude-rim-photon --caustic-radius-fraction 1 --no-both-lobes "
+         "--no-exclude-rim-photon --no-max-radius --no-both-lobes "
          "--no-bounded-reach --no-gradient-limit --specular-spp 2"},
         {"--mode 1996 --photons 20000 --caustic-photons 5000 --gather-rays 16 --spp 2",
-         "--no-exclude-rim-photon --no-shadow-rays --no-precomputed-irradiance "
-         "--no-disc-coverage --caustic-radius-fraction 1 --no-both-lobes --no-glossy-corner "
-         "--no-bounded-reach --no-gradient-limit --specular-spp 2"},
+         "--no-exclude-rim-photon --no-max-radius --no-shadow-rays "
+         "--no-precomputed-irradiance --no-disc-coverage --no-both-lobes --no-glossy-corner "
+         "--no-corner-photons --no-bounded-reach --no-gradient-limit --specular-spp 2"},
         {"--mode 2008 --passes 3 --photons-per-pass 5000 --spp 2",
          "--no-direct-light-samples --footprints 1 --no-caustic-footprints --no-fit-radius "
          "--no-merge-hit-points --no-resample-emission --no-facing-test "

@@ -559,60 +559,6 @@ static void test_locate_photons_of_kinds_matches_linear_scan(struct check *t)
     }
 }
 
-/* What the fixed-radius visitor collects. */
-struct collected {
-    double *d2;      /* room for every photon of the map */
-    size_t count;
-};
-
-static void collect_d2(void *context, const struct photon *p, double d2)
-{
-    struct collected *c = context;
-    (void)p;
-    c->d2[c->count++] = d2;
-}
-
-/* Fixed-radius searches at query j of m against the scan; 1 when all match. */
-static int radius_searches_match(struct test_map *m, uint64_t j, double *d2)
-{
-    static const double r2s[] = {0, 1e-3, 0.01, 0.3, HUGE_VAL};
-    struct photon_query q;
-    memset(&q, 0, sizeof q);  /* kind filter off */
-    q.x = query_point(m->scan, m->n, j);
-    size_t n_scan = scan_d2(m->scan, m->n, &q, m->scan_d2);
-    int ok = 1;
-    for (size_t ir = 0; ir < sizeof r2s / sizeof r2s[0]; ir++) {
-        struct collected c = {d2, 0};
-        size_t count = for_each_photon_within(m->map, q.x, r2s[ir], collect_d2, &c);
-        qsort(d2, c.count, sizeof *d2, compare_doubles);
-        size_t n_within = 0;
-        while (n_within < n_scan && m->scan_d2[n_within] <= r2s[ir])
-            n_within++;
-        ok = ok && count == c.count && count == n_within;
-        for (size_t i = 0; ok && i < count; i++)
-            ok = d2[i] == m->scan_d2[i];
-    }
-    return ok;
-}
-
-/* truth: brute force, every photon of a linear scan with d2 <= r2.
- * tolerance: none (same doubles on both sides).
- * catches: a photon on the boundary (r2 = 0 with queries on photons) left out, a subtree
- *   skipped, a photon visited twice, the returned count disagreeing with the visits. */
-static void test_for_each_photon_within_matches_linear_scan(struct check *t)
-{
-    for (int set = 0; set < N_POINT_SETS; set++) {
-        for (size_t s = 0; s < N_TEST_SIZES; s++) {
-            struct test_map m = test_map_create((enum point_set)set, test_sizes[s]);
-            double *d2 = xmalloc(m.n, sizeof *d2, "test scan");
-            for (uint64_t j = 0; j < N_QUERIES; j++)
-                CHECK(t, radius_searches_match(&m, j, d2));
-            xfree(d2);
-            test_map_free(&m);
-        }
-    }
-}
-
 void test_photon(struct check *t)
 {
     RUN_TEST(t, test_photon_power_round_trip);
@@ -624,5 +570,4 @@ void test_photon(struct check *t)
     RUN_TEST(t, test_kdtree_check_detects_broken_trees);
     RUN_TEST(t, test_locate_photons_matches_linear_scan);
     RUN_TEST(t, test_locate_photons_of_kinds_matches_linear_scan);
-    RUN_TEST(t, test_for_each_photon_within_matches_linear_scan);
 }

@@ -1,8 +1,8 @@
 /*
- * tests/test_switches.c -- the switches that turn a departure of the 1994 and 1996 modes
- * back to the paper's side (src/modes/README.md names each): each changes the image, in
- * the direction the paper's way predicts where one can be told, and only where its term
- * of the rendering acts. Tiny renders of the Cornell boxes, through the binary as a user
+ * tests/test_switches.c -- the switches that turn a departure of the photon map modes
+ * (photons, 1994, 1996) back to the paper's side (src/modes/README.md names each): each
+ * changes the image, in the direction the paper's way predicts where one can be told, and
+ * only where its term of the rendering acts. Tiny renders of the Cornell boxes, through the binary as a user
  * runs it. The records' reach is also checked on its own, against values by hand
  * (test_cache.c does the same for the defaults).
  */
@@ -115,6 +115,53 @@ static void test_caustic_radius_fraction(struct check *t)
     remove_render("whole");
 }
 
+/* truth: Jensen 1996, Sec. 5, and Jensen and Christensen 1994, Sec. 3.3: an estimate's
+ *   sphere grows until it holds its photons, with no bound. Among 2,000 photons in the
+ *   Cornell box an estimate's k photons lie farther than the default bound, a tenth of the
+ *   diagonal (96 mm), so --no-max-radius changes every photon mode's image, and --stats
+ *   reports no radius (inf); where k = 10 of 200,000 photons lie within a few millimetres
+ *   the bound never acts: the same bytes. --paper has no bound: the same bytes as with
+ *   --no-max-radius spelled out, not those of --paper with a bound.
+ * catches: --no-max-radius ignored by a mode or read as the default (0 was the default
+ *   before it), a bound that acts where it should not, --paper keeping the bound. */
+#define SPARSE "--width 24 --height 24 --photons 2000"
+static void test_max_radius(struct check *t)
+{
+    static const char *const modes[] = {
+        "--mode photons " SPARSE,
+        "--mode 1994 " SPARSE " --spp 2 --specular-spp 2 --gather-rays 16",
+        "--mode 1996 " SPARSE " --spp 2 --specular-spp 2 --gather-rays 16 --caustic-photons 2000"};
+    char words[512];
+    for (size_t i = 0; i < sizeof modes / sizeof modes[0]; i++) {
+        snprintf(words, sizeof words, "%s" PLAIN_BOX, modes[i]);
+        CHECK(t, render(words, "bound"));
+        snprintf(words, sizeof words, "%s --no-max-radius" PLAIN_BOX, modes[i]);
+        CHECK(t, render(words, "unbound"));
+        CHECK(t, !same_image("bound", "unbound"));
+        snprintf(words, sizeof words, "%s --paper" PLAIN_BOX, modes[i]);
+        CHECK(t, render(words, "paper"));
+        snprintf(words, sizeof words, "%s --paper --no-max-radius" PLAIN_BOX, modes[i]);
+        CHECK(t, render(words, "paper_unbound"));
+        snprintf(words, sizeof words, "%s --paper --max-radius 96" PLAIN_BOX, modes[i]);
+        CHECK(t, render(words, "paper_bound"));
+        CHECK(t, same_image("paper", "paper_unbound") && !same_image("paper", "paper_bound"));
+        if (i == 0) /* the photons mode reports its radius */
+            CHECK(t, isinf(stat_of("unbound", "max_radius")) &&
+                         fabs(stat_of("bound", "max_radius") - 96.074) < 0.001);
+    }
+    const char *dense = "--mode photons --width 24 --height 24 --photons 200000 --gather 10";
+    snprintf(words, sizeof words, "%s" PLAIN_BOX, dense);
+    CHECK(t, render(words, "bound"));
+    snprintf(words, sizeof words, "%s --no-max-radius" PLAIN_BOX, dense);
+    CHECK(t, render(words, "unbound"));
+    CHECK(t, same_image("bound", "unbound"));
+    remove_render("bound");
+    remove_render("unbound");
+    remove_render("paper");
+    remove_render("paper_unbound");
+    remove_render("paper_bound");
+}
+
 /* A glass ball (index 1.5) filling most of the view in front of a wall that emits 1 and
  * reflects nothing: a pixel through the ball is the Fresnel-weighted sum of what its two
  * lobes see, the emitter (refracted) and the black background (reflected), and nothing
@@ -187,6 +234,40 @@ static void test_glossy_corner(struct check *t)
     remove_render("accurate");
     remove_render("plain_corner");
     remove_render("plain_accurate");
+}
+
+/* truth: Jensen 1996, Sec. 4: the end of a gather ray shorter than "a small threshold" is
+ *   evaluated accurately, and the accurate soft indirect light is a final gather (4.4).
+ *   So with --no-corner-photons the corners of the Cornell box, where gather rays are
+ *   short, gather where the default reads the global map's indirect photons: more
+ *   gathers, and another image; with --accurate-distance 0 there is no corner, and the
+ *   switch changes no byte. --paper gathers there too: more gathers than --paper with
+ *   --corner-photons.
+ * catches: the switch ignored, acting away from corners, or left out of --paper. */
+static void test_corner_photons(struct check *t)
+{
+    const char *common = "--mode 1996 " TINY_1996;
+    char words[512];
+    snprintf(words, sizeof words, "%s" PLAIN_BOX, common);
+    CHECK(t, render(words, "photons"));
+    snprintf(words, sizeof words, "%s --no-corner-photons" PLAIN_BOX, common);
+    CHECK(t, render(words, "gathered"));
+    CHECK(t, stat_of("gathered", "gathers") > stat_of("photons", "gathers") &&
+                 stat_of("photons", "gathers") > 0);
+    CHECK(t, !same_image("photons", "gathered"));
+    snprintf(words, sizeof words, "%s --accurate-distance 0" PLAIN_BOX, common);
+    CHECK(t, render(words, "photons"));
+    snprintf(words, sizeof words, "%s --accurate-distance 0 --no-corner-photons" PLAIN_BOX,
+             common);
+    CHECK(t, render(words, "gathered"));
+    CHECK(t, same_image("photons", "gathered"));
+    snprintf(words, sizeof words, "%s --paper --corner-photons" PLAIN_BOX, common);
+    CHECK(t, render(words, "photons"));
+    snprintf(words, sizeof words, "%s --paper" PLAIN_BOX, common);
+    CHECK(t, render(words, "gathered"));
+    CHECK(t, stat_of("gathered", "gathers") > stat_of("photons", "gathers"));
+    remove_render("photons");
+    remove_render("gathered");
 }
 
 /* truth: Ward 1988's R is the harmonic mean distance of the gather's strata: 2 when every
@@ -271,8 +352,10 @@ static void test_reach_switches(struct check *t)
 void test_switches(struct check *t)
 {
     RUN_TEST(t, test_caustic_radius_fraction);
+    RUN_TEST(t, test_max_radius);
     RUN_TEST(t, test_both_lobes);
     RUN_TEST(t, test_glossy_corner);
+    RUN_TEST(t, test_corner_photons);
     RUN_TEST(t, test_record_reach);
     RUN_TEST(t, test_reach_switches);
 }

@@ -90,7 +90,10 @@ const struct option_spec option_specs[] = {
      "photons in each radiance or irradiance estimate (default 100; 1994: 50; 1996: 40)",
      FOR_PHOTON_MAPS},
     {"--max-radius", OPT_REAL_ABOVE, FIELD(max_radius), 0, 1e30, "R",
-     "largest gathering radius (default: 1/10 of the scene's diagonal)",
+     "largest gathering radius: where photons are few an estimate takes those within it "
+     "(default: 1/10 of the scene's diagonal)", FOR_PHOTON_MAPS},
+    {"--no-max-radius", OPT_OFF, FIELD(max_radius), 0, 0, "",
+     "no largest radius: an estimate's disc grows until it holds its photons (the papers')",
      FOR_PHOTON_MAPS},
     {"--cone", OPT_REAL, FIELD(cone), 0, 1e6, "K",
      "cone filter constant k >= 1 (Jensen 1996 Eq. 4); 0 = none (default: "
@@ -103,8 +106,8 @@ const struct option_spec option_specs[] = {
      FOR_PHOTON_MAPS},
     {"--caustic-radius-fraction", OPT_REAL, FIELD(caustic_radius_fraction), 0.001, 1, "F",
      "caustic estimates reach F times --max-radius (default 0.25: a wide disc hangs over a "
-     "surface's edges where caustic photons are sparse; --paper's 1, one maximum for every "
-     "estimate: the papers have none)", FOR_1994 | FOR_1996},
+     "surface's edges where caustic photons are sparse; with --no-max-radius, the papers', "
+     "no maximum bounds them)", FOR_1994 | FOR_1996},
     {"--caustic-photons", OPT_INT, FIELD(caustic_photons), 0, MAX_PHOTONS, "N",
      "photons emitted towards specular objects for the caustic map (default 1000000); with "
      "0 and no --one-map, --caustic-gather, --caustic-radius-fraction and --cone are "
@@ -123,8 +126,8 @@ const struct option_spec option_specs[] = {
      "refused (default 0.15)", FOR_1994 | FOR_1996},
     {"--accurate-distance", OPT_REAL, FIELD(accurate_distance), 0, 1e6, "F",
      "gather rays shorter than F radii of the estimate they reach are evaluated as "
-     "accurately, but with the global map's indirect photons for the indirect light (the "
-     "paper's \"small threshold\", its value not specified by the paper; default 3)",
+     "accurately (the paper's \"small threshold\", its value not specified by the paper; "
+     "their soft indirect light: --corner-photons; default 3)",
      FOR_1996},
     {"--accurate-weight", OPT_REAL, FIELD(accurate_weight), 0, 1, "W",
      "rays with throughput below W are evaluated approximately (default 0.1)", FOR_1996},
@@ -160,6 +163,12 @@ const struct option_spec option_specs[] = {
      "no gather (the default)", FOR_1996},
     {"--no-glossy-corner", OPT_FLAG, FIELD(glossy_corner), 0, 0, "",
      "evaluate them accurately, with a final gather (the paper's)", FOR_1996},
+    {"--corner-photons", OPT_FLAG, FIELD(corner_photons), 0, 0, "",
+     "the end of a gather ray shorter than --accurate-distance takes its soft indirect "
+     "light from the global map's indirect photons (the default)", FOR_1996},
+    {"--no-corner-photons", OPT_FLAG, FIELD(corner_photons), 0, 0, "",
+     "from a final gather of its own, as accurate points do, whose rays are approximate "
+     "(the paper's)", FOR_1996},
     {"--glossy-photons", OPT_FLAG, FIELD(glossy_photons), 0, 0, "",
      "surfaces seen through a glossy lobe read the photon map, as a gather ray's end, with no "
      "final gather (the default)", FOR_1994},

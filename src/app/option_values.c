@@ -158,6 +158,7 @@ void option_defaults(struct options *o)
     o->cone = -1;
     o->caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     struct jensen1996_settings js = jensen1996_settings_default();
+    o->max_radius = js.max_radius; /* -1: the default */
     o->caustic_photons = (int)js.caustic_photons;
     o->caustic_gather = (int)js.caustic_gather;
     o->gather_rays = js.gather_rays;
@@ -171,6 +172,7 @@ void option_defaults(struct options *o)
     o->disc_coverage = js.disc_coverage;
     o->both_lobes = js.both_lobes;
     o->glossy_corner = js.glossy_corner;
+    o->corner_photons = !js.corner_gathers;
     o->bounded_reach = js.bounded_reach;
     o->gradient_limit = js.gradient_limit;
     struct jensen1994_settings j94 = jensen1994_settings_default();

@@ -94,19 +94,21 @@ int read_quality(const char *text, enum quality *quality, struct error *err)
  * gives the specular pixels --spp samples (options.c), since --specular-spp's default is a
  * multiple of --spp. Not here: 1994's --glossy-gather, nearer the paper's own rule
  * (Jensen and Christensen 1994, Sec. 4.0.3) than --no-glossy-gather; --adaptive, whose
- * threshold is not specified by the paper; --max-radius, which no paper has (src/modes/
- * README.md says why each stays). */
+ * threshold is not specified by the paper (src/modes/README.md says why each stays); and
+ * --caustic-radius-fraction, a fraction of the maximum radius that --no-max-radius takes
+ * away. */
 static const struct {
     enum mode mode;
     const char *words;
 } as_written[] = {
-    {MODE_PHOTONS, "--no-exclude-rim-photon"},
-    {MODE_JENSEN1994, "--no-exclude-rim-photon --caustic-radius-fraction 1 --no-both-lobes "
+    {MODE_PHOTONS, "--no-exclude-rim-photon --no-max-radius"},
+    {MODE_JENSEN1994, "--no-exclude-rim-photon --no-max-radius --no-both-lobes "
                        "--no-glossy-photons --no-lobe-lights --no-bounded-reach "
                        "--no-gradient-limit"},
-    {MODE_JENSEN1996, "--no-exclude-rim-photon --no-shadow-rays --no-precomputed-irradiance "
-                       "--no-disc-coverage --caustic-radius-fraction 1 --no-both-lobes "
-                       "--no-glossy-corner --no-bounded-reach --no-gradient-limit"},
+    {MODE_JENSEN1996, "--no-exclude-rim-photon --no-max-radius --no-shadow-rays "
+                       "--no-precomputed-irradiance --no-disc-coverage --no-both-lobes "
+                       "--no-glossy-corner --no-corner-photons --no-bounded-reach "
+                       "--no-gradient-limit"},
     {MODE_PPM2008, "--no-direct-light-samples --footprints 1 --no-caustic-footprints "
                     "--no-fit-radius --no-merge-hit-points --no-resample-emission "
                     "--no-facing-test --no-turn-photon-directions"},

@@ -60,7 +60,9 @@ struct options {
     const char *load_photons;     /* --load-photons FILE, or NULL (borrowed)        */
     int photons;                  /* photon modes: photons emitted                 */
     int gather;                   /* photon modes: photons per radiance estimate   */
-    double max_radius;            /* photon modes: gathering radius; 0 = default   */
+    double max_radius;            /* photon modes: largest gathering radius; 0 =
+                                     none, the papers' (--no-max-radius); -1 = the
+                                     default, 1/10 of the scene's diagonal          */
     double cone;                  /* photon modes: cone filter k; 0 = none, -1 = the
                                      mode's default (photons 0, 1996 1)            */
     int exclude_rim;              /* photon modes: estimates leave the rim photon out;
@@ -82,6 +84,8 @@ struct options {
     int disc_coverage;            /* 1996: records over their disc's covered part  */
     int both_lobes;               /* 1994, 1996: mirrors and glass trace every lobe */
     int glossy_corner;            /* 1996: the corner way behind glossy lobes      */
+    int corner_photons;           /* 1996: corners' soft indirect light from photons;
+                                     0 = a final gather, the paper's               */
     int bounded_reach;            /* 1994, 1996: cache records' R from the camera  */
     int glossy_gather;            /* 1994: non-Lambertian diffuse parts gather      */
     int glossy_photons;           /* 1994: seen through glossy lobes: photon map    */

@@ -8,14 +8,17 @@
 
 #include "../photon/irradiance_cache.h"
 
+void ward_strata(int strata, int *m, int *n)
+{
+    *m = (int)floor(sqrt(strata / PI) + 0.5);
+    *m = *m < 1 ? 1 : *m;
+    *n = strata / *m > 1 ? strata / *m : 1;
+}
+
 struct gather_plan gather_plan_of(int gather_rays)
 {
     struct gather_plan plan;
-    int strata = gather_rays / 2 > 1 ? gather_rays / 2 : 1;
-    plan.theta = (int)floor(sqrt(strata / PI) + 0.5);
-    plan.theta = plan.theta < 1 ? 1 : plan.theta;
-    plan.phi = strata / plan.theta;
-    plan.phi = plan.phi < 1 ? 1 : plan.phi;
+    ward_strata(gather_rays / 2, &plan.theta, &plan.phi);
     plan.rays = gather_rays > 2 ? gather_rays : 2;
     return plan;
 }

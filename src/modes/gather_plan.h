@@ -3,7 +3,8 @@
  * its rays: Ward and Heckbert's m x n strata of equal projected solid angle, one ray
  * each, and the rest of the rays allotted to the strata by Jensen 1995's importance (the
  * flux of the nearest photons through each stratum, which jensen1996.c measures); and
- * the direction of a ray in a stratum, which 1994's gathers (one ray a stratum) share.
+ * the strata themselves and the direction of a ray in a stratum, which 1994's gathers (one
+ * ray a stratum) and tests/literal_jensen1994.c share.
  */
 #ifndef PHOTON_GATHER_PLAN_H
 #define PHOTON_GATHER_PLAN_H
@@ -19,9 +20,13 @@ struct gather_plan {
     int rays;       /* >= theta * phi     */
 };
 
-/* Ward and Heckbert's strata for a gather of gather_rays rays: half the rays make the
- * strata (one each), m x n with n about pi m as in their paper; the other half follow
- * importance. At least one stratum and two rays. */
+/* Ward and Heckbert's m x n strata for about `strata` rays of one each: m rings, the
+ * nearest whole number to sqrt(strata / pi), and n = strata / m sectors, so that n is
+ * about pi m as in their paper; at least one of each. */
+void ward_strata(int strata, int *m, int *n);
+
+/* The plan of a gather of gather_rays rays: half the rays make the strata (ward_strata(),
+ * one each); the other half follow importance. At least one stratum and two rays. */
 struct gather_plan gather_plan_of(int gather_rays);
 
 /* rays_in[i] for the plan's m n strata from their importance share[0 .. m n - 1] (>= 0)

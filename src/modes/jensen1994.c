@@ -49,15 +49,17 @@
  *       gather ray's end does (the paper's: evaluated in full, with its own gather);
  *   --lobe-lights  area lights and the sky are sampled through a glossy lobe too, weighted
  *       against the lobe's ray by the power heuristic (the paper's: the ray alone);
- *   --exclude-rim-photon, --caustic-radius-fraction 0.25  (photon/estimate.h; the paper
- *       has no maximum radius, so --paper's fraction is 1, one for every estimate);
+ *   --exclude-rim-photon  an estimate leaves its rim photon out (photon/estimate.h);
+ *   --max-radius  an estimate stops at a tenth of the scene's diagonal, a caustic one at a
+ *       quarter of that (--caustic-radius-fraction), where the paper's sphere grows until
+ *       it holds its photons (--no-max-radius);
  *   --bounded-reach, --gradient-limit  a cache record's R (photon/irradiance_cache.h);
  *   --specular-spp  a pixel that sees a light through mirrors or glass takes 64 x --spp
  *       samples (--paper: --spp, as every pixel).
  * --paper keeps --glossy-gather (above) and leaves --adaptive off: the paper sampled
  * adaptively (Sec. 5), by a rule and threshold not specified by the paper. The departures
  * without a switch (the CP photons' own tree, the cache's pre-pass, point lights sampled
- * through a glossy lobe, the maximum radius) are listed in src/modes/README.md.
+ * through a glossy lobe) are listed in src/modes/README.md.
  *
  * Determinism: every random number comes from the camera sample's stream, or in the
  * cache's pre-pass from rng_stream(seed, STREAM_CACHE, pixel, 0); the pre-pass fills the
@@ -509,14 +511,9 @@ static void set_up(struct jensen1994 *mode, const struct scene *scene,
     mode->caustic_photons = all;
     mode->caustic_photons.max_r2 = radii.caustic_r2;
     mode->caustic_photons.kinds = PHOTON_CAUSTIC;
-    /* Ward and Heckbert's strata, m x n with n about pi m, one ray each */
-    mode->strata_theta = (int)floor(sqrt(settings->gather_rays / PI) + 0.5);
-    mode->strata_theta = mode->strata_theta < 1 ? 1 : mode->strata_theta;
-    mode->strata_phi = settings->gather_rays / mode->strata_theta;
-    int share = settings->gather_rays / rs->spp; /* spp >= 1 */
-    mode->sample_theta = (int)floor(sqrt(share / PI) + 0.5);
-    mode->sample_theta = mode->sample_theta < 1 ? 1 : mode->sample_theta;
-    mode->sample_phi = share / mode->sample_theta > 0 ? share / mode->sample_theta : 1;
+    /* Ward and Heckbert's strata, one ray each: a record's, and a camera sample's share */
+    ward_strata(settings->gather_rays, &mode->strata_theta, &mode->strata_phi);
+    ward_strata(settings->gather_rays / rs->spp, &mode->sample_theta, &mode->sample_phi);
     mode->light_strata = (int)floor(sqrt((double)settings->light_samples));
     mode->filling_cache = 0;
     mode->cache = irradiance_cache_create(isfinite(box.lo.x) ? box : (struct aabb){vec3_zero(),

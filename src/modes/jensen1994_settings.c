@@ -12,7 +12,7 @@ struct jensen1994_settings jensen1994_settings_default(void)
     struct jensen1994_settings js;
     js.n_photons = J94_DEFAULT_PHOTONS;
     js.gather = J94_DEFAULT_GATHER;
-    js.max_radius = 0;
+    js.max_radius = -1; /* the default */
     js.differential_run = DIFFERENTIAL_RUN;
     js.count_rim = 0;
     js.gather_rays = J94_DEFAULT_GATHER_RAYS;

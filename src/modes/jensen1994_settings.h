@@ -38,16 +38,15 @@
 struct jensen1994_settings {
     size_t n_photons;      /* light rays emitted in pass 1, 1..MAX_PHOTONS (trace.h)        */
     size_t gather;         /* n, photons in each irradiance estimate, 1..MAX_GATHER         */
-    double max_radius;     /* > 0: the estimates' largest radius; <= 0: 1/10 of the
-                              scene's diagonal (as the photons mode)                        */
+    double max_radius;     /* > 0: the estimates' largest radius; 0: none, the paper's;
+                              < 0: 1/10 of the scene's diagonal (as the photons mode)       */
     int differential_run;  /* differential checking's run (estimate.h); 0: off              */
     int count_rim;         /* 1: each estimate counts its rim photon, the paper's sum       */
     int gather_rays;       /* rays of one irradiance record, 2..J96_MAX_GATHER_RAYS         */
     double cache_accuracy; /* Ward's a, > 0                                                 */
     int light_samples;     /* stratified samples of each light, 1..J94_MAX_LIGHT_SAMPLES    */
     double caustic_radius_fraction; /* caustic estimates reach this fraction of the
-                              largest radius, in (0, 1] (CAUSTIC_RADIUS_FRACTION, a
-                              departure; --paper's 1: the paper has no largest radius)     */
+                              largest radius, in (0, 1] (CAUSTIC_RADIUS_FRACTION)           */
     int both_lobes;        /* 1: L_r,s follows both lobes of glass (Whitted's way, a
                               departure); 0: one lobe sampled by the BRDF, the paper's
                               "recursive Monte Carlo ray tracing"                       */

@@ -22,9 +22,9 @@
  *                cone filter (4.3); soft indirect light by a final gather guided by the
  *                global map's photons, through Ward's irradiance cache on Lambertian
  *                surfaces (4.4);
- *   corner       (at the end of a short gather ray: a departure, below) as accurate,
- *                except that the soft indirect light is the global map's estimate from
- *                its indirect photons, where the paper's accurate one gathers;
+ *   corner       (at the end of a short gather ray) as accurate, but with the soft
+ *                indirect light the global map's estimate from its indirect photons (a
+ *                departure, below; the paper's gathers, and its rays are approximate);
  *   through gloss (seen through a glossy lobe: a departure) direct light as accurate, the
  *                caustics and soft indirect light in one estimate from the global map's
  *                photons that are not direct;
@@ -51,7 +51,7 @@
  * --load-photons reads them from a file (photon/global_work.h) and remakes the records.
  *
  * Departures, each a switch whose --no-NAME (or value) is the paper's; --paper turns all
- * nine to the paper's side (src/modes/README.md: why, and what each measured):
+ * ten to the paper's side (src/modes/README.md: why, and what each measured):
  *   --precomputed-irradiance N  approximate Lambertian points, gather rays' ends among
  *       them, read irradiance precomputed at every N-th global photon (Christensen 1999),
  *       the pre-pass many times faster at the same error;
@@ -62,12 +62,9 @@
  *       darkens the balls' fronts, which see it;
  *   --both-lobes  glass at accurate points traces both its rays, as Whitted's;
  *   --glossy-corner  a surface seen through a glossy lobe is evaluated through gloss;
- *   --exclude-rim-photon, --caustic-radius-fraction 0.25  (photon/estimate.h; the paper
- *       has no maximum radius, so --paper's fraction is 1, one for every estimate);
+ *   --corner-photons  a corner's soft indirect light is the photons' (no gather in a gather);
+ *   --exclude-rim-photon, --max-radius (caustics: --caustic-radius-fraction)  estimates;
  *   --bounded-reach, --gradient-limit  a cache record's R (photon/irradiance_cache.h).
- * Without a switch: the corner evaluation, whose soft indirect light is the photons',
- * where the paper's accurate one would start a final gather at the end of a final
- * gather's ray (jensen1996_evaluation.c), and those src/modes/README.md lists.
  */
 #include "jensen1996.h"
 
@@ -108,14 +105,21 @@ struct path {
     int branched;            /* whether it already branched into glossy_rays rays        */
 };
 
+/* A final gather's arrays, one entry per stratum. */
+struct gather_scratch {
+    double *importance;              /* photon flux times f_r,d                         */
+    int *rays_in;                    /* rays allotted                                   */
+    struct stratum_sample *strata;   /* what its rays found                             */
+    struct vec3 *summand;            /* what strata_integral() sums: mean L
+                                        (Lambertian), else mean f_r,d L                 */
+};
+
 /* The render's scratch and tallies: one per render, reached through the const mode. */
 struct scratch {
     struct nearest *nn;              /* for every photon search                        */
-    double *importance;              /* per stratum: photon flux times f_r,d            */
-    int *rays_in;                    /* per stratum: rays allotted                      */
-    struct stratum_sample *strata;   /* per stratum: what its rays found                */
-    struct vec3 *summand;            /* per stratum: what strata_integral() sums: mean
-                                        L (Lambertian), else mean f_r,d L               */
+    struct gather_scratch gathers[2]; /* [0] a gather's; [1] a corner's (corner_gathers),
+                                        made while the gather whose ray found the corner
+                                        still needs its own                             */
     struct jensen1996_stats *stats;
 };
 
@@ -325,7 +329,8 @@ static struct vec3 gathered_radiance(const struct jensen1996 *mode, const struct
     struct vec3 estimate = vec3_zero();
     if (split.has_diffuse)
         estimate = global_estimate(mode, s, &split, &frame, &r2);
-    struct arrival bounce = {.last = DIFFUSE_BOUNCE, .length = d, .radius2 = r2};
+    struct arrival bounce = {.last = DIFFUSE_BOUNCE, .from = path.eval, .length = d,
+                             .radius2 = r2};
     path.eval = accurate_or_approximate(mode->settings, &bounce);
     if (path.eval == CORNER)
         return surface_radiance(mode, s, path, rng, counters);
@@ -336,13 +341,13 @@ static struct vec3 gathered_radiance(const struct jensen1996 *mode, const struct
 }
 
 /* Jensen 1995's importance from the photon map on Ward and Heckbert's strata: the flux of
- * the nearest global photons arriving through each stratum, times f_r,d there. */
+ * the nearest global photons arriving through each stratum, times f_r,d there, into
+ * importance[]; returns their sum. */
 static double stratum_importance(const struct jensen1996 *mode, const struct gather_plan *plan,
                                  const struct surface *s, const struct material *diffuse,
-                                 const struct shading_frame *frame)
+                                 const struct shading_frame *frame, double *importance)
 {
     int mn = plan->theta * plan->phi;
-    double *importance = mode->scratch->importance;
     for (int i = 0; i < mn; i++)
         importance[i] = 0.0;
     struct nearest *nn = mode->scratch->nn;
@@ -365,19 +370,25 @@ static double stratum_importance(const struct jensen1996 *mode, const struct gat
 }
 
 /* The final gather at s: the strata's mean radiances and distances, and the summands of
- * its estimate (the mean radiances, or for a part that is not Lambertian mean f_r,d L). */
-static void final_gather(const struct jensen1996 *mode, const struct gather_plan *plan,
-                         const struct surface *s, const struct material *diffuse,
-                         int lambertian, const struct shading_frame *frame, struct path path,
-                         struct rng *rng, struct render_counters *counters)
+ * its estimate (the mean radiances, or for a part that is not Lambertian mean f_r,d L),
+ * in the scratch it returns. */
+static const struct gather_scratch *final_gather(const struct jensen1996 *mode,
+                                                 const struct gather_plan *plan,
+                                                 const struct surface *s,
+                                                 const struct material *diffuse,
+                                                 int lambertian,
+                                                 const struct shading_frame *frame,
+                                                 struct path path, struct rng *rng,
+                                                 struct render_counters *counters)
 {
-    struct scratch *sc = mode->scratch;
-    allot_rays(plan, stratum_importance(mode, plan, s, diffuse, frame), sc->importance,
-               sc->rays_in);
+    struct scratch *st = mode->scratch;
+    struct gather_scratch *sc = &st->gathers[path.eval == CORNER]; /* inside a gather */
+    allot_rays(plan, stratum_importance(mode, plan, s, diffuse, frame, sc->importance),
+               sc->importance, sc->rays_in);
     struct path gather = path;
     gather.depth = path.depth + 1;
     gather.rule = EMISSION_SKIP_ALL;
-    sc->stats->gathers++;
+    st->stats->gathers++;
     for (int j = 0; j < plan->theta; j++) {
         for (int k = 0; k < plan->phi; k++) {
             int i = j * plan->phi + k;
@@ -389,7 +400,7 @@ static void final_gather(const struct jensen1996 *mode, const struct gather_plan
                     continue; /* below the geometric surface: no light arrives */
                 struct hit hit;
                 counters->rays++;
-                sc->stats->gather_rays++;
+                st->stats->gather_rays++;
                 struct vec3 li = vec3_zero(); /* the sky: direct light, sampled */
                 if (scene_intersect(mode->scene, surface_ray(s, wi, 0), INFINITY, &hit)) {
                     struct surface at = surface_at(mode->scene, &hit, vec3_neg(wi));
@@ -407,6 +418,7 @@ static void final_gather(const struct jensen1996 *mode, const struct gather_plan
                                         : vec3_scale(reflected, 1.0 / sc->rays_in[i]);
         }
     }
+    return sc;
 }
 
 /* Irradiance at s from a final gather, as an irradiance record. */
@@ -417,14 +429,15 @@ static struct irradiance_record gathered_record(const struct jensen1996 *mode,
                                                 struct path path, struct rng *rng,
                                                 struct render_counters *counters)
 {
-    final_gather(mode, &mode->cached, s, diffuse, 1, frame, path, rng, counters);
+    const struct gather_scratch *sc =
+        final_gather(mode, &mode->cached, s, diffuse, 1, frame, path, rng, counters);
     /* no cache: R is unused */
     double a = mode->cache != NULL ? mode->settings->cache_accuracy : 1.0;
     struct record_reach reach = record_reach_at(&mode->scene->camera, s->p, frame->n, a,
                                                 mode->diagonal, mode->settings->bounded_reach,
                                                 mode->settings->gradient_limit);
     return irradiance_record_of(s->p, frame->t, frame->b, frame->n, mode->cached.theta,
-                                mode->cached.phi, mode->scratch->strata, reach);
+                                mode->cached.phi, sc->strata, reach);
 }
 
 /* The fourth term of Eq. 2 at an accurate point. Lambertian: rho / pi times the
@@ -440,11 +453,10 @@ static struct vec3 soft_indirect(const struct jensen1996 *mode, const struct sur
                                  const struct shading_frame *frame, struct path path,
                                  struct rng *rng, struct render_counters *counters)
 {
-    if (!split->lambertian) {
-        final_gather(mode, &mode->per_sample, s, &split->diffuse, 0, frame, path, rng,
-                     counters);
-        return strata_integral(&mode->per_sample, mode->scratch->summand);
-    }
+    if (!split->lambertian)
+        return strata_integral(&mode->per_sample,
+                               final_gather(mode, &mode->per_sample, s, &split->diffuse, 0,
+                                            frame, path, rng, counters)->summand);
     if (vec3_max_component(brdf_albedo(&split->diffuse, frame, s->wo)) <= 0)
         return vec3_zero();
     struct vec3 e;
@@ -462,9 +474,9 @@ static struct vec3 soft_indirect(const struct jensen1996 *mode, const struct sur
         e = record.e;
     } else {
         mode->scratch->stats->gather_fallbacks++;
-        final_gather(mode, &mode->per_sample, s, &split->diffuse, 1, frame, path, rng,
-                     counters);
-        e = strata_integral(&mode->per_sample, mode->scratch->summand);
+        e = strata_integral(&mode->per_sample,
+                            final_gather(mode, &mode->per_sample, s, &split->diffuse, 1, frame,
+                                         path, rng, counters)->summand);
     }
     return diffuse_reflection(s, &split->diffuse, frame, e);
 }
@@ -491,9 +503,9 @@ static struct vec3 surface_radiance(const struct jensen1996 *mode, const struct 
             l = vec3_add(l, all_but_direct(mode, s, &split, &frame));
         } else if (split.has_diffuse) {
             l = vec3_add(l, caustics(mode, s, &split, &frame));
-            if (path.eval == ACCURATE) {
+            if (gathers_soft_indirect(mode->settings, path.eval)) {
                 l = vec3_add(l, soft_indirect(mode, s, &split, &frame, path, rng, counters));
-            } else {
+            } else { /* a corner's, the photons' (the departure in gathers_soft_indirect()) */
                 struct estimate_settings indirect = mode->global_es;
                 indirect.kinds = PHOTON_INDIRECT;
                 l = vec3_add(l, photon_estimate(mode, mode->maps.global, &indirect, s,
@@ -560,10 +572,13 @@ static struct scratch *scratch_create(const struct jensen1996 *mode,
     size_t mn = (size_t)mode->cached.theta * (size_t)mode->cached.phi; /* the larger plan */
     struct scratch *sc = xmalloc(1, sizeof *sc, "render scratch");
     sc->nn = nearest_create(k);
-    sc->importance = xmalloc(mn, sizeof *sc->importance, "strata");
-    sc->rays_in = xmalloc(mn, sizeof *sc->rays_in, "strata");
-    sc->strata = xmalloc(mn, sizeof *sc->strata, "strata");
-    sc->summand = xmalloc(mn, sizeof *sc->summand, "strata");
+    for (int i = 0; i < 2; i++) {
+        struct gather_scratch *g = &sc->gathers[i];
+        g->importance = xmalloc(mn, sizeof *g->importance, "strata");
+        g->rays_in = xmalloc(mn, sizeof *g->rays_in, "strata");
+        g->strata = xmalloc(mn, sizeof *g->strata, "strata");
+        g->summand = xmalloc(mn, sizeof *g->summand, "strata");
+    }
     sc->stats = stats;
     return sc;
 }
@@ -571,10 +586,12 @@ static struct scratch *scratch_create(const struct jensen1996 *mode,
 static void scratch_free(struct scratch *sc)
 {
     nearest_free(sc->nn);
-    xfree(sc->importance);
-    xfree(sc->rays_in);
-    xfree(sc->strata);
-    xfree(sc->summand);
+    for (int i = 0; i < 2; i++) {
+        xfree(sc->gathers[i].importance);
+        xfree(sc->gathers[i].rays_in);
+        xfree(sc->gathers[i].strata);
+        xfree(sc->gathers[i].summand);
+    }
     xfree(sc);
 }
 

@@ -12,15 +12,13 @@
  * is low." The few reflections: from an accurate point, with weight --accurate-weight or
  * more. The small threshold, whose value is not specified by the paper: --accurate-distance
  * radii of the global estimate at the ray's end, whose disc reaches back towards the
- * gathering point ("colour bleeding effects in corners"). Departure, without a switch:
- * that end gets the corner evaluation (the top of jensen1996.c), whose soft indirect
- * light is the global map's indirect photons, where the paper's accurate evaluation
- * would make a final gather at the end of a final gather's ray; the rays of that gather
- * into the same corner are short again, and whether their length or their low weight
- * then decides is not specified by the paper. Departure, with a switch: a surface seen
- * through a glossy lobe, whose blur hides the global map's, gets the through-gloss
- * evaluation (glossy_corner; off, the paper's: glossy lobes count as specular), sparing
- * a gather and a search of the caustic map for every glossy ray. */
+ * gathering point ("colour bleeding effects in corners"); that end gets the corner
+ * evaluation (gathers_soft_indirect()). How deep corners recur is not specified by the
+ * paper either: the rays of a gather made at a corner are approximate at any length.
+ * Departure, with a switch: a surface seen through a glossy lobe, whose blur hides the
+ * global map's, gets the through-gloss evaluation (glossy_corner; off, the paper's:
+ * glossy lobes count as specular), sparing a gather and a search of the caustic map for
+ * every glossy ray. */
 enum evaluation accurate_or_approximate(const struct jensen1996_settings *settings,
                                         const struct arrival *a)
 {
@@ -28,9 +26,22 @@ enum evaluation accurate_or_approximate(const struct jensen1996_settings *settin
         return ACCURATE;
     if (a->last == DIFFUSE_BOUNCE) {
         double reach = settings->accurate_distance;
-        return a->length * a->length < reach * reach * a->radius2 ? CORNER : APPROXIMATE;
+        return a->from != CORNER && a->length * a->length < reach * reach * a->radius2
+                   ? CORNER
+                   : APPROXIMATE;
     }
     if (a->from != ACCURATE || a->weight < settings->accurate_weight)
         return APPROXIMATE;
     return a->glossy && settings->glossy_corner ? THROUGH_GLOSS : ACCURATE;
+}
+
+/* An accurate point gathers (4.4). A corner is evaluated accurately, but for the paper's
+ * final gather (corner_gathers, --no-corner-photons) it takes, by default, the global
+ * map's estimate from its indirect photons, a departure: the paper's gather at the end
+ * of a gather's ray costs a gather of its own wherever the cache has no record there,
+ * in the creases where the records are smallest, and the global map's disc, of a few
+ * radii the ray's length, already stands for the light the corner's gather would find. */
+int gathers_soft_indirect(const struct jensen1996_settings *settings, enum evaluation eval)
+{
+    return eval == ACCURATE || (eval == CORNER && settings->corner_gathers);
 }

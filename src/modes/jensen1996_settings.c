@@ -13,7 +13,7 @@ struct jensen1996_settings jensen1996_settings_default(void)
     js.caustic_photons = J96_DEFAULT_CAUSTIC_PHOTONS;
     js.global_gather = J96_DEFAULT_GATHER;
     js.caustic_gather = J96_DEFAULT_CAUSTIC_GATHER;
-    js.max_radius = 0;
+    js.max_radius = -1; /* the default */
     js.caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     js.cone_k = 1.0;
     js.count_rim = 0;
@@ -27,6 +27,7 @@ struct jensen1996_settings jensen1996_settings_default(void)
     js.precomputed_irradiance = J96_DEFAULT_PRECOMPUTED;
     js.both_lobes = 1;
     js.glossy_corner = 1;
+    js.corner_gathers = 0;
     js.bounded_reach = 1;
     js.gradient_limit = 1;
     js.disc_coverage = 1;

@@ -61,11 +61,11 @@ struct jensen1996_settings {
                                  map (caustics are then missing from the image)          */
     size_t global_gather;     /* k of the global map's estimates, 1..MAX_GATHER          */
     size_t caustic_gather;    /* k of the caustic map's estimates, 1..MAX_GATHER         */
-    double max_radius;        /* > 0: the global estimates' largest radius; <= 0: the
-                                 photons mode's default (1/10 of the scene's diagonal)   */
+    double max_radius;        /* > 0: the global estimates' largest radius; 0: none,
+                                 the paper's; < 0: the photons mode's default (1/10 of
+                                 the scene's diagonal), a departure (photons.h)          */
     double caustic_radius_fraction; /* caustic estimates reach this fraction of it, in
-                                 (0, 1] (CAUSTIC_RADIUS_FRACTION; --paper's 1, the nearest
-                                 to the paper, which has no maximum radius)              */
+                                 (0, 1] (CAUSTIC_RADIUS_FRACTION)                        */
     double cone_k;            /* cone filter of the caustic estimate (Eq. 4-5); 0: none */
     int count_rim;            /* 1: estimates count the rim photon, as Eq. 3 is printed */
     int gather_rays;          /* rays of one final gather, 2..J96_MAX_GATHER_RAYS        */
@@ -94,6 +94,10 @@ struct jensen1996_settings {
     int glossy_corner;        /* 1: a surface seen through a glossy lobe is evaluated
                                  through gloss (a departure); 0: accurately, as one
                                  seen "via a few specular reflections" (the paper's)     */
+    int corner_gathers;       /* 1: a corner (the end of a short gather ray) gathers its
+                                 soft indirect light, as accurate points do (the
+                                 paper's); 0: the global map's indirect photons (a
+                                 departure, jensen1996_evaluation.c)                     */
     int bounded_reach;        /* 1: cache records' R bounded from the camera's view
                                  (record_radius_bounds(), a departure); 0: Ward's R     */
     int gradient_limit;       /* 1: a record's R at most E / |grad E| (a departure)      */

@@ -14,10 +14,11 @@
  * No direct lighting is computed: everything a diffuse surface shows comes from the
  * photons, which is why the picture is blotchy at low photon counts, and why its
  * brightness is right (the estimate is consistent) where it is not blotchy.
- * The one departure, which --paper undoes: each estimate leaves out the photon on its rim
- * (--exclude-rim-photon; photon/estimate.h says why). Without a switch: the estimates'
- * maximum radius (PHOTONS_RADIUS_FRACTION), where the paper's sphere grows until it holds
- * its photons (src/modes/README.md, Estimates).
+ * The two departures, which --paper undoes: each estimate leaves out the photon on its rim
+ * (--exclude-rim-photon; photon/estimate.h says why), and stops at a maximum radius
+ * (--max-radius, PHOTONS_RADIUS_FRACTION of the scene's diagonal by default), where the
+ * paper's sphere grows until it holds its photons (--no-max-radius; src/modes/README.md,
+ * Estimates).
  *
  * The estimate's scratch (struct nearest) is made once before render_pixels() and
  * reached through the mode struct: render_pixels() estimates one pixel at a time, so a
@@ -96,18 +97,25 @@ static void photons_sample_taken(const void *mode, size_t pixel, struct vec3 val
     photons_error_sample_taken(pm->error, pixel, value, counted);
 }
 
-/* PHOTONS_RADIUS_FRACTION of the diagonal of the scene's bounding box, so the limit
- * scales with the scene; no limit (HUGE_VAL) for a scene with no extent. */
-static double default_max_radius(const struct scene *scene)
+/* The diagonal of the scene's bounding box, so the default limit scales with the scene;
+ * HUGE_VAL, no limit, for a scene with no extent. */
+static double box_diagonal(const struct scene *scene)
 {
     struct aabb box = geometry_bounds(scene->geometry);
     double diagonal = vec3_length(vec3_sub(box.hi, box.lo));
-    return isfinite(diagonal) && diagonal > 0 ? PHOTONS_RADIUS_FRACTION * diagonal : HUGE_VAL;
+    return isfinite(diagonal) && diagonal > 0 ? diagonal : HUGE_VAL;
+}
+
+double largest_radius(double max_radius, double diagonal)
+{
+    if (max_radius > 0)
+        return max_radius;
+    return max_radius == 0 ? HUGE_VAL : PHOTONS_RADIUS_FRACTION * diagonal;
 }
 
 struct max_radii max_radii_of(double max_radius, double caustic_fraction, double diagonal)
 {
-    double r = max_radius > 0 ? max_radius : PHOTONS_RADIUS_FRACTION * diagonal;
+    double r = largest_radius(max_radius, diagonal);
     struct max_radii radii;
     radii.all_r2 = r * r;
     radii.caustic_r2 = radii.all_r2 * caustic_fraction * caustic_fraction;
@@ -232,7 +240,7 @@ struct render_result render_photons(const struct scene *scene, const struct rend
         global_work_free(&own_work);
         return result;
     }
-    stats->max_radius = ps->max_radius > 0 ? ps->max_radius : default_max_radius(scene);
+    stats->max_radius = largest_radius(ps->max_radius, box_diagonal(scene));
     struct photons_mode pm;
     pm.scene = scene;
     pm.map = map;

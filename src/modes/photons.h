@@ -20,17 +20,21 @@
                                        have none: src/modes/README.md, Estimates)       */
 #define CAUSTIC_RADIUS_FRACTION 0.25 /* caustic estimates (1994, 1996) reach this much of
                                         the maximum radius by default (--caustic-radius-
-                                        fraction; --paper's 1, as the papers have no
-                                        maximum): caustic photons are dense where they
+                                        fraction): caustic photons are dense where they
                                         are, and a wide disc hangs over the edges of the
                                         surface where they are sparse                   */
 
+/* The largest radius of an estimate from a mode's max_radius setting: itself when > 0;
+ * none (HUGE_VAL) when 0, the papers' sphere, grown until it holds its photons
+ * (--no-max-radius); else the default, PHOTONS_RADIUS_FRACTION of diagonal. */
+double largest_radius(double max_radius, double diagonal);
+
 /* The squared maximum radii of modes 1994's and 1996's photon estimates: every
- * estimate's, from max_radius (> 0) or else PHOTONS_RADIUS_FRACTION of the scene's
- * diagonal (scene_diagonal(): 1 for a scene with no extent), and the caustic estimates',
- * caustic_fraction of that radius. One set-up, so --max-radius and
- * --caustic-radius-fraction mean the same in both modes. (`--mode photons` sets its own
- * radius up: no limit at all for a scene with no extent.) */
+ * estimate's, largest_radius() of the scene's diagonal (scene_diagonal(): 1 for a scene
+ * with no extent), and the caustic estimates', caustic_fraction of that radius. One
+ * set-up, so --max-radius and --caustic-radius-fraction mean the same in both modes.
+ * (`--mode photons` sets its own radius up: no limit at all for a scene with no
+ * extent.) */
 struct max_radii {
     double all_r2;     /* every estimate's, or the global map's                         */
     double caustic_r2; /* the caustic estimates': all_r2 times the fraction squared     */
@@ -40,8 +44,8 @@ struct max_radii max_radii_of(double max_radius, double caustic_fraction, double
 struct photon_settings {
     size_t n_photons;  /* N emitted, 1..MAX_PHOTONS (trace.h)                           */
     size_t gather;     /* k, photons per estimate, 1..MAX_GATHER                        */
-    double max_radius; /* > 0: photons farther than this are not gathered; <= 0: the
-                          default, PHOTONS_RADIUS_FRACTION of the scene's diagonal      */
+    double max_radius; /* > 0: photons farther than this are not gathered; 0: none,
+                          the paper's; < 0: the default, largest_radius()               */
     double cone_k;     /* 0: the plain estimate; >= 1: the cone filter (estimate.h)     */
     int count_rim;     /* 1: the rim photon counts, as Eq. 3 is printed (estimate.h)    */
     struct global_work *work; /* NULL: the map is traced and released here; else, empty,

@@ -24,9 +24,11 @@ static size_t bucket_of(const struct hit_point_grid *grid, int64_t i, int64_t j,
     return (size_t)(h & (grid->n_buckets - 1));
 }
 
-/* The most cells a disc box touches: it is at most as wide as a cell, 2 reach <= 2 cells,
- * so it spans at most 3 cells a side. */
-#define MAX_CELLS 27
+/* The most cells a disc box touches: it is 2 reach <= 2 cells wide, so it spans 3 cells a
+ * side, and 4 when rounding x - r or x + r moves a side exactly on a cell's boundary across
+ * it (the hit point with the largest reach at the grid's origin: a photon of its disc was
+ * lost when the box was cut to 27 cells, 2009 on point-in-sphere's centre pixel). */
+#define MAX_CELLS 64
 
 /* The distinct buckets of the cells that hit point hp's disc box touches, into b;
  * returns how many. */

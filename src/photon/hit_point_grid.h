@@ -3,9 +3,9 @@
  * pbrt's SPPM use one): the other way than the kd-tree of hit_points.h to find, for a
  * photon, every hit point whose disc holds it, made for hit points that change every pass.
  * Cubic cells as wide as the largest reach; each hit point is listed in every cell its
- * disc's box touches (at most 27, in practice 8 or fewer), cells are hashed into buckets,
- * and a photon reads the one bucket of its cell. Built in two passes over the hit points
- * (count, then fill), without sorting.
+ * disc's box touches (27 at most, 64 with rounding, in practice 8 or fewer), cells are
+ * hashed into buckets, and a photon reads the one bucket of its cell. Built in two passes
+ * over the hit points (count, then fill), without sorting.
  */
 #ifndef PHOTON_HIT_POINT_GRID_H
 #define PHOTON_HIT_POINT_GRID_H

@@ -5,8 +5,7 @@
  * Life of a map: the photon tracer fills an array of photons, balance_kdtree() takes it
  * and returns the map, estimates call locate_photons() (the k nearest) any number of
  * times with a struct nearest made once per render, and kdtree_free() releases the map.
- * A built map is only read. for_each_photon_within() (a fixed radius) serves no mode: the
- * literal programs in tests/ gather with it, as the progressive papers do.
+ * A built map is only read.
  * The tree's layout and invariants are described at the top of kdtree.c.
  */
 #ifndef PHOTON_KDTREE_H
@@ -102,16 +101,5 @@ void locate_photons_of_kinds(const struct kdtree *map, const struct photon_query
  * checking of Jensen and Christensen 1994 (estimate.h). Heapsort: O(found log found),
  * in place, allocates nothing. Photons at equal distance keep a deterministic order. */
 void nearest_sort(struct nearest *nn);
-
-/* Calls visit(context, p, d2) for every photon p with d2 = |p - x|^2 <= r2 (r2 >= 0),
- * in the tree's order (deterministic for a given map), and returns how many it visited.
- * Fixed-radius gathering, as the progressive papers find "the photons within the radius"
- * of a hit point in a photon map: the literal programs in tests/ (literal_sppm2009.c)
- * do, while 2008 and 2009 search their hit points for each photon instead
- * (photon/hit_points.h, hit_point_grid.h). Allocates nothing. */
-size_t for_each_photon_within(const struct kdtree *map, struct vec3 x, double r2,
-                              void (*visit)(void *context, const struct photon *p,
-                                            double d2),
-                              void *context);
 
 #endif
