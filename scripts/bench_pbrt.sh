@@ -22,7 +22,7 @@
 #      photon's. When the three took more than 10% from T (the shared machine's load moved,
 #      or the law missed), they run once more at the count the law gives through the
 #      seconds they took, and that second run is the one reported.
-# Seconds are the user CPU seconds of the commands (the shell's `times`), never wall time.
+# Seconds are the user + system CPU seconds of the commands (the shell's `times`), never wall time.
 #
 # It prints, on stdout, lines pbrt.SCENE.KEY=VALUE: radius, photon_seconds, photon_relmse,
 # photon_worst_block, photon_worst_block_at, pbrt_iterations, pbrt_seconds, pbrt_relmse,
@@ -94,39 +94,8 @@ for s in $scenes; do
 done
 mkdir -p "$dir" || exit 2
 
-# The user CPU seconds this shell's finished children have taken, from `times` (its
-# second line), into $dir/times.$1. `times` runs in this shell: in a subshell, $(...), it
-# would see only the subshell's children.
-cpu() {
-    times > "$dir/times.$1" || exit 1
-}
-seconds() {
-    awk 'NR == 2 { split($1, t, "m"); sub(/s$/, "", t[2]); printf "%.3f\n", t[1] * 60 + t[2] }' "$dir/times.$1"
-}
-
-# Runs the command, its output into the log $1; prints nothing, leaves its user CPU seconds
-# in $took; exits 1 when it fails or took no time (a clock that does not count).
-timed() {
-    log=$1
-    shift
-    cpu before
-    if ! "$@" < /dev/null > "$log" 2>&1; then
-        echo "bench-pbrt: failed: $* (log: $log)" >&2
-        tail -n 3 "$log" >&2
-        exit 1
-    fi
-    cpu after
-    took=$(awk -v a="$(seconds after)" -v b="$(seconds before)" 'BEGIN { printf "%.2f\n", a - b }')
-    if ! awk -v t="$took" 'BEGIN { exit !(t > 0) }'; then
-        echo "bench-pbrt: $1 took $took CPU seconds by the shell's times: cannot time it" >&2
-        exit 1
-    fi
-}
-
-# The value of key $1 in the compare line $2.
-field() {
-    echo "$2" | sed -n "s/.* $1=\([^ ]*\).*/\1/p"
-}
+bench=bench-pbrt
+. scripts/bench-lib.sh
 
 # pbrt on scene $1, channel $2, $3 iterations: the export with --spp $3 (SPPM's iterations
 # are its sampler's samples a pixel, and the export picks a sampler that keeps the count),

@@ -227,8 +227,8 @@ for part in $parts; do
         settings=$(sed -n 's/^pbrt\.settings=//p' build/figures-pbrt.txt)
         echo "" >> build/figures-pbrt.md
         echo "One thread each; pbrt-v4's \`Integrator \"sppm\" $settings\` and the radius" \
-            "(\`float radius\`, mm) of the table; seconds are user CPU seconds, pbrt's the sum" \
-            "of its three channels' renders." >> build/figures-pbrt.md
+            "(\`float radius\`, mm) of the table; seconds are user + system CPU seconds," \
+            "pbrt's the sum of its three channels' renders." >> build/figures-pbrt.md
         splice pbrt build/figures-pbrt.md tests/bench/README.md
         ;;
     cycles)
