@@ -88,7 +88,7 @@ int main(int argc, char **argv)
         rs.y1 = p->y + 1;
         struct ppm_settings ps = ppm_settings_default();
         ps.progressive.passes = FIG4_PASSES;
-        ps.progressive.direct_photons = 1; /* every photon counts, as in the paper's Fig. 4 */
+        ps.progressive.direct_light_samples = 0; /* every photon counts, as in the paper's Fig. 4 */
         ps.progressive.footprints = 1; /* R0 one footprint (shortened by walls), one estimate */
         ps.caustic_footprints = 0;
         ps.observer = &observer;

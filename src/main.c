@@ -362,7 +362,7 @@ static struct progressive_settings progressive_settings(const struct options *o,
     ps.fit_radius = o->fit_radius;
     ps.facing_test = o->facing_test;
     ps.turn_photon_directions = o->turn_photon_directions;
-    ps.direct_photons = !o->direct_light_samples;
+    ps.direct_light_samples = o->direct_light_samples;
     ps.report = report;
     ps.snapshot_every = o->checkpoint;
     ps.snapshot = o->checkpoint > 0 ? snapshot : NULL;
@@ -387,11 +387,9 @@ static void warn_fine_flake(const struct scene *scene, const char *mode)
                 mode, scene->sphereflake_levels, pow(3.0, scene->sphereflake_levels));
 }
 
-/* Renders with the chosen mode; the image is NULL (and *err filled) on failure. The
- * options name a departure by its default side (--exclude-rim-photon, --shadow-rays,
- * --direct-light-samples), the modes' settings the switches count_rim, shadow_photons and
- * direct_photons by the paper's, so those are negated where they become settings (here
- * and in progressive_settings()). */
+/* Renders with the chosen mode; the image is NULL (and *err filled) on failure. Each
+ * switch becomes the mode's setting of the same name and sense (--exclude-rim-photon,
+ * exclude_rim), named by the departure's side as the option names it. */
 static struct render_result render_mode(struct run *run, struct error *err)
 {
     struct checkpoint report = {report_checkpoint, &run->report};
@@ -445,7 +443,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         ps.gather = (size_t)run->o.gather;
         ps.max_radius = run->o.max_radius;
         ps.cone_k = run->o.cone;
-        ps.count_rim = !run->o.exclude_rim;
+        ps.exclude_rim = run->o.exclude_rim;
         ps.work = &run->work;
         return render_photons(run->scene, &run->rs, &ps, want_variance, checkpoint,
                               &run->counters, &run->photon_stats, err);
@@ -455,7 +453,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         settings_1994.gather = (size_t)run->o.gather;
         settings_1994.max_radius = run->o.max_radius;
         settings_1994.differential_run = run->o.differential_run;
-        settings_1994.count_rim = !run->o.exclude_rim;
+        settings_1994.exclude_rim = run->o.exclude_rim;
         settings_1994.caustic_radius_fraction = run->o.caustic_radius_fraction;
         settings_1994.gather_rays = run->o.gather_rays;
         settings_1994.cache_accuracy = run->o.cache_accuracy;
@@ -479,20 +477,20 @@ static struct render_result render_mode(struct run *run, struct error *err)
         settings_1996.caustic_gather = (size_t)run->o.caustic_gather;
         settings_1996.max_radius = run->o.max_radius;
         settings_1996.cone_k = run->o.cone;
-        settings_1996.count_rim = !run->o.exclude_rim;
+        settings_1996.exclude_rim = run->o.exclude_rim;
         settings_1996.caustic_radius_fraction = run->o.caustic_radius_fraction;
         settings_1996.gather_rays = run->o.gather_rays;
         settings_1996.glossy_rays = run->o.glossy_rays;
         settings_1996.cache_accuracy = run->o.cache_accuracy;
         settings_1996.accurate_distance = run->o.accurate_distance;
         settings_1996.accurate_weight = run->o.accurate_weight;
-        settings_1996.shadow_photons = !run->o.shadow_rays;
+        settings_1996.shadow_rays = run->o.shadow_rays;
         settings_1996.one_map = run->o.one_map;
         settings_1996.precomputed_irradiance = run->o.precomputed_irradiance;
         settings_1996.disc_coverage = run->o.disc_coverage;
         settings_1996.both_lobes = run->o.both_lobes;
         settings_1996.glossy_corner = run->o.glossy_corner;
-        settings_1996.corner_gathers = !run->o.corner_photons;
+        settings_1996.corner_photons = run->o.corner_photons;
         settings_1996.bounded_reach = run->o.bounded_reach;
         settings_1996.gradient_limit = run->o.gradient_limit;
         settings_1996.report = checkpoint;

@@ -159,7 +159,7 @@ static struct vec3 direct_light(const struct pass2 *p2, const struct surface *s,
 static struct vec3 photon_irradiance(const struct pass2 *p2, const struct surface *s,
                                      unsigned kinds)
 {
-    struct irradiance_settings is = {p2->ls->gather, HUGE_VAL, kinds, DIFFERENTIAL_RUN, 1};
+    struct irradiance_settings is = {p2->ls->gather, HUGE_VAL, kinds, DIFFERENTIAL_RUN, 0};
     return irradiance_estimate(p2->map, s->p, s->ng, &is, p2->nn);
 }
 

@@ -53,7 +53,7 @@ static struct ppm_settings error_settings(long passes, enum departure departure)
     struct ppm_settings ps = ppm_settings_default();
     ps.progressive.passes = passes;
     ps.progressive.photons_per_pass = PHOTONS;
-    ps.progressive.direct_photons = departure == DIRECT_PHOTONS || departure == PHOTONS_ALONE;
+    ps.progressive.direct_light_samples = departure != DIRECT_PHOTONS && departure != PHOTONS_ALONE;
     ps.merge_hit_points = departure != UNMERGED && departure != PHOTONS_ALONE;
     ps.resample_emission = departure != FIXED_EMISSION;
     return ps;

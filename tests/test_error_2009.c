@@ -16,15 +16,15 @@
 #define OUT "/tmp/photon_test_error_2009"
 #define PHOTONS 20000 /* photons a pass: few, so that a test case takes about a second */
 
-/* 2009 at its defaults but for the passes, PHOTONS a pass and the direct light: from the
- * photons (the paper's way, direct_photons 1), whose density estimate then carries the
- * light a closed form knows and so its bias, or by light samples (the default). */
-static struct sppm_settings error_settings(long passes, int direct_photons)
+/* 2009 at its defaults but for the passes, PHOTONS a pass and the direct light: by light
+ * samples (direct_light_samples 1, the default), or from the photons (0, the paper's way),
+ * whose density estimate then carries the light a closed form knows and so its bias. */
+static struct sppm_settings error_settings(long passes, int direct_light_samples)
 {
     struct sppm_settings ps = sppm_settings_default();
     ps.progressive.passes = passes;
     ps.progressive.photons_per_pass = PHOTONS;
-    ps.progressive.direct_photons = direct_photons;
+    ps.progressive.direct_light_samples = direct_light_samples;
     return ps;
 }
 
@@ -33,7 +33,7 @@ struct case_2009 {
     double (*along)(struct ray);
     int width, height;
     long passes;
-    int direct_photons;
+    int direct_light_samples;
     uint64_t seed;
 };
 
@@ -45,7 +45,7 @@ static struct render_result render_case(const struct scene *scene, const struct 
     struct render_settings rs = case_settings(scene, c->seed, (int)c->passes, window);
     rs.error_confidence = 0.95;
     rs.target_error = target_error;
-    struct sppm_settings ps = error_settings(c->passes, c->direct_photons);
+    struct sppm_settings ps = error_settings(c->passes, c->direct_light_samples);
     struct render_counters counters = {0};
     struct ppm_stats stats;
     return render_sppm(scene, &rs, &ps, &counters, &stats);
@@ -88,12 +88,12 @@ static struct coverage sppm_coverage(const struct case_2009 *c, struct coverage 
 static void test_bound_covers_closed_forms(struct check *t)
 {
     static const struct case_2009 cases[] = {
-        {"scenes/analytic/point-over-plane.scene", point_over_plane, 32, 32, 64, 1, 301},
-        {"scenes/analytic/point-over-plane.scene", point_over_plane, 32, 32, 256, 1, 302},
-        {"scenes/analytic/sky-over-floor.scene", sky_over_floor_with_sphere, 32, 24, 256, 1,
+        {"scenes/analytic/point-over-plane.scene", point_over_plane, 32, 32, 64, 0, 301},
+        {"scenes/analytic/point-over-plane.scene", point_over_plane, 32, 32, 256, 0, 302},
+        {"scenes/analytic/sky-over-floor.scene", sky_over_floor_with_sphere, 32, 24, 256, 0,
          303},
-        {"scenes/analytic/area-over-floor.scene", area_over_floor, 32, 32, 64, 1, 304},
-        {"scenes/analytic/point-over-plane.scene", point_over_plane, 24, 24, 64, 0, 305},
+        {"scenes/analytic/area-over-floor.scene", area_over_floor, 32, 32, 64, 0, 304},
+        {"scenes/analytic/point-over-plane.scene", point_over_plane, 24, 24, 64, 1, 305},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         struct coverage without;
@@ -101,12 +101,12 @@ static void test_bound_covers_closed_forms(struct check *t)
         printf("  error: 2009 %s, %ld passes, direct light by %s: truth within the 95%% bound "
                "in %.3f (%.3f without the bias term); rms(bound)/rms(error) %.2f, median over "
                "8 x 8 blocks %.2f\n", cases[k].path, cases[k].passes,
-               cases[k].direct_photons ? "photons" : "light samples", c.covered,
+               cases[k].direct_light_samples ? "light samples" : "photons", c.covered,
                without.covered, c.rms_ratio, c.sharpness);
         CHECK(t, c.covered >= 0.95);
-        if (cases[k].direct_photons)
+        if (!cases[k].direct_light_samples)
             CHECK(t, c.sharpness <= 3.0);
-        if (cases[k].along == point_over_plane && cases[k].direct_photons)
+        if (cases[k].along == point_over_plane && !cases[k].direct_light_samples)
             CHECK(t, without.covered < 0.95);
     }
 }
@@ -121,7 +121,7 @@ static void test_crop_error_is_window(struct check *t)
     struct scene *scene = load_test_scene("scenes/analytic/sky-over-floor.scene", 40, 30);
     REQUIRE(t, scene != NULL);
     static const int window[4] = {7, 5, 26, 21};
-    const struct case_2009 c = {"", NULL, 40, 30, ERROR_MIN_SPP, 1, 5};
+    const struct case_2009 c = {"", NULL, 40, 30, ERROR_MIN_SPP, 0, 5};
     struct render_result a = render_case(scene, &c, NULL, 0.0);
     struct render_result b = render_case(scene, &c, window, 0.0);
     CHECK(t, crop_is_window(a.image, b.image, window));
@@ -144,7 +144,7 @@ static double target_render(double e, int *passes, int *all_within)
     struct render_settings rs = render_settings_whole(scene, 401, 4096, MAX_DEPTH_LIMIT);
     rs.error_confidence = 0.95;
     rs.target_error = e;
-    struct sppm_settings ps = error_settings(4096, 1);
+    struct sppm_settings ps = error_settings(4096, 0);
     struct render_counters counters = {0};
     struct ppm_stats stats;
     struct render_result result = render_sppm(scene, &rs, &ps, &counters, &stats);

@@ -28,7 +28,7 @@ static struct render_result render_case(const struct scene *scene, const struct 
 {
     struct render_settings rs = case_settings(scene, c->seed, 16, window);
     rs.error_confidence = error ? 0.95 : 0.0;
-    struct photon_settings ps = {c->photons, c->gather, -1.0, 0.0, 0, NULL};
+    struct photon_settings ps = {c->photons, c->gather, -1.0, 0.0, 1, NULL};
     struct render_counters counters = {0};
     struct photon_stats stats;
     struct error err = {0};

@@ -284,7 +284,7 @@ static double caustic_at(const struct scene *scene, const struct irradiance_stor
                          struct vec3 p, int variant, struct nearest *nn)
 {
     struct irradiance_settings is = {200, HUGE_VAL, PHOTON_CAUSTIC,
-                                     variant == 1 ? DIFFERENTIAL_RUN : 0, 0};
+                                     variant == 1 ? DIFFERENTIAL_RUN : 0, 1};
     struct store_query q = {p, vec3(0, 1, 0), -1, 0, 0, &is};
     struct hit hit; /* the floor under p: its primitive and (u, v) */
     if (variant == 2 && scene_intersect(scene, make_ray(vec3(p.x, 1, p.z), vec3(0, -1, 0)),
@@ -333,7 +333,7 @@ static struct profile_errors caustic_profile_errors(const struct scene *scene,
 static int caustic_copy_agrees(const struct irradiance_stores *st)
 {
     struct nearest *nn = nearest_create(200);
-    struct irradiance_settings is = {200, HUGE_VAL, PHOTON_CAUSTIC, DIFFERENTIAL_RUN, 0};
+    struct irradiance_settings is = {200, HUGE_VAL, PHOTON_CAUSTIC, DIFFERENTIAL_RUN, 1};
     int same = st->caustics->n_photons > 0;
     for (int i = 0; i <= 20; i++) {
         struct vec3 p = vec3(0.3, 0, -0.9 + 1.8 * i / 20.0);

@@ -194,7 +194,7 @@ static void test_point_in_sphere(struct check *t)
  * catches: visibility decided the wrong way round (whole shadows lit), photons of one
  *   light deciding for another, photons from the far side of a wall counted, shadow
  *   photons left in the global map (the floor brightened or darkened under the spheres),
- *   shadow_photons 0 ignored (every shadow ray cast). */
+ *   shadow_rays 0 ignored (every shadow ray cast). */
 static void test_shadow_photons(struct check *t)
 {
     static const int window[4] = {25, 42, 55, 63};
@@ -202,9 +202,9 @@ static void test_shadow_photons(struct check *t)
     struct j96_case c = small_case("scenes/cornell.scene", 64, 20000, 32);
     c.spp = 4;
     c.window = window;
-    c.js.shadow_photons = 1;
+    c.js.shadow_rays = 0;
     struct j96_run with = render_case(&c);
-    c.js.shadow_photons = 0;
+    c.js.shadow_rays = 1;
     struct j96_run without = render_case(&c);
     CHECK(t, ref != NULL && with.image != NULL && without.image != NULL);
     if (ref != NULL && with.image != NULL && without.image != NULL) {

@@ -225,7 +225,7 @@ static struct kdtree *line_of_photons(void)
  *   printed is f_r 8 / (pi 8^2), ours f_r 7 / (pi 8^2); the 1994 irradiance without
  *   differential checking 8 / (pi 8^2) against 7 / (pi 8^2).
  * tolerance: 1e-12 relative (a few roundings).
- * catches: count_rim ignored by either estimate, or the rim photon counted twice. */
+ * catches: exclude_rim ignored by either estimate, or the rim photon counted twice. */
 static void test_rim_photon_switch(struct check *t)
 {
     struct scene *scene = scene_create();
@@ -236,13 +236,13 @@ static void test_rim_photon_switch(struct check *t)
     struct kdtree *map = line_of_photons();
     struct nearest *nn = nearest_create(8);
     double fr = 0.5 / PI, area = PI * 64;
-    struct estimate_settings es = {8, HUGE_VAL, 0, 0, 0};
+    struct estimate_settings es = {8, HUGE_VAL, 0, 0, 1};
     CHECK_CLOSE(t, radiance_estimate(map, &at, &es, nn).y, fr * 7 / area, 1e-12 * fr / area);
-    es.count_rim = 1;
+    es.exclude_rim = 0;
     CHECK_CLOSE(t, radiance_estimate(map, &at, &es, nn).y, fr * 8 / area, 1e-12 * fr / area);
-    struct irradiance_settings is = {8, HUGE_VAL, 0, 0, 0};
+    struct irradiance_settings is = {8, HUGE_VAL, 0, 0, 1};
     CHECK_CLOSE(t, irradiance_estimate(map, o, up, &is, nn).y, 7 / area, 1e-12 / area);
-    is.count_rim = 1;
+    is.exclude_rim = 0;
     CHECK_CLOSE(t, irradiance_estimate(map, o, up, &is, nn).y, 8 / area, 1e-12 / area);
     nearest_free(nn);
     kdtree_free(map);

@@ -80,13 +80,14 @@ static struct ppm_settings ppm_defaults(size_t photons_per_pass, long passes)
 }
 
 /* The image of a whole render of scene: one eye ray a pixel, the given seed and photons;
- * direct_photons: 1 the paper's way, 0 the default's light samples. */
+ * direct_light_samples: 1 the default's light samples, 0 the paper's way. */
 static struct image *seeded_image(const struct scene *scene, uint64_t seed,
-                                  size_t photons_per_pass, long passes, int direct_photons)
+                                  size_t photons_per_pass, long passes,
+                                  int direct_light_samples)
 {
     struct render_settings rs = render_settings_whole(scene, seed, 1, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(photons_per_pass, passes);
-    ps.progressive.direct_photons = direct_photons;
+    ps.progressive.direct_light_samples = direct_light_samples;
     struct render_counters counters = {0};
     struct ppm_stats stats;
     return render_ppm(scene, &rs, &ps, &counters, &stats).image;
@@ -94,15 +95,15 @@ static struct image *seeded_image(const struct scene *scene, uint64_t seed,
 
 /* The same with seed 1. */
 static struct image *whole_image(const struct scene *scene, size_t photons_per_pass, long passes,
-                                 int direct_photons)
+                                 int direct_light_samples)
 {
-    return seeded_image(scene, 1, photons_per_pass, passes, direct_photons);
+    return seeded_image(scene, 1, photons_per_pass, passes, direct_light_samples);
 }
 
 /* A render's inputs and its error_curve (truths.h). */
 struct convergence {
-    int direct_photons; /* input: ppm_settings.progressive.direct_photons */
-    int spp;            /* input: eye rays per pixel                      */
+    int direct_light_samples; /* input: ppm_settings.progressive.direct_light_samples */
+    int spp;                  /* input: eye rays per pixel                             */
     struct error_curve curve;
 };
 
@@ -118,7 +119,7 @@ static void converge(const char *path, int width, long passes, size_t photons_pe
     c->curve.scene = scene;
     struct render_settings rs = render_settings_whole(scene, 1, c->spp, MAX_DEPTH_LIMIT);
     struct ppm_settings ps = ppm_defaults(photons_per_pass, passes);
-    ps.progressive.direct_photons = c->direct_photons;
+    ps.progressive.direct_light_samples = c->direct_light_samples;
     ps.progressive.footprints = 1;
     ps.progressive.fit_radius = 0;
     struct checkpoint checkpoint = {error_curve_record, &c->curve};
@@ -158,7 +159,7 @@ static double area_truth(const struct scene *scene, int x, int y)
 /* truth: closed forms (the scene files derive them): the furnace of a point light inside a
  *   closed Lambertian sphere, L = 4 everywhere (every bounce, up to the thousandth, counts);
  *   the point light over a plane, where each pixel's one eye ray meets the plane. Both the
- *   paper's way (direct_photons), where the photons bring all the light, and the
+ *   paper's way (direct_light_samples 0), where the photons bring all the light, and the
  *   furnace the default's way, where a light sample brings the direct part (0.8 of the
  *   4; a point light's sample is exact) and the photons the rest (the plane has no rest:
  *   test_first_hits_not_counted). R0 is the paper's, one footprint, whole: what is tested
@@ -178,12 +179,12 @@ static void test_converges_to_closed_forms(struct check *t)
     struct convergence c;
     c.curve.truth = point_in_sphere_truth;
     c.spp = 1;
-    for (c.direct_photons = 0; c.direct_photons < 2; c.direct_photons++) {
+    for (c.direct_light_samples = 0; c.direct_light_samples < 2; c.direct_light_samples++) {
         converge("scenes/analytic/point-in-sphere.scene", 8, 256, 4000, &c);
         CHECK(t, c.curve.n == 9 && c.curve.error[8] < 0.01 && c.curve.error[8] < 0.5 * c.curve.error[2]);
     }
     c.curve.truth = point_over_plane_sample;
-    c.direct_photons = 1;
+    c.direct_light_samples = 0;
     converge("scenes/analytic/point-over-plane.scene", 12, 256, 64000, &c);
     CHECK(t, c.curve.n == 9 && c.curve.error[8] < 0.01 && c.curve.error[8] < 0.5 * c.curve.error[2]);
 }
@@ -205,7 +206,7 @@ static void test_direct_light_sampled(struct check *t)
 {
     struct convergence c;
     c.curve.truth = area_truth;
-    c.direct_photons = 0;
+    c.direct_light_samples = 1;
     c.spp = AREA_SPP;
     converge("scenes/analytic/area-over-floor.scene", 12, AREA_PASSES, 100, &c);
     CHECK(t, c.curve.n == 9 && c.curve.error[8] < 0.01 && c.curve.error[8] < 0.5 * c.curve.error[2]);
@@ -243,18 +244,18 @@ static void test_first_hits_not_counted(struct check *t)
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
-    for (int direct_photons = 0; direct_photons < 2; direct_photons++) {
+    for (int light_samples = 0; light_samples < 2; light_samples++) {
         struct photon_tally tally = {8, 0.0, 0.0};
         struct ppm_observer observer = {tally_photons, &tally};
         struct render_settings rs = render_settings_whole(scene, 1, 1, MAX_DEPTH_LIMIT);
         struct ppm_settings ps = ppm_defaults(4000, 8);
-        ps.progressive.direct_photons = direct_photons;
+        ps.progressive.direct_light_samples = light_samples;
         ps.observer = &observer;
         struct render_counters counters = {0};
         struct ppm_stats stats;
         struct render_result result = render_ppm(scene, &rs, &ps, &counters, &stats);
         int exact = within_point_over_plane(scene, result.image);
-        if (direct_photons)
+        if (!light_samples)
             CHECK(t, tally.tau > 0 && tally.n_photons > 0 && !exact);
         else
             CHECK(t, tally.tau == 0 && tally.n_photons == 0 && exact);
@@ -278,7 +279,7 @@ static void test_disc_clear_of_walls(struct check *t)
     CHECK(t, scene != NULL);
     if (scene == NULL)
         return;
-    struct image *image = whole_image(scene, 64000, 256, 1);
+    struct image *image = whole_image(scene, 64000, 256, 0);
     int n;
     double error = error_before_edge(scene, image, &n);
     CHECK(t, n >= 8 && fabs(error) <= 0.02);
@@ -313,8 +314,8 @@ static struct scene *mirror_corridor(void)
 static void test_roulette_not_frozen_into_hit_points(struct check *t)
 {
     struct scene *scene = mirror_corridor();
-    struct image *one = seeded_image(scene, 1, 20000, 64, 0);
-    struct image *two = seeded_image(scene, 2, 20000, 64, 0);
+    struct image *one = seeded_image(scene, 1, 20000, 64, 1);
+    struct image *two = seeded_image(scene, 2, 20000, 64, 1);
     double relmse = image_compare(one, two).relmse;
     CHECK(t, relmse < 0.03);
     image_free(one);
@@ -395,7 +396,7 @@ static void test_paper_way_unchanged(struct check *t)
             continue;
         struct render_settings rs = render_settings_whole(scene, 1, 2, MAX_DEPTH_LIMIT);
         struct ppm_settings ps = ppm_defaults(2000, 4);
-        ps.progressive.direct_photons = 1;
+        ps.progressive.direct_light_samples = 0;
         ps.progressive.footprints = 1;
         ps.caustic_footprints = 0;
         ps.progressive.fit_radius = 0;
@@ -479,7 +480,7 @@ static struct scene *glass_before_light(void)
 static void test_glass_seen_through_every_lobe(struct check *t)
 {
     struct scene *scene = glass_before_light();
-    struct image *image = whole_image(scene, 100, 1, 0);
+    struct image *image = whole_image(scene, 100, 1, 1);
     int within = 0;
     for (int y = 0; y < 8; y++)
         for (int x = 0; x < 8; x++) {
@@ -528,7 +529,7 @@ static void test_light_outline_converges(struct check *t)
 {
     const double edge = 0.05;
     struct scene *scene = light_edge(edge);
-    struct image *image = whole_image(scene, 100, 256, 0);
+    struct image *image = whole_image(scene, 100, 256, 1);
     int within = 1, partial = 0;
     for (int y = 0; y < 4; y++)
         for (int x = 0; x < 4; x++) {

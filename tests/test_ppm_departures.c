@@ -29,7 +29,7 @@ static double error_at_edge(const struct scene *scene, int fit_radius, int *n)
     struct ppm_settings ps = ppm_settings_default();
     ps.progressive.photons_per_pass = 64000;
     ps.progressive.passes = 256;
-    ps.progressive.direct_photons = 1;
+    ps.progressive.direct_light_samples = 0;
     ps.progressive.fit_radius = fit_radius;
     struct ppm_stats stats;
     struct image *image = render(scene, 1, &ps, &stats);

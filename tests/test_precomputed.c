@@ -113,7 +113,7 @@ static void test_values_match_linear_scan(struct check *t)
     struct photon *photons = corner_photons(0);
     struct kdtree *map = balance_kdtree(corner_photons(0), N_PHOTONS);
     struct kdtree *records = balance_kdtree(corner_photons(1), N_PHOTONS / RECORD_STEP);
-    struct irradiance_settings is = {K, MAX_R2, 0, 0, 0};
+    struct irradiance_settings is = {K, MAX_R2, 0, 0, 1};
     struct precomputed_irradiance *pi = precompute_irradiance(map, records, &is, NULL, NULL);
     struct scan *order = xmalloc(N_PHOTONS, sizeof *order, "test scan");
     size_t full = 0, sparse = 0, bad = 0;
@@ -189,7 +189,7 @@ static void test_lookup_matches_linear_scan(struct check *t)
     struct kdtree *map = balance_kdtree(corner_photons(0), N_PHOTONS);
     struct kdtree *records = balance_kdtree(corner_photons(1), N_PHOTONS / RECORD_STEP);
     struct kdtree *none = balance_kdtree(NULL, 0);
-    struct irradiance_settings is = {K, MAX_R2, 0, 0, 0};
+    struct irradiance_settings is = {K, MAX_R2, 0, 0, 1};
     struct precomputed_irradiance *pi = precompute_irradiance(map, records, &is, NULL, NULL);
     struct precomputed_irradiance *empty = precompute_irradiance(map, none, &is, NULL, NULL);
     struct nearest *nn = nearest_create(K);
@@ -291,7 +291,7 @@ static void test_covered_estimate_at_an_open_edge(struct check *t)
                                  PHOTON_DIRECT);
     }
     struct kdtree *map = balance_kdtree(photons, n);
-    struct irradiance_settings is = {400, HUGE_VAL, 0, 0, 0};
+    struct irradiance_settings is = {400, HUGE_VAL, 0, 0, 1};
     struct nearest *nn = nearest_create(is.n);
     double truth = n * power / (width * depth), covered = 0, plain = 0;
     for (int i = 0; i < 20; i++) {

@@ -134,7 +134,7 @@ static void test_watched_work(struct check *t)
     }
     struct kdtree *map = balance_kdtree(floor_photons(4000, 2), 4000);
     struct kdtree *records = balance_kdtree(floor_photons(1000, 3), 1000);
-    struct irradiance_settings is = {30, 0.01, 0, 0, 0};
+    struct irradiance_settings is = {30, 0.01, 0, 0, 1};
     struct told w = {PRECOMPUTED_WATCH_EVERY, 0, 0, 1};
     struct work_watch watch = {tell, &w};
     struct precomputed_irradiance *plain = precompute_irradiance(map, records, &is, NULL, NULL);

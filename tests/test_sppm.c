@@ -21,12 +21,12 @@
 
 /* The paper's R0 (one footprint, whole) and the given photons, passes and direct way. */
 static struct progressive_settings paper_radius(size_t photons_per_pass, long passes,
-                                                int direct_photons)
+                                                int direct_light_samples)
 {
     struct progressive_settings ps = sppm_settings_default().progressive;
     ps.photons_per_pass = photons_per_pass;
     ps.passes = passes;
-    ps.direct_photons = direct_photons;
+    ps.direct_light_samples = direct_light_samples;
     ps.footprints = 1;
     ps.fit_radius = 0;
     return ps;
@@ -34,10 +34,10 @@ static struct progressive_settings paper_radius(size_t photons_per_pass, long pa
 
 /* 2009 with paper_radius() and no disc coverage. */
 static struct sppm_settings sppm_settings(size_t photons_per_pass, long passes,
-                                          int direct_photons)
+                                          int direct_light_samples)
 {
     struct sppm_settings ps;
-    ps.progressive = paper_radius(photons_per_pass, passes, direct_photons);
+    ps.progressive = paper_radius(photons_per_pass, passes, direct_light_samples);
     ps.disc_coverage = 0;
     ps.follow_glossy_lobes = 1;
     return ps;
@@ -45,10 +45,10 @@ static struct sppm_settings sppm_settings(size_t photons_per_pass, long passes,
 
 /* 2008 with paper_radius() and none of its own departures. */
 static struct ppm_settings ppm_paper_settings(size_t photons_per_pass, long passes,
-                                              int direct_photons)
+                                              int direct_light_samples)
 {
     struct ppm_settings ps = ppm_settings_default();
-    ps.progressive = paper_radius(photons_per_pass, passes, direct_photons);
+    ps.progressive = paper_radius(photons_per_pass, passes, direct_light_samples);
     ps.resample_emission = 0;
     ps.merge_hit_points = 0;
     ps.caustic_footprints = 0;
@@ -57,7 +57,7 @@ static struct ppm_settings ppm_paper_settings(size_t photons_per_pass, long pass
 
 /* Renders path (width x width) recording the error at 1, 2, 4, ... passes. */
 static void converge(const char *path, int width, long passes, size_t photons_per_pass,
-                     int direct_photons, struct error_curve *c)
+                     int direct_light_samples, struct error_curve *c)
 {
     struct scene *scene = load_test_scene(path, width, width);
     memset(c->error, 0, sizeof c->error);
@@ -66,7 +66,7 @@ static void converge(const char *path, int width, long passes, size_t photons_pe
         return;
     c->scene = scene;
     struct render_settings rs = render_settings_whole(scene, 1, (int)passes, MAX_DEPTH_LIMIT);
-    struct sppm_settings ps = sppm_settings(photons_per_pass, passes, direct_photons);
+    struct sppm_settings ps = sppm_settings(photons_per_pass, passes, direct_light_samples);
     struct checkpoint checkpoint = {error_curve_record, c};
     ps.progressive.report = &checkpoint;
     struct render_counters counters = {0};
@@ -109,12 +109,12 @@ static void test_converges_to_closed_forms(struct check *t)
 {
     struct error_curve c;
     c.truth = point_in_sphere_truth;
-    for (int direct_photons = 0; direct_photons < 2; direct_photons++) {
-        converge("scenes/analytic/point-in-sphere.scene", 8, 256, 8000, direct_photons, &c);
+    for (int light_samples = 0; light_samples < 2; light_samples++) {
+        converge("scenes/analytic/point-in-sphere.scene", 8, 256, 8000, light_samples, &c);
         CHECK(t, c.n == 9 && c.error[8] < 0.01 && c.error[8] < 0.5 * c.error[2]);
     }
     c.truth = plane_truth;
-    converge("scenes/analytic/point-over-plane.scene", 12, PLANE_PASSES, 64000, 1, &c);
+    converge("scenes/analytic/point-over-plane.scene", 12, PLANE_PASSES, 64000, 0, &c);
     CHECK(t, c.n == 9 && c.error[8] < 0.01 && c.error[8] < 0.5 * c.error[2]);
 }
 
@@ -158,7 +158,7 @@ static double error_at_edge(const char *path, int disc_coverage, int fit_radius,
     struct sppm_settings ps = sppm_settings_default();
     ps.progressive.photons_per_pass = 64000;
     ps.progressive.passes = PLANE_PASSES;
-    ps.progressive.direct_photons = 1;
+    ps.progressive.direct_light_samples = 0;
     ps.progressive.fit_radius = fit_radius;
     ps.disc_coverage = disc_coverage;
     struct render_counters counters = {0};
@@ -261,10 +261,10 @@ static void test_light_outline(struct check *t)
     struct render_counters counters = {0};
     struct ppm_stats stats;
     struct render_settings rs = render_settings_whole(scene, 1, 256, MAX_DEPTH_LIMIT);
-    struct sppm_settings sps = sppm_settings(1000, 256, 0);
+    struct sppm_settings sps = sppm_settings(1000, 256, 1);
     struct render_result sppm = render_sppm(scene, &rs, &sps, &counters, &stats);
     rs = render_settings_whole(scene, 1, 16, MAX_DEPTH_LIMIT);
-    struct ppm_settings pps = ppm_paper_settings(1000, 256, 1);
+    struct ppm_settings pps = ppm_paper_settings(1000, 256, 0);
     struct render_result ppm = render_ppm(scene, &rs, &pps, &counters, &stats);
     int n_sppm, n_ppm;
     double e_sppm = edge_error(scene, sppm.image, &n_sppm);
@@ -311,8 +311,8 @@ static double paper_relmse(const struct scene *scene, const struct image *truth,
 {
     struct render_counters counters = {0};
     struct ppm_stats stats;
-    struct sppm_settings sps = sppm_settings(4000, 1024, 1);
-    struct ppm_settings pps = ppm_paper_settings(4000, 1024, 1);
+    struct sppm_settings sps = sppm_settings(4000, 1024, 0);
+    struct ppm_settings pps = ppm_paper_settings(4000, 1024, 0);
     sps.progressive.facing_test = 0;
     pps.progressive.facing_test = 0;
     struct render_settings rs = render_settings_whole(scene, 1, sppm ? 1024 : spp,
@@ -353,7 +353,7 @@ static double paper_highlight_error(const struct scene *scene, const struct imag
 {
     struct render_counters counters = {0};
     struct ppm_stats stats;
-    struct sppm_settings ps = sppm_settings(20000, 64, 1);
+    struct sppm_settings ps = sppm_settings(20000, 64, 0);
     ps.progressive.facing_test = 0;
     ps.progressive.turn_photon_directions = 0;
     ps.follow_glossy_lobes = follow_glossy_lobes;

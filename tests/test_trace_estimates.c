@@ -32,7 +32,7 @@ static double point_over_plane_ratio(const struct scene *scene, size_t n, size_t
     struct nearest *nn = nearest_create(k);
     struct vec3 up = vec3(0, 1, 0);
     struct shading_frame frame = shading_frame_from_normal(up, 1, TRANSPORT_RADIANCE);
-    struct estimate_settings es = {k, HUGE_VAL, 0, 0, 0};
+    struct estimate_settings es = {k, HUGE_VAL, 0, 0, 1};
     double sum = 0;
     for (int i = 0; i < 17 * 17; i++) {
         struct vec3 x = vec3(-2 + 0.25 * (i % 17), 0, -2 + 0.25 * (i / 17));
@@ -107,7 +107,7 @@ static void test_cone_filter_uniform(struct check *t)
     struct shading_frame frame = shading_frame_from_normal(up, 1, TRANSPORT_RADIANCE);
     double truth = rho * (n * power) / PI;
     for (int cone = 0; cone < 2; cone++) {
-        struct estimate_settings es = {k, HUGE_VAL, cone ? 1.0 : 0.0, 0, 0};
+        struct estimate_settings es = {k, HUGE_VAL, cone ? 1.0 : 0.0, 0, 1};
         struct tally m = {0, 0, 441};
         for (int i = 0; i < 441; i++) {
             struct vec3 x = vec3(0.1 + 0.04 * (i % 21), 0.1 + 0.04 * (i / 21), 0);
@@ -136,7 +136,7 @@ static void test_estimate_boundaries(struct check *t)
     struct vec3 up = vec3(0, 0, 1);
     struct shading_frame frame = shading_frame_from_normal(up, 1, TRANSPORT_RADIANCE);
     struct estimate_point at = {vec3(0, 0, 0), up, up, &scene->materials[0], &frame, 0};
-    struct estimate_settings es = {10, HUGE_VAL, 1.0, 0, 0};
+    struct estimate_settings es = {10, HUGE_VAL, 1.0, 0, 1};
     struct nearest *nn = nearest_create(10);
     struct kdtree *empty = balance_kdtree(NULL, 0);
     CHECK(t, vec3_length2(radiance_estimate(empty, &at, &es, nn)) == 0);
@@ -208,7 +208,7 @@ static void test_irradiance_uniform(struct check *t)
     double energy = 1e-3;
     struct kdtree *map = step_square_map(n, energy, 0.5, 1.0);
     struct nearest *nn = nearest_create(k);
-    struct irradiance_settings is = {k, HUGE_VAL, 0, 0, 0};
+    struct irradiance_settings is = {k, HUGE_VAL, 0, 0, 1};
     struct tally m = {0, 0, 441};
     for (int i = 0; i < 441; i++) {
         struct vec3 x = vec3(0.1 + 0.04 * (i % 21), 0.1 + 0.04 * (i / 21), 0);
@@ -248,7 +248,7 @@ static void test_irradiance_rules(struct check *t)
     }
     struct nearest *nn = nearest_create(8);
     struct vec3 o = vec3(0, 0, 0), up = vec3(0, 0, 1);
-    struct irradiance_settings is = {8, HUGE_VAL, 0, 2, 0};
+    struct irradiance_settings is = {8, HUGE_VAL, 0, 2, 1};
     struct kdtree *up_map = line_map(rising), *down_map = line_map(falling);
     CHECK_CLOSE(t, irradiance_estimate(up_map, o, up, &is, nn).x,
                 3 / (PI * rising[3] * rising[3]), 1e-12);
@@ -298,7 +298,7 @@ static void test_differential_checking_edge(struct check *t)
         struct vec3 p = vec3(x, 0.2 + 0.6 * (i / 20) / 19.0, 0);
         double truth = left * energy * (x > 0.5 ? 6.0 : 1.0);
         for (int checking = 0; checking < 2; checking++) {
-            struct irradiance_settings is = {k, HUGE_VAL, 0, checking ? DIFFERENTIAL_RUN : 0, 0};
+            struct irradiance_settings is = {k, HUGE_VAL, 0, checking ? DIFFERENTIAL_RUN : 0, 1};
             double e = irradiance_estimate(map, p, vec3(0, 0, 1), &is, nn).y / truth - 1;
             error2[checking] += e * e;
         }

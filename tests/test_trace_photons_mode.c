@@ -42,7 +42,7 @@ static void test_photons_mode_cornell(struct check *t)
         return;
     }
     struct render_settings rs = render_settings_whole(scene, 3, 16, TEST_MAX_DEPTH);
-    struct photon_settings ps = {100000, 100, -1, 0, 0, NULL};
+    struct photon_settings ps = {100000, 100, -1, 0, 1, NULL};
     struct render_counters counters = {0};
     struct photon_stats stats;
     struct render_result r = render_photons(scene, &rs, &ps, 0, NULL, &counters, &stats, &err);
@@ -170,7 +170,7 @@ static void test_photons_mode_mirror(struct check *t)
 {
     struct scene *scene = mirror_view_scene();
     struct render_settings rs = render_settings_whole(scene, 5, 4, TEST_MAX_DEPTH);
-    struct photon_settings ps = {400000, 200, -1, 0, 0, NULL};
+    struct photon_settings ps = {400000, 200, -1, 0, 1, NULL};
     struct render_counters counters = {0};
     struct photon_stats stats;
     struct error err;
@@ -207,7 +207,7 @@ static struct image *closed_sphere_render(struct vec3 from, struct vec3 at)
     scene_add_point_light(scene, vec3(0, 0, 0), vec3(SPHERE_PHI, SPHERE_PHI, SPHERE_PHI));
     finish_with_camera(scene, from, at, 40, 16, 16);
     struct render_settings rs = render_settings_whole(scene, 7, 4, TEST_MAX_DEPTH);
-    struct photon_settings ps = {200000, 100, -1, 0, 0, NULL};
+    struct photon_settings ps = {200000, 100, -1, 0, 1, NULL};
     struct render_counters counters = {0};
     struct photon_stats stats;
     struct error err;

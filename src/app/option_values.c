@@ -154,7 +154,7 @@ void option_defaults(struct options *o)
     o->facing_test = pp.progressive.facing_test;
     o->turn_photon_directions = pp.progressive.turn_photon_directions;
     o->follow_glossy_lobes = sppm_settings_default().follow_glossy_lobes;
-    o->direct_light_samples = !pp.progressive.direct_photons;
+    o->direct_light_samples = pp.progressive.direct_light_samples;
     o->cone = -1;
     o->caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     struct jensen1996_settings js = jensen1996_settings_default();
@@ -166,13 +166,13 @@ void option_defaults(struct options *o)
     o->cache_accuracy = js.cache_accuracy;
     o->accurate_distance = js.accurate_distance;
     o->accurate_weight = js.accurate_weight;
-    o->exclude_rim = !js.count_rim;
-    o->shadow_rays = !js.shadow_photons;
+    o->exclude_rim = js.exclude_rim;
+    o->shadow_rays = js.shadow_rays;
     o->precomputed_irradiance = js.precomputed_irradiance;
     o->disc_coverage = js.disc_coverage;
     o->both_lobes = js.both_lobes;
     o->glossy_corner = js.glossy_corner;
-    o->corner_photons = !js.corner_gathers;
+    o->corner_photons = js.corner_photons;
     o->bounded_reach = js.bounded_reach;
     o->gradient_limit = js.gradient_limit;
     struct jensen1994_settings j94 = jensen1994_settings_default();

@@ -241,7 +241,7 @@ static void write_profile(FILE *f, const struct scene *scene, const struct probe
     double max_r = PHOTONS_RADIUS_FRACTION * scene_diagonal(scene);
     const struct jensen1994_settings *settings = &args->settings;
     struct irradiance_settings checked = {settings->gather, max_r * max_r, PHOTON_CAUSTIC,
-                                          settings->differential_run, settings->count_rim};
+                                          settings->differential_run, settings->exclude_rim};
     struct irradiance_settings unchecked = checked, all = checked;
     unchecked.run = 0;
     all.kinds = 0;

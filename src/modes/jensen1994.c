@@ -242,7 +242,7 @@ static struct vec3 stored_reflection(const struct jensen1994 *mode, const struct
 {
     if (keeps_direction(mode->settings, mode->stores.illumination, s->material, s->prim)) {
         struct estimate_point at = {s->p, s->ng, s->wo, diffuse, frame, !s->front};
-        struct estimate_settings es = {is->n, is->max_r2, 0.0, is->kinds, is->count_rim};
+        struct estimate_settings es = {is->n, is->max_r2, 0.0, is->kinds, is->exclude_rim};
         return radiance_estimate(mode->stores.glossy, &at, &es, mode->nn);
     }
     struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, is};
@@ -506,7 +506,7 @@ static void set_up(struct jensen1994 *mode, const struct scene *scene,
     struct max_radii radii =
         max_radii_of(settings->max_radius, settings->caustic_radius_fraction, mode->diagonal);
     struct irradiance_settings all = {settings->gather, radii.all_r2, 0,
-                                      settings->differential_run, settings->count_rim};
+                                      settings->differential_run, settings->exclude_rim};
     mode->all_photons = all;
     mode->caustic_photons = all;
     mode->caustic_photons.max_r2 = radii.caustic_r2;

@@ -14,7 +14,7 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.gather = J94_DEFAULT_GATHER;
     js.max_radius = -1; /* the default */
     js.differential_run = DIFFERENTIAL_RUN;
-    js.count_rim = 0;
+    js.exclude_rim = 1;
     js.gather_rays = J94_DEFAULT_GATHER_RAYS;
     js.cache_accuracy = J94_DEFAULT_CACHE_ACCURACY;
     js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;

@@ -41,7 +41,8 @@ struct jensen1994_settings {
     double max_radius;     /* > 0: the estimates' largest radius; 0: none, the paper's;
                               < 0: 1/10 of the scene's diagonal (as the photons mode)       */
     int differential_run;  /* differential checking's run (estimate.h); 0: off              */
-    int count_rim;         /* 1: each estimate counts its rim photon, the paper's sum       */
+    int exclude_rim;       /* 1: each estimate leaves out its rim photon (a departure);
+                              0: counts it, the paper's sum                                 */
     int gather_rays;       /* rays of one irradiance record, 2..J96_MAX_GATHER_RAYS         */
     double cache_accuracy; /* Ward's a, > 0                                                 */
     int light_samples;     /* stratified samples of each light, 1..J94_MAX_LIGHT_SAMPLES    */

@@ -117,7 +117,7 @@ struct gather_scratch {
 /* The render's scratch and tallies: one per render, reached through the const mode. */
 struct scratch {
     struct nearest *nn;              /* for every photon search                        */
-    struct gather_scratch gathers[2]; /* [0] a gather's; [1] a corner's (corner_gathers),
+    struct gather_scratch gathers[2]; /* [0] a gather's; [1] a corner's (corner_photons 0),
                                         made while the gather whose ray found the corner
                                         still needs its own                             */
     struct jensen1996_stats *stats;
@@ -610,12 +610,12 @@ static void set_up(struct jensen1996 *mode, const struct scene *scene,
     mode->global_es.max_r2 = radii.all_r2;
     mode->global_es.cone_k = 0;
     mode->global_es.kinds = 0;
-    mode->global_es.count_rim = settings->count_rim;
+    mode->global_es.exclude_rim = settings->exclude_rim;
     mode->caustic_es.k = settings->caustic_gather;
     mode->caustic_es.max_r2 = radii.caustic_r2;
     mode->caustic_es.cone_k = settings->cone_k;
     mode->caustic_es.kinds = settings->one_map ? PHOTON_CAUSTIC : 0;
-    mode->caustic_es.count_rim = settings->count_rim;
+    mode->caustic_es.exclude_rim = settings->exclude_rim;
     mode->cached = gather_plan_of(settings->gather_rays);
     mode->per_sample = gather_plan_of(settings->gather_rays / rs->spp);
     mode->max_depth = rs->max_depth;
@@ -627,7 +627,7 @@ static void set_up(struct jensen1996 *mode, const struct scene *scene,
     if (mode->maps.records != NULL) {
         clock_t start = clock();
         struct irradiance_settings is = {mode->global_es.k, mode->global_es.max_r2, 0, 0,
-                                         settings->count_rim};
+                                         settings->exclude_rim};
         struct watched_progress line;
         watched_progress_begin(&line, rs->progress, "precomputed irradiance",
                                mode->maps.records->n_photons, "records estimated");

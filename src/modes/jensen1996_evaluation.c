@@ -36,12 +36,12 @@ enum evaluation accurate_or_approximate(const struct jensen1996_settings *settin
 }
 
 /* An accurate point gathers (4.4). A corner is evaluated accurately, but for the paper's
- * final gather (corner_gathers, --no-corner-photons) it takes, by default, the global
+ * final gather it takes, with corner_photons (--corner-photons, the default), the global
  * map's estimate from its indirect photons, a departure: the paper's gather at the end
  * of a gather's ray costs a gather of its own wherever the cache has no record there,
  * in the creases where the records are smallest, and the global map's disc, of a few
  * radii the ray's length, already stands for the light the corner's gather would find. */
 int gathers_soft_indirect(const struct jensen1996_settings *settings, enum evaluation eval)
 {
-    return eval == ACCURATE || (eval == CORNER && settings->corner_gathers);
+    return eval == ACCURATE || (eval == CORNER && !settings->corner_photons);
 }

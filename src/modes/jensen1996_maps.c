@@ -108,7 +108,7 @@ static int build_global_map(const struct scene *scene, const struct render_setti
 {
     size_t n_emit =
         settings->global_photons + (settings->one_map ? settings->caustic_photons : 0);
-    unsigned store = PHOTON_MAP_GLOBAL | (settings->shadow_photons ? PHOTON_SHADOW : 0);
+    unsigned store = PHOTON_MAP_GLOBAL | (settings->shadow_rays ? 0 : PHOTON_SHADOW);
     struct trace_settings ts = photon_pass(rs, 0, n_emit < MAX_PHOTONS ? n_emit : MAX_PHOTONS,
                                            store);
     struct global_sink gs;
@@ -117,7 +117,7 @@ static int build_global_map(const struct scene *scene, const struct render_setti
     gs.visibility = NULL;
     gs.records.photons = NULL;
     gs.step = (size_t)settings->precomputed_irradiance;
-    if (settings->shadow_photons && scene->n_lights > 0)
+    if (!settings->shadow_rays && scene->n_lights > 0)
         gs.visibility = xcalloc(scene->n_lights, sizeof *gs.visibility, "visibility maps");
     struct photon_sink sink = {store_global, &gs};
     struct trace_progress tp;
@@ -216,7 +216,7 @@ int borrow_photon_maps(const struct scene *scene, const struct jensen1996_settin
                        struct error *err)
 {
     const struct global_work *work = settings->work;
-    size_t n_lights = settings->shadow_photons ? scene->n_lights : 0;
+    size_t n_lights = settings->shadow_rays ? 0 : scene->n_lights;
     size_t n_records = settings->precomputed_irradiance > 0;
     int fits = work->n_maps == 2 + n_lights + n_records && work->maps[0] != NULL &&
                !(settings->one_map && work->maps[1] != NULL) && work->illumination == NULL;

@@ -67,7 +67,8 @@ struct jensen1996_settings {
     double caustic_radius_fraction; /* caustic estimates reach this fraction of it, in
                                  (0, 1] (CAUSTIC_RADIUS_FRACTION)                        */
     double cone_k;            /* cone filter of the caustic estimate (Eq. 4-5); 0: none */
-    int count_rim;            /* 1: estimates count the rim photon, as Eq. 3 is printed */
+    int exclude_rim;          /* 1: estimates leave out the rim photon (a departure);
+                                 0: count it, as Eq. 3 is printed (the paper's)          */
     int gather_rays;          /* rays of one final gather, 2..J96_MAX_GATHER_RAYS        */
     int glossy_rays;          /* rays sampling a glossy specular part at an accurate
                                  point, 1..1000                                          */
@@ -77,9 +78,10 @@ struct jensen1996_settings {
                                  estimate at its end gets the corner evaluation (>= 0)   */
     double accurate_weight;   /* a ray whose throughput falls below this is evaluated
                                  approximately, in [0, 1]                                */
-    int shadow_photons;       /* 1: decide visibility from shadow photons where they
-                                 agree (Jensen & Christensen 1995, the paper's); 0: a ray
-                                 every time (the default, a departure: jensen1996.c)     */
+    int shadow_rays;          /* 1: a shadow ray every time, no shadow photons (the
+                                 default, a departure: jensen1996.c); 0: decide visibility
+                                 from shadow photons where they agree (Jensen &
+                                 Christensen 1995, the paper's)                          */
     int one_map;              /* 1: one global map of global + caustic photons, caustics
                                  from its caustic photons (the comparison of Sec. 3)     */
     int precomputed_irradiance; /* N >= 1: irradiance precomputed at every N-th photon of
@@ -94,10 +96,10 @@ struct jensen1996_settings {
     int glossy_corner;        /* 1: a surface seen through a glossy lobe is evaluated
                                  through gloss (a departure); 0: accurately, as one
                                  seen "via a few specular reflections" (the paper's)     */
-    int corner_gathers;       /* 1: a corner (the end of a short gather ray) gathers its
-                                 soft indirect light, as accurate points do (the
-                                 paper's); 0: the global map's indirect photons (a
-                                 departure, jensen1996_evaluation.c)                     */
+    int corner_photons;       /* 1: a corner's (the end of a short gather ray's) soft
+                                 indirect light from the global map's indirect photons
+                                 (a departure, jensen1996_evaluation.c); 0: a final
+                                 gather, as accurate points do (the paper's)             */
     int bounded_reach;        /* 1: cache records' R bounded from the camera's view
                                  (record_radius_bounds(), a departure); 0: Ward's R     */
     int gradient_limit;       /* 1: a record's R at most E / |grad E| (a departure)      */

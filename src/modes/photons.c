@@ -248,7 +248,7 @@ struct render_result render_photons(const struct scene *scene, const struct rend
     pm.es.max_r2 = stats->max_radius * stats->max_radius;
     pm.es.cone_k = ps->cone_k;
     pm.es.kinds = 0;
-    pm.es.count_rim = ps->count_rim;
+    pm.es.exclude_rim = ps->exclude_rim;
     pm.nn = nearest_create(ps->gather);
     pm.max_depth = rs->max_depth;
     int want_error = rs->error_confidence > 0;

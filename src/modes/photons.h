@@ -47,7 +47,8 @@ struct photon_settings {
     double max_radius; /* > 0: photons farther than this are not gathered; 0: none,
                           the paper's; < 0: the default, largest_radius()               */
     double cone_k;     /* 0: the plain estimate; >= 1: the cone filter (estimate.h)     */
-    int count_rim;     /* 1: the rim photon counts, as Eq. 3 is printed (estimate.h)    */
+    int exclude_rim;   /* 1: the rim photon only marks r (a departure); 0: it counts,
+                          as Eq. 3 is printed (the paper's; estimate.h)                 */
     struct global_work *work; /* NULL: the map is traced and released here; else, empty,
                                  it receives the map (maps[0]), or, full, holds the map
                                  to use instead of tracing one (photon/global_work.h)  */

@@ -20,8 +20,8 @@
  * The bias. Each estimate also sums its photons over the inner disc of radius r / sqrt(2)
  * (struct estimate_batches' inner), whose bias is half the disc's, so b_b = 2 (y_b -
  * y'_b) estimates y_b's, smoothed over the 5 x 5 pixels around as 2009's is
- * (sppm_error.h); B = |b~| + z_c sigma. The rim photon that --paper's count_rim adds (Eq.
- * 3 as printed, k / (k - 1) too bright) lies outside the inner disc, so b~ states twice
+ * (sppm_error.h); B = |b~| + z_c sigma. The rim photon that --paper counts (exclude_rim 0;
+ * Eq. 3 as printed, k / (k - 1) too bright) lies outside the inner disc, so b~ states twice
  * its bias.
  *
  * The camera samples. Every batch above sees all of the pixel's samples, so their spread

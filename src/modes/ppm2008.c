@@ -143,7 +143,7 @@ struct ppm_settings ppm_settings_default(void)
     ps.progressive.fit_radius = 1;
     ps.progressive.facing_test = 1;
     ps.progressive.turn_photon_directions = 1;
-    ps.progressive.direct_photons = 0;
+    ps.progressive.direct_light_samples = 1;
     ps.progressive.report = NULL;
     ps.progressive.snapshot_every = 0;
     ps.progressive.snapshot = NULL;
@@ -475,7 +475,7 @@ static void add_photon(void *context, const struct photon_event *photon)
 static void take_light_samples(struct ppm *ppm, const struct surface *s,
                                const struct shading_frame *frame, const struct eye_path *path)
 {
-    if (!ppm->ps->progressive.direct_photons)
+    if (ppm->ps->progressive.direct_light_samples)
         ppm_direct_sample(&ppm->direct, path->pixel, ppm->surfaces_met++, ppm->pass, s, frame,
                           path->beta, ppm->counters);
 }
@@ -487,9 +487,9 @@ static void eye_ray_pass(void *context, long pass)
 {
     struct ppm *ppm = context;
     const struct render_settings *rs = ppm->rs;
-    int direct_photons = ppm->ps->progressive.direct_photons;
+    int direct_light_samples = ppm->ps->progressive.direct_light_samples;
     int resample_emission = ppm->ps->resample_emission;
-    if (direct_photons && !resample_emission)
+    if (!direct_light_samples && !resample_emission)
         return; /* the paper's way: the ray would bring nothing */
     ppm->pass = pass;
     for (int y = rs->y0; y < rs->y1; y++)
@@ -501,7 +501,7 @@ static void eye_ray_pass(void *context, long pass)
         }
     if (resample_emission)
         ppm->eye_rays++;
-    if (!direct_photons)
+    if (direct_light_samples)
         ppm_direct_end_pass(&ppm->direct);
 }
 
@@ -547,7 +547,7 @@ static void progressive_update(void *context, long pass)
     double alpha = ppm->ps->progressive.alpha;
     if (ppm->want_error)
         ppm_error_add_pass(&ppm->error, &ppm->tree, ppm->photons_per_pass, ppm->emission_seen,
-                           ppm->ps->progressive.direct_photons ? NULL : &ppm->direct);
+                           ppm->ps->progressive.direct_light_samples ? &ppm->direct : NULL);
     for (size_t i = 0; i < ppm->n_points; i++) {
         ppm_update_estimate(&ppm->points[i].global, alpha);
         ppm_update_estimate(&ppm->points[i].caustic, alpha);
@@ -580,7 +580,7 @@ static void evaluate_image(const void *context, double n_emitted, struct image *
     for (size_t k = 0; k < n_pixels; k++) {
         size_t i = kept_pixel(&ppm->kept, k);
         image->pixels[k] = vec3_scale(ppm->emission_seen[i], 1.0 / (double)ppm->eye_rays);
-        if (!ppm->ps->progressive.direct_photons)
+        if (ppm->ps->progressive.direct_light_samples)
             image->pixels[k] = vec3_add(image->pixels[k], ppm_direct_radiance(&ppm->direct, i));
     }
     for (size_t i = 0; i < ppm->n_points; i++) {
@@ -648,7 +648,7 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     ppm.photons_per_pass = (double)common->photons_per_pass;
     ppm.keep_members = ps->merge_hit_points && ps->caustic_footprints > 0 &&
                        makes_caustics(scene);
-    if (!common->direct_photons)
+    if (common->direct_light_samples)
         ppm_direct_create(&ppm.direct, scene, ppm.rs);
     clock_t start = clock();
     ray_tracing_pass(&ppm);
@@ -659,7 +659,7 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     stats->initial_mean_radius = mean_radius(&ppm);
     if (ppm.want_error)
         ppm_error_create(&ppm.error, &ppm.kept, ppm.n_points, ppm.emission_seen,
-                         common->direct_photons ? NULL : &ppm.direct);
+                         common->direct_light_samples ? &ppm.direct : NULL);
     struct render_result result = {NULL, NULL, NULL, NULL, NULL, 0.0};
     result.image = image_create(ppm.kept.out_width, ppm.kept.out_height);
 
@@ -679,7 +679,7 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     stats->mean_radius = mean_radius(&ppm);
     counters->passes = rs->spp;
     hit_point_tree_free(&ppm.tree);
-    if (!common->direct_photons)
+    if (common->direct_light_samples)
         ppm_direct_free(&ppm.direct);
     xfree(ppm.members);
     xfree(ppm.pending);

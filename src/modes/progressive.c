@@ -40,9 +40,9 @@ static int hand_to_mode(void *context, const struct photon_event *photon)
     return 0;
 }
 
-/* Photon tracing pass `pass`: every photon stored with ps->direct_photons, else those
- * after their first bounce (the light samples bring the first). Returns the photons
- * emitted. */
+/* Photon tracing pass `pass`: with ps->direct_light_samples the photons after their first
+ * bounce (the light samples bring the first), else every photon, the papers' way. Returns
+ * the photons emitted. */
 static size_t photon_tracing_pass(const struct progressive_steps *steps,
                                   const struct scene *scene, const struct render_settings *rs,
                                   const struct progressive_settings *ps, long pass,
@@ -53,7 +53,7 @@ static size_t photon_tracing_pass(const struct progressive_steps *steps,
     ts.seed = rs->seed;
     ts.pass = (uint64_t)pass;
     ts.n_emit = ps->photons_per_pass; /* max_stored: unused, nothing is stored */
-    ts.store = ps->direct_photons ? PHOTON_MAP_GLOBAL : PHOTON_AFTER_FIRST_BOUNCE;
+    ts.store = ps->direct_light_samples ? PHOTON_AFTER_FIRST_BOUNCE : PHOTON_MAP_GLOBAL;
     ts.max_depth = rs->max_depth;
     ts.targets = NULL;
     ts.projection = NULL;

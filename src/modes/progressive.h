@@ -30,9 +30,10 @@ struct progressive_settings {
                                          surface faces its own                           */
     int turn_photon_directions;       /* 1: f_r sees a photon's direction turned with its
                                          surface onto the hit point's (hit_points.h)     */
-    int direct_photons;               /* 1: the direct light from photons too, the papers'
-                                         way; 0: by a light sample at each pass's hit
-                                         points, photons only after their first bounce  */
+    int direct_light_samples;         /* 1: the direct light by a light sample at each
+                                         pass's hit points, photons only after their
+                                         first bounce (a departure); 0: from photons
+                                         too, the papers' way                           */
     const struct checkpoint *report;  /* borrowed or NULL: gets the image after passes 1,
                                          2, 4, ... and the last, work = photons emitted  */
     long snapshot_every;              /* > 0: call snapshot after every this many passes */

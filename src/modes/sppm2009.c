@@ -270,7 +270,7 @@ static void point_lights_through_lobe(struct sppm *sppm, size_t pixel, long pass
                                       const struct surface *s, const struct material *lobe,
                                       const struct shading_frame *frame, struct vec3 beta)
 {
-    if (sppm->ps->progressive.direct_photons || !brdf_has_non_delta(lobe))
+    if (!sppm->ps->progressive.direct_light_samples || !brdf_has_non_delta(lobe))
         return;
     struct surface glossy = *s;
     glossy.material = lobe;
@@ -369,7 +369,7 @@ static void trace_eye_path(struct sppm *sppm, size_t pixel, long pass, struct ra
         store_hit_point(sppm, pixel, &s, &frame, beta, distance);
         if (sppm->ps->disc_coverage)
             probe_disc(sppm, pixel, pass, &s);
-        if (!sppm->ps->progressive.direct_photons)
+        if (sppm->ps->progressive.direct_light_samples)
             ppm_direct_sample(&sppm->direct, pixel, 0, pass, &s, &frame, beta, sppm->counters);
         return;
     }
@@ -395,8 +395,8 @@ static double mean_radius(const void *context)
 static struct vec3 seen_so_far(const struct sppm *sppm, size_t i)
 {
     struct vec3 seen = sppm->emission_seen[i];
-    return sppm->ps->progressive.direct_photons ? seen
-                                                : vec3_add(seen, sppm->direct.sum[i]);
+    return sppm->ps->progressive.direct_light_samples ? vec3_add(seen, sppm->direct.sum[i])
+                                                      : seen;
 }
 
 /* Pass `pass`: one eye path through every pixel of the window, then the hit points' grid;
@@ -520,7 +520,7 @@ static void progressive_update(void *context, long pass)
         shared->m_photons = hp->global.m_photons;
         ppm_update_estimate(shared, sppm->ps->progressive.alpha);
     }
-    if (!sppm->ps->progressive.direct_photons)
+    if (sppm->ps->progressive.direct_light_samples)
         ppm_direct_end_pass(&sppm->direct);
     sppm->passes_done++;
 }
@@ -540,7 +540,7 @@ static void evaluate_image(const void *context, double n_emitted, struct image *
         struct vec3 photons = ppm_radiance(e->tau, e->radius, n_emitted);
         struct vec3 l = vec3_add(vec3_scale(sppm->emission_seen[i], 1.0 / passes),
                                  vec3_scale(photons, 1.0 / covered_share(sppm, i)));
-        if (!sppm->ps->progressive.direct_photons)
+        if (sppm->ps->progressive.direct_light_samples)
             l = vec3_add(l, ppm_direct_radiance(&sppm->direct, i));
         if (!vec3_is_finite(l)) { /* a bug upstream: report, never write */
             sppm->counters->nonfinite_samples++;
@@ -607,7 +607,7 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     for (size_t m = 0; m < scene->n_materials; m++)
         sppm.parts[m] = brdf_split(&scene->materials[m]);
     hit_point_grid_build(&sppm.grid, sppm.points, 0);
-    if (!common->direct_photons)
+    if (common->direct_light_samples)
         ppm_direct_create(&sppm.direct, scene, sppm.rs);
     if (sppm.want_error) {
         sppm_error_create(&sppm.error, sppm.kept.width, sppm.kept.height);
@@ -648,7 +648,7 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     stats->mean_radius = mean_radius(&sppm);
     counters->passes = (int)run.passes;
     hit_point_grid_free(&sppm.grid);
-    if (!common->direct_photons)
+    if (common->direct_light_samples)
         ppm_direct_free(&sppm.direct);
     xfree(sppm.parts);
     xfree(sppm.coverage);

@@ -96,7 +96,7 @@ struct vec3 covered_irradiance_estimate(const struct kdtree *map, const struct s
     locate_photons(map, x, is->max_r2, is->n, nn);
     if (nn->found == 0 || !(nn->r2 > 0))
         return vec3_zero(); /* no photons, or all exactly at x: no area */
-    int rim = !is->count_rim && nn->found == is->n; /* as radiance_estimate() */
+    int rim = is->exclude_rim && nn->found == is->n; /* as radiance_estimate() */
     double depth = DISC_DEPTH * sqrt(nn->r2);
     struct vec3 sum = vec3_zero();
     for (size_t i = 0; i < nn->found; i++) {

@@ -79,8 +79,8 @@ int disc_rim_covered(const struct scene *scene, struct vec3 x, struct vec3 n, do
 /* The irradiance estimate (estimate.h, irradiance_estimate(), without differential
  * checking: is->run 0) from the photons of the disc alone, over the part of it that can
  * hold them: of the is->n nearest photons, those within DISC_DEPTH r of the plane through
- * x with unit normal n that arrived from n's side (the rim photon left out unless
- * is->count_rim), divided by pi r^2 disc_coverage(). Photons of another surface that
+ * x with unit normal n that arrived from n's side (the rim photon left out with
+ * is->exclude_rim), divided by pi r^2 disc_coverage(). Photons of another surface that
  * crosses the sphere of radius r, which Eq. 3 would count where they face n, are left
  * out as the coverage leaves out their part of the disc. nn: scratch, k_max >= is->n. */
 struct vec3 covered_irradiance_estimate(const struct kdtree *map, const struct scene *scene,

@@ -46,7 +46,7 @@ static struct vec3 estimate(const struct kdtree *map, const struct estimate_poin
     struct vec3 sum = vec3_zero();
     /* A photon marks r when k were found, or when the search had no maximum radius (a
      * map of fewer than k photons): that one, on the rim, is still to be left out. */
-    int rim = !es->count_rim && nn->found >= 2 &&
+    int rim = es->exclude_rim && nn->found >= 2 &&
               (nn->found == es->k || es->max_r2 == HUGE_VAL);
     for (size_t i = 0; i < nn->found; i++) {
         const struct photon *p = nn->photon[i];
@@ -129,8 +129,8 @@ struct vec3 irradiance_estimate(const struct kdtree *map, struct vec3 x, struct 
         if (!(nn->d2[j] > 0))
             continue; /* photons exactly at x: no disc yet */
         /* E_j = sum_{i<j} e_i / (pi r_j^2): the j-th photon marks the radius, on the rim;
-         * the paper's sum_{i<=j} with count_rim */
-        e = vec3_scale(is->count_rim ? sum : inside, 1.0 / (PI * nn->d2[j]));
+         * the paper's sum_{i<=j} without exclude_rim */
+        e = vec3_scale(is->exclude_rim ? inside : sum, 1.0 / (PI * nn->d2[j]));
         double now = vec3_luminance(e);
         rising = now > previous ? rising + 1 : 0;
         falling = now < previous ? falling + 1 : 0;

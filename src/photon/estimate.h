@@ -10,7 +10,7 @@
  * it is consistent (right as N and k grow with k / N -> 0) and biased for finite k:
  * blurred where light changes over r. With r the k-th photon's distance, Eq. 3 as printed
  * overestimates a uniform density by k / (k - 1); the photon on the rim is left out here
- * (count_rim keeps the paper's sum), which removes that bias, as the cone filter with
+ * (exclude_rim; 0 keeps the paper's sum), which removes that bias, as the cone filter with
  * constant 1 does by giving it weight 0 (see estimate.c). The map must not hold shadow
  * photons (trace.h).
  */
@@ -45,8 +45,9 @@ struct estimate_settings {
                       (Eq. 4-5; Jensen 1996 uses 1). Values in (0, 1) are refused by
                       whoever reads them: the normalisation would not be the cone's.   */
     unsigned kinds; /* only photons with one of these PHOTON_* flags; 0: all         */
-    int count_rim;  /* 1: the photon on the rim counts too, as Eq. 3 is printed (the
-                       paper's, k / (k - 1) too bright); 0: it only marks r            */
+    int exclude_rim; /* 1: the photon on the rim only marks r (a departure); 0: it
+                        counts too, as Eq. 3 is printed (the paper's, k / (k - 1) too
+                        bright)                                                        */
 };
 
 /* Radiance (W / (m^2 sr) per channel, in the map's power units over length^2) leaving
@@ -95,8 +96,8 @@ struct irradiance_settings {
                        no limit; >= 0                                                   */
     unsigned kinds; /* PHOTON_CAUSTIC: the caustic estimate (CP photons only); 0: all   */
     int run;        /* differential checking's run length R >= 1; 0 turns it off        */
-    int count_rim;  /* 1: each E_j counts its j-th photon too, as the paper sums to n;
-                       0: that photon only marks r_j                                    */
+    int exclude_rim; /* 1: the j-th photon only marks r_j (a departure); 0: each E_j
+                        counts it too, as the paper sums to n                           */
 };
 
 /* Irradiance (W / m^2 per channel in the map's units) at x on a surface with unit normal
@@ -108,8 +109,8 @@ struct irradiance_settings {
  * (positive dot product) adding their energy e_i. (1996's precomputed irradiance runs it
  * over its global map, whose bytes hold wi: the same test then keeps the photons that
  * arrived from n's side.) The paper sums to n; the n-th photon, on the rim, only marks r
- * here, which takes away the sum's bias of n / (n - 1) (see estimate.c), unless count_rim
- * asks for the paper's sum. With fewer than n photons within max_r2, all count over that
+ * here, which takes away the sum's bias of n / (n - 1) (see estimate.c), unless exclude_rim
+ * is 0, the paper's sum. With fewer than n photons within max_r2, all count over that
  * disc.
  * Differential checking (run R > 0): the photons are added nearest first; E_j is the
  * estimate from the j - 1 nearest over r = the j-th distance. From the 2R-th photon on, the
