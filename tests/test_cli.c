@@ -254,6 +254,7 @@ static int mode_exits(const char *mode, const char *scene, int status)
     int ran = photon(command);
     int written = file_exists(OUT "_x.pfm");
     remove(OUT "_x.pfm");
+    remove(OUT "_x.png");
     remove(OUT "_x.ppm");
     return ran == status && written == (status == 0);
 }
@@ -510,7 +511,7 @@ static void test_stats_keys_once_in_every_mode(struct check *t)
         CHECK(t, geometry > 0 && file_stat(OUT ".log", "bytes_peak") >= geometry);
     }
     remove(OUT "_stats.pfm");
-    remove(OUT "_stats.ppm");
+    remove(OUT "_stats.png");
 }
 
 /* The number --stats printed for key in the last command's log; -1 when it did not. */
@@ -551,7 +552,7 @@ static void test_specular_pixels_in_stats(struct check *t)
     CHECK(t, logged_stat("spp") == 16 && logged_stat("specular_pixels") == 0 &&
              logged_stat("samples_per_pixel") == 16);
     remove(OUT "_spec.pfm");
-    remove(OUT "_spec.ppm");
+    remove(OUT "_spec.png");
 }
 
 /* truth: an NFF file is a scene of its own (README, "Scene files"): photon renders it by its
@@ -616,109 +617,6 @@ static void test_ppm_memory_does_not_grow_with_passes(struct check *t)
     remove(OUT "_passes.png");
 }
 
-/* Whether the file's first bytes are those of prefix (its '\0' excluded). */
-static int starts_with(const char *name, const char *prefix)
-{
-    char bytes[64] = {0};
-    size_t n = strlen(prefix);
-    FILE *f = fopen(name, "rb");
-    size_t got = f != NULL && n < sizeof bytes ? fread(bytes, 1, n, f) : 0;
-    if (f != NULL)
-        fclose(f);
-    return got == n && memcmp(bytes, prefix, n) == 0;
-}
-
-/* Removes the files a render to OUT_NAME may leave: .pfm, .png, .ppm and their temporaries. */
-static void remove_outputs(const char *name)
-{
-    static const char *const endings[] = {".pfm", ".png", ".ppm", ".pfm.tmp", ".png.tmp",
-                                          ".ppm.tmp", ".png.pfm", ".ppm.pfm"};
-    for (size_t i = 0; i < sizeof endings / sizeof endings[0]; i++) {
-        char file[COMMAND_MAX];
-        snprintf(file, sizeof file, "%s%s", name, endings[i]);
-        remove(file);
-    }
-}
-
-/* truth: the naming rule of -o (option_values.h, read_output): NAME.pfm is always written, and
- *   beside it NAME.png, or NAME.ppm when -o names one; nothing else. --checkpoint's
- *   snapshots and photon merge follow the same rule. The PFM does not depend on -o's ending.
- * catches: the display image written over the PFM (x.png holding a PFM), a PNG written
- *   besides the PPM asked for, a snapshot or a merge ignoring the ending, x.png.pfm. */
-static void test_output_names(struct check *t)
-{
-    const char *args = "--width 12 --height 8 --spp 1 scenes/cornell.scene";
-    char command[COMMAND_MAX];
-    remove_outputs(OUT "_name");
-    snprintf(command, sizeof command, "-o " OUT "_name.png %s", args);
-    CHECK(t, photon(command) == 0);
-    CHECK(t, file_exists(OUT "_name.pfm") && file_exists(OUT "_name.png"));
-    CHECK(t, !file_exists(OUT "_name.ppm") && !file_exists(OUT "_name.png.pfm"));
-    CHECK(t, starts_with(OUT "_name.png", "\211PNG\r\n\032\n") &&
-             starts_with(OUT "_name.pfm", "PF\n"));
-    rename(OUT "_name.pfm", OUT "_png.pfm");
-    remove(OUT "_name.png");
-    snprintf(command, sizeof command, "-o " OUT "_name.ppm %s", args);
-    CHECK(t, photon(command) == 0);
-    CHECK(t, file_exists(OUT "_name.pfm") && file_exists(OUT "_name.ppm"));
-    CHECK(t, !file_exists(OUT "_name.png") && starts_with(OUT "_name.ppm", "P6\n12 8\n255\n"));
-    CHECK(t, files_equal(OUT "_name.pfm", OUT "_png.pfm"));
-    remove_outputs(OUT "_name");
-    CHECK(t, photon("--mode 2008 -o " OUT "_name.ppm --width 8 --height 8 --passes 2 "
-                    "--photons-per-pass 1000 --checkpoint 1 scenes/cornell.scene") == 0);
-    CHECK(t, file_exists(OUT "_name.ppm") && !file_exists(OUT "_name.png"));
-    remove_outputs(OUT "_name");
-    CHECK(t, photon("--crop 0 0 12 8 -o " OUT "_tile.png --width 12 --height 8 --spp 1 "
-                    "scenes/cornell.scene") == 0);
-    CHECK(t, file_exists(OUT "_tile.pfm.window") && !file_exists(OUT "_tile.png.window"));
-    CHECK(t, photon("merge -o " OUT "_name.ppm " OUT "_tile.pfm") == 0);
-    CHECK(t, files_equal(OUT "_name.pfm", OUT "_png.pfm") && file_exists(OUT "_name.ppm") &&
-             !file_exists(OUT "_name.png"));
-    CHECK(t, photon("merge -o " OUT "_name.png " OUT "_tile.pfm") == 0);
-    CHECK(t, files_equal(OUT "_name.png", OUT "_tile.png"));
-    CHECK(t, photon("merge -o " OUT "_name.jpg " OUT "_tile.pfm") == 2 &&
-             log_contains("-o: expected a file name ending in .pfm, .exr, .png or .ppm"));
-    remove_outputs(OUT "_name");
-    remove_outputs(OUT "_png");
-    remove_outputs(OUT "_tile");
-    remove(OUT "_tile.pfm.window");
-}
-
-/* truth: with no -o the PFM is named for the scene, without its directory (README), and
- *   the PNG is beside it. Run inside build/ so the files land there.
- * catches: the default naming the PPM, or the PNG put beside the scene file. */
-static void test_default_output_names(struct check *t)
-{
-    const char *binary = photon_binary();
-    char command[COMMAND_MAX];
-    remove("build/cornell.pfm");
-    remove("build/cornell.png");
-    snprintf(command, sizeof command, "cd build && %s%s --width 4 --height 4 --spp 1 "
-             "../scenes/cornell.scene > /dev/null 2>&1", binary[0] == '/' ? "" : "../", binary);
-    CHECK(t, run_command(command) == 0);
-    CHECK(t, file_exists("build/cornell.pfm") && file_exists("build/cornell.png"));
-    CHECK(t, !file_exists("build/cornell.ppm") && !file_exists("scenes/cornell.png"));
-    remove("build/cornell.pfm");
-    remove("build/cornell.png");
-}
-
-/* truth: output.h: an output that is a directory is refused before any work, status 2,
- *   "is a directory", for the PNG beside -o as for -o itself; no PFM is written.
- * catches: the directory found only by the rename after the render (once status 1 and a
- *   PFM without its PNG), a temporary left behind. */
-static void test_failed_png_leaves_nothing(struct check *t)
-{
-    remove_outputs(OUT "_dir");
-    CHECK(t, run_command("mkdir -p " OUT "_dir.png") == 0);
-    CHECK(t, photon("-o " OUT "_dir.png --width 4 --height 4 --spp 1 scenes/cornell.scene")
-                 == 2);
-    CHECK(t, log_contains(OUT "_dir.png: is a directory (the PNG beside -o)"));
-    CHECK(t, no_temporaries(OUT "_dir.png") && run_command("test -d " OUT "_dir.png") == 0);
-    CHECK(t, !file_exists(OUT "_dir.pfm"));
-    CHECK(t, run_command("rmdir " OUT "_dir.png") == 0);
-    remove_outputs(OUT "_dir");
-}
-
 void test_cli(struct check *t)
 {
     RUN_TEST(t, test_options);
@@ -737,7 +635,4 @@ void test_cli(struct check *t)
     RUN_TEST(t, test_nff_file_is_a_scene);
     RUN_TEST(t, test_ppm_command);
     RUN_TEST(t, test_ppm_memory_does_not_grow_with_passes);
-    RUN_TEST(t, test_output_names);
-    RUN_TEST(t, test_default_output_names);
-    RUN_TEST(t, test_failed_png_leaves_nothing);
 }

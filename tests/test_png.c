@@ -9,7 +9,7 @@
  * is named on a "skipped" line, never passed over in silence.
  *
  * Files go to /tmp under names unique to the run (temp_name, files.c) and are removed by
- * the test that made them. The -o naming rule is tested on the binary in test_cli.c.
+ * the test that made them. The -o naming rule is tested on the binary in test_outputs.c.
  */
 #include <math.h>
 #include <stdint.h>
