@@ -436,8 +436,8 @@ static struct render_result render_mode(struct run *run, struct error *err)
                     "photons' f_r are alike: it missed in 13-19%% of the blocks of 3 of the "
                     "30 shipped scenes, where a caustic's lines are finer than the disc "
                     "(cardioid-ring), a glossy floor reflects a few photons each "
-                    "(cornell-glossy) and on a wide floor (every-primitive; "
-                    "reference/suite.md)\n");
+                    "(cornell-glossy) and where the disc overhangs a floor's edge "
+                    "(every-primitive; reference/suite.md)\n");
         warn_fine_flake(run->scene, "photons");
         ps.n_photons = (size_t)run->o.photons;
         ps.gather = (size_t)run->o.gather;

@@ -22,7 +22,10 @@
  * y'_b) estimates y_b's, smoothed over the 5 x 5 pixels around as 2009's is
  * (sppm_error.h); B = |b~| + z_c sigma. The rim photon that --paper counts (exclude_rim 0;
  * Eq. 3 as printed, k / (k - 1) too bright) lies outside the inner disc, so b~ states twice
- * its bias.
+ * its bias. The two discs assume a bias of the second order in r: where a disc overhangs
+ * a surface's edge the bias is nearer the first (one linear in r, b~ understates by 41%),
+ * and light that changes within the inner disc (a caustic's lines) both discs blur alike;
+ * the calibration finds both (src/modes/README.md).
  *
  * The camera samples. Every batch above sees all of the pixel's samples, so their spread
  * over the pixel (an outline, a shadow's edge) is in no y_b. It is independent of the
