@@ -14,7 +14,7 @@
 # --block 16). The renders run one after another; CPU seconds do not depend on what else
 # the machine runs, as long as it does not run out of memory.
 #
-# POSIX sh (dash, bash, ...), set -eu; needs only photon itself, grep, sed and cut.
+# POSIX sh (dash, bash, ...), set -eu; needs only photon itself, grep, sed, cut and awk.
 
 set -eu
 
@@ -30,9 +30,15 @@ presets=${PRESETS:-preview default}
 work=$(mktemp -d "${TMPDIR:-/tmp}/photon-presets.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
-# The preset's words, from the table --help all prints ("--mode MODE QUALITY WORDS...").
+# The preset's words, from the table --help all prints ("--mode MODE QUALITY WORDS...", a
+# long row's words going on in the lines below it that start with spaces and "--").
 settings() {
-    words=$("$photon" --help all | sed -n "s/^  --mode $1  *$2  *//p")
+    words=$("$photon" --help all | awk -v mode="$1" -v preset="$2" '
+        $1 == "--mode" { row = $2 == mode && $3 == preset }
+        row && $1 == "--mode" { sub(/^ *--mode +[^ ]+ +[^ ]+ +/, ""); words = $0; next }
+        row && /^   +--/ { sub(/^ +/, ""); words = words " " $0; next }
+        { row = 0 }
+        END { print words }')
     if [ -n "$words" ]; then echo "\`$words\`"; else echo "(the defaults)"; fi
 }
 

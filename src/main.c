@@ -460,7 +460,6 @@ static struct render_result render_mode(struct run *run, struct error *err)
         settings_1994.light_samples = run->o.light_samples;
         settings_1994.both_lobes = run->o.both_lobes;
         settings_1994.bounded_reach = run->o.bounded_reach;
-        settings_1994.glossy_gather = run->o.glossy_gather;
         settings_1994.glossy_photons = run->o.glossy_photons;
         settings_1994.lobe_lights = run->o.lobe_lights;
         settings_1994.gradient_limit = run->o.gradient_limit;

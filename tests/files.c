@@ -88,6 +88,21 @@ int file_equals_text(const char *name, const char *text)
     return equal;
 }
 
+void join_option_rows(char *help)
+{
+    char *out = help;
+    for (const char *c = help; *c != '\0'; c++) {
+        size_t spaces = c[0] == '\n' ? strspn(c + 1, " ") : 0;
+        if (spaces > 2 && strncmp(c + 1 + spaces, "--", 2) == 0) {
+            *out++ = ' ';
+            c += spaces;
+        } else {
+            *out++ = *c;
+        }
+    }
+    *out = '\0';
+}
+
 int files_equal(const char *a, const char *b)
 {
     FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");

@@ -28,6 +28,10 @@ char *read_text_file(const char *name);
 int file_contains(const char *name, const char *text);
 /* Whether name can be read and its whole text is exactly text. */
 int file_equals_text(const char *name, const char *text);
+/* --help's text, in place, with each row of option words (a preset's, --paper's) on one
+ * line: help_row() goes on under the row's first word in a line of spaces and an option,
+ * joined here to the line above by one space. */
+void join_option_rows(char *help);
 /* Whether both files can be read and hold the same bytes. */
 int files_equal(const char *a, const char *b);
 /* How many temporaries of the output name are on disk: files, links or directories

@@ -3,7 +3,8 @@
  * names what the program has, `photon --help all` lists every option, and every command
  * answers --help. The modes, commands and options are read from the program's own tables
  * (option_values.h's every_mode, commands.h, option_table.h), not from a copy here, so a
- * mode, command or option added later is checked too.
+ * mode, command or option added later is checked too; every page of --help keeps within
+ * 100 columns.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -92,8 +93,7 @@ static void test_first_screen(struct check *t)
 
 /* truth: the option table (option_table.c): photon --help all, the full list the manual
  *   page is written from, has an entry for every row, and for --help, --version and
- *   --manual, within 100 columns but the preset and --paper rows (test_docs.c); it is
- *   longer than the first screen, which it does not replace.
+ *   --manual; it is longer than the first screen, which it does not replace.
  * catches: an option the parser takes that the full list leaves out; --help all read as
  *   a mode or a scene. */
 static void test_help_all_lists_every_option(struct check *t)
@@ -141,9 +141,51 @@ static void test_every_command_answers_help(struct check *t)
     remove(err);
 }
 
+/* Checks that no line of "PHOTON words"'s output passes SCREEN_COLUMNS, naming the page
+ * and its widest line where one does. */
+static void check_page_fits(struct check *t, const char *words, const char *out,
+                            const char *err)
+{
+    CHECK(t, photon_stdout(words, out, err) == 0);
+    char *page = read_text_file(out);
+    REQUIRE(t, page != NULL);
+    size_t widest;
+    int lines = count_lines(page, &widest);
+    CHECK(t, lines > 0 && widest <= SCREEN_COLUMNS);
+    if (widest > SCREEN_COLUMNS)
+        fprintf(stderr, "test_help: photon %s: a line of %zu columns\n", words, widest);
+    free(page);
+}
+
+/* truth: help.h's HELP_WIDTH, the terminal the help is written for: every page of help
+ *   (photon --help, --help all, --help MODE for each mode, COMMAND --help for each
+ *   command) keeps each line within 100 columns: a preset's or --paper's words, wrapped,
+ *   go on under their first word, and a command's usage runs on over several lines.
+ * catches: a row of option words added or grown past the edge (--help all's 1996 --paper
+ *   row was 214 columns); a command's usage printed on one line (compare's was 281). */
+static void test_every_page_fits(struct check *t)
+{
+    char out[NAME_BYTES], err[NAME_BYTES], words[64];
+    temp_name(out, sizeof out, "help", "page.txt");
+    temp_name(err, sizeof err, "help", "page.err");
+    check_page_fits(t, "--help", out, err);
+    check_page_fits(t, "--help all", out, err);
+    for (size_t m = 0; m < N_EVERY_MODE; m++) {
+        snprintf(words, sizeof words, "--help %s", mode_name(every_mode[m]));
+        check_page_fits(t, words, out, err);
+    }
+    for (size_t i = 0; i < N_COMMANDS; i++) {
+        snprintf(words, sizeof words, "%s --help", commands[i].name);
+        check_page_fits(t, words, out, err);
+    }
+    remove(out);
+    remove(err);
+}
+
 void test_help(struct check *t)
 {
     RUN_TEST(t, test_first_screen);
     RUN_TEST(t, test_help_all_lists_every_option);
     RUN_TEST(t, test_every_command_answers_help);
+    RUN_TEST(t, test_every_page_fits);
 }

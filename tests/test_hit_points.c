@@ -1,7 +1,7 @@
 /*
  * tests/test_hit_points.c -- the hit points' room: the tree of progressive photon
- * mapping's hit points (photon/hit_points.h) and the hash grid of stochastic progressive
- * photon mapping's (photon/hit_point_grid.h) against brute force.
+ * mapping's hit points (photon/hit_points.h), 2008's and 2009's, against brute force, and
+ * what a photon adds to a hit point.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -9,7 +9,6 @@
 #include <math.h>
 
 #include "../src/base/rng.h"
-#include "../src/photon/hit_point_grid.h"
 #include "../src/photon/hit_points.h"
 #include "../src/photon/trace.h"
 #include "brdf_cases.h"
@@ -29,25 +28,9 @@ static void mark_visited(void *context, size_t i)
     v->hit[i] = 1;
 }
 
-/* A search over hit points: the tree's or the grid's visit, on index. */
-typedef void (*search_fn)(const void *index, struct vec3 p,
-                          void (*visit)(void *context, size_t i), void *context);
-
-static void tree_search(const void *index, struct vec3 p, void (*visit)(void *, size_t),
-                        void *context)
-{
-    hit_point_tree_visit(index, p, visit, context);
-}
-
-static void grid_search(const void *index, struct vec3 p, void (*visit)(void *, size_t),
-                        void *context)
-{
-    hit_point_grid_visit(index, p, visit, context);
-}
-
-/* Whether search visits exactly the hit points a linear scan finds for 2000 queries,
- * each once. */
-static int matches_scan(search_fn search, const void *index, const struct hit_point *points,
+/* Whether the tree's search visits exactly the hit points a linear scan finds for 2000
+ * queries, each once. */
+static int matches_scan(const struct hit_point_tree *tree, const struct hit_point *points,
                         size_t n, struct rng *rng)
 {
     struct visited v = {calloc(n > 0 ? n : 1, 1), 0};
@@ -55,7 +38,7 @@ static int matches_scan(search_fn search, const void *index, const struct hit_po
     for (int q = 0; q < 2000; q++) {
         struct vec3 p = vec3(rng_uniform(rng), rng_uniform(rng), rng_uniform(rng) * 0.1);
         memset(v.hit, 0, n);
-        search(index, p, mark_visited, &v);
+        hit_point_tree_visit(tree, p, mark_visited, &v);
         for (size_t i = 0; i < n; i++) {
             double d2 = vec3_length2(vec3_sub(p, points[i].x));
             same = same && v.hit[i] == (d2 <= points[i].global.radius * points[i].global.radius);
@@ -88,84 +71,14 @@ static void test_hit_point_tree(struct check *t)
         }
         struct hit_point_tree tree;
         hit_point_tree_build(&tree, points, n);
-        CHECK(t, matches_scan(tree_search, &tree, points, n, &rng));
+        CHECK(t, matches_scan(&tree, points, n, &rng));
         for (size_t i = 0; i < n; i++)
             points[i].global.radius *= i % 5 == 0 ? 0.0 : rng_uniform(&rng);
         hit_point_tree_refit(&tree);
-        CHECK(t, matches_scan(tree_search, &tree, points, n, &rng));
+        CHECK(t, matches_scan(&tree, points, n, &rng));
         hit_point_tree_free(&tree);
         free(points);
     }
-}
-
-/* truth: brute force, as for the tree: random points in a thin slab with radii from 0 to
- *   0.1 (one at exactly the largest, so cells as wide as it), many identical points, one
- *   point, none, and all radii 0.
- * catches: a disc listed in too few cells (a box 2 reach wide can touch 3 cells a side),
- *   a hit point listed twice in one bucket (two of its cells hashed alike) and visited
- *   twice, a photon off the grid's corner (negative cells) lost. */
-static void test_hit_point_grid(struct check *t)
-{
-    struct rng rng = rng_stream(1, STREAM_TEST, 2009, 0);
-    static const size_t sizes[] = {0, 1, 2, 7, 1000, 3000};
-    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
-        size_t n = sizes[s];
-        struct hit_point *points = calloc(n > 0 ? n : 1, sizeof *points);
-        for (size_t i = 0; i < n; i++) {
-            int duplicate = n == 3000 && i % 3 == 0;
-            points[i].x = duplicate ? vec3(0.5, 0.5, 0.05)
-                                    : vec3(rng_uniform(&rng), rng_uniform(&rng),
-                                           rng_uniform(&rng) * 0.1);
-            points[i].global.radius = i == 0 ? 0.1 : 0.1 * rng_uniform(&rng);
-        }
-        struct hit_point_grid grid;
-        hit_point_grid_build(&grid, points, n);
-        CHECK(t, matches_scan(grid_search, &grid, points, n, &rng));
-        hit_point_grid_free(&grid);
-        for (size_t i = 0; i < n; i++)
-            points[i].global.radius = 0;
-        hit_point_grid_build(&grid, points, n);
-        CHECK(t, matches_scan(grid_search, &grid, points, n, &rng));
-        hit_point_grid_free(&grid);
-        free(points);
-    }
-}
-
-/* truth: geometry: a photon 0.99 reach from a hit point, in any of the 26 directions to
- *   the cells around it, is within its disc. 2009's pass 12 on point-in-sphere (16 x 16,
- *   seed 1) as the grid saw it: the centre pixel's hit point, the largest disc, at the
- *   sphere's far pole, and 255 of radius 0 at the least x and y of the others (512
- *   buckets, as for 256 pixels). The first's reach is the cells' width and its z the
- *   grid's origin, so its box's sides lie on cells' boundaries, and rounding z - reach
- *   moves one across: the box touches 3 x 3 x 4 cells, in 30 distinct buckets.
- * catches: a box cut to 27 cells (3 a side), whose last cells' photons were lost: the
- *   photon 2009 on point-in-sphere's centre pixel lost that pass (0.13% of the pixel). */
-static void test_hit_point_grid_box_on_boundaries(struct check *t)
-{
-    enum { N = 256 };
-    struct hit_point *points = calloc(N, sizeof *points);
-    points[0].x = vec3(0.049629747370164727, -0.066512021910612895, -0.99655057027595739);
-    points[0].global.radius = 0.066216530199192783;
-    for (int i = 1; i < N; i++)
-        points[i].x = vec3(-0.69193309811676462, -0.69408531484224589, -0.5);
-    struct hit_point_grid grid;
-    hit_point_grid_build(&grid, points, N);
-    struct visited v = {calloc(N, 1), 0};
-    int all = 1;
-    for (int d = 0; d < 27; d++) {
-        struct vec3 dir = vec3(d % 3 - 1, d / 3 % 3 - 1, d / 9 - 1);
-        if (d == 13)
-            continue; /* (0, 0, 0) */
-        struct vec3 p = vec3_madd(points[0].x, vec3_normalize(dir),
-                                  0.99 * points[0].global.radius);
-        v.hit[0] = 0;
-        hit_point_grid_visit(&grid, p, mark_visited, &v);
-        all = all && v.hit[0];
-    }
-    CHECK(t, all);
-    hit_point_grid_free(&grid);
-    free(v.hit);
-    free(points);
 }
 
 /* v turned by angle a about the y axis (x towards z): the rotation by its matrix. */
@@ -232,7 +145,5 @@ static void test_photon_directions_turned(struct check *t)
 void test_hit_points(struct check *t)
 {
     RUN_TEST(t, test_hit_point_tree);
-    RUN_TEST(t, test_hit_point_grid);
-    RUN_TEST(t, test_hit_point_grid_box_on_boundaries);
     RUN_TEST(t, test_photon_directions_turned);
 }

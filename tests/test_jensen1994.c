@@ -667,19 +667,19 @@ static double glossy_floor_worst_block(const char *options)
 
 /* truth: reference/glossy-floor-pt.pfm, pt converged (its blocks' noise below 0.3%): a
  *   Schlick floor (r = 0.6, a broad lobe) lit only by a wall in front of the camera.
- * tolerance: every 8 x 8 block within 3%, the bar of make consistency; the Lambertian
- *   stand-in (--no-glossy-gather) must miss by over 10% somewhere: the check can fail.
+ * tolerance: every 8 x 8 block within 3%, the bar of make consistency; the floor's
+ *   illumination map, whose irradiance gather rays read as albedo / pi, must miss by over
+ *   5% somewhere (measured: 6.9%, block (0, 0)): the check can fail.
  * catches: a non-Lambertian diffuse-like part reflecting irradiance as albedo / pi, in
  *   the final gather at the eye (the floor's blocks) or at a gather ray's end (the wall,
  *   which sees the floor at a grazing angle), and a glossy gather without the BRDF. */
 static void test_glossy_floor(struct check *t)
 {
     double gathered = glossy_floor_worst_block("");
-    double lambertian = glossy_floor_worst_block("--no-glossy-gather");
-    printf("  1994: glossy floor, worst 8 x 8 block %.1f%% (--no-glossy-gather %.1f%%)\n",
+    double lambertian = glossy_floor_worst_block("--irradiance-store illumination");
+    printf("  1994: glossy floor, worst 8 x 8 block %.1f%% (illumination map %.1f%%)\n",
            100 * gathered, 100 * lambertian);
-    CHECK(t, gathered >= 0 && gathered <= 0.03);
-    CHECK(t, lambertian > 0.10);
+    CHECK(t, gathered >= 0 && gathered <= 0.03 && lambertian > 0.05);
 }
 
 void test_jensen1994(struct check *t)

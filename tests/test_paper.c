@@ -29,7 +29,7 @@ static const char *const modes[] = {"direct", "pt", "photons", "1994", "1996", "
 /* truth: the contract of --paper (presets.h, options.h): for every mode, the options
  *   of its row in the table, spelled out, with the specular pixels at --spp samples,
  *   give the same options_hash (so the same pixels and tiles); a mode with a row differs
- *   from its defaults; --help all prints each row's words.
+ *   from its defaults; --help all prints each row's words (a long row wrapped).
  * tolerance: none (hashes of the parsed values).
  * catches: --paper applied by another path than the parser, a row the mode refuses,
  *   --paper that leaves the specular pixels at 64 x --spp, a row missing from --help all. */
@@ -38,6 +38,8 @@ static void test_paper_is_its_words(struct check *t)
     CHECK(t, photon_logged("", "--help all", OUT ".log") == 0);
     char *help = read_text_file(OUT ".log");
     CHECK(t, help != NULL);
+    if (help != NULL)
+        join_option_rows(help);
     for (size_t m = 0; m < N_MODES; m++) {
         char words[512], spelled[512];
         struct options o;

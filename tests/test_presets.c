@@ -46,6 +46,8 @@ static void test_every_preset_parses_as_its_words(struct check *t)
 {
     char *help = photon("--help all") == 0 ? read_text_file(OUT ".log") : NULL;
     CHECK(t, help != NULL);
+    if (help != NULL)
+        join_option_rows(help);
     for (size_t m = 0; m < N_MODES; m++) {
         char words[512];
         snprintf(words, sizeof words, "--mode %s", modes[m]);

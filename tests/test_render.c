@@ -175,10 +175,12 @@ struct synthetic {
     int by_direction;
 };
 
-static struct vec3 synthetic_radiance(const void *mode, struct ray ray, struct rng *rng,
+static struct vec3 synthetic_radiance(const void *mode, struct ray ray,
+                                      const struct first_bounce *first, struct rng *rng,
                                       struct render_counters *counters)
 {
     const struct synthetic *g = mode;
+    (void)first;
     (void)counters;
     double w = g->by_direction ? fabs(ray.dir.x) : 1.0;
     double v = g->c + g->a * w * rng_uniform(rng);
@@ -249,7 +251,7 @@ static struct vec3 own_sample(const struct fixture *f, int x, int y, int s)
 {
     struct rng rng;
     struct ray ray = camera_sample(f->scene, f->rs.seed, x, y, s, &rng);
-    return synthetic_radiance(&f->mode, ray, &rng, NULL);
+    return synthetic_radiance(&f->mode, ray, NULL, &rng, NULL);
 }
 
 /* Pixel (x, y)'s samples 0..n-1, each channel summed in sample order: their mean, and the

@@ -22,8 +22,10 @@
 #include "option_values.h"
 #include "suggest.h"
 
-#define CONVERT_USAGE "usage: photon convert IN.pfm|.exr -o OUT.png|.ppm [--exposure E | " \
-                      "--false-colour [--min V] [--max V] [--log]]"
+/* The usage in two parts: one line in a message, two in --help (within 100 columns). */
+#define CONVERT_USAGE_NAMES "usage: photon convert IN.pfm|.exr -o OUT.png|.ppm"
+#define CONVERT_USAGE_OPTIONS "[--exposure E | --false-colour [--min V] [--max V] [--log]]"
+#define CONVERT_USAGE CONVERT_USAGE_NAMES " " CONVERT_USAGE_OPTIONS
 
 /* What `photon convert` was asked to do. */
 struct convert_args {
@@ -51,7 +53,7 @@ static const char *option_at(size_t i)
 
 /* `photon convert --help`. */
 static const char convert_help[] =
-    CONVERT_USAGE "\n"
+    CONVERT_USAGE_NAMES "\n                      " CONVERT_USAGE_OPTIONS "\n"
     "Writes an image file (a PFM: photon's -o, --variance, --error, --block-error, or\n"
     "anyone's) as a picture to look at, a PNG or, for OUT.ppm, a binary PPM.\n"
     "  --exposure E      linear value x E, clamped to [0, 1], sRGB-encoded: the display\n"

@@ -7,6 +7,7 @@
  */
 #include "help.h"
 
+#include <assert.h>
 #include <ctype.h>
 #include <stdio.h>
 #include <string.h>
@@ -71,7 +72,29 @@ void help_lines(enum help_format format, const char *text)
     fputs(".fi\n", stdout);
 }
 
-#define HELP_WIDTH 100      /* the columns a line of the text layout takes at most  */
+void help_row(enum help_format format, const char *head, const char *words)
+{
+    char text[1024];
+    size_t indent = strlen(head), used = 0, line = 0;
+    assert(indent + strlen(words) < sizeof text / 2); /* room for the breaks' indents */
+    used += (size_t)sprintf(text, "%s", head);
+    while (*words != '\0') {
+        /* The next option and its values: up to the next " --", or the end. */
+        const char *next = strstr(words + 1, " --");
+        size_t n = next != NULL ? (size_t)(next - words) : strlen(words);
+        if (used - line > indent && used - line + 1 + n > HELP_WIDTH) {
+            used += (size_t)sprintf(text + used, "\n%*s", (int)indent, "");
+            line = used - indent;
+        } else if (used - line > indent) {
+            text[used++] = ' ';
+        }
+        used += (size_t)sprintf(text + used, "%.*s", (int)n, words);
+        words += n + (next != NULL);
+    }
+    sprintf(text + used, "\n");
+    help_lines(format, text);
+}
+
 #define HELP_TEXT_COLUMN 29 /* where an option's text starts: 2 + 26 + a space       */
 
 /* text from column HELP_TEXT_COLUMN on, broken at spaces so that no line passes

@@ -9,6 +9,8 @@
 
 enum help_format { HELP_TEXT, HELP_ROFF };
 
+#define HELP_WIDTH 100 /* the columns a line of the text layout takes at most */
+
 /* The page's head: nothing as text; roff's title line and NAME section. */
 void help_begin(enum help_format format, const char *version);
 
@@ -17,6 +19,12 @@ void help_section(enum help_format format, const char *title);
 
 /* Lines to keep as they stand (usage, tables); text may hold several '\n'-ended lines. */
 void help_lines(enum help_format format, const char *text);
+
+/* A row of a table whose last column is option words (a preset, --paper's): head, then
+ * words, broken before an option ("--NAME", which keeps its values on its line) where the
+ * line would pass HELP_WIDTH, each further line starting under the first word; kept as it
+ * stands, as help_lines(). */
+void help_row(enum help_format format, const char *head, const char *words);
 
 /* One option: as text "  LEFT (padded to 26) TEXT"; roff a tagged paragraph. */
 void help_option(enum help_format format, const char *left, const char *text);

@@ -147,11 +147,13 @@ const struct option_spec option_specs[] = {
      "a radiance estimate at each gather ray's end (the paper's)", FOR_1996},
     {"--disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
      "records of precomputed irradiance (2009: a pixel's estimate) count the photons of "
-     "their disc's plane over the part of the disc a surface covers, found by probe rays "
-     "(2009: one a pass), in place of pi r^2 (the default); 1996: refused with "
-     "--no-precomputed-irradiance, which makes no records", FOR_1996 | FOR_2009},
+     "their disc's plane, arrived from its side, over the part of the disc a surface "
+     "covers, found by probe rays (2009: one a pass), in place of pi r^2 (the default); "
+     "1996: refused with --no-precomputed-irradiance, which makes no records",
+     FOR_1996 | FOR_2009},
     {"--no-disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
-     "over the whole disc, pi r^2, as Eq. 3 (the paper's)", FOR_1996 | FOR_2009},
+     "over the whole disc, pi r^2, as Eq. 3 (the paper's; 2009: every photon within r "
+     "counts)", FOR_1996 | FOR_2009},
     {"--both-lobes", OPT_FLAG, FIELD(both_lobes), 0, 0, "",
      "glass traces its reflected and refracted rays both, as Whitted's ray tracer (1996: "
      "at accurate points) (the default)", FOR_1994 | FOR_1996},
@@ -179,13 +181,6 @@ const struct option_spec option_specs[] = {
      "weighted against the lobe's own ray by the power heuristic (the default)", FOR_1994},
     {"--no-lobe-lights", OPT_FLAG, FIELD(lobe_lights), 0, 0, "",
      "the lobe's ray alone finds them (the paper's; point lights are sampled either way)",
-     FOR_1994},
-    {"--glossy-gather", OPT_FLAG, FIELD(glossy_gather), 0, 0, "",
-     "a diffuse-like part that is not Lambertian (Schlick's model, r >= 1/2) reflects what "
-     "each camera sample gathers through its BRDF (the default, and the paper's plain "
-     "recursive Monte Carlo for complex BRDFs)", FOR_1994},
-    {"--no-glossy-gather", OPT_FLAG, FIELD(glossy_gather), 0, 0, "",
-     "albedo / pi times the cache's irradiance, as if it were Lambertian (not the paper's)",
      FOR_1994},
     {"--bounded-reach", OPT_FLAG, FIELD(bounded_reach), 0, 0, "",
      "a cache record's R lies between 1.5 pixel footprints / A, as the camera sees its "
@@ -246,11 +241,11 @@ const struct option_spec option_specs[] = {
      "emission only from the --spp eye rays of the ray tracing pass, the paper's (its only "
      "eye rays)", FOR_2008},
     {"--facing-test", OPT_FLAG, FIELD(facing_test), 0, 0, "",
-     "a photon counts only at hit points whose surface faces its own (the default)",
-     FOR_PROGRESSIVE},
+     "a photon counts only at hit points whose surface faces its own (the default; 2009's "
+     "--disc-coverage holds such a test)", FOR_2008},
     {"--no-facing-test", OPT_FLAG, FIELD(facing_test), 0, 0, "",
-     "every photon within R counts, as the papers' \"photons within the radius\"",
-     FOR_PROGRESSIVE},
+     "every photon within R counts, as the paper's \"photons within the radius\"",
+     FOR_2008},
     {"--turn-photon-directions", OPT_FLAG, FIELD(turn_photon_directions), 0, 0, "",
      "f_r sees a photon's direction turned by the rotation taking its surface's normal to "
      "the hit point's, so none within R falls below a curved surface's horizon (the "

@@ -49,7 +49,7 @@ struct option_spec {
 
 /* The rows of option_table.c, N_OPTION_SPECS of them (a constant, for arrays of one entry
  * an option; option_table.c does not compile when it is not the rows' count). */
-#define N_OPTION_SPECS 90
+#define N_OPTION_SPECS 88
 extern const struct option_spec option_specs[];
 
 #endif

@@ -179,7 +179,6 @@ void option_defaults(struct options *o)
     o->differential_run = j94.differential_run;
     o->light_samples = j94.light_samples;
     o->projection_maps = j94.projection_maps;
-    o->glossy_gather = j94.glossy_gather;
     o->glossy_photons = j94.glossy_photons;
     o->lobe_lights = j94.lobe_lights;
 }

@@ -92,11 +92,9 @@ int read_quality(const char *text, enum quality *quality, struct error *err)
  * paper's value of an option that is a number (--footprints 1), the rule at options.c's
  * enum option_kind. A mode not named has none with a switch. Beyond these words, --paper
  * gives the specular pixels --spp samples (options.c), since --specular-spp's default is a
- * multiple of --spp. Not here: 1994's --glossy-gather, nearer the paper's own rule
- * (Jensen and Christensen 1994, Sec. 4.0.3) than --no-glossy-gather; --adaptive, whose
- * threshold is not specified by the paper (src/modes/README.md says why each stays); and
- * --caustic-radius-fraction, a fraction of the maximum radius that --no-max-radius takes
- * away. */
+ * multiple of --spp. Not here: --adaptive, whose threshold is not specified by the paper
+ * (src/modes/README.md says why it stays off); and --caustic-radius-fraction, a fraction
+ * of the maximum radius that --no-max-radius takes away. */
 static const struct {
     enum mode mode;
     const char *words;
@@ -113,7 +111,7 @@ static const struct {
                     "--no-fit-radius --no-merge-hit-points --no-resample-emission "
                     "--no-facing-test --no-turn-photon-directions"},
     {MODE_SPPM2009, "--no-direct-light-samples --footprints 1 --no-fit-radius "
-                     "--no-disc-coverage --no-facing-test --no-turn-photon-directions "
+                     "--no-disc-coverage --no-turn-photon-directions "
                      "--no-follow-glossy-lobes"},
 };
 
@@ -149,24 +147,23 @@ void paper_words(enum mode mode, int paper, struct preset_words *out)
 
 void print_presets(enum help_format format, int only)
 {
-    char line[512];
+    char head[64];
     help_section(format, "quality presets (--quality NAME; default: the defaults above; the "
                          "options given\non the command line win over the preset's, wherever "
                          "they stand)");
     for (size_t i = 0; i < sizeof presets / sizeof presets[0]; i++) {
         if (only >= 0 && presets[i].mode != (enum mode)only)
             continue;
-        snprintf(line, sizeof line, "  --mode %-7s %-9s  %s\n", mode_name(presets[i].mode),
-                 quality_name(presets[i].quality), presets[i].words);
-        help_lines(format, line);
+        snprintf(head, sizeof head, "  --mode %-7s %-9s  ", mode_name(presets[i].mode),
+                 quality_name(presets[i].quality));
+        help_row(format, head, presets[i].words);
     }
     help_section(format, "--paper (the options it stands for, before the command line's; and "
                          "the specular\npixels take --spp samples)");
     for (size_t i = 0; i < sizeof as_written / sizeof as_written[0]; i++) {
         if (only >= 0 && as_written[i].mode != (enum mode)only)
             continue;
-        snprintf(line, sizeof line, "  --mode %-7s %s\n", mode_name(as_written[i].mode),
-                 as_written[i].words);
-        help_lines(format, line);
+        snprintf(head, sizeof head, "  --mode %-7s ", mode_name(as_written[i].mode));
+        help_row(format, head, as_written[i].words);
     }
 }

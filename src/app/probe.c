@@ -23,9 +23,12 @@
 #define PROBE_DEFAULT_PHOTONS 1000000 /* light rays: reference/fig8-*.svg were made with
                                          them (1994 renders default to more)            */
 #define PROBE_MAX_SAMPLES 1000000
-#define PROBE_USAGE "usage: photon probe SCENE --line X0 Y0 Z0 X1 Y1 Z1 --samples N " \
-                    "-o FILE.csv [--normal NX NY NZ] [--photons N] [--gather N] "       \
-                    "[--differential R] [--seed S]"
+/* The usage in two parts: one line in a message, two in --help (within 100 columns). */
+#define PROBE_USAGE_NAMES "usage: photon probe SCENE --line X0 Y0 Z0 X1 Y1 Z1 --samples N " \
+                          "-o FILE.csv"
+#define PROBE_USAGE_OPTIONS "[--normal NX NY NZ] [--photons N] [--gather N] [--differential R] " \
+                            "[--seed S]"
+#define PROBE_USAGE PROBE_USAGE_NAMES " " PROBE_USAGE_OPTIONS
 
 struct probe_args {
     const char *scene_path, *output;
@@ -112,7 +115,8 @@ static int parse_probe_args(int argc, char **argv, struct probe_args *args, stru
                    "only; none otherwise),\ncaustic_photons, caustic_photons_unchecked, "
                    "all_photons (mode 1994's estimates\nfrom --gather photons, default %d), "
                    "caustic_illumination (its illumination map).\n--photons: light rays, "
-                   "default %d.\n", PROBE_USAGE, PROBE_DEFAULT_GATHER, PROBE_DEFAULT_PHOTONS);
+                   "default %d.\n", PROBE_USAGE_NAMES "\n                    " PROBE_USAGE_OPTIONS,
+                   PROBE_DEFAULT_GATHER, PROBE_DEFAULT_PHOTONS);
             return 1;
         }
         if (argv[i][0] == '-' && argv[i][1] != '\0') {

@@ -87,7 +87,6 @@ struct options {
     int corner_photons;           /* 1996: corners' soft indirect light from photons;
                                      0 = a final gather, the paper's               */
     int bounded_reach;            /* 1994, 1996: cache records' R from the camera  */
-    int glossy_gather;            /* 1994: non-Lambertian diffuse parts gather      */
     int glossy_photons;           /* 1994: seen through glossy lobes: photon map    */
     int lobe_lights;              /* 1994: lights sampled through glossy lobes      */
     int gradient_limit;           /* 1994, 1996: cache records' R <= E / |grad E|  */
@@ -107,7 +106,7 @@ struct options {
                                      paper's (--no-caustic-footprints)              */
     int merge_hit_points;         /* 2008: a pixel's eye rays share hit points     */
     int resample_emission;        /* 2008: each pass's eye ray adds emission       */
-    int facing_test;              /* 2008, 2009: photons count where surfaces face */
+    int facing_test;              /* 2008: photons count where surfaces face       */
     int turn_photon_directions;   /* 2008, 2009: w_p turned onto the hit point's surface */
     int follow_glossy_lobes;      /* 2009: eye paths sample glossy lobes                  */
     int checkpoint;               /* 2008, 2009: write the image every this many passes */

@@ -51,12 +51,13 @@
 #include <string.h>
 
 #define RELMSE_EPSILON 1e-2 /* compare.h's definition of relmse */
-#define COMPARE_USAGE "usage: photon compare A.pfm B.pfm [--diff OUT.png|.ppm " \
-                      "[--diff-absolute]] " \
-                      "[--ref-variance VB.pfm | --ref-error EB.pfm | --ref-block-error " \
-                      "BB.pfm] [--test-variance VA.pfm | --test-error EA.pfm | " \
-                      "--test-block-error BA.pfm] [--confidence C] [--alpha ALPHA] " \
-                      "[--block N] [--exit-status]"
+/* The usage in four parts: one line in a message, four in --help (within 100 columns). */
+#define COMPARE_USAGE_1 "usage: photon compare A.pfm B.pfm [--diff OUT.png|.ppm [--diff-absolute]]"
+#define COMPARE_USAGE_2 "[--ref-variance VB.pfm | --ref-error EB.pfm | --ref-block-error BB.pfm]"
+#define COMPARE_USAGE_3 "[--test-variance VA.pfm | --test-error EA.pfm | --test-block-error BA.pfm]"
+#define COMPARE_USAGE_4 "[--confidence C] [--alpha ALPHA] [--block N] [--exit-status]"
+#define COMPARE_USAGE COMPARE_USAGE_1 " " COMPARE_USAGE_2 " " COMPARE_USAGE_3 " " COMPARE_USAGE_4
+#define COMPARE_INDENT "\n                      " /* under "A.pfm" */
 #define DEFAULT_ALPHA 0.01      /* family-wise level of the test when --alpha is not given */
 #define DEFAULT_CONFIDENCE 0.95 /* an error image's confidence when --confidence is not given */
 #define DEFAULT_TEST_BLOCK 16   /* the block test's side when --block is not given */
@@ -625,7 +626,8 @@ static int compare_files(const struct compare_args *args, int *consistent, struc
 
 /* `photon compare --help`: the options and every field printed (README: Tools). */
 static const char compare_help[] =
-    COMPARE_USAGE "\n"
+    COMPARE_USAGE_1 COMPARE_INDENT COMPARE_USAGE_2 COMPARE_INDENT COMPARE_USAGE_3
+        COMPARE_INDENT COMPARE_USAGE_4 "\n"
     "Compares image A with reference B (PFM, same size); prints one line on stdout.\n"
     "  --diff OUT        a picture of the relative error |A - B| / max(B, 1% of B's\n"
     "                    mean), the worst channel's, in false colour with its scale\n"

@@ -23,7 +23,7 @@ void fill_cache_pass(const struct scene *scene, uint64_t seed,
             uint64_t pixel = (uint64_t)y * (uint64_t)scene->width + (uint64_t)x;
             struct rng rng = rng_stream(seed, STREAM_CACHE, pixel, 0);
             struct ray ray = camera_ray(&scene->camera, x + 0.5, y + 0.5);
-            estimator.radiance(estimator.mode, ray, &rng, counters);
+            estimator.radiance(estimator.mode, ray, NULL, &rng, counters);
         }
         int shown = y + 1 == scene->height ? progress_end(&line, y + 1, time(NULL))
                                            : progress_update(&line, y + 1, time(NULL));

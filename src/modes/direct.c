@@ -86,9 +86,11 @@ static struct vec3 trace(const struct direct_mode *dm, struct ray ray, int depth
     return vec3_add(surface_emission(&s), scatter(dm, &s, depth, rng, counters));
 }
 
-static struct vec3 direct_radiance(const void *mode, struct ray ray, struct rng *rng,
+static struct vec3 direct_radiance(const void *mode, struct ray ray,
+                                   const struct first_bounce *first, struct rng *rng,
                                    struct render_counters *counters)
 {
+    (void)first; /* its first bounce draws from the stream */
     return trace(mode, ray, 0, rng, counters);
 }
 

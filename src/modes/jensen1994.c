@@ -56,7 +56,7 @@
  *   --bounded-reach, --gradient-limit  a cache record's R (photon/irradiance_cache.h);
  *   --specular-spp  a pixel that sees a light through mirrors or glass takes 64 x --spp
  *       samples (--paper: --spp, as every pixel).
- * --paper keeps --glossy-gather (above) and leaves --adaptive off: the paper sampled
+ * --paper leaves --adaptive off: the paper sampled
  * adaptively (Sec. 5), by a rule and threshold not specified by the paper. The departures
  * without a switch (the CP photons' own tree, the cache's pre-pass, point lights sampled
  * through a glossy lobe) are listed in src/modes/README.md.
@@ -231,16 +231,16 @@ static struct vec3 surface_emission_found(const struct jensen1994 *mode,
 
 /* The radiance the diffuse-like part reflects from the photons of estimate `is`: albedo
  * / pi times their irradiance (Sec. 4.0.2-4.0.3: the paper's diffuse-like surfaces are
- * Lambertian). Where the photons kept their direction (glossy_gather, keeps_direction()),
- * on a part that is not Lambertian, the reflected light depends on where it came from, so
- * it is the 1996 paper's Eq. 3 through f_r,d (no differential checking): how photons are
+ * Lambertian). Where the photons kept their direction (keeps_direction()), on a part
+ * that is not Lambertian, the reflected light depends on where it came from, so it is the
+ * 1996 paper's Eq. 3 through f_r,d (no differential checking): how photons are
  * read there is not specified by the paper, whose photons keep a normal, no direction. */
 static struct vec3 stored_reflection(const struct jensen1994 *mode, const struct surface *s,
                                      const struct material *diffuse,
                                      const struct shading_frame *frame,
                                      const struct irradiance_settings *is)
 {
-    if (keeps_direction(mode->settings, mode->stores.illumination, s->material, s->prim)) {
+    if (keeps_direction(mode->stores.illumination, s->material, s->prim)) {
         struct estimate_point at = {s->p, s->ng, s->wo, diffuse, frame, !s->front};
         struct estimate_settings es = {is->n, is->max_r2, 0.0, is->kinds, is->exclude_rim};
         return radiance_estimate(mode->stores.glossy, &at, &es, mode->nn);
@@ -425,13 +425,12 @@ static struct vec3 eye_radiance(const struct jensen1994 *mode, const struct surf
     if (split.has_diffuse) {
         l = vec3_add(l, direct_light(mode, s, &split.diffuse, &frame, rng, counters));
         l = vec3_add(l, caustic_light(mode, s, &split.diffuse, &frame));
-        if (!split.lambertian && mode->settings->glossy_gather) {
+        if (!split.lambertian) {
             /* Sec. 4.0.3: "surfaces with complex BRDF's are treated using plain recursive
              * Monte Carlo ray tracing". A diffuse-like part that is not Lambertian (a
              * broad lobe: Schlick's model with r >= 1/2) reflects int f_r,d L cos, which
              * depends on where the light comes from, so each camera sample gathers its
-             * share through f_r,d itself, no cache (glossy_gather; off: albedo / pi times
-             * the cache's irradiance, as if it were Lambertian). */
+             * share through f_r,d itself, no cache. */
             l = vec3_add(l,
                          sample_gather(mode, s, &split.diffuse, &frame, path, rng, counters));
         } else {
@@ -485,9 +484,11 @@ static struct vec3 trace(const struct jensen1994 *mode, struct ray ray, struct p
     return trace_from(mode, &s, path, rng, counters);
 }
 
-static struct vec3 camera_ray_radiance(const void *mode, struct ray ray, struct rng *rng,
-                                struct render_counters *counters)
+static struct vec3 camera_ray_radiance(const void *mode, struct ray ray,
+                                       const struct first_bounce *first, struct rng *rng,
+                                       struct render_counters *counters)
 {
+    (void)first; /* its first bounce draws from the stream */
     struct path eye = {vec3(1, 1, 1), 0, 0, 1, NO_LOBE};
     return trace(mode, ray, eye, rng, counters);
 }

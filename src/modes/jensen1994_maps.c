@@ -25,15 +25,12 @@ struct deposits {
     struct photon_trace glossy;                 /* those that keeps_direction()        */
     struct illumination_maps *illumination;     /* borrowed; NULL: photon maps everywhere */
     const struct scene *scene;                  /* borrowed                            */
-    const struct jensen1994_settings *settings; /* borrowed                            */
 };
 
-int keeps_direction(const struct jensen1994_settings *settings,
-                    const struct illumination_maps *illumination, const struct material *m,
+int keeps_direction(const struct illumination_maps *illumination, const struct material *m,
                     int prim)
 {
-    if (!settings->glossy_gather ||
-        (illumination != NULL && illumination_covers(illumination, prim)))
+    if (illumination != NULL && illumination_covers(illumination, prim))
         return 0;
     struct brdf_split split = brdf_split(m);
     return split.has_diffuse && !split.lambertian;
@@ -56,7 +53,7 @@ static int deposit_photon(void *context, const struct photon_event *e)
     const struct material *m =
         &d->scene->materials[geometry_primitive_material(d->scene->geometry, e->prim)];
     size_t room = MAX_PHOTONS - d->photons.n_photons - d->glossy.n_photons;
-    if (keeps_direction(d->settings, d->illumination, m, e->prim))
+    if (keeps_direction(d->illumination, m, e->prim))
         return photon_trace_store(&d->glossy, d->glossy.n_photons + room, e);
     struct photon_event stored = *e;
     stored.wi = e->normal;
@@ -186,7 +183,6 @@ int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
     d.glossy.photons = NULL;
     d.illumination = NULL;
     d.scene = scene;
-    d.settings = settings;
     if (settings->illumination_maps) {
         double *footprint = pretrace_footprints(scene);
         unsigned char *receives = receiving_primitives(scene);

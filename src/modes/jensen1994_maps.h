@@ -22,8 +22,7 @@ struct irradiance_stores {
     struct kdtree *caustics;                /* owned: copies of the CP photons alone, so
                                                that caustic estimates search only them   */
     struct kdtree *glossy;                  /* owned: the photons keeps_direction()
-                                               keeps with their direction (empty
-                                               without glossy_gather)                    */
+                                               keeps with their direction                */
     struct illumination_maps *illumination; /* owned, finished; NULL: photon maps only   */
 };
 
@@ -39,13 +38,12 @@ int jensen1994_trace(const struct scene *scene, uint64_t seed, int max_depth,
 void irradiance_stores_free(struct irradiance_stores *stores);
 
 /* Whether a photon landing on primitive prim of material m keeps its direction (in the
- * stores' glossy tree) rather than the normal: with settings->glossy_gather, on a diffuse-like
- * part that is not Lambertian (a broad lobe: brdf_split()), unless prim has an
- * illumination map. A departure from Sec. 3.3, whose photons hold the normal (Sec. 6
- * would store the direction, "usable in surfaces with complex BRDF's"), without a switch
- * that --paper turns: the light such a part reflects depends on where it came from. */
-int keeps_direction(const struct jensen1994_settings *settings,
-                    const struct illumination_maps *illumination, const struct material *m,
+ * stores' glossy tree) rather than the normal: on a diffuse-like part that is not
+ * Lambertian (a broad lobe: brdf_split()), unless prim has an illumination map. A
+ * departure from Sec. 3.3, whose photons hold the normal (Sec. 6 would store the
+ * direction, "usable in surfaces with complex BRDF's"), without a switch that --paper
+ * turns: the light such a part reflects depends on where it came from. */
+int keeps_direction(const struct illumination_maps *illumination, const struct material *m,
                     int prim);
 
 /* The illumination maps' figures (finished maps) into *stats, for --stats. */

@@ -20,7 +20,6 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.light_samples = J94_DEFAULT_LIGHT_SAMPLES;
     js.caustic_radius_fraction = CAUSTIC_RADIUS_FRACTION;
     js.both_lobes = 1;
-    js.glossy_gather = 1;
     js.glossy_photons = 1;
     js.lobe_lights = 1;
     js.bounded_reach = 1;

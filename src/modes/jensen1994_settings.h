@@ -57,12 +57,6 @@ struct jensen1994_settings {
                               of f_r,s too, weighted against the lobe's traced ray by the
                               power heuristic (a departure); 0: the traced ray alone finds
                               them, the paper's                                         */
-    int glossy_gather;     /* 1: a diffuse-like part that is not Lambertian reflects the
-                              light each camera sample gathers through it (Sec. 4.0.3's
-                              rule for complex BRDFs), its photons read by their
-                              direction; 0: albedo / pi times the cache's irradiance, as
-                              if it were Lambertian (neither is a departure --paper
-                              undoes: src/modes/README.md)                               */
     int bounded_reach;     /* 1: cache records' R bounded from the camera's view
                            (record_radius_bounds(), a departure); 0: Ward's R alone     */
     int gradient_limit;    /* 1: a record's R at most E / |grad E| (a departure); 0: not */

@@ -537,9 +537,11 @@ static struct path camera_path(const struct jensen1996 *mode)
     return path;
 }
 
-static struct vec3 camera_ray_radiance(const void *mode, struct ray ray, struct rng *rng,
-                                struct render_counters *counters)
+static struct vec3 camera_ray_radiance(const void *mode, struct ray ray,
+                                       const struct first_bounce *first, struct rng *rng,
+                                       struct render_counters *counters)
 {
+    (void)first; /* its first bounce draws from the stream */
     return trace(mode, ray, camera_path(mode), rng, counters);
 }
 

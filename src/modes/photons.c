@@ -67,9 +67,11 @@ static struct vec3 estimate_at(const struct photons_mode *pm, const struct surfa
     return l;
 }
 
-static struct vec3 photons_radiance(const void *mode, struct ray ray, struct rng *rng,
+static struct vec3 photons_radiance(const void *mode, struct ray ray,
+                                    const struct first_bounce *first, struct rng *rng,
                                     struct render_counters *counters)
 {
+    (void)first; /* its first bounce draws from the stream */
     const struct photons_mode *pm = mode;
     struct vec3 l = vec3_zero(), beta = vec3(1.0, 1.0, 1.0);
     for (int depth = 0;; depth++) {

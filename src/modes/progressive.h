@@ -27,7 +27,8 @@ struct progressive_settings {
     int fit_radius;                   /* 1: R0 shortened until the disc lies on the
                                          surface (ppm_radius.c)                          */
     int facing_test;                  /* 1: a photon counts only at hit points whose
-                                         surface faces its own                           */
+                                         surface faces its own (2008; 2009's disc
+                                         coverage makes its own test)                    */
     int turn_photon_directions;       /* 1: f_r sees a photon's direction turned with its
                                          surface onto the hit point's (hit_points.h)     */
     int direct_light_samples;         /* 1: the direct light by a light sample at each

@@ -80,6 +80,28 @@ struct ray camera_sample(const struct scene *scene, uint64_t seed, int x, int y,
     return camera_lens_ray(&scene->camera, x + u, y + v, lens_u, lens_v);
 }
 
+/* Point s of the (0,2)-sequence shuffled and shifted by the pixel stream's next two words
+ * into u. */
+static void shuffled_point(struct rng *pixel_stream, int s, double u[2])
+{
+    uint32_t order = (uint32_t)rng_next(pixel_stream);
+    uint64_t shift = rng_next(pixel_stream);
+    sequence02_point(sequence02_shuffled((uint32_t)s, order), (uint32_t)shift,
+                     (uint32_t)(shift >> 32), &u[0], &u[1]);
+}
+
+struct first_bounce first_bounce_sample(const struct scene *scene, uint64_t seed, int x, int y,
+                                        int s)
+{
+    uint64_t pixel = (uint64_t)y * (uint64_t)scene->width + (uint64_t)x;
+    struct rng pixel_stream = rng_stream(seed, STREAM_PIXEL, pixel, 0);
+    rng_next(&pixel_stream); /* camera_sample()'s two words */
+    rng_next(&pixel_stream);
+    struct first_bounce first;
+    shuffled_point(&pixel_stream, s, first.direction);
+    return first;
+}
+
 /* The adaptive rule of render.h for pixel i at its n = n[i] samples: whether it stops. It
  * is read only at powers of two n >= min_spp, so stopping keeps the camera points
  * stratified; it reads the pixel's own sums alone, so crops see the same decision. */
@@ -210,7 +232,8 @@ static void render_pass(const struct scene *scene, const struct render_settings 
                 continue;
             struct rng rng;
             struct ray ray = camera_sample(scene, rs->seed, x, y, s, &rng);
-            struct vec3 l = est.radiance(est.mode, ray, &rng, counters);
+            struct first_bounce first = first_bounce_sample(scene, rs->seed, x, y, s);
+            struct vec3 l = est.radiance(est.mode, ray, &first, &rng, counters);
             int counted = vec3_is_finite(l);
             if (!counted) {
                 counters->nonfinite_samples++;

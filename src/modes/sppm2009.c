@@ -23,10 +23,10 @@
  *   the image: L = tau / (pi R^2 N_emitted) (2008's Eq. 13) plus the emission the eye paths
  *       saw directly, averaged over the passes.
  *
- * The photon search finds the pass's hit points (at most one a pixel) in a hash grid
- * (photon/hit_point_grid.c), rebuilt each pass: built without sorting, it makes the whole
- * render faster than the kd-tree of photon/hit_points.c that 2008 keeps for its fixed hit
- * points, with the same image to the bit (src/modes/measured.md). The memory is
+ * The photon search finds the pass's hit points (at most one a pixel) in 2008's kd-tree
+ * of hit points (photon/hit_points.h), built anew each pass: one index for both modes. A
+ * hash grid gives the same image to the bit and is a little faster here, but much slower
+ * for 2008, whose discs differ in size far more (src/modes/measured.md). The memory is
  * O(pixels) and does not grow with the passes.
  *
  * The initial radius: R0 of a pixel is ppm_initial_radius() at the first hit point it
@@ -62,7 +62,6 @@
  *   the fitted initial radius (--fit-radius) and R0 in footprints: the paper leaves R0
  *       to the user;
  *   the disc coverage (--disc-coverage), above;
- *   the facing test (--facing-test): a photon counts only where the surfaces face alike;
  *   turned photon directions (--turn-photon-directions), as 2008's;
  *   glossy lobes followed (--follow-glossy-lobes): the eye path samples a glossy lobe
  *       as it does a mirror, and the hit point takes the diffuse part alone
@@ -91,7 +90,6 @@
 #include "../base/sequence02.h"
 #include "../image/error_image.h"
 #include "../photon/disc_coverage.h"
-#include "../photon/hit_point_grid.h"
 #include "../photon/hit_points.h"
 #include "../photon/trace.h"
 #include "pixel_error.h"
@@ -129,7 +127,8 @@ struct sppm {
     struct hit_point *points;           /* owned: this pass's hit points, n_points of them,
                                            room for one a pixel                            */
     size_t n_points;
-    struct hit_point_grid grid;         /* over points, rebuilt each pass                  */
+    struct hit_point_tree tree;         /* over points, built anew each pass, which moves
+                                           them into its order                             */
     const struct photon_event *photon;  /* the photon being added                          */
     double photons_per_pass;            /* turns the tracer's Phi / N back into the
                                            paper's unnormalised Phi'                       */
@@ -144,9 +143,10 @@ struct sppm {
     int want_error;                     /* rs->error_confidence > 0                        */
     struct sppm_error error;            /* with want_error, and with it: ...               */
     size_t *point;                      /* owned: per window pixel, its hit point this pass
+                                           as made (points[tree.place[k]] is the k-th made)
                                            or NO_POINT                                     */
-    struct vec3 *inner_tau;             /* owned: per hit point, this pass's f_r Phi' of
-                                           the photons within R / sqrt(2) of it            */
+    struct vec3 *inner_tau;             /* owned: per window pixel, this pass's f_r Phi' of
+                                           the photons within R / sqrt(2) of its hit point */
     uint32_t *inner_probes;             /* owned: 2 per window pixel, the disc probes that
                                            fell in the inner disc and those of them that
                                            found the surface                               */
@@ -204,7 +204,7 @@ static void store_hit_point(struct sppm *sppm, size_t pixel, const struct surfac
         fit_to_surface(sppm, pixel, s, distance); /* else no fit could shorten R */
     if (sppm->want_error) {
         sppm->point[pixel] = sppm->n_points;
-        sppm->inner_tau[sppm->n_points] = vec3_zero();
+        sppm->inner_tau[pixel] = vec3_zero();
     }
     struct hit_point *hp = &sppm->points[sppm->n_points++];
     hp->x = s->p;
@@ -399,7 +399,7 @@ static struct vec3 seen_so_far(const struct sppm *sppm, size_t i)
                                                       : seen;
 }
 
-/* Pass `pass`: one eye path through every pixel of the window, then the hit points' grid;
+/* Pass `pass`: one eye path through every pixel of the window, then the hit points' tree;
  * its CPU seconds go to the stats, and after the first pass the mean R0. */
 static void distributed_ray_tracing_pass(void *context, long pass)
 {
@@ -419,8 +419,8 @@ static void distributed_ray_tracing_pass(void *context, long pass)
             struct ray ray = camera_sample(sppm->scene, rs->seed, x, y, (int)pass, &rng);
             trace_eye_path(sppm, pixel, pass, ray, &rng);
         }
-    hit_point_grid_free(&sppm->grid);
-    hit_point_grid_build(&sppm->grid, sppm->points, sppm->n_points);
+    hit_point_tree_free(&sppm->tree);
+    hit_point_tree_build(&sppm->tree, sppm->points, sppm->n_points);
     sppm->stats->seconds_ray_pass += cpu_seconds(start);
     if (pass == 0)
         sppm->stats->initial_mean_radius = mean_radius(sppm);
@@ -436,10 +436,12 @@ static void add_flux(void *context, size_t i)
                                                       sppm->photon->position,
                                                       sppm->photon->normal))
         return;
-    hit_point_add_photon(&sppm->points[i], sppm->photon, sppm->photons_per_pass,
-                         sppm->ps->progressive.facing_test,
+    /* No facing test (2008's): with the disc coverage, disc_holds_photon() keeps only
+     * photons on a surface facing the hit point's; without it every photon within R
+     * counts, the paper's way. */
+    hit_point_add_photon(&sppm->points[i], sppm->photon, sppm->photons_per_pass, 0,
                          sppm->ps->progressive.turn_photon_directions, 0,
-                         sppm->want_error ? &sppm->inner_tau[i] : NULL);
+                         sppm->want_error ? &sppm->inner_tau[hp->pixel] : NULL);
 }
 
 /* Each photon a photon tracing pass stores (2008's pass) goes to the hit points around
@@ -448,7 +450,7 @@ static void add_photon(void *context, const struct photon_event *photon)
 {
     struct sppm *sppm = context;
     sppm->photon = photon;
-    hit_point_grid_visit(&sppm->grid, photon->position, add_flux, sppm);
+    hit_point_tree_visit(&sppm->tree, photon->position, add_flux, sppm);
 }
 
 /* ---- the progressive update of the shared statistics ---------------------------------- */
@@ -486,10 +488,9 @@ static void add_pass_values(struct sppm *sppm, long pass)
         struct vec3 seen = vec3_sub(seen_so_far(sppm, i), e->before[i]);
         struct vec3 p = vec3_zero(), p_inner = vec3_zero();
         if (sppm->point[i] != NO_POINT) {
-            const struct hit_point *hp = &sppm->points[sppm->point[i]];
+            const struct hit_point *hp = &sppm->points[sppm->tree.place[sppm->point[i]]];
             sppm_error_photons(hp->weight, hp->global.radius, hp->global.tau,
-                               sppm->inner_tau[sppm->point[i]], sppm->photons_per_pass, &p,
-                               &p_inner);
+                               sppm->inner_tau[i], sppm->photons_per_pass, &p, &p_inner);
         }
         sppm_error_add_pass(e, i, pass, seen, p, p_inner);
     }
@@ -606,7 +607,6 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     sppm.parts = xmalloc(scene->n_materials + 1, sizeof *sppm.parts, "sppm materials");
     for (size_t m = 0; m < scene->n_materials; m++)
         sppm.parts[m] = brdf_split(&scene->materials[m]);
-    hit_point_grid_build(&sppm.grid, sppm.points, 0);
     if (common->direct_light_samples)
         ppm_direct_create(&sppm.direct, scene, sppm.rs);
     if (sppm.want_error) {
@@ -639,7 +639,7 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     stats->passes = run.passes;
     stats->seconds_photons = run.seconds - stats->seconds_ray_pass;
     stats->hit_points = sppm.n_points;
-    stats->bytes_per_hit_point = sizeof(struct hit_point) + HIT_POINT_GRID_BYTES_PER_POINT +
+    stats->bytes_per_hit_point = sizeof(struct hit_point) + HIT_POINT_TREE_BYTES_PER_POINT +
                                  sizeof(struct progressive_estimate) + sizeof(struct vec3) +
                                  (ps->disc_coverage ? sizeof(struct disc_share) +
                                                           sizeof(struct fitted_plane)
@@ -647,7 +647,7 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     stats->photons_emitted = run.photons_emitted;
     stats->mean_radius = mean_radius(&sppm);
     counters->passes = (int)run.passes;
-    hit_point_grid_free(&sppm.grid);
+    hit_point_tree_free(&sppm.tree);
     if (common->direct_light_samples)
         ppm_direct_free(&sppm.direct);
     xfree(sppm.parts);

@@ -20,6 +20,12 @@
  * hit points in the order they were made, and a pixel's value does not depend on the rest
  * of the window. The copies and boxes are made by the build and by each refit, which
  * must follow every change of a radius (after each pass).
+ *
+ * The one index of both progressive modes: 2008 builds it once over its fixed hit points
+ * and refits it after each pass; 2009 builds it anew over each pass's. A hash grid, cells
+ * as wide as the largest disc, rebuilt each pass, gives the same images to the bit, a
+ * little faster for 2009 and much slower for 2008, whose discs differ in size many times
+ * over (src/modes/measured.md).
  */
 #ifndef PHOTON_HIT_POINTS_H
 #define PHOTON_HIT_POINTS_H
