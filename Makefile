@@ -12,7 +12,8 @@
 #   make bench      benchmark figures (ONLY=rays|knn|...|tiles runs one workload); SPD=DIR
 #                   adds the workloads on SPD files, which are skipped without it
 #   make figures    re-measure the figures README.md states and write them into it (long;
-#                   ONLY=presets|bench for one part; bench is the tte workload's table);
+#                   ONLY=presets|bench|tts for one part; bench is the tte workload's
+#                   table, tts time to a stated error, TTS_LIMIT=S each render's limit);
 #                   ONLY=rays SPD=DIR writes bench-embree's table into tests/bench/README.md,
 #                   ONLY=pbrt PBRT=PATH bench-pbrt's, ONLY=cycles bench-cycles'
 #   make reference  render the converged references of reference/suite.txt and write

@@ -1,8 +1,8 @@
 #!/bin/sh
-# scripts/figures.sh [presets] [bench] [rays] [pbrt] [cycles] -- re-measures the figures
+# scripts/figures.sh [presets] [bench] [tts] [rays] [pbrt] [cycles] -- re-measures the figures
 # README.md (and, for bench's phases, rays, pbrt and cycles, tests/bench/README.md) states
 # and writes them in, between the lines <!-- figures:NAME --> and <!-- /figures:NAME -->.
-# Run by `make figures` (ONLY=presets, bench, rays, pbrt or cycles for one part) from the
+# Run by `make figures` (ONLY=presets, bench, tts, rays, pbrt or cycles for one part) from the
 # top of the repository, after ./photon and build/bench are built.
 #
 #   presets  scripts/presets.sh: every mode's presets on both Cornell boxes against the
@@ -12,6 +12,9 @@
 #            tests/bench/README.md, where each mode's seconds went (about half an hour of
 #            CPU; PHOTON_TTE_TRIAL=1 tries the pipeline in a minute, on figures that mean
 #            nothing, and says so in the table)
+#   tts      `make bench ONLY=tts`, time to a stated error: one row a scene, the CPU seconds
+#            pt, 2008 and 2009 take to --target-error 0.02 (TTS_LIMIT each at most, default
+#            120) and what the image's worst block was then (about half an hour of CPU)
 #   rays     `make bench-embree`, photon's ray casting beside Embree 3's on the rays
 #            workload, into tests/bench/README.md (needs Embree and SPD=DIR, the folder of
 #            the SPD files; a few minutes; not part of the default parts)
@@ -26,7 +29,7 @@
 # Each part prints how long it took. Nothing in README.md changes unless the part succeeded.
 set -eu
 cd "$(dirname "$0")/.."
-parts=${*:-presets bench}
+parts=${*:-presets bench tts}
 mkdir -p build
 
 # Replaces the block NAME of the file DOC (README.md unless given) by the lines of FILE,
@@ -91,6 +94,37 @@ phase_table() {
             text[row] = text[row] (text[row] == "" ? "" : ", ") "`" part[4] "` " $2
         }
         END { for (i = 1; i <= n; i++) print "| " order[i] " | " text[order[i]] " |" }' "$1"
+}
+
+# The tts workload's tts.MODE.SCENE.KEY=VALUE lines (tests/bench/README.md) as a table: one
+# row a scene, in the order printed, a cell a mode: its CPU seconds and work when every
+# block reached the target, else the blocks that had when the time limit stopped it; and
+# the worst block's error against the reference, what the statement was worth.
+tts_table() {
+    echo "| scene | pt | 2008 | 2009 |"
+    echo "|---|---|---|---|"
+    awk -F= '/^tts\.[^.]+\.[^.]+\.[a-z_]+=/ {
+            split($1, part, ".")
+            if (!(part[3] in seen)) { seen[part[3]] = 1; order[++n] = part[3] }
+            value[part[3], part[2], part[4]] = $2
+        }
+        function cell(s, m,    unit) {
+            if (value[s, m, "refused"] == 1) return "states no bound"
+            if (value[s, m, "seconds"] == "") return "not run"
+            unit = m == "pt" ? " samples" : " passes"
+            if (value[s, m, "reached"] == 1)
+                return sprintf("%.0f s, %s%s; worst block %.1f%%", value[s, m, "seconds"],
+                               value[s, m, "work"], unit, 100 * value[s, m, "worst_block"])
+            return sprintf("stopped at %.0f s with %s of %s blocks; worst %.1f%%",
+                           value[s, m, "seconds"], value[s, m, "blocks_within"],
+                           value[s, m, "blocks"], 100 * value[s, m, "worst_block"])
+        }
+        END {
+            for (i = 1; i <= n; i++)
+                print "| " order[i] " | " cell(order[i], "pt") " | " cell(order[i], "2008") \
+                    " | " cell(order[i], "2009") " |"
+            exit n == 0
+        }' "$1"
 }
 
 # bench-embree's embree.SCENE.KEY=VALUE lines as a table: a row a scene and ray set, photon's
@@ -209,6 +243,15 @@ for part in $parts; do
         splice bench build/figures-bench.md
         splice phases build/figures-phases.md tests/bench/README.md
         ;;
+    tts)
+        make --no-print-directory bench ONLY=tts > build/figures-tts.txt
+        tts_table build/figures-tts.txt > build/figures-tts.md
+        echo "" >> build/figures-tts.md
+        echo "Seed 1, one core; a render stops at ${TTS_LIMIT:-120} CPU seconds (at least 16" \
+            "passes for 2008 and 2009). The worst block is against the scene's reference" \
+            "(\`photon compare --block 16\`)." >> build/figures-tts.md
+        splice tts build/figures-tts.md
+        ;;
     rays)
         make --no-print-directory bench-embree SPD="${SPD:-}" > build/figures-rays.txt
         rays_table build/figures-rays.txt > build/figures-rays.md
@@ -241,7 +284,7 @@ for part in $parts; do
         splice cycles build/figures-cycles.md tests/bench/README.md
         ;;
     *)
-        echo "figures: unknown part '$part' (presets, bench, rays, pbrt, cycles)" >&2
+        echo "figures: unknown part '$part' (presets, bench, tts, rays, pbrt, cycles)" >&2
         exit 2
         ;;
     esac

@@ -287,6 +287,8 @@ static void print_jensen1994_stats(const struct jensen1994_stats *stats)
     fprintf(stderr, "gather_fallbacks=%llu\nshadow_rays=%llu\nstrata=%dx%d\n",
             stats->gather_fallbacks, stats->shadow_rays, stats->strata_theta,
             stats->strata_phi);
+    fprintf(stderr, "precomputed_records=%zu\nbytes_precomputed=%zu\nseconds_precompute=%.3f\n",
+            stats->precomputed_records, stats->bytes_precomputed, stats->seconds_precompute);
 }
 
 /* What the error image states (image/error_image.h): the relmse it expects against the
@@ -462,6 +464,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
         settings_1994.bounded_reach = run->o.bounded_reach;
         settings_1994.glossy_photons = run->o.glossy_photons;
         settings_1994.lobe_lights = run->o.lobe_lights;
+        settings_1994.precomputed_irradiance = run->o.precomputed_irradiance;
         settings_1994.gradient_limit = run->o.gradient_limit;
         settings_1994.projection_maps = run->o.projection_maps;
         settings_1994.illumination_maps = run->o.illumination_maps;

@@ -1,9 +1,8 @@
 /*
  * tests/test_jensen1994.c -- `--mode 1994` (Jensen and Christensen 1994): the order-free
- * irradiance cache (a crop is the same window of the whole image), closed forms, the
- * CP photons, convergence towards the path-traced reference, finite pixels on the harder
- * scenes, and the command line. The irradiance estimate itself (differential checking,
- * the normal test) is tested in test_trace.c.
+ * irradiance cache (a crop is the same window of the whole image), closed forms, the CP
+ * photons, convergence towards the path-traced reference, finite pixels on the harder scenes,
+ * the command line. The estimate itself (differential checking, normal test): test_trace.c.
  *
  * Images compared with a 256 x 256 reference are rendered at 64 x 64 and compared with
  * the reference averaged over 4 x 4 blocks (reference_window(), truths.h).
@@ -144,28 +143,31 @@ static void test_point_light_over_plane(struct check *t)
  *   irradiance where their rays land. Irradiance is uniform and a ball of radius r cuts
  *   exactly pi r^2 from a sphere it is centred on, and the estimate without its rim
  *   photon has no bias on a uniform density (photon/estimate.c), without differential
- *   checking: the image mean is 4 for n = 10 and n = 100.
- * tolerance: 0.09, as the same test of mode 1996, whose gathers read the same
- *   densities (measured here, seed 1: 4.027 and 4.02). Counting the rim photon, as the
+ *   checking: the image mean is 4 for n = 10 and n = 100, with each gather ray's end
+ *   estimated (the paper's way) and read from records at every 16th photon.
+ * tolerance: 0.09, as the same test of mode 1996, whose gathers read the same densities
+ *   (seed 1: 4.027, 4.014; with records 3.976, 4.019). Counting the rim photon, as the
  *   paper's sum to n does, would add 3.2 / (n - 1) = 0.36 at n = 10, four tolerances:
  *   the estimate's form is tested, not only its limit. Measured with the CP estimate
  *   reading all photons: 9.03 and 8.10.
  * catches: direct photons left out of the irradiance the gather reads, or direct light
  *   counted twice (+0.8), the irradiance reflected without rho / pi, the rim photon
- *   counted, the normal test rejecting photons inside. */
+ *   counted, the normal test rejecting photons inside, records never made. */
 static void test_point_in_sphere(struct check *t)
 {
     static const size_t ns[] = {10, 100};
-    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; i++) {
+    for (size_t i = 0; i < 2 * sizeof ns / sizeof ns[0]; i++) {
         struct j94_case c = small_case("scenes/analytic/point-in-sphere.scene", 16, 20000, 32);
-        c.js.gather = ns[i];
+        c.js.gather = ns[i / 2];
         c.js.differential_run = 0;
+        c.js.precomputed_irradiance = i % 2 == 1 ? J94_DEFAULT_PRECOMPUTED : 0;
         struct j94_run run = render_case(&c);
         CHECK(t, run.image != NULL);
         if (run.image == NULL)
             continue;
         CHECK_CLOSE(t, mean_luminance(run.image), 4.0, 0.09);
-        CHECK(t, run.counters.nonfinite_samples == 0);
+        CHECK(t, run.counters.nonfinite_samples == 0 &&
+                     (run.stats.precomputed_records > 0) == (i % 2 == 1));
         image_free(run.image);
     }
 }
@@ -285,7 +287,7 @@ static double caustic_at(const struct scene *scene, const struct irradiance_stor
 {
     struct irradiance_settings is = {200, HUGE_VAL, PHOTON_CAUSTIC,
                                      variant == 1 ? DIFFERENTIAL_RUN : 0, 1};
-    struct store_query q = {p, vec3(0, 1, 0), -1, 0, 0, &is};
+    struct store_query q = {p, vec3(0, 1, 0), -1, 0, 0, &is, NULL};
     struct hit hit; /* the floor under p: its primitive and (u, v) */
     if (variant == 2 && scene_intersect(scene, make_ray(vec3(p.x, 1, p.z), vec3(0, -1, 0)),
                                         INFINITY, &hit)) {
@@ -337,7 +339,7 @@ static int caustic_copy_agrees(const struct irradiance_stores *st)
     int same = st->caustics->n_photons > 0;
     for (int i = 0; i <= 20; i++) {
         struct vec3 p = vec3(0.3, 0, -0.9 + 1.8 * i / 20.0);
-        struct store_query q = {p, vec3(0, 1, 0), -1, 0, 0, &is};
+        struct store_query q = {p, vec3(0, 1, 0), -1, 0, 0, &is, NULL};
         double copy = vec3_luminance(stored_irradiance(st, &q, nn));
         double filtered = vec3_luminance(irradiance_estimate(st->photons, p, q.n, &is, nn));
         same = same && fabs(copy - filtered) <= 1e-12 * fabs(filtered);
@@ -659,9 +661,7 @@ static double glossy_floor_worst_block(const char *options)
         worst = image_worst_block(img, ref, NULL, 8).relative_error;
     image_free(img);
     image_free(ref);
-    remove(OUT "-glossy.pfm");
-    remove(OUT "-glossy.png");
-    remove(OUT "-glossy.log");
+    remove(OUT "-glossy.pfm"), remove(OUT "-glossy.png"), remove(OUT "-glossy.log");
     return worst;
 }
 

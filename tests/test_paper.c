@@ -184,7 +184,7 @@ static void test_paper_renders_as_its_words(struct check *t)
         {"--mode photons --photons 20000", "--no-exclude-rim-photon --no-max-radius"},
         {"--mode 1994 --photons 20000 --gather-rays 16 --spp 2",
          "--no-exclude-rim-photon --no-max-radius --no-both-lobes "
-         "--no-bounded-reach --no-gradient-limit --specular-spp 2"},
+         "--no-bounded-reach --no-gradient-limit --no-precomputed-irradiance --specular-spp 2"},
         {"--mode 1996 --photons 20000 --caustic-photons 5000 --gather-rays 16 --spp 2",
          "--no-exclude-rim-photon --no-max-radius --no-shadow-rays "
          "--no-precomputed-irradiance --no-disc-coverage --no-both-lobes --no-glossy-corner "

@@ -141,10 +141,10 @@ const struct option_spec option_specs[] = {
      "the paper and the default keep", FOR_1996},
     {"--precomputed-irradiance", OPT_INT, FIELD(precomputed_irradiance), 1,
      J96_MAX_PRECOMPUTED, "N",
-     "gather rays read irradiance precomputed at every N-th global photon (Christensen "
-     "1999; default 16)", FOR_1996},
+     "gather rays read irradiance precomputed at every N-th global photon (1994: of the "
+     "photon map) (Christensen 1999; default 16)", FOR_1994 | FOR_1996},
     {"--no-precomputed-irradiance", OPT_OFF, FIELD(precomputed_irradiance), 0, 0, "",
-     "a radiance estimate at each gather ray's end (the paper's)", FOR_1996},
+     "a radiance estimate at each gather ray's end (the paper's)", FOR_1994 | FOR_1996},
     {"--disc-coverage", OPT_FLAG, FIELD(disc_coverage), 0, 0, "",
      "records of precomputed irradiance (2009: a pixel's estimate) count the photons of "
      "their disc's plane, arrived from its side, over the part of the disc a surface "

@@ -102,7 +102,7 @@ static const struct {
     {MODE_PHOTONS, "--no-exclude-rim-photon --no-max-radius"},
     {MODE_JENSEN1994, "--no-exclude-rim-photon --no-max-radius --no-both-lobes "
                        "--no-glossy-photons --no-lobe-lights --no-bounded-reach "
-                       "--no-gradient-limit"},
+                       "--no-gradient-limit --no-precomputed-irradiance"},
     {MODE_JENSEN1996, "--no-exclude-rim-photon --no-max-radius --no-shadow-rays "
                        "--no-precomputed-irradiance --no-disc-coverage --no-both-lobes "
                        "--no-glossy-corner --no-corner-photons --no-bounded-reach "

@@ -79,7 +79,7 @@ struct options {
     int shadow_rays;              /* 1996: cast every shadow ray; 0 = shadow photons
                                      decide where they agree, the paper's          */
     int one_map;                  /* 1996: one map for global and caustic photons  */
-    int precomputed_irradiance;   /* 1996: records at every N-th photon; 0 = none,
+    int precomputed_irradiance;   /* 1994, 1996: records at every N-th photon; 0 = none,
                                      the paper's (--no-precomputed-irradiance)      */
     int disc_coverage;            /* 1996: records over their disc's covered part  */
     int both_lobes;               /* 1994, 1996: mirrors and glass trace every lobe */

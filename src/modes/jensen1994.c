@@ -78,6 +78,7 @@
 #include "../base/alloc.h"
 #include "../photon/estimate.h"
 #include "../photon/illumination_map.h"
+#include "../photon/precomputed_irradiance.h"
 #include "../photon/projection_map.h"
 #include "../photon/trace.h"
 #include "cache_pass.h"
@@ -86,6 +87,7 @@
 #include "photons.h"
 #include "specular_rays.h"
 #include "surface.h"
+#include "trace_progress.h"
 
 /* ---- Sec. 4, pass 2: Monte Carlo ray tracing ---- */
 
@@ -115,6 +117,9 @@ struct jensen1994 {
     const struct jensen1994_settings *settings;
     struct irradiance_stores stores;
     struct irradiance_settings all_photons, caustic_photons;
+    struct kdtree *records;          /* owned: every N-th photon of the map; NULL without */
+    struct precomputed_irradiance *precomputed; /* owned: the all-photons estimate at each
+                                                   record; NULL without                  */
     struct irradiance_cache *cache;
     int filling_cache;               /* the pre-pass: records where none is usable      */
     int strata_theta, strata_phi;    /* a record's m x n strata, one ray each            */
@@ -245,7 +250,8 @@ static struct vec3 stored_reflection(const struct jensen1994 *mode, const struct
         struct estimate_settings es = {is->n, is->max_r2, 0.0, is->kinds, is->exclude_rim};
         return radiance_estimate(mode->stores.glossy, &at, &es, mode->nn);
     }
-    struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, is};
+    struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, is,
+                            is == &mode->all_photons ? mode->precomputed : NULL};
     return diffuse_reflection(s, diffuse, frame,
                               stored_irradiance(&mode->stores, &q, mode->nn));
 }
@@ -520,13 +526,44 @@ static void set_up(struct jensen1994 *mode, const struct scene *scene,
     mode->cache = irradiance_cache_create(isfinite(box.lo.x) ? box : (struct aabb){vec3_zero(),
                                                                                vec3_zero()},
                                        settings->cache_accuracy);
-    mode->nn = nearest_create(settings->gather);
+    mode->nn = nearest_create(settings->gather > PRECOMPUTED_CANDIDATES ? settings->gather
+                                                                        : PRECOMPUTED_CANDIDATES);
     mode->strata = xmalloc((size_t)mode->strata_theta * (size_t)mode->strata_phi,
                            sizeof *mode->strata, "strata");
 }
 
+/* Christensen's records (--precomputed-irradiance N): every N-th photon of the map in its
+ * tree's order, a sample spread over the whole map since each level of the heap spans
+ * it, each holding the all-photons estimate a gather ray ending there would make. They
+ * are made from the map alone, so a crop or a loaded map makes the same ones. */
+static void precompute(struct jensen1994 *mode, const struct render_settings *rs)
+{
+    size_t step = (size_t)mode->settings->precomputed_irradiance;
+    const struct kdtree *map = mode->stores.photons;
+    if (step == 0 || map->n_photons == 0)
+        return;
+    clock_t start = clock();
+    size_t n = (map->n_photons + step - 1) / step;
+    struct photon *picked = xmalloc(n, sizeof *picked, "precomputed irradiance");
+    for (size_t i = 0; i < n; i++)
+        picked[i] = map->photons[1 + i * step];
+    mode->records = balance_kdtree(picked, n);
+    struct watched_progress line;
+    watched_progress_begin(&line, rs->progress, "precomputed irradiance", n,
+                           "records estimated");
+    mode->precomputed = precompute_irradiance(map, mode->records, &mode->all_photons, NULL,
+                                              watched_progress_watch(&line));
+    watched_progress_end(&line, 1);
+    mode->stats->seconds_precompute = cpu_seconds(start);
+    mode->stats->precomputed_records = n;
+    mode->stats->bytes_precomputed =
+        kdtree_bytes(mode->records) + precomputed_irradiance_bytes(mode->precomputed);
+}
+
 static void tear_down(struct jensen1994 *mode)
 {
+    precomputed_irradiance_free(mode->precomputed);
+    kdtree_free(mode->records);
     xfree(mode->strata);
     nearest_free(mode->nn);
     irradiance_cache_free(mode->cache); /* mode->stores are the work's */
@@ -593,6 +630,7 @@ struct render_result render_jensen1994(const struct scene *scene,
     }
     stats->seconds_photons = cpu_seconds(start);
     set_up(&mode, scene, rs, settings);
+    precompute(&mode, rs);
     stats->strata_theta = mode.strata_theta;
     stats->strata_phi = mode.strata_phi;
     start = clock();

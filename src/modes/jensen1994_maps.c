@@ -11,6 +11,7 @@
 #include "../photon/estimate.h"
 #include "../photon/illumination_map.h"
 #include "../photon/kdtree.h"
+#include "../photon/precomputed_irradiance.h"
 #include "../photon/projection_map.h"
 #include "../photon/trace.h"
 #include "../scene/brdf.h"
@@ -242,6 +243,11 @@ struct vec3 stored_irradiance(const struct irradiance_stores *stores,
                                        q->estimate->kinds == PHOTON_CAUSTIC);
     if (q->estimate->kinds == PHOTON_CAUSTIC) /* all of them are: no filter to apply */
         return irradiance_estimate(stores->caustics, q->x, q->n, q->estimate, nn);
+    struct vec3 e;
+    double r2;
+    if (q->precomputed != NULL && precomputed_irradiance_at(q->precomputed, q->x, q->n, nn, &e,
+                                                            &r2))
+        return e;
     return irradiance_estimate(stores->photons, q->x, q->n, q->estimate, nn);
 }
 

@@ -12,6 +12,7 @@ struct kdtree;
 struct illumination_maps;
 struct nearest;
 struct irradiance_settings;
+struct precomputed_irradiance;
 
 /* The irradiance stores pass 1 fills (Sec. 3.2-3.3): the photon map, and with
  * settings->illumination_maps the illumination maps of the surfaces that have parameters
@@ -56,11 +57,14 @@ struct store_query {
     double u, v;
     const struct irradiance_settings *estimate; /* the photon map's estimate; its kinds
                                                    PHOTON_CAUSTIC asks for caustics only */
+    const struct precomputed_irradiance *precomputed; /* NULL, or records of that
+                                                         estimate made beforehand     */
 };
 
 /* Irradiance at q: from the illumination map of q->prim where it has one (its CI alone
- * for caustics, DI + CI otherwise), else the photon map's estimate (estimate.h). nn: the
- * caller's scratch. */
+ * for caustics, DI + CI otherwise), else the photon map's estimate (estimate.h), read
+ * from the nearest record of q->precomputed that serves q where there is one. nn: the
+ * caller's scratch, k_max >= PRECOMPUTED_CANDIDATES with records. */
 struct vec3 stored_irradiance(const struct irradiance_stores *stores,
                               const struct store_query *q, struct nearest *nn);
 

@@ -24,6 +24,7 @@ struct jensen1994_settings jensen1994_settings_default(void)
     js.lobe_lights = 1;
     js.bounded_reach = 1;
     js.gradient_limit = 1;
+    js.precomputed_irradiance = J94_DEFAULT_PRECOMPUTED;
     js.projection_maps = 1;
     js.illumination_maps = 0;
     js.work = NULL;

@@ -34,6 +34,8 @@
                                           at a surface (2 x 2)                           */
 #define J94_DEFAULT_CACHE_ACCURACY 0.15 /* --cache-accuracy: Ward's a                     */
 #define J94_MAX_LIGHT_SAMPLES 1024     /* documented limit on --light-samples            */
+#define J94_DEFAULT_PRECOMPUTED 16     /* --precomputed-irradiance: records at every N-th
+                                          photon of the map (src/modes/measured.md)      */
 
 struct jensen1994_settings {
     size_t n_photons;      /* light rays emitted in pass 1, 1..MAX_PHOTONS (trace.h)        */
@@ -60,6 +62,9 @@ struct jensen1994_settings {
     int bounded_reach;     /* 1: cache records' R bounded from the camera's view
                            (record_radius_bounds(), a departure); 0: Ward's R alone     */
     int gradient_limit;    /* 1: a record's R at most E / |grad E| (a departure); 0: not */
+    int precomputed_irradiance; /* N >= 1: a gather ray's end reads irradiance precomputed
+                                   at every N-th photon of the map (Christensen 1999, a
+                                   departure); 0: its own estimate, the paper's          */
     int projection_maps;   /* 1: emit through projection maps (Sec. 3.1, photon/
                               projection_map.h, default cells and boost); 0: light_emit() */
     int illumination_maps; /* --irradiance-store: 1 illumination maps on quads and spheres
@@ -90,8 +95,11 @@ struct jensen1994_stats {
     size_t illumination_ci_maps;     /* CI sub-maps created where caustics landed         */
     size_t bytes_illumination_maps;
     double seconds_photons;          /* pass 1, tracing and balancing                     */
+    double seconds_precompute;       /* the records of precomputed irradiance            */
     double seconds_cache;            /* the irradiance cache's pre-pass                   */
     double seconds_final_pass;       /* the final pass                                    */
+    size_t precomputed_records;      /* records of precomputed irradiance (0 without)     */
+    size_t bytes_precomputed;        /* their kd-tree and values                          */
     size_t cache_records;
     size_t bytes_cache;
     unsigned long long gradient_rays; /* rays of the irradiance records (IG rays)          */

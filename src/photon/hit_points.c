@@ -8,8 +8,8 @@
  * points is a leaf: one box for all of them, whose nodes a search reads one after the
  * other (they lie side by side), where descending would read as many boxes that mostly
  * overlap, the discs being about as wide as the spacing of the points. The build sorts an
- * array of indices, then moves the hit points into that order, cycle by cycle, one hit
- * point in hand at a time (no second copy of the array).
+ * array of positions with their indices, then moves the hit points into that order, cycle
+ * by cycle, one hit point in hand at a time (no second copy of the array).
  */
 #include "hit_points.h"
 
@@ -38,47 +38,56 @@ static int box_contains(struct aabb box, struct vec3 p)
            p.z >= box.lo.z && p.z <= box.hi.z;
 }
 
-/* The axis along which the positions of index[lo .. hi-1] spread most. */
-static int widest_axis(const struct hit_point *points, const size_t *index, size_t lo,
-                       size_t hi)
+/* What the build sorts: a hit point's position beside its index, so that the median
+ * searches, which read every position of a range on every level, read a compact array in
+ * order rather than 24 bytes of each of the far larger hit points, scattered through
+ * memory by the index (2009 builds anew each pass). The same swaps as on the bare
+ * indices: the same order. */
+struct build_item {
+    struct vec3 x; /* points[i].x */
+    size_t i;
+};
+
+/* The axis along which the positions of items[lo .. hi-1] spread most. Plain comparisons,
+ * not vec3_min()'s fmin(), a call into the maths library per coordinate: they differ only
+ * for NaN, which no position is, and in the sign of a zero, which no extent sees. */
+static int widest_axis(const struct build_item *items, size_t lo, size_t hi)
 {
-    struct vec3 min = points[index[lo]].x, max = min;
-    for (size_t i = lo + 1; i < hi; i++) {
-        min = vec3_min(min, points[index[i]].x);
-        max = vec3_max(max, points[index[i]].x);
-    }
-    struct vec3 extent = vec3_sub(max, min);
+    double min[3], max[3];
+    for (int a = 0; a < 3; a++)
+        min[a] = max[a] = vec3_get(items[lo].x, a);
+    for (size_t i = lo + 1; i < hi; i++)
+        for (int a = 0; a < 3; a++) {
+            double c = vec3_get(items[i].x, a);
+            min[a] = c < min[a] ? c : min[a];
+            max[a] = c > max[a] ? c : max[a];
+        }
+    struct vec3 extent = vec3(max[0] - min[0], max[1] - min[1], max[2] - min[2]);
     return extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
 }
 
-static double key(const struct hit_point *points, const size_t *index, size_t i, int axis)
+static void swap_items(struct build_item *items, size_t a, size_t b)
 {
-    return vec3_get(points[index[i]].x, axis);
+    struct build_item t = items[a];
+    items[a] = items[b];
+    items[b] = t;
 }
 
-static void swap_index(size_t *index, size_t a, size_t b)
-{
-    size_t t = index[a];
-    index[a] = index[b];
-    index[b] = t;
-}
-
-/* Reorders index[lo .. hi-1] so that position m holds the element that sorting by the
+/* Reorders items[lo .. hi-1] so that position m holds the element that sorting by the
  * axis coordinate would put there, smaller keys before it and larger after (Hoare's
  * quickselect with the middle element as pivot and a three-way partition, so equal keys
  * cost nothing extra). */
-static void select_median(const struct hit_point *points, size_t *index, size_t lo,
-                          size_t hi, size_t m, int axis)
+static void select_median(struct build_item *items, size_t lo, size_t hi, size_t m, int axis)
 {
     while (hi - lo > 1) {
-        double pivot = key(points, index, lo + (hi - lo) / 2, axis);
+        double pivot = vec3_get(items[lo + (hi - lo) / 2].x, axis);
         size_t less = lo, i = lo, greater = hi;
         while (i < greater) {
-            double k = key(points, index, i, axis);
+            double k = vec3_get(items[i].x, axis);
             if (k < pivot)
-                swap_index(index, less++, i++);
+                swap_items(items, less++, i++);
             else if (k > pivot)
-                swap_index(index, i, --greater);
+                swap_items(items, i, --greater);
             else
                 i++;
         }
@@ -91,15 +100,15 @@ static void select_median(const struct hit_point *points, size_t *index, size_t 
     }
 }
 
-/* Orders index[lo .. hi-1] as the tree below node [lo, hi) has it. */
-static void build_range(const struct hit_point *points, size_t *index, size_t lo, size_t hi)
+/* Orders items[lo .. hi-1] as the tree below node [lo, hi) has them. */
+static void build_range(struct build_item *items, size_t lo, size_t hi)
 {
     if (hi - lo <= HIT_POINT_LEAF)
         return; /* a leaf: its order does not matter */
     size_t m = lo + (hi - lo) / 2;
-    select_median(points, index, lo, hi, m, widest_axis(points, index, lo, hi));
-    build_range(points, index, lo, m);
-    build_range(points, index, m + 1, hi);
+    select_median(items, lo, hi, m, widest_axis(items, lo, hi));
+    build_range(items, lo, m);
+    build_range(items, m + 1, hi);
 }
 
 /* Moves points into the order of index (the point at index[k] goes to k), following each
@@ -146,16 +155,22 @@ static struct aabb refit_range(struct hit_point_tree *tree, size_t lo, size_t hi
         if (m + 1 < hi)
             box = aabb_union(box, refit_range(tree, m + 1, hi));
     }
-    tree->nodes[m].box = box;
+    tree->boxes[m] = box;
     return box;
 }
 
 void hit_point_tree_build(struct hit_point_tree *tree, struct hit_point *points, size_t n)
 {
+    struct build_item *items = xmalloc(n > 0 ? n : 1, sizeof *items, "hit point tree");
+    for (size_t i = 0; i < n; i++) {
+        items[i].x = points[i].x;
+        items[i].i = i;
+    }
+    build_range(items, 0, n);
     size_t *index = xmalloc(n > 0 ? n : 1, sizeof *index, "hit point tree");
-    for (size_t i = 0; i < n; i++)
-        index[i] = i;
-    build_range(points, index, 0, n);
+    for (size_t k = 0; k < n; k++)
+        index[k] = items[k].i;
+    xfree(items);
     tree->points = points;
     tree->n = n;
     tree->place = xmalloc(n > 0 ? n : 1, sizeof *tree->place, "hit point tree");
@@ -164,6 +179,7 @@ void hit_point_tree_build(struct hit_point_tree *tree, struct hit_point *points,
     move_into_order(points, index, n);
     xfree(index);
     tree->nodes = xmalloc(n > 0 ? n : 1, sizeof *tree->nodes, "hit point tree");
+    tree->boxes = xmalloc(n > 0 ? n : 1, sizeof *tree->boxes, "hit point tree");
     hit_point_tree_refit(tree);
 }
 
@@ -178,7 +194,7 @@ static void visit_range(const struct hit_point_tree *tree, size_t lo, size_t hi,
 {
     while (hi > lo) {
         size_t m = lo + (hi - lo) / 2;
-        if (!box_contains(tree->nodes[m].box, p))
+        if (!box_contains(tree->boxes[m], p))
             return;
         if (hi - lo <= HIT_POINT_LEAF) {
             for (size_t k = lo; k < hi; k++)
@@ -201,10 +217,12 @@ void hit_point_tree_visit(const struct hit_point_tree *tree, struct vec3 p,
 
 void hit_point_tree_free(struct hit_point_tree *tree)
 {
+    xfree(tree->boxes);
     xfree(tree->nodes);
     xfree(tree->place);
     tree->place = NULL;
     tree->nodes = NULL;
+    tree->boxes = NULL;
     tree->n = 0;
 }
 

@@ -24,7 +24,7 @@ struct precomputed_irradiance *precompute_irradiance(const struct kdtree *map,
                                                      const struct scene *coverage,
                                                      const struct work_watch *watch)
 {
-    assert(is->run == 0 && is->n >= 1);
+    assert(is->n >= 1);
     struct precomputed_irradiance *pi = xmalloc(1, sizeof *pi, "precomputed irradiance");
     pi->records = records;
     pi->value = xcalloc(records->n_photons + 1, sizeof *pi->value, "precomputed irradiance");

@@ -8,7 +8,8 @@
  * Lambertian surface that estimate is f_r,d times the irradiance E, and E changes little
  * across the estimate's own disc. So E is estimated once at a subset of the photons'
  * positions (the records: in 1996, every N-th photon the global map stores, with the
- * surface normal where it landed), and a gather ray that ends near a record reads its E
+ * surface normal where it landed; in 1994, whose photons hold that normal, every N-th of
+ * the map's tree), and a gather ray that ends near a record reads its E
  * with one search for a few of the nearest records instead of the k nearest photons.
  *
  * The records are a kd-tree of struct photon (kdtree.h) whose direction bytes hold the
@@ -55,8 +56,10 @@ struct precomputed_irradiance {
 };
 
 /* Estimates E at every record of records (borrowed, and kept until the result is freed)
- * from map with irradiance_estimate() and settings is (estimate.h; run 0: no differential
- * checking on the global map), and keeps them with each estimate's r^2. O(n k log N).
+ * from map with irradiance_estimate() and settings is (estimate.h: 1996's global map
+ * without differential checking, 1994's with it), and keeps them with each estimate's
+ * r^2, the radius of the search (where differential checking stopped the sum sooner,
+ * the disc the record serves is still the search's). O(n k log N).
  * coverage: NULL, or the scene the photons were traced in: then each E is divided by the
  * share of its disc that can hold photons (disc_coverage.h), so that a record by an open
  * edge or a wall is not dark by the part of pi r^2 that lies beyond.

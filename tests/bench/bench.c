@@ -17,7 +17,7 @@ int main(int argc, char **argv)
     static const struct workload workloads[] = {
         {"rays", bench_rays}, {"knn", bench_knn}, {"shapes", bench_shapes},
         {"photons", bench_photons}, {"ppm", bench_ppm}, {"tte", bench_tte},
-        {"tiles", bench_tiles}};
+        {"tts", bench_tts}, {"tiles", bench_tiles}};
     const char *only = argc > 1 && argv[1][0] != '\0' ? argv[1] : NULL;
     int ran = 0;
     for (size_t i = 0; i < sizeof workloads / sizeof workloads[0]; i++) {
@@ -28,7 +28,7 @@ int main(int argc, char **argv)
     }
     if (ran == 0) {
         fprintf(stderr, "bench: unknown workload '%s' (rays, knn, shapes, photons, ppm, tte, "
-                        "tiles)\n", only);
+                        "tts, tiles)\n", only);
         return 2;
     }
     return 0;

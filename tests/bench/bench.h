@@ -24,6 +24,7 @@ void bench_shapes(void); /* bench_shapes.c: procedural objects against their exp
 void bench_photons(void); /* bench_photons.c: photons traced and stored per second        */
 void bench_ppm(void);     /* bench_ppm.c: --mode 2008 hit points and photons per second    */
 void bench_tte(void);     /* bench_tte.c: bench/README.md, tte, time to error beside pt         */
+void bench_tts(void);     /* bench_tts.c: time to a stated error, pt, 2008, 2009 (tts.sh)  */
 void bench_tiles(void);   /* bench_tiles.c: 2 tile processes against 1, wall time (tiles.sh) */
 
 #endif
