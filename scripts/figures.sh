@@ -1,15 +1,15 @@
 #!/bin/sh
 # scripts/figures.sh [presets] [bench] [tts] [rays] [pbrt] [cycles] -- re-measures the figures
-# README.md (and, for bench's phases, rays, pbrt and cycles, tests/bench/README.md) states
+# README.md (and, for bench, rays, pbrt and cycles, tests/bench/README.md) states
 # and writes them in, between the lines <!-- figures:NAME --> and <!-- /figures:NAME -->.
 # Run by `make figures` (ONLY=presets, bench, tts, rays, pbrt or cycles for one part) from the
 # top of the repository, after ./photon and build/bench are built.
 #
 #   presets  scripts/presets.sh: every mode's presets on both Cornell boxes against the
 #            references (about 15 minutes of CPU; two renders run at once)
-#   bench    `make bench ONLY=tte`, time to error: one row a photon mode and scene, its CPU
-#            seconds, its relmse, pt's CPU seconds to that relmse and their ratio; and, into
-#            tests/bench/README.md, where each mode's seconds went (about half an hour of
+#   bench    `make bench ONLY=tte`, time to error, into tests/bench/README.md: one row a
+#            photon mode and scene, its CPU seconds, its relmse, pt's CPU seconds to that
+#            relmse and their ratio; and where each mode's seconds went (about half an hour of
 #            CPU; PHOTON_TTE_TRIAL=1 tries the pipeline in a minute, on figures that mean
 #            nothing, and says so in the table)
 #   tts      `make bench ONLY=tts`, time to a stated error: one row a scene, the CPU seconds
@@ -240,7 +240,7 @@ for part in $parts; do
             printf '\nA trial run (PHOTON_TTE_TRIAL): these figures mean nothing.\n' \
                 >> build/figures-bench.md
         fi
-        splice bench build/figures-bench.md
+        splice bench build/figures-bench.md tests/bench/README.md
         splice phases build/figures-phases.md tests/bench/README.md
         ;;
     tts)
