@@ -44,7 +44,8 @@ void photons_error_sample_taken(struct photons_error *pe, size_t i, struct vec3 
     if (counted)
         add_batches(&pe->pixels[i], vec3(1.0, 1.0, 1.0), &pe->sample);
     double v[3] = {value.x, value.y, value.z};
-    error_batches_add(pe->sample_batches + 3 * ERROR_BATCHES * i, pe->samples[i], v);
+    error_batches_add(pe->sample_batches + 3 * ERROR_BATCHES * i, ERROR_BATCHES,
+                      pe->samples[i], v);
     pe->samples[i]++;
     memset(&pe->sample, 0, sizeof pe->sample);
 }
@@ -54,7 +55,7 @@ void photons_error_sample_taken(struct photons_error *pe, size_t i, struct vec3 
  * fewer than two pairs. */
 static struct vec3 sample_deviation(const struct photons_error *pe, size_t i, int b)
 {
-    int n = pe->samples[i], m = error_batch_size(n), h = n / m / 2;
+    int n = pe->samples[i], m = error_batch_size(ERROR_BATCHES, n), h = n / m / 2;
     if (h < 2)
         return vec3_zero();
     const double *batch = pe->sample_batches + 3 * ERROR_BATCHES * i;
@@ -69,21 +70,20 @@ static struct vec3 sample_deviation(const struct photons_error *pe, size_t i, in
     return vec3(d[0], d[1], d[2]);
 }
 
-/* Kept pixel i's batches as 2009's passes (photons_error.h): y_b = e + c_b + B P_b over
+/* Kept pixel i's batch b as 2009's pass b (photons_error.h): y_b = e + c_b + B P_b over
  * the disc and over the inner disc, e the pixel's mean less its photons' part. */
-static void add_pixel_passes(const struct photons_error *pe, struct sppm_error *e, size_t i,
-                             struct vec3 mean)
+static void add_pixel_pass(const struct photons_error *pe, struct sppm_error *e, size_t i,
+                           int b, struct vec3 mean)
 {
     const struct estimate_batches *sum = &pe->pixels[i];
     double per_sample = 1.0 / pe->samples[i];
     struct vec3 photons = vec3_zero();
-    for (int b = 0; b < PHOTON_BATCHES; b++)
-        photons = vec3_add(photons, sum->disc[b]);
+    for (int j = 0; j < PHOTON_BATCHES; j++)
+        photons = vec3_add(photons, sum->disc[j]);
     struct vec3 seen = vec3_sub(mean, vec3_scale(photons, per_sample));
     double scale = PHOTON_BATCHES * per_sample;
-    for (int b = 0; b < PHOTON_BATCHES; b++)
-        sppm_error_add_pass(e, i, b, vec3_add(seen, sample_deviation(pe, i, b)),
-                            vec3_scale(sum->disc[b], scale), vec3_scale(sum->inner[b], scale));
+    sppm_error_add_pass(e, i, b, vec3_add(seen, sample_deviation(pe, i, b)),
+                        vec3_scale(sum->disc[b], scale), vec3_scale(sum->inner[b], scale));
 }
 
 void photons_error_result(const struct photons_error *pe, const struct image *kept_image,
@@ -91,11 +91,14 @@ void photons_error_result(const struct photons_error *pe, const struct image *ke
 {
     const struct kept_window *k = &pe->kept;
     struct sppm_error e;
-    sppm_error_create(&e, k->width, k->height);
-    for (int y = 0; y < k->height; y++)
-        for (int x = 0; x < k->width; x++)
-            add_pixel_passes(pe, &e, (size_t)y * (size_t)k->width + (size_t)x,
-                             image_get(kept_image, x, y));
+    sppm_error_create(&e, k);
+    for (int b = 0; b < PHOTON_BATCHES; b++) {
+        for (int y = 0; y < k->height; y++)
+            for (int x = 0; x < k->width; x++)
+                add_pixel_pass(pe, &e, (size_t)y * (size_t)k->width + (size_t)x, b,
+                               image_get(kept_image, x, y));
+        sppm_error_block_pass(&e, b);
+    }
     sppm_error_result(&e, k, PHOTON_BATCHES, result);
     sppm_error_free(&e);
 }

@@ -15,7 +15,7 @@
  * of the pixel, and their spread states the noise of the mean: 2009's passes
  * (sppm_error.h) with the batches as passes, pooled over the 5 x 5 pixels around as pt's
  * samples are (pixel_error.h), and a block's noise from the block's own batch means,
- * since the pixels share photons.
+ * since the pixels share photons (the batches are 2009's passes one by one).
  *
  * The bias. Each estimate also sums its photons over the inner disc of radius r / sqrt(2)
  * (struct estimate_batches' inner), whose bias is half the disc's, so b_b = 2 (y_b -

@@ -10,21 +10,21 @@
 #include "../base/alloc.h"
 #include "../base/normal.h"
 
-int error_batch_size(int n)
+int error_batch_size(int count, int n)
 {
     int m = 1;
-    while (ERROR_BATCHES * m < n)
+    while (count * m < n)
         m *= 2;
     return m;
 }
 
-void error_batches_add(double *batches, int n, const double v[3])
+void error_batches_add(double *batches, int count, int n, const double v[3])
 {
-    int m = error_batch_size(n + 1);
-    if (m > 1 && n == ERROR_BATCHES * (m / 2)) { /* every batch full: pairs become one */
-        for (int k = 0; k < ERROR_BATCHES; k++)
+    int m = error_batch_size(count, n + 1);
+    if (m > 1 && n == count * (m / 2)) { /* every batch full: pairs become one */
+        for (int k = 0; k < count; k++)
             for (int c = 0; c < 3; c++)
-                batches[3 * k + c] = k < ERROR_BATCHES / 2 ? batches[6 * k + c] +
+                batches[3 * k + c] = k < count / 2 ? batches[6 * k + c] +
                                                                  batches[6 * k + 3 + c]
                                                            : 0.0;
     }
@@ -37,7 +37,7 @@ void error_batches_add(double *batches, int n, const double v[3])
  * k - 1 (*freedom) it estimates the variance of one sample's worth, s^2. */
 static double batch_deviations(const struct pixel_sums *sums, size_t i, int c, double *freedom)
 {
-    int n = sums->n[i], m = error_batch_size(n), k = n / m;
+    int n = sums->n[i], m = error_batch_size(ERROR_BATCHES, n), k = n / m;
     const double *b = sums->batches + (size_t)3 * ERROR_BATCHES * i;
     double mean = 0.0, deviations = 0.0;
     for (int j = 0; j < k; j++)

@@ -57,14 +57,14 @@
                                differ by at most this many standard errors of the
                                difference (above)                                          */
 
-/* The samples of one batch once a pixel has taken n: the least power of two m with
- * ERROR_BATCHES m >= n (n / m of the batches are full). */
-int error_batch_size(int n);
+/* The samples of one of `count` batches once n are taken: the least power of two m with
+ * count m >= n (n / m of the batches are full). A pixel's batches are ERROR_BATCHES. */
+int error_batch_size(int count, int n);
 
-/* Adds sample v (per channel) to a pixel's 3 ERROR_BATCHES batch sums (zero before its
- * first sample), after the n it has taken: the batches of m samples (above) in sample
- * order, m doubling, and pairs of batches becoming one, whenever every batch is full. */
-void error_batches_add(double *batches, int n, const double v[3]);
+/* Adds sample v (per channel) to 3 `count` batch sums (zero before the first sample), after
+ * the n taken: the batches of m samples (above) in sample order, m doubling, and pairs of
+ * batches becoming one, whenever every batch is full. */
+void error_batches_add(double *batches, int count, int n, const double v[3]);
 
 /* The sums of a window of pixels: width x height, row-major, 3 per pixel for sum (the
  * samples' sum per channel) and 3 ERROR_BATCHES for batches (error_batches_add()), n the

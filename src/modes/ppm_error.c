@@ -21,7 +21,7 @@ void ppm_error_create(struct ppm_error *e, const struct kept_window *kept, size_
 {
     size_t n = (size_t)kept->width * (size_t)kept->height;
     e->kept = kept;
-    sppm_error_create(&e->values, kept->width, kept->height);
+    sppm_error_create(&e->values, kept);
     for (size_t i = 0; i < n; i++)
         e->values.before[i] = seen_so_far(emission_seen, direct, i);
     e->inner = xcalloc(2 * n_points + 1, sizeof *e->inner, "ppm inner flux");
@@ -59,6 +59,7 @@ void ppm_error_add_pass(struct ppm_error *e, const struct hit_point_tree *tree,
                             e->y[i], e->y_inner[i]);
         e->values.before[i] = now;
     }
+    sppm_error_block_pass(&e->values, e->passes);
     e->passes++;
 }
 

@@ -494,6 +494,7 @@ static void add_pass_values(struct sppm *sppm, long pass)
         }
         sppm_error_add_pass(e, i, pass, seen, p, p_inner);
     }
+    sppm_error_block_pass(e, pass);
 }
 
 /* Before the error image is made: each pixel's covered shares as the image has them,
@@ -610,7 +611,7 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     if (common->direct_light_samples)
         ppm_direct_create(&sppm.direct, scene, sppm.rs);
     if (sppm.want_error) {
-        sppm_error_create(&sppm.error, sppm.kept.width, sppm.kept.height);
+        sppm_error_create(&sppm.error, &sppm.kept);
         sppm.point = xmalloc(sppm.n_pixels, sizeof *sppm.point, "sppm pass points");
         sppm.inner_tau = xcalloc(sppm.n_pixels, sizeof *sppm.inner_tau, "sppm inner flux");
         sppm.inner_probes = xcalloc(2 * sppm.n_pixels, sizeof *sppm.inner_probes,

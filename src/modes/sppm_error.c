@@ -47,11 +47,18 @@ size_t written_pixel(const struct kept_window *k, size_t kept)
     return (size_t)y * (size_t)k->out_width + (size_t)x;
 }
 
-void sppm_error_create(struct sppm_error *e, int width, int height)
+void sppm_error_create(struct sppm_error *e, const struct kept_window *kept)
 {
-    size_t n = (size_t)width * (size_t)height;
-    e->width = width;
-    e->height = height;
+    size_t n = (size_t)kept->width * (size_t)kept->height;
+    e->width = kept->width;
+    e->height = kept->height;
+    e->x0 = kept->out_x0;
+    e->y0 = kept->out_y0;
+    e->x1 = kept->out_x0 + kept->out_width;
+    e->y1 = kept->out_y0 + kept->out_height;
+    e->wx0 = kept->asked->x0;
+    e->wy0 = kept->asked->y0;
+    error_block_grid(e->wx0, e->wy0, e->x1 - e->x0, e->y1 - e->y0, &e->columns, &e->rows);
     e->seen_batches = xcalloc(PIXEL_BATCHES * n, sizeof *e->seen_batches, "sppm batches");
     e->photon_batches = xcalloc(PIXEL_BATCHES * n, sizeof *e->photon_batches, "sppm batches");
     e->inner_batches = xcalloc(PIXEL_BATCHES * n, sizeof *e->inner_batches, "sppm batches");
@@ -59,6 +66,10 @@ void sppm_error_create(struct sppm_error *e, int width, int height)
     for (size_t i = 0; i < 2 * n; i++)
         e->shares[i] = 1.0;
     e->before = xcalloc(n, sizeof *e->before, "sppm pass values");
+    e->pass_values = xcalloc(9 * n, sizeof *e->pass_values, "sppm pass values");
+    e->pass_biases = xcalloc(6 * n, sizeof *e->pass_biases, "sppm pass values");
+    e->block_batches = xcalloc(3 * BLOCK_BATCHES * (size_t)e->columns * (size_t)e->rows,
+                               sizeof *e->block_batches, "sppm block batches");
 }
 
 void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 seen,
@@ -66,23 +77,33 @@ void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 
 {
     double v[3] = {seen.x, seen.y, seen.z}, w[3] = {p.x, p.y, p.z};
     double w_inner[3] = {p_inner.x, p_inner.y, p_inner.z};
-    error_batches_add(e->seen_batches + PIXEL_BATCHES * i, (int)pass, v);
-    error_batches_add(e->photon_batches + PIXEL_BATCHES * i, (int)pass, w);
-    error_batches_add(e->inner_batches + PIXEL_BATCHES * i, (int)pass, w_inner);
+    error_batches_add(e->seen_batches + PIXEL_BATCHES * i, ERROR_BATCHES, (int)pass, v);
+    error_batches_add(e->photon_batches + PIXEL_BATCHES * i, ERROR_BATCHES, (int)pass, w);
+    error_batches_add(e->inner_batches + PIXEL_BATCHES * i, ERROR_BATCHES, (int)pass, w_inner);
+    for (int c = 0; c < 3; c++) {
+        e->pass_values[9 * i + c] = v[c];
+        e->pass_values[9 * i + 3 + c] = w[c];
+        e->pass_values[9 * i + 6 + c] = w_inner[c];
+    }
 }
 
 /* The batches of the pass values y_i = e_i + P_i / c and of their biases b_i = 2 (y_i -
- * y'_i) = 2 (P_i / c - P'_i / c'), the shares as they stand (sppm_error_add_pass()). */
-static void pass_value_batches(const struct sppm_error *e, double *values, double *biases)
+ * y'_i) = 2 (P_i / c - P'_i / c'), the shares as they stand (sppm_error_add_pass()), or
+ * every share 1 when `shared` is 0. */
+static void pass_value_batches(const struct sppm_error *e, int shared, double *values,
+                               double *biases)
 {
     size_t n = (size_t)e->width * (size_t)e->height;
-    for (size_t i = 0; i < n; i++)
+    for (size_t i = 0; i < n; i++) {
+        double c = shared ? e->shares[2 * i] : 1.0;
+        double c_inner = shared ? e->shares[2 * i + 1] : 1.0;
         for (size_t k = 0; k < PIXEL_BATCHES; k++) {
             size_t j = PIXEL_BATCHES * i + k;
-            double p = e->photon_batches[j] / e->shares[2 * i];
+            double p = e->photon_batches[j] / c;
             values[j] = e->seen_batches[j] + p;
-            biases[j] = 2.0 * (p - e->inner_batches[j] / e->shares[2 * i + 1]);
+            biases[j] = 2.0 * (p - e->inner_batches[j] / c_inner);
         }
+    }
 }
 
 void sppm_error_photons(struct vec3 weight, double radius, struct vec3 tau,
@@ -99,27 +120,75 @@ void sppm_error_photons(struct vec3 weight, double radius, struct vec3 tau,
     }
 }
 
-/* Each pixel's batches of b (biases) averaged over the pixels within SPPM_BIAS_RADIUS of
- * it, inside the window, into smoothed. */
-static void smooth_bias(const struct sppm_error *e, const double *biases, double *smoothed)
+/* Each pixel's b (biases, `stride` doubles a pixel: its batches, or one pass's value)
+ * averaged over the pixels within SPPM_BIAS_RADIUS of it, inside the window, into
+ * smoothed. */
+static void smooth_bias(const struct sppm_error *e, const double *biases, double *smoothed,
+                        size_t stride)
 {
     for (int y = 0; y < e->height; y++)
         for (int x = 0; x < e->width; x++) {
-            double *out = smoothed + PIXEL_BATCHES * ((size_t)y * (size_t)e->width + (size_t)x);
+            double *out = smoothed + stride * ((size_t)y * (size_t)e->width + (size_t)x);
             int members = 0;
-            memset(out, 0, PIXEL_BATCHES * sizeof *out);
+            memset(out, 0, stride * sizeof *out);
             for (int v = y - SPPM_BIAS_RADIUS; v <= y + SPPM_BIAS_RADIUS; v++)
                 for (int u = x - SPPM_BIAS_RADIUS; u <= x + SPPM_BIAS_RADIUS; u++) {
                     if (u < 0 || v < 0 || u >= e->width || v >= e->height)
                         continue;
                     const double *b =
-                        biases + PIXEL_BATCHES * ((size_t)v * (size_t)e->width + (size_t)u);
+                        biases + stride * ((size_t)v * (size_t)e->width + (size_t)u);
                     members++;
-                    for (size_t k = 0; k < PIXEL_BATCHES; k++)
+                    for (size_t k = 0; k < stride; k++)
                         out[k] += b[k];
                 }
-            for (size_t k = 0; k < PIXEL_BATCHES; k++)
+            for (size_t k = 0; k < stride; k++)
                 out[k] /= members;
+        }
+}
+
+/* The mean over block (column, row) of the written window of a per-pixel series,
+ * `stride` doubles a pixel, the first `count` of which are summed into mean. */
+static void block_mean(const struct sppm_error *e, const double *series, size_t stride,
+                       size_t count, int column, int row, double *mean)
+{
+    int u0, v0, u1, v1;
+    error_block_window(e->wx0, e->wy0, e->x1 - e->x0, e->y1 - e->y0, column, row, &u0, &v0,
+                       &u1, &v1);
+    double pixels = (double)(u1 - u0) * (v1 - v0);
+    memset(mean, 0, count * sizeof *mean);
+    for (int v = v0; v < v1; v++)
+        for (int u = u0; u < u1; u++) {
+            const double *s = series + stride * ((size_t)(v + e->y0) * (size_t)e->width +
+                                                 (size_t)(u + e->x0));
+            for (size_t j = 0; j < count; j++)
+                mean[j] += s[j] / pixels;
+        }
+}
+
+/* Block (column, row)'s 3 BLOCK_BATCHES batch sums. */
+static double *block_batches(const struct sppm_error *e, int column, int row)
+{
+    return e->block_batches + 3 * BLOCK_BATCHES * ((size_t)row * (size_t)e->columns +
+                                                   (size_t)column);
+}
+
+void sppm_error_block_pass(struct sppm_error *e, long pass)
+{
+    size_t n = (size_t)e->width * (size_t)e->height;
+    double *b = e->pass_biases, *smoothed = e->pass_biases + 3 * n;
+    const double *v = e->pass_values; /* e_i, P_i and P'_i, 3 each */
+    for (size_t i = 0; i < n; i++)
+        for (int c = 0; c < 3; c++)
+            b[3 * i + c] = 2.0 * (v[9 * i + 3 + c] - v[9 * i + 6 + c]);
+    smooth_bias(e, b, smoothed, 3);
+    for (size_t i = 0; i < n; i++) /* s_i = e_i + P_i - b~_i, into b */
+        for (int c = 0; c < 3; c++)
+            b[3 * i + c] = v[9 * i + c] + v[9 * i + 3 + c] - smoothed[3 * i + c];
+    for (int row = 0; row < e->rows; row++)
+        for (int column = 0; column < e->columns; column++) {
+            double mean[3];
+            block_mean(e, b, 3, 3, column, row, mean);
+            error_batches_add(block_batches(e, column, row), BLOCK_BATCHES, (int)pass, mean);
         }
 }
 
@@ -133,65 +202,81 @@ static double student_critical(double z, double freedom)
            (3 * z7 + 19 * z5 + 17 * z3 - 15 * z) / (384 * v * v * v);
 }
 
-/* The bound on the noise of each block's mean of the written window [x0, x1) x [y0, y1)
- * of the kept one, whose top left pixel is (wx0, wy0) of the whole image: from the
- * spread of the block's own means of the corrected batches (sppm_error.h), at z_c
- * widened to Student's t for their k - 1 degrees of freedom. */
-static struct image *block_noise(const struct sppm_error *e, const double *corrected,
-                                 long passes, int x0, int y0, int x1, int y1, int wx0,
-                                 int wy0, double z)
+/* The squared deviations, per channel, of k batches' sums (3 doubles each) from their
+ * mean. */
+static void batch_deviations(const double *batches, int k, double deviations[3])
 {
-    int columns, rows, n = (int)passes, m = error_batch_size(n), k = n / m;
-    error_block_grid(wx0, wy0, x1 - x0, y1 - y0, &columns, &rows);
-    struct image *noise = image_create(columns, rows);
+    for (int c = 0; c < 3; c++) {
+        double all = 0.0;
+        for (int j = 0; j < k; j++)
+            all += batches[3 * j + c] / k;
+        deviations[c] = 0.0;
+        for (int j = 0; j < k; j++)
+            deviations[c] += (batches[3 * j + c] - all) * (batches[3 * j + c] - all);
+    }
+}
+
+/* The bound on the noise of each block's mean of the written window (sppm_error.h): the
+ * spread of the block's k full BLOCK_BATCHES batches of m passes of s, every share 1,
+ * times the ratio of the spreads of its means of the pixels' batches of s with the
+ * image's shares (corrected) and with every share 1 (unshared), at z_c widened to
+ * Student's t for k - 1 degrees of freedom. */
+static struct image *block_noise(const struct sppm_error *e, const double *corrected,
+                                 const double *unshared, long passes, double z)
+{
+    int n = (int)passes, m = error_batch_size(BLOCK_BATCHES, n), k = n / m;
+    int pixel_k = n / error_batch_size(ERROR_BATCHES, n);
+    struct image *noise = image_create(e->columns, e->rows);
     double t = student_critical(z, k - 1.0);
-    for (int row = 0; row < rows; row++)
-        for (int column = 0; column < columns; column++) {
-            int u0, v0, u1, v1;
-            error_block_window(wx0, wy0, x1 - x0, y1 - y0, column, row, &u0, &v0, &u1, &v1);
-            double mean[PIXEL_BATCHES] = {0.0}, pixels = (double)(u1 - u0) * (v1 - v0);
-            for (int v = v0; v < v1; v++)
-                for (int u = u0; u < u1; u++) {
-                    const double *b = corrected + PIXEL_BATCHES * ((size_t)(v + y0) *
-                                                                   (size_t)e->width +
-                                                                   (size_t)(u + x0));
-                    for (size_t j = 0; j < PIXEL_BATCHES; j++)
-                        mean[j] += b[j] / (pixels * m); /* the block's batch means */
-                }
+    for (int row = 0; row < e->rows; row++)
+        for (int column = 0; column < e->columns; column++) {
+            double spread[3], shared[PIXEL_BATCHES], whole[PIXEL_BATCHES], with[3], without[3];
+            batch_deviations(block_batches(e, column, row), k, spread);
+            block_mean(e, corrected, PIXEL_BATCHES, PIXEL_BATCHES, column, row, shared);
+            block_mean(e, unshared, PIXEL_BATCHES, PIXEL_BATCHES, column, row, whole);
+            batch_deviations(shared, pixel_k, with);
+            batch_deviations(whole, pixel_k, without);
             double bound[3];
             for (int c = 0; c < 3; c++) {
-                double all = 0.0, deviations = 0.0;
-                for (int j = 0; j < k; j++)
-                    all += mean[3 * j + c] / k;
-                for (int j = 0; j < k; j++)
-                    deviations += (mean[3 * j + c] - all) * (mean[3 * j + c] - all);
-                bound[c] = t * sqrt(deviations * m / (k - 1.0) / n);
+                double ratio = without[c] > 0.0 ? with[c] / without[c] : 1.0;
+                bound[c] = t * sqrt(spread[c] * ratio / m / (k - 1.0) / n);
             }
             image_set(noise, column, row, vec3(bound[0], bound[1], bound[2]));
         }
     return noise;
 }
 
-struct image *sppm_error_image(const struct sppm_error *e, long passes, int x0, int y0,
-                               int x1, int y1, int wx0, int wy0, double confidence,
+/* The batches of each pixel's corrected values s = y - b~ into corrected and of its b~
+ * into smoothed (PIXEL_BATCHES a pixel each), with the shares as they stand or, when
+ * `shared` is 0, every share 1. */
+static void corrected_batches(const struct sppm_error *e, int shared, double *corrected,
+                              double *smoothed)
+{
+    size_t n = (size_t)e->width * (size_t)e->height;
+    double *biases = xmalloc(PIXEL_BATCHES * n, sizeof *biases, "sppm bias batches");
+    pass_value_batches(e, shared, corrected, biases);
+    smooth_bias(e, biases, smoothed, PIXEL_BATCHES);
+    xfree(biases);
+    for (size_t j = 0; j < PIXEL_BATCHES * n; j++)
+        corrected[j] -= smoothed[j];
+}
+
+struct image *sppm_error_image(const struct sppm_error *e, long passes, double confidence,
                                struct image **bias, struct image **block)
 {
     size_t n = (size_t)e->width * (size_t)e->height;
+    int x0 = e->x0, y0 = e->y0, x1 = e->x1, y1 = e->y1;
     double *smoothed = xmalloc(PIXEL_BATCHES * n, sizeof *smoothed, "sppm bias batches");
     double *corrected = xmalloc(PIXEL_BATCHES * n, sizeof *corrected, "sppm error batches");
+    double *unshared = xmalloc(PIXEL_BATCHES * n, sizeof *unshared, "sppm error batches");
     double *sum = xcalloc(3 * n, sizeof *sum, "sppm error sums");
     int *count = xmalloc(n, sizeof *count, "sppm error counts");
-    double *biases = xmalloc(PIXEL_BATCHES * n, sizeof *biases, "sppm bias batches");
-    pass_value_batches(e, corrected, biases);
-    smooth_bias(e, biases, smoothed);
-    xfree(biases);
-    for (size_t i = 0; i < n; i++) { /* the batches of s = y - b~, and their sums */
+    corrected_batches(e, 0, unshared, smoothed);
+    corrected_batches(e, 1, corrected, smoothed);
+    for (size_t i = 0; i < n; i++) { /* the sums of the batches of s */
         count[i] = (int)passes;
-        for (size_t k = 0; k < PIXEL_BATCHES; k++) {
-            size_t j = PIXEL_BATCHES * i + k;
-            corrected[j] -= smoothed[j];
-            sum[3 * i + k % 3] += corrected[j];
-        }
+        for (size_t k = 0; k < PIXEL_BATCHES; k++)
+            sum[3 * i + k % 3] += corrected[PIXEL_BATCHES * i + k];
     }
     struct pixel_sums sums = {e->width, e->height, sum, corrected, count};
     struct image *error = pooled_error_image(&sums, x0, y0, x1, y1, confidence);
@@ -209,10 +294,11 @@ struct image *sppm_error_image(const struct sppm_error *e, long passes, int x0, 
             image_set(error, x - x0, y - y0,
                       vec3_add(bound, vec3(fabs(mean.x), fabs(mean.y), fabs(mean.z))));
         }
-    *block = block_noise(e, corrected, passes, x0, y0, x1, y1, wx0, wy0,
+    *block = block_noise(e, corrected, unshared, passes,
                          normal_critical_two_sided(1.0 - confidence));
     xfree(count);
     xfree(sum);
+    xfree(unshared);
     xfree(corrected);
     xfree(smoothed);
     return error;
@@ -221,9 +307,7 @@ struct image *sppm_error_image(const struct sppm_error *e, long passes, int x0, 
 void sppm_error_result(const struct sppm_error *e, const struct kept_window *k, long passes,
                        struct render_result *result)
 {
-    result->error = sppm_error_image(e, passes, k->out_x0, k->out_y0, k->out_x0 + k->out_width,
-                                     k->out_y0 + k->out_height, k->asked->x0, k->asked->y0,
-                                     k->grown.error_confidence, &result->bias,
+    result->error = sppm_error_image(e, passes, k->grown.error_confidence, &result->bias,
                                      &result->block_noise);
 }
 
@@ -245,5 +329,8 @@ void sppm_error_free(struct sppm_error *e)
     xfree(e->inner_batches);
     xfree(e->shares);
     xfree(e->before);
+    xfree(e->pass_values);
+    xfree(e->pass_biases);
+    xfree(e->block_batches);
     memset(e, 0, sizeof *e);
 }

@@ -53,11 +53,23 @@
  * Blocks. The pixels share photons over discs a few pixels wide, so their noise is not
  * independent and a block's does not shrink as the square root of its pixels: in
  * quadrature, 0.41-0.70 of 16 x 16 blocks hold their truth. A block's noise bound is
- * from the block's own batch means of s (the spread of its k full batches, at Student's
- * t for k - 1 degrees of freedom, 4 <= k <= 8), its bias the sum of its pixels' b~ with
- * their signs (image/error_image.h): 0.97-1.00 hold, the bound 3.4-4.6 times the error
- * (median over blocks; sky-over-floor, point-over-plane, area-over-floor at 64 and 256
- * passes).
+ * from the block's own values of s, pass by pass: each pass, the block's mean of the
+ * pass's s_i joins its BLOCK_BATCHES batches (error_batches_add(); sppm_error_block_pass()),
+ * whose k full ones (16 <= k <= 32 from 16 passes on) state the noise at Student's t for
+ * k - 1 degrees of freedom: 2.13-2.04 at c = 0.95, where a pixel's 4 to 8 batches would
+ * need 3.18-2.36. A pass's b~ there is its own b_i smoothed as above. Its shares are 1,
+ * since the image's are known only at its end, so the spread is scaled by the ratio of
+ * two spreads of the block's means of the pixels' batches of s: with the image's shares
+ * and with 1 (the ratio is 1 where every share is 1). Its bias is the sum of its pixels'
+ * b~ with their signs (image/error_image.h). 32 batches, not more: a pass's eye paths and
+ * light samples are stratified over the passes (pixel_error.h), so batches of fewer
+ * passes overstate that noise, which is most of it where the direct light is by light
+ * samples: 2008 at its defaults on point-over-plane, 64 passes, states its blocks at 19
+ * times their error with 32 batches, 36 with 64 and 14 with a pixel's 8. Measured on the
+ * Cornell box (2009's defaults, seed 7, against the pt reference): 0.980 of the 256 blocks
+ * within their bound at a median of 4.65 times the error, where 8 batches held 0.984 at
+ * 5.04 (16 batches 4.61, 64 batches 4.68); --target-error 0.05 on sky-over-floor at 64 x
+ * 48 stops at 104 passes, where it took 416.
  *
  * Measured (tests/test_error_2009.c prints them; 20,000 photons a pass, the direct light
  * from the photons, the paper's way, so that the density estimate carries the light the
@@ -89,6 +101,7 @@
 #include "render.h"
 
 #define SPPM_BIAS_RADIUS 2         /* pixels each side whose bias a pixel's b~ averages   */
+#define BLOCK_BATCHES 32           /* the batches a block's pass values are kept in       */
 /* The pixels beyond a window its error image reads: the pool of pixel_error.h around
  * each, and the bias of SPPM_BIAS_RADIUS around each of those. */
 #define SPPM_ERROR_MARGIN (ERROR_POOL_RADIUS + SPPM_BIAS_RADIUS)
@@ -117,9 +130,13 @@ size_t kept_pixel(const struct kept_window *k, size_t written);
 /* Kept pixel `kept`'s index in the written window, or NOT_WRITTEN. */
 size_t written_pixel(const struct kept_window *k, size_t kept);
 
-/* What a progressive mode keeps for its error image, per pixel of the kept window. */
+/* What a progressive mode keeps for its error image: per pixel of the kept window, and
+ * per block of the written one. */
 struct sppm_error {
     int width, height;      /* of the window kept                                          */
+    int x0, y0, x1, y1;     /* the written window [x0, x1) x [y0, y1) of the kept one, ... */
+    int wx0, wy0;           /* ... whose top left pixel is (wx0, wy0) of the whole image   */
+    int columns, rows;      /* its blocks (error_block_grid())                             */
     double *seen_batches;   /* owned: 3 ERROR_BATCHES per pixel, the batches of the pass
                                values' e_i (error_batches_add(), n = the pass)            */
     double *photon_batches; /* owned: the same, of P_i                                     */
@@ -128,10 +145,14 @@ struct sppm_error {
                                divides P and P' by, as they stand (1 without coverage)    */
     struct vec3 *before;    /* owned: per pixel, what its eye paths saw and its direct term
                                summed before this pass                                    */
+    double *pass_values;    /* owned: 9 per pixel, this pass's e_i, P_i and P'_i           */
+    double *pass_biases;    /* owned: 6 per pixel, this pass's b_i and b~_i (scratch)      */
+    double *block_batches;  /* owned: 3 BLOCK_BATCHES per block, the batches of the block's
+                               mean of s_i with every share 1 (sppm_error_block_pass())   */
 };
 
-/* Room for a window of width x height pixels, every sum zero. */
-void sppm_error_create(struct sppm_error *e, int width, int height);
+/* Room for kept's window and the blocks of the window it writes, every sum zero. */
+void sppm_error_create(struct sppm_error *e, const struct kept_window *kept);
 
 /* Pass `pass` (from 0) of pixel i: what its eye path saw and its direct term, e_i, and
  * its photon estimate over the disc and over the inner disc, P_i and P'_i, before the
@@ -143,6 +164,11 @@ void sppm_error_create(struct sppm_error *e, int width, int height);
 void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 seen,
                          struct vec3 p, struct vec3 p_inner);
 
+/* Pass `pass` is done, every pixel's values added (sppm_error_add_pass()): each block's
+ * mean of the pass's corrected values s_i, every share taken as 1, joins the block's
+ * BLOCK_BATCHES batches (above). */
+void sppm_error_block_pass(struct sppm_error *e, long pass);
+
 /* A progressive estimate's part of a pass value, seen through weight (the hit point's
  * pixel weight, 2009's path weight): *p = weight Phi_i / (pi R_i^2 M) over its disc of
  * radius R_i, and *p_inner = weight 2 Phi'_i / (pi R_i^2 M) over its inner disc of radius
@@ -153,13 +179,11 @@ void sppm_error_photons(struct vec3 weight, double radius, struct vec3 tau,
                         struct vec3 inner_tau, double photons_per_pass, struct vec3 *p,
                         struct vec3 *p_inner);
 
-/* The error image of the pixels [x0, x1) x [y0, y1) of the kept window after `passes`
- * passes (>= ERROR_MIN_SPP) at confidence c, by the rule above, which reads the pixels
- * up to SPPM_ERROR_MARGIN beyond them; *bias: their b~, *block: the noise bound of each
- * block's mean (render_result's bias and block_noise), (wx0, wy0) being the window's top
- * left pixel in the whole image. */
-struct image *sppm_error_image(const struct sppm_error *e, long passes, int x0, int y0,
-                               int x1, int y1, int wx0, int wy0, double confidence,
+/* The error image of the written window after `passes` passes (>= ERROR_MIN_SPP) at
+ * confidence c, by the rule above, which reads the pixels up to SPPM_ERROR_MARGIN beyond
+ * it; *bias: their b~, *block: the noise bound of each block's mean (render_result's bias
+ * and block_noise). */
+struct image *sppm_error_image(const struct sppm_error *e, long passes, double confidence,
                                struct image **bias, struct image **block);
 
 /* The written window's error image, bias and block noise after `passes` passes, at the
