@@ -548,13 +548,9 @@ static void precompute(struct jensen1994 *mode, const struct render_settings *rs
     for (size_t i = 0; i < n; i++)
         picked[i] = map->photons[1 + i * step];
     mode->records = balance_kdtree(picked, n);
-    struct watched_progress line;
-    watched_progress_begin(&line, rs->progress, "precomputed irradiance", n,
-                           "records estimated");
-    mode->precomputed = precompute_irradiance(map, mode->records, &mode->all_photons, NULL,
-                                              watched_progress_watch(&line));
-    watched_progress_end(&line, 1);
     mode->stats->seconds_precompute = cpu_seconds(start);
+    mode->precomputed = precompute_watched(map, mode->records, &mode->all_photons, NULL,
+                                           rs->progress, &mode->stats->seconds_precompute);
     mode->stats->precomputed_records = n;
     mode->stats->bytes_precomputed =
         kdtree_bytes(mode->records) + precomputed_irradiance_bytes(mode->precomputed);

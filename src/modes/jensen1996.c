@@ -627,17 +627,11 @@ static void set_up(struct jensen1996 *mode, const struct scene *scene,
         mode->cache = irradiance_cache_create(box, settings->cache_accuracy);
     mode->precomputed = NULL;
     if (mode->maps.records != NULL) {
-        clock_t start = clock();
         struct irradiance_settings is = {mode->global_es.k, mode->global_es.max_r2, 0, 0,
                                          settings->exclude_rim};
-        struct watched_progress line;
-        watched_progress_begin(&line, rs->progress, "precomputed irradiance",
-                               mode->maps.records->n_photons, "records estimated");
-        mode->precomputed = precompute_irradiance(mode->maps.global, mode->maps.records, &is,
+        mode->precomputed = precompute_watched(mode->maps.global, mode->maps.records, &is,
                                                settings->disc_coverage ? scene : NULL,
-                                               watched_progress_watch(&line));
-        watched_progress_end(&line, 1);
-        stats->seconds_precompute = cpu_seconds(start);
+                                               rs->progress, &stats->seconds_precompute);
         stats->bytes_precomputed += precomputed_irradiance_bytes(mode->precomputed);
     }
 }

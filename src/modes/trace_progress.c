@@ -51,6 +51,23 @@ struct kdtree *balance_part(struct photon *photons, size_t n, struct watched_pro
     return map;
 }
 
+struct precomputed_irradiance *precompute_watched(const struct kdtree *map,
+                                                  const struct kdtree *records,
+                                                  const struct irradiance_settings *is,
+                                                  const struct scene *coverage, int on,
+                                                  double *seconds)
+{
+    clock_t start = clock();
+    struct watched_progress line;
+    watched_progress_begin(&line, on, "precomputed irradiance", records->n_photons,
+                           "records estimated");
+    struct precomputed_irradiance *pi =
+        precompute_irradiance(map, records, is, coverage, watched_progress_watch(&line));
+    watched_progress_end(&line, 1);
+    *seconds += (double)(clock() - start) / CLOCKS_PER_SEC;
+    return pi;
+}
+
 void trace_progress_begin(struct trace_progress *tp, int on, const char *phase,
                           struct trace_settings *ts)
 {

@@ -1,8 +1,8 @@
 /*
  * modes/trace_progress.h -- the progress lines of the phases that photon/ code works
  * through and tells a watch of: a photon map's trace (--mode photons, 1994, 1996), the
- * balancing of the maps a trace made (photon/kdtree.h), 1996's precomputed irradiance
- * (photon/precomputed_irradiance.h). Each says how much of the phase's work is done, in
+ * balancing of the maps a trace made (photon/kdtree.h), 1994's and 1996's precomputed
+ * irradiance (photon/precomputed_irradiance.h). Each says how much of the phase's work is done, in
  * its units, and the time left at the rate so far.
  *
  * The photon/ code knows nothing of lines or clocks: it tells a watch (base/watch.h)
@@ -16,6 +16,7 @@
 #include "../base/progress.h"
 #include "../base/watch.h"
 #include "../photon/kdtree.h"
+#include "../photon/precomputed_irradiance.h"
 #include "../photon/trace.h"
 
 /* A phase's line, "DONE of TOTAL UNITS", fed by a watch. A phase may be made of parts
@@ -46,6 +47,15 @@ void watched_progress_end(struct watched_progress *wp, int finished);
  * next part of wp's phase, whose units are balance_kdtree_watched()'s steps
  * (KDTREE_BALANCE_STEPS(n) of them). */
 struct kdtree *balance_part(struct photon *photons, size_t n, struct watched_progress *wp);
+
+/* precompute_irradiance() of records from map under its own line, "records estimated"
+ * (on: whether progress is shown), the CPU seconds it took added to *seconds. 1994 and
+ * 1996 precompute alike. */
+struct precomputed_irradiance *precompute_watched(const struct kdtree *map,
+                                                  const struct kdtree *records,
+                                                  const struct irradiance_settings *is,
+                                                  const struct scene *coverage, int on,
+                                                  double *seconds);
 
 /* A trace's line: photons emitted of those to emit. */
 struct trace_progress {
