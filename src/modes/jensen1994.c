@@ -234,24 +234,24 @@ static struct vec3 surface_emission_found(const struct jensen1994 *mode,
                           vec3_neg(s->wo), path);
 }
 
-/* The radiance the diffuse-like part reflects from the photons of estimate `is`: albedo
- * / pi times their irradiance (Sec. 4.0.2-4.0.3: the paper's diffuse-like surfaces are
- * Lambertian). Where the photons kept their direction (keeps_direction()), on a part
+/* The radiance the diffuse-like part reflects from the photons of estimate `is`, read
+ * from its records where there are some (NULL: none): albedo / pi times their
+ * irradiance (Sec. 4.0.2-4.0.3: the paper's diffuse-like surfaces are Lambertian). Where the photons kept their direction (keeps_direction()), on a part
  * that is not Lambertian, the reflected light depends on where it came from, so it is the
  * 1996 paper's Eq. 3 through f_r,d (no differential checking): how photons are
  * read there is not specified by the paper, whose photons keep a normal, no direction. */
 static struct vec3 stored_reflection(const struct jensen1994 *mode, const struct surface *s,
                                      const struct material *diffuse,
                                      const struct shading_frame *frame,
-                                     const struct irradiance_settings *is)
+                                     const struct irradiance_settings *is,
+                                     const struct precomputed_irradiance *records)
 {
     if (keeps_direction(mode->stores.illumination, s->material, s->prim)) {
         struct estimate_point at = {s->p, s->ng, s->wo, diffuse, frame, !s->front};
         struct estimate_settings es = {is->n, is->max_r2, 0.0, is->kinds, is->exclude_rim};
         return radiance_estimate(mode->stores.glossy, &at, &es, mode->nn);
     }
-    struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, is,
-                            is == &mode->all_photons ? mode->precomputed : NULL};
+    struct store_query q = {s->p, s->ng, s->prim, s->u, s->v, is, records};
     return diffuse_reflection(s, diffuse, frame,
                               stored_irradiance(&mode->stores, &q, mode->nn));
 }
@@ -262,7 +262,7 @@ static struct vec3 caustic_light(const struct jensen1994 *mode, const struct sur
                                  const struct material *diffuse,
                                  const struct shading_frame *frame)
 {
-    return stored_reflection(mode, s, diffuse, frame, &mode->caustic_photons);
+    return stored_reflection(mode, s, diffuse, frame, &mode->caustic_photons, NULL);
 }
 
 /* -- L_r,s: the specular-like part by recursive Monte Carlo ray tracing -- */
@@ -464,7 +464,8 @@ static struct vec3 secondary_radiance(const struct jensen1994 *mode, const struc
     struct brdf_split split = brdf_split(s->material);
     struct vec3 l = path.emission ? surface_emission_found(mode, s, &path) : vec3_zero();
     if (split.has_diffuse)
-        l = vec3_add(l, stored_reflection(mode, s, &split.diffuse, &frame, &mode->all_photons));
+        l = vec3_add(l, stored_reflection(mode, s, &split.diffuse, &frame, &mode->all_photons,
+                                          mode->precomputed));
     if (split.has_specular)
         l = vec3_add(l, specular_light(mode, s, &split.specular, &frame, path, rng, counters));
     return l;
