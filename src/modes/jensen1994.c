@@ -236,10 +236,11 @@ static struct vec3 surface_emission_found(const struct jensen1994 *mode,
 
 /* The radiance the diffuse-like part reflects from the photons of estimate `is`, read
  * from its records where there are some (NULL: none): albedo / pi times their
- * irradiance (Sec. 4.0.2-4.0.3: the paper's diffuse-like surfaces are Lambertian). Where the photons kept their direction (keeps_direction()), on a part
- * that is not Lambertian, the reflected light depends on where it came from, so it is the
- * 1996 paper's Eq. 3 through f_r,d (no differential checking): how photons are
- * read there is not specified by the paper, whose photons keep a normal, no direction. */
+ * irradiance (Sec. 4.0.2-4.0.3: the paper's diffuse-like surfaces are Lambertian).
+ * Where the photons kept their direction (keeps_direction()), on a part that is not
+ * Lambertian, the reflected light depends on where it came from, so it is the 1996
+ * paper's Eq. 3 through f_r,d (no differential checking): how photons are read there is
+ * not specified by the paper, whose photons keep a normal, no direction. */
 static struct vec3 stored_reflection(const struct jensen1994 *mode, const struct surface *s,
                                      const struct material *diffuse,
                                      const struct shading_frame *frame,
