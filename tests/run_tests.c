@@ -41,7 +41,7 @@ static const struct room rooms[] = {
     {"pt", test_pt, 0},           {"error", test_error, 0},
     {"error_2009", test_error_2009, 0}, {"error_2008", test_error_2008, 0},
     {"error_photons", test_error_photons, 0},
-    {"jensen1994", test_jensen1994, 0},
+    {"jensen1994", test_jensen1994, 0}, {"jensen1994_caustics", test_jensen1994_caustics, 0},
     {"jensen1996", test_jensen1996, 0}, {"report", test_report, 0}, {"merge", test_merge, 0},
     {"merge_work_file", test_merge_work_file, 0},
     {"progress", test_progress, 0},

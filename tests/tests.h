@@ -41,6 +41,7 @@ void test_cache_lookup(struct check *t); /* test_cache_lookup.c: the cache's loo
 void test_render(struct check *t); /* test_render.c: direct mode, crops, scaling, adaptive */
 void test_pt(struct check *t);     /* test_pt.c: the path tracer, closed forms    */
 void test_jensen1994(struct check *t); /* test_jensen1994.c: --mode 1994             */
+void test_jensen1994_caustics(struct check *t); /* test_jensen1994_caustics.c: its caustics */
 void test_jensen1996(struct check *t); /* test_jensen1996.c: --mode 1996, photon maps */
 void test_report(struct check *t); /* test_report.c: --report, --time-limit, ...  */
 void test_merge(struct check *t);  /* test_merge.c: tile records, photon merge      */

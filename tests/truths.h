@@ -108,7 +108,7 @@ double error_before_edge(const struct scene *scene, const struct image *image, i
  * square of reflectance 1 at x = 1 (y 0.2..0.8, z -0.3..0.3), the Lambertian square at
  * y = 0. The exact caustic irradiance at p on the floor: the image source l' = (1.5, 0.8,
  * 0) seen through the mirror's outline, E = I cos / |p - l'|^2 with I = Phi / (4 pi)
- * (test_jensen1994.c, test_ppm_departures.c). */
+ * (test_jensen1994_caustics.c, test_ppm_departures.c). */
 double mirror_caustic_irradiance(struct vec3 p);
 
 /* scenes/analytic/point-in-sphere.scene's radiance, 4 in every pixel: rho Phi / (4 pi^2
@@ -140,18 +140,18 @@ struct image *crop_image(const struct image *img, const int *window);
  * small image's pixels): the reference of a render at 1/factor the size, exact in
  * expectation, since a pixel is the mean radiance over its square (render.h) and the
  * camera maps the same film to any size. NULL, with the error printed, when it cannot
- * be read (test_jensen1994.c, test_jensen1996.c). */
+ * be read (test_jensen1994.c, test_jensen1994_caustics.c, test_jensen1996.c). */
 struct image *reference_window(const char *path, int factor, const int *window);
 
 double mean_luminance(const struct image *img);
 
-/* The glossy panel of test_jensen1994.c's and test_jensen1996.c's glossy caustic, written
- * to path (16 x 16), and its truth: the path tracer's image mean (luminance) at 16,384
- * samples, whose standard error is 0.1%; -1 when it cannot be rendered. The caller
- * renders path too and removes it. A point light of 1000 W at (0, 1, 0) lights a
- * Lambertian floor (rho 0.5) directly and through a 1 x 1 panel of Ward's glossy lobe
- * alone (rho_s 0.8, alpha 0.1) facing down at height 2; the camera sees the floor, neither
- * the light nor the panel. No ray can hit a point light, so only photons find the panel's
+/* The glossy panel of test_jensen1994_caustics.c's and test_jensen1996.c's glossy
+ * caustic, written to path (16 x 16), and its truth: the path tracer's image mean
+ * (luminance) at 16,384 samples, whose standard error is 0.1%; -1 when it cannot be
+ * rendered. The caller renders path too and removes it. A point light of 1000 W at (0,
+ * 1, 0) lights a Lambertian floor (rho 0.5) directly and through a 1 x 1 panel of Ward's
+ * glossy lobe alone (rho_s 0.8, alpha 0.1) facing down at height 2; the camera sees the
+ * floor, neither the light nor the panel. No ray can hit a point light, so only photons find the panel's
  * light, as the caustic it is: about 12% of the image mean. */
 double glossy_panel(const char *path);
 
