@@ -5,10 +5,13 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
+#include "../src/base/rng.h"
 #include "../src/image/error_image.h"
 #include "../src/modes/pixel_error.h"
 #include "../src/modes/sppm2009.h"
+#include "../src/modes/sppm_error.h"
 #include "files.h"
 #include "tests.h"
 #include "truths.h"
@@ -178,6 +181,68 @@ static void test_target_error(struct check *t)
     remove(OUT ".png");
 }
 
+/* The noise bound of block (0, 0) of a 32 x 16 window (2 blocks) after BLOCK_NOISE_PASSES
+ * passes in which every pixel takes the same pass values: e_i and P_i independent
+ * normal draws (seed 5) of standard deviations 0.1 and 0.2 about 1, P'_i = P_i (no
+ * bias), the photon part divided by the covered share `share`: so the block's mean has
+ * the standard deviation sqrt(0.1^2 + (0.2 / share)^2 / n) exactly. */
+#define BLOCK_NOISE_PASSES 256
+static double block_noise_of(double share)
+{
+    struct render_settings rs;
+    memset(&rs, 0, sizeof rs);
+    rs.x1 = 32;
+    rs.y1 = 16;
+    rs.error_confidence = 0.95;
+    struct kept_window kept;
+    kept_window_init(&kept, &rs, 32, 16, SPPM_ERROR_MARGIN);
+    struct sppm_error e;
+    sppm_error_create(&e, &kept);
+    struct rng r = rng_stream(5, STREAM_CAMERA, 0, 0);
+    for (long pass = 0; pass < BLOCK_NOISE_PASSES; pass++) {
+        double u[4], z[2];
+        rng_uniforms(&r, u, 4);
+        for (int j = 0; j < 2; j++) /* Box and Muller's normal draws */
+            z[j] = sqrt(-2.0 * log(1.0 - u[2 * j])) * cos(2.0 * PI * u[2 * j + 1]);
+        struct vec3 seen = vec3(1.0 + 0.1 * z[0], 1.0 + 0.1 * z[0], 1.0 + 0.1 * z[0]);
+        struct vec3 p = vec3(1.0 + 0.2 * z[1], 1.0 + 0.2 * z[1], 1.0 + 0.2 * z[1]);
+        for (size_t i = 0; i < 32 * 16; i++)
+            sppm_error_add_pass(&e, i, pass, seen, p, p);
+        sppm_error_block_pass(&e, pass);
+    }
+    for (size_t i = 0; i < 2 * 32 * 16; i++)
+        e.shares[i] = share;
+    struct image *bias, *block;
+    struct image *error = sppm_error_image(&e, BLOCK_NOISE_PASSES, 0.95, &bias, &block);
+    double noise = image_get(block, 0, 0).x;
+    image_free(error);
+    image_free(bias);
+    image_free(block);
+    sppm_error_free(&e);
+    return noise;
+}
+
+/* truth: the block noise bound of sppm_error.h: t sigma / sqrt(n) at Student's t for the
+ *   31 degrees of freedom of 32 batches (2.040 at 0.95), sigma the pass values' own
+ *   standard deviation, known here (block_noise_of()).
+ * tolerance: the ratio of the stated bound to t sigma / sqrt(n) within [0.66, 1.40], the
+ *   central 99.8% of sqrt(chi^2_31 / 31), whose spread the estimate of sigma from 32
+ *   batch means has.
+ * catches: the shares left out of the block's spread (at half the covered share the
+ *   ratio is then 0.59), a pass's values summed into the wrong batch or block, a spread
+ *   not divided by the batches' passes. */
+static void test_block_noise_of_known_spread(struct check *t)
+{
+    double shares[2] = {1.0, 0.5};
+    for (int k = 0; k < 2; k++) {
+        double sigma = sqrt(0.01 + 0.04 / (shares[k] * shares[k]));
+        double ratio = block_noise_of(shares[k]) / (2.040 * sigma / sqrt(BLOCK_NOISE_PASSES));
+        printf("  error: 2009 block noise of a known spread, covered share %.1f: %.3f of t "
+               "sigma / sqrt(n)\n", shares[k], ratio);
+        CHECK(t, ratio >= 0.66 && ratio <= 1.40);
+    }
+}
+
 /* truth: the README's rules for --error, --confidence and --target-error in 2009 and
  *   2008, whose passes' bound is made alike (2008's own refusals: test_error_2008.c).
  * tolerance: exit status 2, the message, and no file left.
@@ -201,6 +266,7 @@ void test_error_2009(struct check *t)
 {
     RUN_TEST(t, test_bound_covers_closed_forms);
     RUN_TEST(t, test_crop_error_is_window);
+    RUN_TEST(t, test_block_noise_of_known_spread);
     RUN_TEST(t, test_target_error);
     RUN_TEST(t, test_error_refusals);
 }
