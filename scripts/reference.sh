@@ -8,7 +8,9 @@
 # For each reference, one at a time (a render takes a core; the machine may have others
 # busy):
 #   1. seed 1 with the table's options: the file kept, with its variance image in every
-#      mode that writes one (all but 2008);
+#      mode that writes one (all but 2008 and 2009), and in those two its error image and
+#      block statement (--error, --block-error), which the calibration and the
+#      consistency table read as the reference's own noise;
 #   2. seed 2, the same options otherwise: `photon compare` of the two measures the noise;
 #   3. for a reference made by a photon mode, the table's check (a second mode, seed 1),
 #      compared with the reference: the seeds show only a consistent mode's noise, the
@@ -70,10 +72,11 @@ write_suite() {
         echo "independent renders' difference has twice the variance of either's error). Blocks"
         echo "are the 16 × 16 blocks of \`photon compare --block 16\`, within 3% when their mean"
         echo "luminance is. CPU seconds are \`--stats\`' \`seconds_total\` of the seed-1 render, on"
-        echo "one core of a 2-core AMD EPYC virtual machine. For a reference made by 2008, which is"
-        echo "consistent but biased, the seeds measure only its noise: \"how checked\" also compares"
-        echo "it with a second mode, rendered once. Rows measured when their file was made, before"
-        echo "this table, say so."
+        echo "one core of a 2-core AMD EPYC virtual machine. For a reference made by a photon mode,"
+        echo "which is consistent but biased, the seeds measure only its noise: \"how checked\" also"
+        echo "compares it with a second mode, rendered once; one made by 2008 or 2009 also states its"
+        echo "error, noise and bias, in \`NAME-error.pfm\` and, block by block, \`NAME-blocks.pfm\`."
+        echo "Rows measured when their file was made, before this table, say so."
         echo
         echo "| file | scene | command | samples | CPU s | relmse between seeds | estimated relmse vs truth | how checked |"
         echo "|---|---|---|---|---|---|---|---|"
@@ -148,30 +151,30 @@ for name in $names; do
     echo
     echo "[$k/$n] $name: $scene $options, about $(field "$line" 4) CPU s a render"
 
-    # 2008 and 2009 write no variance image; every other mode does here.
+    # 2008 and 2009 write no variance image but state their error, block by block (their
+    # pixels share photons); every other mode writes one here.
     case " $options " in
-    *" --mode 2008 "* | *" --mode 2009 "*) variance= ;;
-    *) variance=yes ;;
+    *" --mode 2008 "* | *" --mode 2009 "*) statement=blocks ;;
+    *) statement=variance ;;
     esac
-    var1=
-    var2=
-    if [ -n "$variance" ]; then
-        var1="--variance $dir/1-var.pfm"
-        var2="--variance $dir/2-var.pfm"
+    if [ $statement = variance ]; then
+        kept1="--variance $dir/1-var.pfm"
+        kept2="--variance $dir/2-var.pfm"
+        noise="--ref-variance $dir/1-var.pfm --test-variance $dir/2-var.pfm"
+    else
+        kept1="--error $dir/1-error.pfm --block-error $dir/1-blocks.pfm"
+        kept2="--error $dir/2-error.pfm --block-error $dir/2-blocks.pfm"
+        noise="--ref-block-error $dir/1-blocks.pfm --test-block-error $dir/2-blocks.pfm"
     fi
 
     echo "[$k/$n] $name: seed 1"
     # shellcheck disable=SC2086 # the options are words
-    run "$dir/1.log" "$photon" $options --seed 1 --stats --progress "$scene" -o "$dir/1.pfm" $var1
+    run "$dir/1.log" "$photon" $options --seed 1 --stats --progress "$scene" -o "$dir/1.pfm" $kept1
     echo "[$k/$n] $name: seed 2"
     # shellcheck disable=SC2086
-    run "$dir/2.log" "$photon" $options --seed 2 --stats --progress "$scene" -o "$dir/2.pfm" $var2
-    if [ -n "$variance" ]; then
-        seeds=$("$photon" compare "$dir/2.pfm" "$dir/1.pfm" --block 16 \
-            --ref-variance "$dir/1-var.pfm" --test-variance "$dir/2-var.pfm")
-    else
-        seeds=$("$photon" compare "$dir/2.pfm" "$dir/1.pfm" --block 16)
-    fi
+    run "$dir/2.log" "$photon" $options --seed 2 --stats --progress "$scene" -o "$dir/2.pfm" $kept2
+    # shellcheck disable=SC2086
+    seeds=$("$photon" compare "$dir/2.pfm" "$dir/1.pfm" --block 16 $noise)
     echo "[$k/$n] $name: seed 2 against seed 1: $seeds"
 
     log=$dir/1.log
@@ -192,11 +195,13 @@ for name in $names; do
     truth=$(shown %.2g "$(awk -v r="$relmse" 'BEGIN { print r / 2 }')")
     relmse=$(shown %.2g "$relmse")
     how="seed 2: $(blocks "$seeds")"
-    if [ -n "$variance" ]; then
-        failed=$(key "$seeds" blocks_failed)
-        tested=$(key "$seeds" blocks_tested)
-        how="$how; $((tested - failed)) of $tested blocks consistent at α = 0.01 by the two"
+    failed=$(key "$seeds" blocks_failed)
+    tested=$(key "$seeds" blocks_tested)
+    how="$how; $((tested - failed)) of $tested blocks consistent at α = 0.01 by the two"
+    if [ $statement = variance ]; then
         how="$how variance images"
+    else
+        how="$how block statements"
     fi
 
     if [ "$check" != "-" ]; then
@@ -212,12 +217,21 @@ for name in $names; do
 
     # The command that makes the kept file, as a user would type it.
     command="./photon $options --seed 1 $scene -o reference/$name.pfm"
-    [ -z "$variance" ] || command="$command --variance reference/$name-var.pfm"
+    if [ $statement = variance ]; then
+        command="$command --variance reference/$name-var.pfm"
+    else
+        command="$command --error reference/$name-error.pfm --block-error reference/$name-blocks.pfm"
+    fi
     row="| \`$name.pfm\` | \`$scene\` | \`$command\` | $samples | $seconds | $relmse | $truth | $how |"
 
     # Only now do the files replace the old ones, the image last.
     mv "$dir/1.png" "reference/$name.png"
-    [ -z "$variance" ] || mv "$dir/1-var.pfm" "reference/$name-var.pfm"
+    if [ $statement = variance ]; then
+        mv "$dir/1-var.pfm" "reference/$name-var.pfm"
+    else
+        mv "$dir/1-error.pfm" "reference/$name-error.pfm"
+        mv "$dir/1-blocks.pfm" "reference/$name-blocks.pfm"
+    fi
     mv "$dir/1.pfm" "reference/$name.pfm"
     write_suite "$name" "$row"
     echo "[$k/$n] $name: done, reference/$name.pfm; estimated relmse against the truth $truth"

@@ -53,7 +53,8 @@ kept() {
 }
 
 # scene_of NAME: $scene, $reference (its PFM), $options and $noise (photon compare's
-# --ref-variance of the reference's variance image, when it has one) from NAME's line of
+# --ref-variance of the reference's variance image, or --ref-block-error of the block
+# statement of one made by 2008 or 2009, when it has one) from NAME's line of
 # reference/consistency.txt.
 scene_of() {
     line=$(line_of "$1")
@@ -61,6 +62,11 @@ scene_of() {
     reference=reference/$(field "$line" 3).pfm
     options=$(field "$line" 4)
     variance=reference/$(field "$line" 3)-var.pfm
+    blocks=reference/$(field "$line" 3)-blocks.pfm
     noise=
-    [ ! -f "$variance" ] || noise="--ref-variance $variance"
+    if [ -f "$variance" ]; then
+        noise="--ref-variance $variance"
+    elif [ -f "$blocks" ]; then
+        noise="--ref-block-error $blocks"
+    fi
 }
