@@ -15,7 +15,8 @@
 #     option still wins over it; one with its own --quality keeps it, as an option is
 #     given once), so the whole README runs in well under a minute.
 #  4. The reference suite's table (reference/suite.txt) and its files agree: every line has
-#     reference/NAME.pfm, NAME.png and, but for 2008 and 2009, NAME-var.pfm, and a
+#     reference/NAME.pfm, NAME.png and, but for 2008 and 2009, NAME-var.pfm (for those, the
+#     NAME-error.pfm and NAME-blocks.pfm their row's command names), and a
 #     measured row in reference/suite.md; every PFM in reference/ has its line; every
 #     scene the table names exists, every scenes/analytic/ scene has a reference, and
 #     every option the table gives is one photon's --help all lists. Nothing is rendered.
@@ -168,12 +169,20 @@ sed -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' "$suite" |
         for file in "$name.pfm" "$name.png"; do
             [ -f "reference/$file" ] || echo "$suite: $name has no reference/$file"
         done
+        row=$(grep "^| \`$name.pfm\` |" reference/suite.md || :)
         case " $options " in
-        *" --mode 2008 "* | *" --mode 2009 "*) ;; # 2008 and 2009 write no variance image
+        *" --mode 2008 "* | *" --mode 2009 "*) # no variance image; the statement its row names
+            for kept in error blocks; do
+                case $row in *"reference/$name-$kept.pfm"*)
+                    [ -f "reference/$name-$kept.pfm" ] ||
+                        echo "$suite: $name has no reference/$name-$kept.pfm" ;;
+                esac
+            done ;;
         *) [ -f "reference/$name-var.pfm" ] || echo "$suite: $name has no reference/$name-var.pfm" ;;
         esac
-        grep "^| \`$name.pfm\` |" reference/suite.md | grep -qv 'not rendered yet' ||
-            echo "reference/suite.md has no measured row for $name (make reference ONLY=$name)"
+        case $row in
+        "" | *"not rendered yet"*) echo "reference/suite.md has no measured row for $name (make reference ONLY=$name)" ;;
+        esac
         for option in $options $check; do
             case $option in
             --*) printf '%s\n' "$usage" | grep -qe "$option" ||
@@ -183,7 +192,10 @@ sed -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' "$suite" |
     done < docs-suite.tmp
     for file in reference/*.pfm; do
         name=$(basename "$file" .pfm)
-        grep -q "^$name|" docs-suite.tmp || grep -q "^${name%-var}|" docs-suite.tmp ||
+        made=${name%-var}
+        made=${made%-error}
+        made=${made%-blocks}
+        grep -q "^$name|" docs-suite.tmp || grep -q "^$made|" docs-suite.tmp ||
             echo "$file is in reference/ but no line of $suite makes it"
     done
     for scene in scenes/analytic/*.scene; do
