@@ -3,7 +3,8 @@
 # shipped scene of reference/consistency.txt with each mode that states a bound (--error),
 # at its defaults and at --target-error 0.02, compares each image with the scene's
 # reference (photon compare --test-error: the reference's own noise allowed for by its
-# variance image, where it has one) and writes the table into reference/suite.md (between
+# variance image or, for one made by 2008 or 2009, its block statement, where it has one)
+# and writes the table into reference/suite.md (between
 # its <!-- calibration --> markers, before the consistency table). Run by
 # `make calibration` (ONLY=NAME ... for some scenes, MODES=... for some modes) from the top
 # of the repository after ./photon is built; PHOTON=PATH runs another binary.
@@ -102,7 +103,8 @@ write_table() {
         echo "\`reference/consistency.txt\`): each mode that states a bound (\`--error\`), at its"
         echo "defaults and at \`--target-error $target\`, seed 7, against the scene's reference. A cell"
         echo "gives the share of 16 × 16 blocks whose mean lies within the stated 95% bound of the"
-        echo "reference's (its own noise allowed for where it has a variance image), the median"
+        echo "reference's (its own error allowed for where it has a variance image or, made by 2008"
+        echo "or 2009, a block statement), the median"
         echo "over blocks of bound / error (and the ratio of their rms), and the CPU seconds. An"
         echo "exact normal bound has a median ratio of 2.91 and an rms ratio of 1.96. A cell"
         echo "\"misses\" when so many blocks lie outside the bound that a true 95% bound would"

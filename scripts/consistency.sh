@@ -15,10 +15,9 @@
 #
 # A cell passes when the image mean is within 1% of the reference's and every 16 x 16
 # block's mean within 3% (photon compare --block 16). Blocks below the reference's noise
-# floor -- the standard error of the block's mean, from the reference's variance image,
-# above 1% of it (photon compare's rule, BLOCK_NOISE_FLOOR) -- are left out and named; a
-# reference made by a photon mode has no variance image, and its blocks' agreement between
-# two seeds is in the suite's table above. A mode that says at its start that it cannot
+# floor -- the standard error of the block's mean, from the reference's variance image or,
+# for one made by 2008 or 2009, its block statement (the bound over z_c), above 1% of it
+# (photon compare's rule, BLOCK_NOISE_FLOOR) -- are left out and named. A mode that says at its start that it cannot
 # render the scene (a warning on stderr) is marked so. Every cell's image, log and compare
 # line stay in build/consistency/, and the table is written again from them after each
 # scene, so that an interrupted run keeps what it measured.
@@ -111,7 +110,8 @@ write_table() {
         echo "reference. A cell passes when the image mean is within 1% of the reference's and"
         echo "every 16 × 16 block's mean within 3%; it gives the blocks within 3%, the worst block"
         echo "(its top-left pixel), the mean's ratio and the mode's CPU seconds. Blocks whose"
-        echo "reference mean has a standard error above 1% (its variance image) are left out and"
+        echo "reference mean has a standard error above 1% (its variance image, or the block"
+        echo "statement of one made by 2008 or 2009) are left out and"
         echo "named; \"warns\" marks a mode that says at its start what it cannot find there."
         echo
         echo "<!-- consistency defaults -->"
