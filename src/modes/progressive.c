@@ -13,9 +13,11 @@
  * an error image no time limit ends it before ERROR_MIN_SPP passes, which the image needs.
  *
  * The photon tracing pass is the same in both modes: ps->photons_per_pass photons with
- * the shared tracer, each stored photon handed to the mode at once (no photon is kept
- * after it has been added); photon i of pass p draws from rng_stream(seed,
- * STREAM_PHOTON, p, i), so a pass's photons depend on nothing but the seed and p.
+ * the shared tracer, the stored photons handed to the mode in the order of where they
+ * lie (photon/ordered_sink.h: the hit points a photon reads are then in the cache from
+ * the photon before), all of them before the pass ends; photon i of pass p draws from
+ * rng_stream(seed, STREAM_PHOTON, p, i), so a pass's photons depend on nothing but the
+ * seed and p.
  */
 #include "progressive.h"
 
@@ -24,6 +26,7 @@
 #include <time.h>
 
 #include "../base/progress.h"
+#include "../photon/ordered_sink.h"
 #include "../photon/trace.h"
 #include "pixel_error.h"
 
@@ -31,8 +34,8 @@
  * after a diffuse bounce, and caustics (L S+ D), which no shadow ray sees the light by. */
 #define PHOTON_AFTER_FIRST_BOUNCE (PHOTON_CAUSTIC | PHOTON_INDIRECT)
 
-/* The tracer's sink: the mode adds each stored photon to its hit points; the tracer
- * goes on. */
+/* Where the ordered photons go: the mode adds each to its hit points; the tracer goes
+ * on. */
 static int hand_to_mode(void *context, const struct photon_event *photon)
 {
     const struct progressive_steps *steps = context;
@@ -41,10 +44,10 @@ static int hand_to_mode(void *context, const struct photon_event *photon)
 }
 
 /* Photon tracing pass `pass`: with ps->direct_light_samples the photons after their first
- * bounce (the light samples bring the first), else every photon, the papers' way. Returns
- * the photons emitted. */
-static size_t photon_tracing_pass(const struct progressive_steps *steps,
-                                  const struct scene *scene, const struct render_settings *rs,
+ * bounce (the light samples bring the first), else every photon, the papers' way, into
+ * in_order, which hands them all on before the pass ends. Returns the photons emitted. */
+static size_t photon_tracing_pass(struct ordered_sink *in_order, const struct scene *scene,
+                                  const struct render_settings *rs,
                                   const struct progressive_settings *ps, long pass,
                                   unsigned long long *photon_rays)
 {
@@ -57,8 +60,9 @@ static size_t photon_tracing_pass(const struct progressive_steps *steps,
     ts.max_depth = rs->max_depth;
     ts.targets = NULL;
     ts.projection = NULL;
-    struct photon_sink sink = {hand_to_mode, (void *)steps};
-    trace_photons_into(scene, &ts, &sink, photon_rays); /* the sink never stops it */
+    struct photon_sink sink = ordered_sink_of(in_order);
+    trace_photons_into(scene, &ts, &sink, photon_rays); /* the sinks never stop it */
+    ordered_sink_flush(in_order);
     return ts.n_emit;
 }
 
@@ -99,6 +103,9 @@ struct progressive_run progressive_passes(const struct progressive_steps *steps,
     clock_t start = clock();
     double excluded = 0.0;
     struct progress line;
+    struct ordered_sink in_order;
+    struct photon_sink to_mode = {hand_to_mode, (void *)steps};
+    ordered_sink_create(&in_order, geometry_bounds(scene->geometry), to_mode);
     progress_begin(&line, rs->progress ? stderr : NULL, "passes",
                    steps->target_reached != NULL ? 0.0 : (double)ps->passes, time(NULL));
     long first_passes = rs->error_confidence > 0 ? ERROR_MIN_SPP : 1, judged = 0;
@@ -108,7 +115,7 @@ struct progressive_run progressive_passes(const struct progressive_steps *steps,
         long pass = run.passes;
         if (steps->before_photons != NULL)
             steps->before_photons(steps->mode, pass);
-        run.photons_emitted += photon_tracing_pass(steps, scene, rs, ps, pass, photon_rays);
+        run.photons_emitted += photon_tracing_pass(&in_order, scene, rs, ps, pass, photon_rays);
         if (steps->after_photons != NULL)
             steps->after_photons(steps->mode, pass);
         steps->update(steps->mode, pass);
@@ -134,5 +141,6 @@ struct progressive_run progressive_passes(const struct progressive_steps *steps,
     if (progress_end(&line, (double)run.passes, time(NULL)))
         show_progress(steps, rs, &line, run.passes, ps->passes, (double)run.photons_emitted);
     steps->evaluate(steps->mode, (double)run.photons_emitted, image);
+    ordered_sink_free(&in_order);
     return run;
 }
