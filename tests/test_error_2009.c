@@ -207,8 +207,8 @@ static double block_noise_of(double share)
         struct vec3 seen = vec3(1.0 + 0.1 * z[0], 1.0 + 0.1 * z[0], 1.0 + 0.1 * z[0]);
         struct vec3 p = vec3(1.0 + 0.2 * z[1], 1.0 + 0.2 * z[1], 1.0 + 0.2 * z[1]);
         for (size_t i = 0; i < 32 * 16; i++)
-            sppm_error_add_pass(&e, i, pass, seen, p, p);
-        sppm_error_block_pass(&e, pass);
+            sppm_error_add_pass(&e, i, seen, p, p);
+        sppm_error_pass_done(&e, pass);
     }
     for (size_t i = 0; i < 2 * 32 * 16; i++)
         e.shares[i] = share;

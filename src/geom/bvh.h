@@ -37,7 +37,8 @@
 #define BVH_MAX_LEAF 4
 /* The longest path: SAH splits stop at binary depth 32, then halving the index range
  * reaches a leaf within 28 more levels for MAX_PRIMITIVES = 2^28 items, 61 in all; a
- * node spends at least one binary split, so 64 bounds the nodes on a path too. */
+ * node spends at least one binary split (the root over groups perhaps none: 62 nodes), so
+ * 64 bounds the nodes on a path too. */
 #define BVH_MAX_DEPTH 64
 
 /* 256 bytes, four cache lines. Bounds in float to keep the node small, rounded outward (lo
@@ -69,6 +70,16 @@ struct bvh {
 /* Builds the BVH over bounds[0 .. n-1] (finite, lo <= hi): binned SAH on the box centres.
  * n < 2^28 (MAX_PRIMITIVES). Never returns NULL (allocation failure is fatal). */
 struct bvh *bvh_build(const struct aabb *bounds, size_t n);
+
+/* The same over items in n_groups (1 .. BVH_WIDTH) groups of consecutive indices, group g
+ * being [group_ends[g - 1], group_ends[g]) (group_ends[-1] taken as 0, the last end n;
+ * groups may be empty), such that no leaf mixes groups and each group keeps its own
+ * positions: items[k] lies in the same group as k. The root's slots start as one a group,
+ * and the groups are split from there, so the separation costs no level of the tree.
+ * geometry.c groups its primitives by kind: a leaf's position then says its kind and
+ * index, with no table of references to read. */
+struct bvh *bvh_build_groups(const struct aabb *bounds, size_t n, const size_t *group_ends,
+                             int n_groups);
 void bvh_free(struct bvh *bvh); /* NULL is a no-op */
 size_t bvh_bytes(const struct bvh *bvh);
 

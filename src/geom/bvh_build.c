@@ -339,14 +339,24 @@ static void fill_slots(struct builder *b, struct slots *s)
             s->is_leaf[i] = 1;
 }
 
-/* Makes nodes[index] the node over the range; its interior children go to the next free
- * slots of nodes[], side by side, and are made in turn. */
-static void build_node(struct builder *b, size_t index, const struct range *r)
+static void build_node(struct builder *b, size_t index, struct slots *first_slots);
+
+/* Makes nodes[index] the node over the range. */
+static void build_range(struct builder *b, size_t index, const struct range *r)
 {
     struct slots s;
     s.range[0] = *r;
     s.is_leaf[0] = 0;
     s.n = 1;
+    build_node(b, index, &s);
+}
+
+/* Makes nodes[index] the node whose slots start as the ranges of first_slots and are split
+ * further; its interior children go to the next free slots of nodes[], side by side, and
+ * are made in turn. */
+static void build_node(struct builder *b, size_t index, struct slots *first_slots)
+{
+    struct slots s = *first_slots;
     fill_slots(b, &s);
     int order[BVH_WIDTH], n_nodes = 0;          /* interior slots first, then leaves */
     for (int i = 0; i < s.n; i++)
@@ -374,12 +384,19 @@ static void build_node(struct builder *b, size_t index, const struct range *r)
     }
     size_t offset = node->offset;
     for (int i = 0; i < n_nodes; i++)
-        build_node(b, offset + (size_t)i, &s.range[order[i]]);
+        build_range(b, offset + (size_t)i, &s.range[order[i]]);
 }
 
 struct bvh *bvh_build(const struct aabb *bounds, size_t n)
 {
+    return bvh_build_groups(bounds, n, &n, 1);
+}
+
+struct bvh *bvh_build_groups(const struct aabb *bounds, size_t n, const size_t *group_ends,
+                             int n_groups)
+{
     assert(n < ((size_t)1 << 28));   /* bvh.c packs positions in items[] in 28 bits */
+    assert(n_groups >= 1 && n_groups <= BVH_WIDTH && group_ends[n_groups - 1] == n);
     struct bvh *bvh = xmalloc(1, sizeof *bvh, "BVH");
     struct builder b;
     b.bounds = bounds;
@@ -392,9 +409,18 @@ struct bvh *bvh_build(const struct aabb *bounds, size_t n)
         b.centroids[i] = vec3_add(vec3_scale(bounds[i].lo, 0.5), vec3_scale(bounds[i].hi, 0.5));
         b.items[i] = (uint32_t)i;
     }
-    if (n > 0) {
-        struct range all = make_range(&b, 0, n, 0);
-        build_node(&b, 0, &all);
+    if (n > 0) {   /* the root's first slots: one range a group that has items */
+        struct slots s;
+        s.n = 0;
+        for (int g = 0; g < n_groups; g++) {
+            size_t first = g > 0 ? group_ends[g - 1] : 0;
+            assert(first <= group_ends[g]);
+            if (group_ends[g] == first)
+                continue;
+            s.range[s.n] = make_range(&b, first, group_ends[g] - first, 0);
+            s.is_leaf[s.n++] = 0;
+        }
+        build_node(&b, 0, &s);
     }
     xfree(b.centroids);
     bvh->nodes = xrealloc(b.nodes, b.n_nodes, sizeof *b.nodes, "BVH nodes");

@@ -5,15 +5,20 @@
  * each record carrying its id and material (shapes report their own); the triangles share
  * their corners through struct mesh (mesh.h). geometry_build() builds the BVH over every
  * primitive that can be hit (degenerate ones, which have no area, are left out) and then
- *   (1) refs[k] names the BVH's k-th item in leaf order as (kind << REF_KIND_SHIFT) | index;
+ *   (1) the BVH's items are grouped by kind (bvh_build_groups()): positions
+ *       kind_ends[kind - 1] .. kind_ends[kind] - 1 of its leaf order are that kind's (the
+ *       first kind's start at 0), so no leaf mixes kinds;
  *   (2) each kind's array is permuted into that leaf order, so a leaf reads consecutive
- *       records, and the records the BVH left out follow at the end of their array;
+ *       records, and the records the BVH left out follow at the end of their array: the
+ *       BVH's k-th item is record k - kind_ends[kind - 1] of its kind. A leaf test thus
+ *       goes from the node straight to its records, where a table of references between
+ *       them would cost another wait on memory a leaf on large scenes (tests/bench);
  *   (3) id_refs[id] names primitive id's record the same way, whether or not the BVH holds
  *       it, at every moment: each add appends its entry, and geometry_build() rewrites them
  *       all once (2) has moved the records (geometry_primitive_bounds() reads it), and fits
  *       id_refs[] and the permuted arrays to their counts.
- * A leaf test dispatches on the kind with a switch: spheres, triangles and quads by direct
- * calls, shapes through their struct shape_ops. During traversal a primitive reports only
+ * A leaf test dispatches on its kind with a switch: spheres, triangles and quads by
+ * direct calls, shapes through their struct shape_ops. During traversal a primitive reports only
  * t and its surface parameters; the shading record of the closest one is completed once,
  * at the end (complete_hit).
  *
@@ -60,7 +65,7 @@ struct geometry {
     size_t n_prims;               /* ids handed out: 0 .. n_prims - 1                */
     uint32_t *id_refs;            /* owned: invariant (3); n_prims used of cap_id_refs */
     size_t cap_id_refs;
-    uint32_t *refs;               /* owned: invariant (1); NULL before geometry_build() */
+    size_t kind_ends[N_KINDS];    /* invariant (1); zero before geometry_build()      */
     struct bvh *bvh;              /* owned; NULL before geometry_build()             */
 };
 
@@ -82,7 +87,6 @@ struct geometry *geometry_create(void)
     g->shapes = NULL;
     g->normals = NULL;
     g->id_refs = NULL;
-    g->refs = NULL;
     g->bvh = NULL;
     return g;
 }
@@ -99,7 +103,6 @@ void geometry_free(struct geometry *g)
     xfree(g->shapes);
     xfree(g->normals);
     xfree(g->id_refs);
-    xfree(g->refs);
     bvh_free(g->bvh);
     xfree(g);
 }
@@ -287,32 +290,41 @@ static void index_ids(struct geometry *g)
         g->id_refs[g->shapes[i].id] = make_ref(KIND_SHAPE, i);
 }
 
+/* The first BVH position of kind's items (invariant (1)). */
+static size_t kind_start(const struct geometry *g, enum kind kind)
+{
+    return kind > 0 ? g->kind_ends[kind - 1] : 0;
+}
+
 void geometry_build(struct geometry *g)
 {
     bvh_free(g->bvh);
-    xfree(g->refs);
     size_t n_max = g->n_prims;
     struct aabb *bounds = xmalloc(n_max, sizeof *bounds, "primitive bounds");
     uint32_t *item_refs = xmalloc(n_max, sizeof *item_refs, "primitive refs");
     size_t n = 0;
     for (int kind = 0; kind < N_KINDS; kind++)
-        n = collect_kind(g, (enum kind)kind, bounds, item_refs, n);
-    g->bvh = bvh_build(bounds, n);
+        g->kind_ends[kind] = n = collect_kind(g, (enum kind)kind, bounds, item_refs, n);
+    g->bvh = bvh_build_groups(bounds, n, g->kind_ends, N_KINDS);
     xfree(bounds);
-    g->refs = xmalloc(n, sizeof *g->refs, "BVH refs");
+    uint32_t *leaf_refs = xmalloc(n, sizeof *leaf_refs, "BVH refs");
     for (size_t k = 0; k < n; k++)
-        g->refs[k] = item_refs[g->bvh->items[k]];
+        leaf_refs[k] = item_refs[g->bvh->items[k]];
     xfree(item_refs);
     /* The permuted arrays are exactly full: later adds grow them again. */
-    g->spheres = permute_kind(g, KIND_SPHERE, g->refs, n);
+    g->spheres = permute_kind(g, KIND_SPHERE, leaf_refs, n);
     g->cap_spheres = g->n_spheres;
-    g->mesh.triangles = permute_kind(g, KIND_TRIANGLE, g->refs, n);
+    g->mesh.triangles = permute_kind(g, KIND_TRIANGLE, leaf_refs, n);
     g->mesh.cap_triangles = g->mesh.n_triangles;
     mesh_finish(&g->mesh);
-    g->quads = permute_kind(g, KIND_QUAD, g->refs, n);
+    g->quads = permute_kind(g, KIND_QUAD, leaf_refs, n);
     g->cap_quads = g->n_quads;
-    g->shapes = permute_kind(g, KIND_SHAPE, g->refs, n);
+    g->shapes = permute_kind(g, KIND_SHAPE, leaf_refs, n);
     g->cap_shapes = g->n_shapes;
+    for (int kind = 0; kind < N_KINDS; kind++)   /* invariant (2), which the queries assume */
+        for (size_t k = kind_start(g, (enum kind)kind); k < g->kind_ends[kind]; k++)
+            assert(leaf_refs[k] == make_ref((enum kind)kind, k - kind_start(g, (enum kind)kind)));
+    xfree(leaf_refs);
     index_ids(g);
     g->id_refs = xrealloc(g->id_refs, g->n_prims, sizeof *g->id_refs, "primitive ids");
     g->cap_id_refs = g->n_prims;
@@ -320,11 +332,11 @@ void geometry_build(struct geometry *g)
 
 /* ---- queries ---- */
 
-static int intersect_ref(const struct query *q, uint32_t ref, double tmax, struct hit *hit)
+static int intersect_record(const struct query *q, enum kind kind, size_t index, double tmax,
+                            struct hit *hit)
 {
     const struct geometry *g = q->g;
-    size_t index = ref & REF_INDEX_MASK;
-    switch ((enum kind)(ref >> REF_KIND_SHIFT)) {
+    switch (kind) {
     case KIND_SPHERE:
         return sphere_intersect(&g->spheres[index], q->ray, tmax, hit);
     case KIND_TRIANGLE:
@@ -336,15 +348,27 @@ static int intersect_ref(const struct query *q, uint32_t ref, double tmax, struc
     }
 }
 
+/* The kind of the leaf starting at BVH position first, and in *index its first record
+ * (invariants (1) and (2): a leaf lies within its kind's positions). */
+static enum kind leaf_kind(const struct geometry *g, size_t first, size_t *index)
+{
+    int kind = 0;
+    while (first >= g->kind_ends[kind])
+        kind++;
+    *index = first - kind_start(g, (enum kind)kind);
+    return (enum kind)kind;
+}
+
 static int closest_in_leaf(void *ctx, size_t first, size_t count, double *tmax)
 {
     struct query *q = ctx;
+    size_t index;
+    enum kind kind = leaf_kind(q->g, first, &index);
     int found = 0;
-    for (size_t k = first; k < first + count; k++) {
-        uint32_t ref = q->g->refs[k];
-        if (intersect_ref(q, ref, *tmax, &q->hit)) {
+    for (size_t i = index; i < index + count; i++) {
+        if (intersect_record(q, kind, i, *tmax, &q->hit)) {
             *tmax = q->hit.t;
-            q->ref = ref;
+            q->ref = make_ref(kind, i);
             found = 1;
         }
     }
@@ -354,14 +378,14 @@ static int closest_in_leaf(void *ctx, size_t first, size_t count, double *tmax)
 static int any_in_leaf(void *ctx, size_t first, size_t count, double tmax)
 {
     struct query *q = ctx;
-    for (size_t k = first; k < first + count; k++) {
-        uint32_t ref = q->g->refs[k];
-        size_t index = ref & REF_INDEX_MASK;
-        if ((enum kind)(ref >> REF_KIND_SHIFT) == KIND_SHAPE) {
-            const struct shape *s = &q->g->shapes[index];
+    size_t index;
+    enum kind kind = leaf_kind(q->g, first, &index);
+    for (size_t i = index; i < index + count; i++) {
+        if (kind == KIND_SHAPE) {
+            const struct shape *s = &q->g->shapes[i];
             if (s->ops->occluded(s->data, q->ray, tmax))
                 return 1;
-        } else if (intersect_ref(q, ref, tmax, &q->hit)) {
+        } else if (intersect_record(q, kind, i, tmax, &q->hit)) {
             return 1;
         }
     }
@@ -445,7 +469,7 @@ size_t geometry_bytes(const struct geometry *g)
                    + g->cap_shapes * sizeof *g->shapes + g->cap_normals * sizeof *g->normals
                    + g->cap_id_refs * sizeof *g->id_refs;
     if (g->bvh != NULL)
-        bytes += bvh_bytes(g->bvh) + g->bvh->n_items * sizeof *g->refs;
+        bytes += bvh_bytes(g->bvh);
     for (size_t i = 0; i < g->n_shapes; i++)
         bytes += g->shapes[i].ops->bytes(g->shapes[i].data);
     return bytes;

@@ -44,18 +44,19 @@ struct sheared_ray shear_ray(struct ray ray)
     s.origin[0] = ray.origin.x;
     s.origin[1] = ray.origin.y;
     s.origin[2] = ray.origin.z;
-    s.kz = 0;
-    if (fabs(d[1]) > fabs(d[s.kz]))
-        s.kz = 1;
-    if (fabs(d[2]) > fabs(d[s.kz]))
-        s.kz = 2;
-    s.kx = (s.kz + 1) % 3;
-    s.ky = (s.kx + 1) % 3;
-    if (d[s.kz] < 0) {   /* a mirrored frame would flip every edge function's sign */
-        int swap = s.kx;
-        s.kx = s.ky;
-        s.ky = swap;
-    }
+    /* Selections, not branches: which axis is largest, and the sign along it, are as
+     * unpredictable as a scattered ray's direction, and a mispredicted branch costs more
+     * than the rest of this function. */
+    static const int next_axis[3] = {1, 2, 0};
+    double ax = fabs(d[0]), ay = fabs(d[1]), az = fabs(d[2]);
+    int kz = ay > ax ? 1 : 0;
+    double amax = ay > ax ? ay : ax;
+    kz = az > amax ? 2 : kz;
+    int kx = next_axis[kz], ky = next_axis[kx];
+    int mirrored = d[kz] < 0;   /* a mirrored frame would flip every edge function's sign */
+    s.kz = kz;
+    s.kx = mirrored ? ky : kx;
+    s.ky = mirrored ? kx : ky;
     s.sz = 1.0 / d[s.kz];   /* d[kz] != 0: the largest |component| of a non-zero direction */
     s.sx = d[s.kx] * s.sz;
     s.sy = d[s.ky] * s.sz;

@@ -45,7 +45,7 @@ void photons_error_sample_taken(struct photons_error *pe, size_t i, struct vec3 
         add_batches(&pe->pixels[i], vec3(1.0, 1.0, 1.0), &pe->sample);
     double v[3] = {value.x, value.y, value.z};
     error_batches_add(pe->sample_batches + 3 * ERROR_BATCHES * i, ERROR_BATCHES,
-                      pe->samples[i], v);
+                      pe->samples[i], v, 3);
     pe->samples[i]++;
     memset(&pe->sample, 0, sizeof pe->sample);
 }
@@ -82,7 +82,7 @@ static void add_pixel_pass(const struct photons_error *pe, struct sppm_error *e,
         photons = vec3_add(photons, sum->disc[j]);
     struct vec3 seen = vec3_sub(mean, vec3_scale(photons, per_sample));
     double scale = PHOTON_BATCHES * per_sample;
-    sppm_error_add_pass(e, i, b, vec3_add(seen, sample_deviation(pe, i, b)),
+    sppm_error_add_pass(e, i, vec3_add(seen, sample_deviation(pe, i, b)),
                         vec3_scale(sum->disc[b], scale), vec3_scale(sum->inner[b], scale));
 }
 
@@ -97,7 +97,7 @@ void photons_error_result(const struct photons_error *pe, const struct image *ke
             for (int x = 0; x < k->width; x++)
                 add_pixel_pass(pe, &e, (size_t)y * (size_t)k->width + (size_t)x, b,
                                image_get(kept_image, x, y));
-        sppm_error_block_pass(&e, b);
+        sppm_error_pass_done(&e, b);
     }
     sppm_error_result(&e, k, PHOTON_BATCHES, result);
     sppm_error_free(&e);

@@ -18,18 +18,20 @@ int error_batch_size(int count, int n)
     return m;
 }
 
-void error_batches_add(double *batches, int count, int n, const double v[3])
+void error_batches_add(double *batches, int count, int n, const double *v, size_t width)
 {
     int m = error_batch_size(count, n + 1);
     if (m > 1 && n == count * (m / 2)) { /* every batch full: pairs become one */
-        for (int k = 0; k < count; k++)
-            for (int c = 0; c < 3; c++)
-                batches[3 * k + c] = k < count / 2 ? batches[6 * k + c] +
-                                                                 batches[6 * k + 3 + c]
-                                                           : 0.0;
+        for (size_t k = 0; k < (size_t)count; k++)
+            for (size_t c = 0; c < width; c++)
+                batches[width * k + c] = k < (size_t)count / 2
+                                             ? batches[2 * width * k + c] +
+                                                   batches[2 * width * k + width + c]
+                                             : 0.0;
     }
-    for (int c = 0; c < 3; c++)
-        batches[3 * (n / m) + c] += v[c];
+    double *batch = batches + width * (size_t)(n / m);
+    for (size_t c = 0; c < width; c++)
+        batch[c] += v[c];
 }
 
 /* Pixel i's spread in channel c from its k = n / m full batches of m samples: the sum of

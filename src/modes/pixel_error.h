@@ -61,10 +61,13 @@
  * count m >= n (n / m of the batches are full). A pixel's batches are ERROR_BATCHES. */
 int error_batch_size(int count, int n);
 
-/* Adds sample v (per channel) to 3 `count` batch sums (zero before the first sample), after
- * the n taken: the batches of m samples (above) in sample order, m doubling, and pairs of
- * batches becoming one, whenever every batch is full. */
-void error_batches_add(double *batches, int count, int n, const double v[3]);
+/* Adds sample v (`width` values: 3, one per channel) to `count` batch sums of `width`
+ * values each (zero before the first sample), after the n taken: the batches of m samples
+ * (above) in sample order, m doubling, and pairs of batches becoming one, whenever every
+ * batch is full. Many pixels whose samples are taken together (2009's passes) are one
+ * sample of as many values: their batches then lie batch by batch, each a stretch of
+ * memory that an add reads from start to end. */
+void error_batches_add(double *batches, int count, int n, const double *v, size_t width);
 
 /* The sums of a window of pixels: width x height, row-major, 3 per pixel for sum (the
  * samples' sum per channel) and 3 ERROR_BATCHES for batches (error_batches_add()), n the

@@ -55,11 +55,11 @@ void ppm_error_add_pass(struct ppm_error *e, const struct hit_point_tree *tree,
     memset(e->inner, 0, 2 * tree->n * sizeof *e->inner);
     for (size_t i = 0; i < n; i++) { /* e_i + d_i: what the pass's eye ray saw and took */
         struct vec3 now = seen_so_far(emission_seen, direct, i);
-        sppm_error_add_pass(&e->values, i, e->passes, vec3_sub(now, e->values.before[i]),
+        sppm_error_add_pass(&e->values, i, vec3_sub(now, e->values.before[i]),
                             e->y[i], e->y_inner[i]);
         e->values.before[i] = now;
     }
-    sppm_error_block_pass(&e->values, e->passes);
+    sppm_error_pass_done(&e->values, e->passes);
     e->passes++;
 }
 

@@ -202,7 +202,7 @@ static void add_sample(struct accumulator *acc, size_t i, struct vec3 l)
     }
     if (acc->batches != NULL)
         error_batches_add(acc->batches + (size_t)3 * ERROR_BATCHES * i, ERROR_BATCHES,
-                          acc->n[i], v);
+                          acc->n[i], v, 3);
     if (acc->lum != NULL) {
         /* Welford's update of the luminance's mean m and M2 = sum of (y - m)^2: it does not
          * cancel as sum y^2 - n m^2 would, and leaves M2 exactly 0 while all y are equal. */

@@ -142,9 +142,8 @@ struct sppm {
                                            the plane its radius was fitted on             */
     int want_error;                     /* rs->error_confidence > 0                        */
     struct sppm_error error;            /* with want_error, and with it: ...               */
-    size_t *point;                      /* owned: per window pixel, its hit point this pass
-                                           as made (points[tree.place[k]] is the k-th made)
-                                           or NO_POINT                                     */
+    struct vec3 *pass_photons;          /* owned: 2 per window pixel, this pass's P_i and
+                                           P'_i (add_pass_values())                        */
     struct vec3 *inner_tau;             /* owned: per window pixel, this pass's f_r Phi' of
                                            the photons within R / sqrt(2) of its hit point */
     uint32_t *inner_probes;             /* owned: 2 per window pixel, the disc probes that
@@ -152,7 +151,6 @@ struct sppm {
                                            found the surface                               */
 };
 
-#define NO_POINT ((size_t)-1) /* a pixel whose eye path made no hit point this pass */
 
 /* ---- the distributed ray tracing pass ----------------------------------------------- */
 
@@ -202,10 +200,8 @@ static void store_hit_point(struct sppm *sppm, size_t pixel, const struct surfac
                                             sppm->counters, s, distance);
     if (sppm->ps->disc_coverage && common->fit_radius && common->radius <= 0)
         fit_to_surface(sppm, pixel, s, distance); /* else no fit could shorten R */
-    if (sppm->want_error) {
-        sppm->point[pixel] = sppm->n_points;
+    if (sppm->want_error)
         sppm->inner_tau[pixel] = vec3_zero();
-    }
     struct hit_point *hp = &sppm->points[sppm->n_points++];
     hp->x = s->p;
     hp->n = s->ng;
@@ -407,10 +403,8 @@ static void distributed_ray_tracing_pass(void *context, long pass)
     const struct render_settings *rs = sppm->rs;
     clock_t start = clock();
     sppm->n_points = 0;
-    for (size_t i = 0; sppm->want_error && i < sppm->n_pixels; i++) {
+    for (size_t i = 0; sppm->want_error && i < sppm->n_pixels; i++)
         sppm->error.before[i] = seen_so_far(sppm, i);
-        sppm->point[i] = NO_POINT;
-    }
     for (int y = rs->y0; y < rs->y1; y++)
         for (int x = rs->x0; x < rs->x1; x++) {
             size_t pixel = (size_t)(y - rs->y0) * (size_t)sppm->kept.width +
@@ -484,17 +478,19 @@ static double inner_share(const struct sppm *sppm, size_t i)
 static void add_pass_values(struct sppm *sppm, long pass)
 {
     struct sppm_error *e = &sppm->error;
+    struct vec3 *photons = sppm->pass_photons; /* zero for a pixel without a hit point */
+    memset(photons, 0, 2 * sppm->n_pixels * sizeof *photons);
+    for (size_t k = 0; k < sppm->n_points; k++) { /* in the order they lie in memory */
+        const struct hit_point *hp = &sppm->points[k];
+        sppm_error_photons(hp->weight, hp->global.radius, hp->global.tau,
+                           sppm->inner_tau[hp->pixel], sppm->photons_per_pass,
+                           &photons[2 * hp->pixel], &photons[2 * hp->pixel + 1]);
+    }
     for (size_t i = 0; i < sppm->n_pixels; i++) {
         struct vec3 seen = vec3_sub(seen_so_far(sppm, i), e->before[i]);
-        struct vec3 p = vec3_zero(), p_inner = vec3_zero();
-        if (sppm->point[i] != NO_POINT) {
-            const struct hit_point *hp = &sppm->points[sppm->tree.place[sppm->point[i]]];
-            sppm_error_photons(hp->weight, hp->global.radius, hp->global.tau,
-                               sppm->inner_tau[i], sppm->photons_per_pass, &p, &p_inner);
-        }
-        sppm_error_add_pass(e, i, pass, seen, p, p_inner);
+        sppm_error_add_pass(e, i, seen, photons[2 * i], photons[2 * i + 1]);
     }
-    sppm_error_block_pass(e, pass);
+    sppm_error_pass_done(e, pass);
 }
 
 /* Before the error image is made: each pixel's covered shares as the image has them,
@@ -612,7 +608,8 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
         ppm_direct_create(&sppm.direct, scene, sppm.rs);
     if (sppm.want_error) {
         sppm_error_create(&sppm.error, &sppm.kept);
-        sppm.point = xmalloc(sppm.n_pixels, sizeof *sppm.point, "sppm pass points");
+        sppm.pass_photons = xmalloc(2 * sppm.n_pixels, sizeof *sppm.pass_photons,
+                                    "sppm pass values");
         sppm.inner_tau = xcalloc(sppm.n_pixels, sizeof *sppm.inner_tau, "sppm inner flux");
         sppm.inner_probes = xcalloc(2 * sppm.n_pixels, sizeof *sppm.inner_probes,
                                     "sppm inner probes");
@@ -633,7 +630,7 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
         sppm_error_result(&sppm.error, &sppm.kept, sppm.passes_done, &result);
         result.seconds += cpu_seconds(start);
         sppm_error_free(&sppm.error);
-        xfree(sppm.point);
+        xfree(sppm.pass_photons);
         xfree(sppm.inner_tau);
         xfree(sppm.inner_probes);
     }

@@ -59,9 +59,7 @@ void sppm_error_create(struct sppm_error *e, const struct kept_window *kept)
     e->wx0 = kept->asked->x0;
     e->wy0 = kept->asked->y0;
     error_block_grid(e->wx0, e->wy0, e->x1 - e->x0, e->y1 - e->y0, &e->columns, &e->rows);
-    e->seen_batches = xcalloc(PIXEL_BATCHES * n, sizeof *e->seen_batches, "sppm batches");
-    e->photon_batches = xcalloc(PIXEL_BATCHES * n, sizeof *e->photon_batches, "sppm batches");
-    e->inner_batches = xcalloc(PIXEL_BATCHES * n, sizeof *e->inner_batches, "sppm batches");
+    e->pass_batches = xcalloc(ERROR_BATCHES * 9 * n, sizeof *e->pass_batches, "sppm batches");
     e->shares = xmalloc(2 * n, sizeof *e->shares, "sppm covered shares");
     for (size_t i = 0; i < 2 * n; i++)
         e->shares[i] = 1.0;
@@ -72,19 +70,13 @@ void sppm_error_create(struct sppm_error *e, const struct kept_window *kept)
                                sizeof *e->block_batches, "sppm block batches");
 }
 
-void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 seen,
-                         struct vec3 p, struct vec3 p_inner)
+void sppm_error_add_pass(struct sppm_error *e, size_t i, struct vec3 seen, struct vec3 p,
+                         struct vec3 p_inner)
 {
-    double v[3] = {seen.x, seen.y, seen.z}, w[3] = {p.x, p.y, p.z};
-    double w_inner[3] = {p_inner.x, p_inner.y, p_inner.z};
-    error_batches_add(e->seen_batches + PIXEL_BATCHES * i, ERROR_BATCHES, (int)pass, v);
-    error_batches_add(e->photon_batches + PIXEL_BATCHES * i, ERROR_BATCHES, (int)pass, w);
-    error_batches_add(e->inner_batches + PIXEL_BATCHES * i, ERROR_BATCHES, (int)pass, w_inner);
-    for (int c = 0; c < 3; c++) {
-        e->pass_values[9 * i + c] = v[c];
-        e->pass_values[9 * i + 3 + c] = w[c];
-        e->pass_values[9 * i + 6 + c] = w_inner[c];
-    }
+    double *v = e->pass_values + 9 * i;
+    v[0] = seen.x, v[1] = seen.y, v[2] = seen.z;
+    v[3] = p.x, v[4] = p.y, v[5] = p.z;
+    v[6] = p_inner.x, v[7] = p_inner.y, v[8] = p_inner.z;
 }
 
 /* The batches of the pass values y_i = e_i + P_i / c and of their biases b_i = 2 (y_i -
@@ -97,12 +89,14 @@ static void pass_value_batches(const struct sppm_error *e, int shared, double *v
     for (size_t i = 0; i < n; i++) {
         double c = shared ? e->shares[2 * i] : 1.0;
         double c_inner = shared ? e->shares[2 * i + 1] : 1.0;
-        for (size_t k = 0; k < PIXEL_BATCHES; k++) {
-            size_t j = PIXEL_BATCHES * i + k;
-            double p = e->photon_batches[j] / c;
-            values[j] = e->seen_batches[j] + p;
-            biases[j] = 2.0 * (p - e->inner_batches[j] / c_inner);
-        }
+        for (size_t b = 0; b < ERROR_BATCHES; b++)
+            for (size_t k = 0; k < 3; k++) {
+                const double *batch = e->pass_batches + 9 * (n * b + i); /* e, P, P' */
+                size_t j = PIXEL_BATCHES * i + 3 * b + k;
+                double p = batch[3 + k] / c;
+                values[j] = batch[k] + p;
+                biases[j] = 2.0 * (p - batch[6 + k] / c_inner);
+            }
     }
 }
 
@@ -120,30 +114,46 @@ void sppm_error_photons(struct vec3 weight, double radius, struct vec3 tau,
     }
 }
 
+/* The sum over the pixels of `line` within SPPM_BIAS_RADIUS of pixel `at` along it (the
+ * line's `length` pixels, `step` pixels apart, `stride` doubles each) into sum; returns
+ * how many there are. */
+static int sum_along(const double *line, int length, size_t step, int at, size_t stride,
+                     double *sum)
+{
+    int from = at > SPPM_BIAS_RADIUS ? at - SPPM_BIAS_RADIUS : 0;
+    int to = at + SPPM_BIAS_RADIUS < length ? at + SPPM_BIAS_RADIUS : length - 1;
+    memset(sum, 0, stride * sizeof *sum);
+    for (int u = from; u <= to; u++)
+        for (size_t k = 0; k < stride; k++)
+            sum[k] += line[step * stride * (size_t)u + k];
+    return to - from + 1;
+}
+
 /* Each pixel's b (biases, `stride` doubles a pixel: its batches, or one pass's value)
  * averaged over the pixels within SPPM_BIAS_RADIUS of it, inside the window, into
- * smoothed. */
+ * smoothed: the square is a row's pixels times a column's, so the rows are summed first
+ * and then their sums down the columns (10 terms a value where the square has 25). */
 static void smooth_bias(const struct sppm_error *e, const double *biases, double *smoothed,
                         size_t stride)
 {
+    size_t width = (size_t)e->width;
+    double *rows = xmalloc(stride * width * (size_t)e->height, sizeof *rows, "sppm bias");
+    int *members = xmalloc(width, sizeof *members, "sppm bias");
     for (int y = 0; y < e->height; y++)
         for (int x = 0; x < e->width; x++) {
-            double *out = smoothed + stride * ((size_t)y * (size_t)e->width + (size_t)x);
-            int members = 0;
-            memset(out, 0, stride * sizeof *out);
-            for (int v = y - SPPM_BIAS_RADIUS; v <= y + SPPM_BIAS_RADIUS; v++)
-                for (int u = x - SPPM_BIAS_RADIUS; u <= x + SPPM_BIAS_RADIUS; u++) {
-                    if (u < 0 || v < 0 || u >= e->width || v >= e->height)
-                        continue;
-                    const double *b =
-                        biases + stride * ((size_t)v * (size_t)e->width + (size_t)u);
-                    members++;
-                    for (size_t k = 0; k < stride; k++)
-                        out[k] += b[k];
-                }
-            for (size_t k = 0; k < stride; k++)
-                out[k] /= members;
+            size_t i = (size_t)y * width + (size_t)x;
+            members[x] = sum_along(biases + stride * width * (size_t)y, e->width, 1, x, stride,
+                                   rows + stride * i);
         }
+    for (int y = 0; y < e->height; y++)
+        for (int x = 0; x < e->width; x++) {
+            double *out = smoothed + stride * ((size_t)y * width + (size_t)x);
+            int in_column = sum_along(rows + stride * (size_t)x, e->height, width, y, stride, out);
+            for (size_t k = 0; k < stride; k++)
+                out[k] /= members[x] * in_column;
+        }
+    xfree(members);
+    xfree(rows);
 }
 
 /* The mean over block (column, row) of the written window of a per-pixel series,
@@ -172,11 +182,12 @@ static double *block_batches(const struct sppm_error *e, int column, int row)
                                                    (size_t)column);
 }
 
-void sppm_error_block_pass(struct sppm_error *e, long pass)
+void sppm_error_pass_done(struct sppm_error *e, long pass)
 {
     size_t n = (size_t)e->width * (size_t)e->height;
     double *b = e->pass_biases, *smoothed = e->pass_biases + 3 * n;
     const double *v = e->pass_values; /* e_i, P_i and P'_i, 3 each */
+    error_batches_add(e->pass_batches, ERROR_BATCHES, (int)pass, v, 9 * n);
     for (size_t i = 0; i < n; i++)
         for (int c = 0; c < 3; c++)
             b[3 * i + c] = 2.0 * (v[9 * i + 3 + c] - v[9 * i + 6 + c]);
@@ -188,7 +199,7 @@ void sppm_error_block_pass(struct sppm_error *e, long pass)
         for (int column = 0; column < e->columns; column++) {
             double mean[3];
             block_mean(e, b, 3, 3, column, row, mean);
-            error_batches_add(block_batches(e, column, row), BLOCK_BATCHES, (int)pass, mean);
+            error_batches_add(block_batches(e, column, row), BLOCK_BATCHES, (int)pass, mean, 3);
         }
 }
 
@@ -324,9 +335,7 @@ int sppm_error_target(const struct sppm_error *e, const struct kept_window *k, l
 
 void sppm_error_free(struct sppm_error *e)
 {
-    xfree(e->seen_batches);
-    xfree(e->photon_batches);
-    xfree(e->inner_batches);
+    xfree(e->pass_batches);
     xfree(e->shares);
     xfree(e->before);
     xfree(e->pass_values);

@@ -54,7 +54,7 @@
  * independent and a block's does not shrink as the square root of its pixels: in
  * quadrature, 0.41-0.70 of 16 x 16 blocks hold their truth. A block's noise bound is
  * from the block's own values of s, pass by pass: each pass, the block's mean of the
- * pass's s_i joins its BLOCK_BATCHES batches (error_batches_add(); sppm_error_block_pass()),
+ * pass's s_i joins its BLOCK_BATCHES batches (error_batches_add(); sppm_error_pass_done()),
  * whose k full ones (16 <= k <= 32 from 16 passes on) state the noise at Student's t for
  * k - 1 degrees of freedom: 2.13-2.04 at c = 0.95, where a pixel's 4 to 8 batches would
  * need 3.18-2.36. A pass's b~ there is its own b_i smoothed as above. Its shares are 1,
@@ -137,10 +137,9 @@ struct sppm_error {
     int x0, y0, x1, y1;     /* the written window [x0, x1) x [y0, y1) of the kept one, ... */
     int wx0, wy0;           /* ... whose top left pixel is (wx0, wy0) of the whole image   */
     int columns, rows;      /* its blocks (error_block_grid())                             */
-    double *seen_batches;   /* owned: 3 ERROR_BATCHES per pixel, the batches of the pass
-                               values' e_i (error_batches_add(), n = the pass)            */
-    double *photon_batches; /* owned: the same, of P_i                                     */
-    double *inner_batches;  /* owned: the same, of the inner disc's P'_i                   */
+    double *pass_batches;   /* owned: the batches of the pass values (error_batches_add(),
+                               n = the pass), batch by batch, 9 a pixel in each: e_i, P_i
+                               and the inner disc's P'_i, as pass_values                  */
     double *shares;         /* owned: 2 per pixel, the covered shares c and c' the image
                                divides P and P' by, as they stand (1 without coverage)    */
     struct vec3 *before;    /* owned: per pixel, what its eye paths saw and its direct term
@@ -148,26 +147,26 @@ struct sppm_error {
     double *pass_values;    /* owned: 9 per pixel, this pass's e_i, P_i and P'_i           */
     double *pass_biases;    /* owned: 6 per pixel, this pass's b_i and b~_i (scratch)      */
     double *block_batches;  /* owned: 3 BLOCK_BATCHES per block, the batches of the block's
-                               mean of s_i with every share 1 (sppm_error_block_pass())   */
+                               mean of s_i with every share 1 (sppm_error_pass_done())   */
 };
 
 /* Room for kept's window and the blocks of the window it writes, every sum zero. */
 void sppm_error_create(struct sppm_error *e, const struct kept_window *kept);
 
-/* Pass `pass` (from 0) of pixel i: what its eye path saw and its direct term, e_i, and
+/* This pass's values of pixel i: what its eye path saw and its direct term, e_i, and
  * its photon estimate over the disc and over the inner disc, P_i and P'_i, before the
  * covered shares divide them. Kept apart, so that y_i = e_i + P_i / c and y'_i = e_i +
  * P'_i / c' are formed with the shares c, c' the image itself ends with (shares), not
  * those of pass i: a share estimated from the probes so far swings over the first passes
  * (one probe a pass), and where a disc is half covered (a sphere curving away from it)
  * those passes' values stated bounds of 23% on the furnace, whose image is within 0.2%. */
-void sppm_error_add_pass(struct sppm_error *e, size_t i, long pass, struct vec3 seen,
-                         struct vec3 p, struct vec3 p_inner);
+void sppm_error_add_pass(struct sppm_error *e, size_t i, struct vec3 seen, struct vec3 p,
+                         struct vec3 p_inner);
 
-/* Pass `pass` is done, every pixel's values added (sppm_error_add_pass()): each block's
- * mean of the pass's corrected values s_i, every share taken as 1, joins the block's
- * BLOCK_BATCHES batches (above). */
-void sppm_error_block_pass(struct sppm_error *e, long pass);
+/* Pass `pass` (from 0) is done, every pixel's values added (sppm_error_add_pass()): they
+ * join the pixels' batches, and each block's mean of the pass's corrected values s_i,
+ * every share taken as 1, joins the block's BLOCK_BATCHES batches (above). */
+void sppm_error_pass_done(struct sppm_error *e, long pass);
 
 /* A progressive estimate's part of a pass value, seen through weight (the hit point's
  * pixel weight, 2009's path weight): *p = weight Phi_i / (pi R_i^2 M) over its disc of
