@@ -26,7 +26,8 @@
  * and refits it after each pass; 2009 builds it anew over each pass's. A hash grid, cells
  * as wide as the largest disc, rebuilt each pass, gives the same images to the bit, a
  * little faster for 2009 and much slower for 2008, whose discs differ in size many times
- * over (src/modes/measured.md).
+ * over (src/modes/measured.md; measured before the photons came in the order of where
+ * they lie, ordered_sink.h).
  */
 #ifndef PHOTON_HIT_POINTS_H
 #define PHOTON_HIT_POINTS_H
