@@ -95,11 +95,14 @@ write_suite() {
         for each in $all; do
             echo "- \`$each.pfm\`: $(field "$(line_of "$each")" 7)."
         done
-        # make consistency's table (scripts/consistency.sh), kept as it was
-        if [ -f "$out" ] && grep -q '^<!-- consistency -->$' "$out"; then
-            echo
-            sed -n '/^<!-- consistency -->$/,/^<!-- \/consistency -->$/p' "$out"
-        fi
+        # make calibration's and make consistency's tables (scripts/calibration.sh,
+        # scripts/consistency.sh), kept as they were
+        for section in calibration consistency; do
+            if [ -f "$out" ] && grep -q "^<!-- $section -->\$" "$out"; then
+                echo
+                sed -n "/^<!-- $section -->\$/,/^<!-- \/$section -->\$/p" "$out"
+            fi
+        done
     } > "$out.tmp"
     mv "$out.tmp" "$out"
 }
