@@ -89,14 +89,15 @@ static void pass_value_batches(const struct sppm_error *e, int shared, double *v
     for (size_t i = 0; i < n; i++) {
         double c = shared ? e->shares[2 * i] : 1.0;
         double c_inner = shared ? e->shares[2 * i + 1] : 1.0;
-        for (size_t b = 0; b < ERROR_BATCHES; b++)
+        for (size_t b = 0; b < ERROR_BATCHES; b++) {
+            const double *batch = e->pass_batches + 9 * (n * b + i); /* e, P, P' */
             for (size_t k = 0; k < 3; k++) {
-                const double *batch = e->pass_batches + 9 * (n * b + i); /* e, P, P' */
                 size_t j = PIXEL_BATCHES * i + 3 * b + k;
                 double p = batch[3 + k] / c;
                 values[j] = batch[k] + p;
                 biases[j] = 2.0 * (p - batch[6 + k] / c_inner);
             }
+        }
     }
 }
 
@@ -148,7 +149,8 @@ static void smooth_bias(const struct sppm_error *e, const double *biases, double
     for (int y = 0; y < e->height; y++)
         for (int x = 0; x < e->width; x++) {
             double *out = smoothed + stride * ((size_t)y * width + (size_t)x);
-            int in_column = sum_along(rows + stride * (size_t)x, e->height, width, y, stride, out);
+            int in_column =
+                sum_along(rows + stride * (size_t)x, e->height, width, y, stride, out);
             for (size_t k = 0; k < stride; k++)
                 out[k] /= members[x] * in_column;
         }
