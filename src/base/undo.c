@@ -143,16 +143,28 @@ static void on_signal(int sig)
         stop(sig);
 }
 
-/* Catches every stop signal but those photon was started ignoring: the disposition is
- * read by setting one (C99 has no other way), SIG_IGN first so that a signal in between
- * is not taken for a stop. */
+/* Whether sig's action is to be left as photon was started with it: ignored (nohup,
+ * `trap '' HUP`), or unreadable. POSIX's sigaction() reads the action without changing
+ * it. C99's signal() reads it only by setting one, SIG_IGN, so that a signal in between
+ * is not taken for a stop; such a signal is lost, as a ^C or a timeout(1) that comes
+ * while photon starts would be, were the action SIG_IGN for that instant on POSIX too. */
+static int left_alone(int sig)
+{
+#ifdef UNDO_SIGACTION
+    struct sigaction now;
+    return sigaction(sig, NULL, &now) != 0 || now.sa_handler == SIG_IGN;
+#else
+    void (*before)(int) = signal(sig, SIG_IGN);
+    return before == SIG_IGN || before == SIG_ERR;
+#endif
+}
+
+/* Catches every stop signal but those left alone. */
 static void install(void)
 {
-    for (size_t i = 0; i < sizeof stop_signals / sizeof stop_signals[0]; i++) {
-        void (*before)(int) = signal(stop_signals[i], SIG_IGN);
-        if (before != SIG_IGN && before != SIG_ERR)
+    for (size_t i = 0; i < sizeof stop_signals / sizeof stop_signals[0]; i++)
+        if (!left_alone(stop_signals[i]))
             catch_signal(stop_signals[i]);
-    }
 }
 
 void undo_hold(void)

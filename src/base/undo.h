@@ -32,9 +32,11 @@
  * second signal then (^C pressed twice) would end photon before the files are right.
  *
  * Not covered: SIGKILL and SIGSTOP, which no handler sees; without POSIX, a second signal
- * in the few instructions before the handler sets itself again; and a crash (SIGSEGV, SIGBUS,
- * SIGILL, SIGFPE), after which the list itself may be damaged: those leave a temporary
- * (NAME.XXXXXXXX.tmp), which no later run removes, as it cannot tell it from a user's.
+ * in the few instructions before the handler sets itself again, and a signal in the
+ * instant a handler is installed, ignored then, since C99 reads an action only by
+ * setting one; and a crash (SIGSEGV, SIGBUS, SIGILL, SIGFPE), after which the list itself
+ * may be damaged: those leave a temporary (NAME.XXXXXXXX.tmp), which no later run
+ * removes, as it cannot tell it from a user's.
  */
 #ifndef PHOTON_UNDO_H
 #define PHOTON_UNDO_H
