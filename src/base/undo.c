@@ -145,9 +145,9 @@ static void on_signal(int sig)
 
 /* Whether sig's action is to be left as photon was started with it: ignored (nohup,
  * `trap '' HUP`), or unreadable. POSIX's sigaction() reads the action without changing
- * it. C99's signal() reads it only by setting one, SIG_IGN, so that a signal in between
- * is not taken for a stop; such a signal is lost, as a ^C or a timeout(1) that comes
- * while photon starts would be, were the action SIG_IGN for that instant on POSIX too. */
+ * it, so a ^C that comes meanwhile still stops photon. C99's signal() reads it only by
+ * setting one: SIG_IGN, so that a signal in between is not taken for a stop, but is lost
+ * (undo.h). */
 static int left_alone(int sig)
 {
 #ifdef UNDO_SIGACTION
