@@ -158,7 +158,7 @@ static int write_tile_record(const struct run *run, struct error *err)
 static int write_block_error(const struct run *run, struct error *err)
 {
     const struct render_result *r = &run->result;
-    struct stated_error stated = {r->error, r->bias, r->block_noise};
+    struct stated_error stated = {r->error, r->bias, r->block_noise, r->block_bias};
     struct image *blocks = block_error_image(r->image, &stated, run->rs.x0, run->rs.y0);
     int status = image_write(run->o.block_error, blocks, err); /* .exr or PFM */
     image_free(blocks);
@@ -297,7 +297,8 @@ static void print_jensen1994_stats(const struct jensen1994_stats *stats)
 static void print_error_stats(const struct render_result *result, double confidence, int x0,
                               int y0)
 {
-    struct stated_error stated = {result->error, result->bias, result->block_noise};
+    struct stated_error stated = {result->error, result->bias, result->block_noise,
+                                  result->block_bias};
     struct error_summary s = error_summary(result->image, &stated, confidence, x0, y0);
     fprintf(stderr, "confidence=%.6g\nestimated_relmse=%.6g\nbounded_blocks=%d\n",
             confidence, s.relmse, s.n_blocks);
@@ -406,7 +407,7 @@ static struct render_result render_mode(struct run *run, struct error *err)
     switch (run->o.mode) {
     case MODE_PT:
         if (pt_unreachable_light(run->scene) >= 0 && run->rs.error_confidence > 0) {
-            struct render_result none = {NULL, NULL, NULL, NULL, NULL, 0.0};
+            struct render_result none = {NULL, NULL, NULL, NULL, NULL, NULL, 0.0};
             error_set(err, run->o.scene_path, 0, "%s: pt cannot find the caustics of this "
                       "scene's point lights, and its bound cannot state light it never "
                       "samples; 1996 and 2009 render them",
@@ -647,6 +648,7 @@ static int run_command(int argc, char **argv)
     run.result.error = NULL;
     run.result.bias = NULL;
     run.result.block_noise = NULL;
+    run.result.block_bias = NULL;
     run.work.maps = NULL;
     run.work.records = NULL;
     run.work.illumination = NULL;

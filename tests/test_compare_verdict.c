@@ -243,7 +243,7 @@ static void test_block_statement(struct check *t)
 {
     struct image *image = filled(20, 16, 1.0), *error = filled(20, 16, 0.02);
     struct image *bias = filled(20, 16, 0.01), *noise = filled(2, 1, 0.005);
-    struct stated_error stated = {error, NULL, NULL};
+    struct stated_error stated = {error, NULL, NULL, NULL};
     struct image *blocks = block_error_image(image, &stated, 0, 0);
     REQUIRE(t, blocks->width == 2 && blocks->height == 1);
     CHECK_CLOSE(t, image_get(blocks, 0, 0).y, 0.00125, 1e-12 * 0.00125);

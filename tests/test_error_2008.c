@@ -110,14 +110,15 @@ static double pixel_truth(const struct scene *scene, int x, int y, double (*alon
 
 /* The whole blocks of ERROR_BLOCK x ERROR_BLOCK pixels of result (a render of scene) whose
  * truth (pixel_truth()) is at least ERROR_DARK_FLOOR: each one's least ratio over the channels of its
- * block statement (block_error_image(): the bias summed with its signs, the noise of the
+ * block statement (block_error_image(): the block's bias over its reach, the noise of the
  * block's own batches) to its mean's error against the closed form along() into
  * ratio[*n] (HUGE_VAL where the error is 0; the statement holds where the ratio is at
  * least 1), *n counting them. */
 static void block_ratios(const struct scene *scene, const struct render_result *result,
                          double (*along)(struct ray), double *ratio, int *n)
 {
-    struct stated_error stated = {result->error, result->bias, result->block_noise};
+    struct stated_error stated = {result->error, result->bias, result->block_noise,
+                                  result->block_bias};
     struct image *blocks = block_error_image(result->image, &stated, 0, 0);
     const double pixels = ERROR_BLOCK * ERROR_BLOCK;
     for (int by = 0; by + ERROR_BLOCK <= result->image->height; by += ERROR_BLOCK)
@@ -301,14 +302,14 @@ static void test_crop_error_is_window(struct check *t)
     }
 }
 
-/* Renders point-in-sphere at 48 x 48 (seed 409, the defaults) to target error e, at most
+/* Renders point-in-sphere at 48 x 48 (the defaults) with seed to target error e, at most
  * 4096 passes; the fraction of its 16 x 16 blocks whose mean is within e of the closed
  * form's, the passes in *passes, and whether every block was judged within it in
  * *all_within. */
-static double target_render(double e, int *passes, int *all_within)
+static double target_render(double e, unsigned seed, int *passes, int *all_within)
 {
-    static const struct case_2008 c = {"scenes/analytic/point-in-sphere.scene",
-                                       point_in_sphere, 48, 48, 4096, DEFAULTS, 409};
+    const struct case_2008 c = {"scenes/analytic/point-in-sphere.scene", point_in_sphere,
+                                48, 48, 4096, DEFAULTS, seed};
     struct scene *scene = load_test_scene(c.path, c.width, c.height);
     if (scene == NULL)
         return 0.0;
@@ -321,26 +322,43 @@ static double target_render(double e, int *passes, int *all_within)
 }
 
 /* truth: point-in-sphere's closed form, block by block; a looser target against a tighter.
- * tolerance: at least 95% of the blocks within the target of the truth, every block
- *   judged within it, the tighter target taking more passes and the looser at least
- *   ERROR_MIN_SPP, both fewer than the 4096 allowed; on the command line, a target cut
- *   short by --passes named with its passes, --spp left at 2008's 16 eye rays, the
- *   error statistics printed and the block statement written (--block-error).
- * catches: a target never judged, blocks judged by their pixels' noise in quadrature
- *   though they share photons (0.01 then stops at 24 passes with 0.889 of the blocks
- *   within 1%), a tally left at its first judgement, --target-error taking 2008's --spp
- *   for its passes (2^20 eye rays a pixel). */
+ * tolerance: at each target, over TARGET_SEEDS renders of 9 blocks, so few blocks outside
+ *   the target of the truth that a true 95% statement of each block would leave more out
+ *   with a chance of 1% or more (binomial_misses_allowed(): 5 of 36); in every render
+ *   every block judged within it, the tighter target taking more passes and the looser
+ *   at least ERROR_MIN_SPP, both fewer than the 4096 allowed; on the command line, a
+ *   target cut short by --passes named with its passes, --spp left at 2008's 16 eye
+ *   rays, the error statistics printed and the block statement written (--block-error).
+ *   A render stops once every block's bound is within the target, so one block of 9 past
+ *   it is what a bound as sharp as it states allows: seed 409 at 0.01 stops at 48 passes
+ *   with one block 1.00% off, where its bound stated 0.84%.
+ * catches: a target never judged, a bound that lets more blocks past the target than
+ *   it states (blocks judged by their pixels' noise in quadrature, though they share
+ *   photons, which test_bound_covers_closed_forms() catches as well), a tally left at
+ *   its first judgement, --target-error taking 2008's --spp for its passes (2^20 eye
+ *   rays a pixel). */
+#define TARGET_SEEDS 4
 static void test_target_error(struct check *t)
 {
     static const double target[2] = {0.02, 0.01};
-    int passes[2], all_within[2];
+    int looser[TARGET_SEEDS];
     for (int k = 0; k < 2; k++) {
-        double within = target_render(target[k], &passes[k], &all_within[k]);
-        printf("  error: 2008 --target-error %g: %d passes, %.3f of blocks within it of the "
-               "truth\n", target[k], passes[k], within);
-        CHECK(t, all_within[k] && within >= 0.95 && passes[k] < 4096);
+        int blocks = 0, outside = 0, passes[TARGET_SEEDS];
+        for (unsigned seed = 0; seed < TARGET_SEEDS; seed++) {
+            int all_within;
+            double within = target_render(target[k], 409 + seed, &passes[seed], &all_within);
+            printf("  error: 2008 --target-error %g, seed %u: %d passes, %.3f of blocks within "
+                   "it of the truth\n", target[k], 409 + seed, passes[seed], within);
+            CHECK(t, all_within && ERROR_MIN_SPP <= passes[seed] && passes[seed] < 4096);
+            blocks += 9;
+            outside += (int)((1.0 - within) * 9 + 0.5);
+        }
+        CHECK(t, outside <= binomial_misses_allowed(blocks, 0.05, 0.01));
+        if (k == 1)
+            for (unsigned seed = 0; seed < TARGET_SEEDS; seed++)
+                CHECK(t, looser[seed] < passes[seed]);
+        memcpy(looser, passes, sizeof passes);
     }
-    CHECK(t, ERROR_MIN_SPP <= passes[0] && passes[0] < passes[1]);
     CHECK(t, target_cut_short("2008", "--error " OUT "_e.pfm --block-error " OUT "_b.pfm",
                               OUT));
     CHECK(t, file_stat(OUT ".log", "spp") == PPM_DEFAULT_SPP &&

@@ -135,6 +135,32 @@ static void test_crop_error_is_window(struct check *t)
     scene_free(scene);
 }
 
+/* truth: the whole image's block statement, rendered apart.
+ * tolerance: none: a block the crop holds whole is stated bit for bit as in the whole
+ *   image (error_image.h's promise), its noise and its bias.
+ * catches: a window grown by less than a block's bias reaches (the bias of the pixels
+ *   beyond the block taken from a margin the crop never rendered), or by that reach
+ *   without the pixels' own smoothing around it. */
+static void test_crop_block_is_whole(struct check *t)
+{
+    struct scene *scene = load_test_scene("scenes/analytic/sky-over-floor.scene", 80, 60);
+    REQUIRE(t, scene != NULL);
+    static const int window[4] = {32, 16, 48, 32}; /* the whole image's block (2, 1) */
+    const struct case_2009 c = {"", NULL, 80, 60, ERROR_MIN_SPP, 0, 6};
+    struct render_result a = render_case(scene, &c, NULL, 0.0);
+    struct render_result b = render_case(scene, &c, window, 0.0);
+    CHECK(t, crop_is_window(a.image, b.image, window));
+    struct vec3 noise = image_get(a.block_noise, 2, 1), bias = image_get(a.block_bias, 2, 1);
+    struct vec3 crop_noise = image_get(b.block_noise, 0, 0);
+    struct vec3 crop_bias = image_get(b.block_bias, 0, 0);
+    CHECK(t, memcmp(&noise, &crop_noise, sizeof noise) == 0);
+    CHECK(t, memcmp(&bias, &crop_bias, sizeof bias) == 0);
+    CHECK(t, bias.x != 0.0); /* so that a bias left out would show */
+    render_result_free(&a);
+    render_result_free(&b);
+    scene_free(scene);
+}
+
 /* Renders sky-over-floor at 64 x 48 (seed 401, the direct light from photons) to target
  * error e, at most 4096 passes; the fraction of its 16 x 16 blocks whose mean is within e
  * of the closed form's, the passes in *passes, and whether every block was judged within
@@ -197,7 +223,7 @@ static double block_noise_of(double share)
     struct kept_window kept;
     kept_window_init(&kept, &rs, 32, 16, SPPM_ERROR_MARGIN);
     struct sppm_error e;
-    sppm_error_create(&e, &kept);
+    sppm_error_create(&e, &kept, BLOCK_BIAS_REACH);
     struct rng r = rng_stream(5, STREAM_CAMERA, 0, 0);
     for (long pass = 0; pass < BLOCK_NOISE_PASSES; pass++) {
         double u[4], z[2];
@@ -212,12 +238,14 @@ static double block_noise_of(double share)
     }
     for (size_t i = 0; i < 2 * 32 * 16; i++)
         e.shares[i] = share;
-    struct image *bias, *block;
-    struct image *error = sppm_error_image(&e, BLOCK_NOISE_PASSES, 0.95, &bias, &block);
+    struct image *bias, *block, *block_bias;
+    struct image *error =
+        sppm_error_image(&e, BLOCK_NOISE_PASSES, 0.95, &bias, &block, &block_bias);
     double noise = image_get(block, 0, 0).x;
     image_free(error);
     image_free(bias);
     image_free(block);
+    image_free(block_bias);
     sppm_error_free(&e);
     return noise;
 }
@@ -266,6 +294,7 @@ void test_error_2009(struct check *t)
 {
     RUN_TEST(t, test_bound_covers_closed_forms);
     RUN_TEST(t, test_crop_error_is_window);
+    RUN_TEST(t, test_crop_block_is_whole);
     RUN_TEST(t, test_block_noise_of_known_spread);
     RUN_TEST(t, test_target_error);
     RUN_TEST(t, test_error_refusals);

@@ -125,6 +125,18 @@ double blocks_within_truth(const struct scene *scene, const struct image *image,
     return *blocks > 0 ? (double)within / *blocks : 0.0;
 }
 
+int binomial_misses_allowed(int n, double p, double alpha)
+{
+    double pmf = pow(1.0 - p, n), at_most = 0.0;
+    for (int k = 0; k < n; k++) {
+        at_most += pmf;
+        if (1.0 - at_most < alpha)
+            return k;
+        pmf *= (double)(n - k) / (k + 1) * p / (1.0 - p);
+    }
+    return n;
+}
+
 double target_outcome(struct scene *scene, struct render_result *result,
                       const struct render_counters *counters, double e,
                       double (*along)(struct ray), int *passes, int *all_within)

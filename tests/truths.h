@@ -76,6 +76,11 @@ struct coverage coverage_of(const struct scene *scene, const struct image *image
 double blocks_within_truth(const struct scene *scene, const struct image *image, double e,
                            double (*along)(struct ray), int *blocks);
 
+/* The most of n statements, each true with chance 1 - p, that may fail before a test at
+ * level alpha calls them untrue: the least k with P(more than k fail) < alpha, the
+ * binomial's tail (make calibration's "misses" rule). */
+int binomial_misses_allowed(int n, double p, double alpha);
+
 /* What a render of scene to target error e did, against the closed form along(): the
  * share of blocks within e of it (blocks_within_truth()), the passes in *passes, and in
  * *all_within whether the render judged every one of those blocks within e. Frees result

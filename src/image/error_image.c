@@ -38,16 +38,17 @@ static void bound_parts(const struct stated_error *stated, int x, int y, struct 
     *noise = vec3(bound.x - fabs(b->x), bound.y - fabs(b->y), bound.z - fabs(b->z));
 }
 
-/* What a block's bound is made of, summed over its pixels [u0, u1) x [v0, v1): the image's
- * luminance, the bias b per channel and in luminance, and the squares of the pixels'
- * noise parts per channel and in luminance (error_image.h). */
+/* What block (column, row)'s bound is made of, summed over its pixels [u0, u1) x [v0, v1):
+ * the image's luminance, the bias b per channel and in luminance (the mode's block_bias
+ * n times, where it states one), and the squares of the pixels' noise parts per channel
+ * and in luminance (error_image.h). */
 struct block_sums {
     double n, luminance, bias_luminance, noise2_luminance;
     struct vec3 bias, noise2;
 };
 
 static struct block_sums block_sums(const struct image *image, const struct stated_error *stated,
-                                    int u0, int v0, int u1, int v1)
+                                    int column, int row, int u0, int v0, int u1, int v1)
 {
     struct block_sums s = {0.0, 0.0, 0.0, 0.0, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
     for (int y = v0; y < v1; y++)
@@ -62,6 +63,10 @@ static struct block_sums block_sums(const struct image *image, const struct stat
             s.noise2_luminance += l * l;
         }
     s.n = (double)(u1 - u0) * (double)(v1 - v0);
+    if (stated->block_bias != NULL) { /* the mode's own, as if each pixel had it */
+        s.bias = vec3_scale(image_get(stated->block_bias, column, row), s.n);
+        s.bias_luminance = vec3_luminance(s.bias);
+    }
     return s;
 }
 
@@ -71,7 +76,7 @@ static void block_bound(const struct image *image, const struct stated_error *st
                         int column, int row, int u0, int v0, int u1, int v1, double *mean,
                         double *bound)
 {
-    struct block_sums s = block_sums(image, stated, u0, v0, u1, v1);
+    struct block_sums s = block_sums(image, stated, column, row, u0, v0, u1, v1);
     double noise = stated->block_noise != NULL
                        ? vec3_luminance(image_get(stated->block_noise, column, row))
                        : sqrt(s.noise2_luminance) / s.n;
@@ -90,7 +95,7 @@ struct image *block_error_image(const struct image *image, const struct stated_e
             int u0, v0, u1, v1;
             error_block_window(x0, y0, image->width, image->height, column, row, &u0, &v0,
                                &u1, &v1);
-            struct block_sums s = block_sums(image, stated, u0, v0, u1, v1);
+            struct block_sums s = block_sums(image, stated, column, row, u0, v0, u1, v1);
             struct vec3 noise = stated->block_noise != NULL
                                     ? image_get(stated->block_noise, column, row)
                                     : vec3_scale(vec3(sqrt(s.noise2.x), sqrt(s.noise2.y),

@@ -11,7 +11,9 @@
  * block of n pixels by
  *     B_block = |sum over the pixels of w.b| / n + N_block,
  * the biases adding linearly, with their signs, and N_block the bound on the noise of
- * the block's mean at the same confidence: where the pixels' noise is independent (pt),
+ * the block's mean at the same confidence (a mode may state the block's bias itself in
+ * place of the sum, as 2008 and 2009 do: stated_error's block_bias): where the pixels'
+ * noise is independent (pt),
  *     N_block = sqrt(sum over the pixels of (sum_c w_c (B_c - |b_c|))^2) / n,
  * their noise adding in quadrature; where it is not (2008's and 2009's pixels share the photons of
  * discs a few pixels wide), the mode states N_block itself, an image of one pixel a
@@ -39,6 +41,9 @@ struct stated_error {
                                         block of the grid the window meets, row-major from
                                         the block of its top left pixel
                                         (error_block_grid()), N_block per channel        */
+    const struct image *block_bias;  /* NULL (a block's bias is its pixels' b summed), or
+                                        per block as block_noise, the signed bias of the
+                                        block's mean that its bound includes instead    */
 };
 
 /* The blocks of the grid above that a window of width x height pixels at (x0, y0) of the

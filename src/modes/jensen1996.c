@@ -642,7 +642,7 @@ struct render_result render_jensen1996(const struct scene *scene,
                                        int want_variance, struct render_counters *counters,
                                        struct jensen1996_stats *stats, struct error *err)
 {
-    struct render_result result = {NULL, NULL, NULL, NULL, NULL, 0.0};
+    struct render_result result = {NULL, NULL, NULL, NULL, NULL, NULL, 0.0};
     memset(stats, 0, sizeof *stats);
     struct jensen1996 mode;
     memset(&mode, 0, sizeof mode);

@@ -231,7 +231,7 @@ struct render_result render_photons(const struct scene *scene, const struct rend
                                     struct render_counters *counters, struct photon_stats *stats,
                                     struct error *err)
 {
-    struct render_result result = {NULL, NULL, NULL, NULL, NULL, 0.0};
+    struct render_result result = {NULL, NULL, NULL, NULL, NULL, NULL, 0.0};
     memset(stats, 0, sizeof *stats);
     struct global_work own_work = {NULL, 0, NULL, 0, NULL}; /* without ps->work: traced, freed */
     struct photon_settings with_work = *ps;

@@ -14,7 +14,7 @@ extern char batches_pair[PHOTON_BATCHES == ERROR_BATCHES ? 1 : -1];
 void photons_error_create(struct photons_error *pe, const struct render_settings *rs,
                           int width, int height)
 {
-    kept_window_init(&pe->kept, rs, width, height, SPPM_ERROR_MARGIN);
+    kept_window_init(&pe->kept, rs, width, height, SPPM_PIXEL_MARGIN);
     size_t n = (size_t)pe->kept.width * (size_t)pe->kept.height;
     memset(&pe->sample, 0, sizeof pe->sample);
     pe->pixels = xcalloc(n, sizeof *pe->pixels, "photon batches");
@@ -91,7 +91,7 @@ void photons_error_result(const struct photons_error *pe, const struct image *ke
 {
     const struct kept_window *k = &pe->kept;
     struct sppm_error e;
-    sppm_error_create(&e, k);
+    sppm_error_create(&e, k, 0);
     for (int b = 0; b < PHOTON_BATCHES; b++) {
         for (int y = 0; y < k->height; y++)
             for (int x = 0; x < k->width; x++)

@@ -52,7 +52,7 @@
 #include "sppm_error.h"
 
 struct photons_error {
-    struct kept_window kept;         /* the window asked for, grown by SPPM_ERROR_MARGIN  */
+    struct kept_window kept;         /* the window asked for, grown by SPPM_PIXEL_MARGIN  */
     struct estimate_batches sample;  /* this sample's batches, through its path weights   */
     struct estimate_batches *pixels; /* owned: per kept pixel, the sum over its samples   */
     double *sample_batches;          /* owned: per kept pixel, its samples' values in

@@ -660,7 +660,7 @@ struct render_result render_ppm(const struct scene *scene, const struct render_s
     if (ppm.want_error)
         ppm_error_create(&ppm.error, &ppm.kept, ppm.n_points, ppm.emission_seen,
                          common->direct_light_samples ? &ppm.direct : NULL);
-    struct render_result result = {NULL, NULL, NULL, NULL, NULL, 0.0};
+    struct render_result result = {NULL, NULL, NULL, NULL, NULL, NULL, 0.0};
     result.image = image_create(ppm.kept.out_width, ppm.kept.out_height);
 
     /* The photon tracing passes, each followed by the new eye ray a pixel. */

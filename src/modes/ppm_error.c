@@ -21,7 +21,7 @@ void ppm_error_create(struct ppm_error *e, const struct kept_window *kept, size_
 {
     size_t n = (size_t)kept->width * (size_t)kept->height;
     e->kept = kept;
-    sppm_error_create(&e->values, kept);
+    sppm_error_create(&e->values, kept, BLOCK_BIAS_REACH);
     for (size_t i = 0; i < n; i++)
         e->values.before[i] = seen_so_far(emission_seen, direct, i);
     e->inner = xcalloc(2 * n_points + 1, sizeof *e->inner, "ppm inner flux");

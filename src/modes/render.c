@@ -330,7 +330,7 @@ static int target_reached(const struct accumulator *acc, const struct render_set
     struct image *mean = image_create(acc->out_width, acc->out_height);
     mean_image(acc, mean);
     struct image *error = error_image(acc, rs->error_confidence);
-    struct stated_error stated = {error, NULL, NULL};
+    struct stated_error stated = {error, NULL, NULL, NULL};
     int reached = target_tally(mean, &stated, rs, counters);
     image_free(error);
     image_free(mean);
@@ -467,6 +467,7 @@ struct render_result render_pixels(const struct scene *scene, const struct rende
     result.error = want_error ? error_image(&acc, rs->error_confidence) : NULL;
     result.bias = NULL; /* the mean of independent samples is unbiased */
     result.block_noise = NULL;
+    result.block_bias = NULL;
     xfree(acc.target);
     xfree(acc.n);
     xfree(acc.lum);
@@ -483,9 +484,11 @@ void render_result_free(struct render_result *result)
     image_free(result->error);
     image_free(result->bias);
     image_free(result->block_noise);
+    image_free(result->block_bias);
     result->image = NULL;
     result->variance = NULL;
     result->error = NULL;
     result->bias = NULL;
     result->block_noise = NULL;
+    result->block_bias = NULL;
 }

@@ -168,6 +168,9 @@ struct render_result {
     struct image *block_noise; /* owned or NULL: the bound on the noise of each block's
                                mean (image/error_image.h, stated_error), where the pixels'
                                noise is not independent (2008, 2009); NULL: it is      */
+    struct image *block_bias; /* owned or NULL: the bias of each block's mean that its
+                               bound includes (stated_error), where the mode states it
+                               (2008, 2009); NULL: the sum of the pixels' bias         */
     double seconds;         /* CPU seconds rendering, checkpoint work excluded            */
 };
 

@@ -607,14 +607,14 @@ struct render_result render_sppm(const struct scene *scene, const struct render_
     if (common->direct_light_samples)
         ppm_direct_create(&sppm.direct, scene, sppm.rs);
     if (sppm.want_error) {
-        sppm_error_create(&sppm.error, &sppm.kept);
+        sppm_error_create(&sppm.error, &sppm.kept, BLOCK_BIAS_REACH);
         sppm.pass_photons = xmalloc(2 * sppm.n_pixels, sizeof *sppm.pass_photons,
                                     "sppm pass values");
         sppm.inner_tau = xcalloc(sppm.n_pixels, sizeof *sppm.inner_tau, "sppm inner flux");
         sppm.inner_probes = xcalloc(2 * sppm.n_pixels, sizeof *sppm.inner_probes,
                                     "sppm inner probes");
     }
-    struct render_result result = {NULL, NULL, NULL, NULL, NULL, 0.0};
+    struct render_result result = {NULL, NULL, NULL, NULL, NULL, NULL, 0.0};
     result.image = image_create(sppm.kept.out_width, sppm.kept.out_height);
 
     /* Each pass: the distributed ray tracing pass, the photon tracing pass, the update. */

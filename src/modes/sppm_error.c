@@ -47,7 +47,8 @@ size_t written_pixel(const struct kept_window *k, size_t kept)
     return (size_t)y * (size_t)k->out_width + (size_t)x;
 }
 
-void sppm_error_create(struct sppm_error *e, const struct kept_window *kept)
+void sppm_error_create(struct sppm_error *e, const struct kept_window *kept,
+                       int block_bias_reach)
 {
     size_t n = (size_t)kept->width * (size_t)kept->height;
     e->width = kept->width;
@@ -58,6 +59,7 @@ void sppm_error_create(struct sppm_error *e, const struct kept_window *kept)
     e->y1 = kept->out_y0 + kept->out_height;
     e->wx0 = kept->asked->x0;
     e->wy0 = kept->asked->y0;
+    e->block_bias_reach = block_bias_reach;
     error_block_grid(e->wx0, e->wy0, e->x1 - e->x0, e->y1 - e->y0, &e->columns, &e->rows);
     e->pass_batches = xcalloc(ERROR_BATCHES * 9 * n, sizeof *e->pass_batches, "sppm batches");
     e->shares = xmalloc(2 * n, sizeof *e->shares, "sppm covered shares");
@@ -158,20 +160,24 @@ static void smooth_bias(const struct sppm_error *e, const double *biases, double
     xfree(rows);
 }
 
-/* The mean over block (column, row) of the written window of a per-pixel series,
- * `stride` doubles a pixel, the first `count` of which are summed into mean. */
+/* The mean of a per-pixel series of the kept window (`stride` doubles a pixel, the first
+ * `count` of which are summed into mean) over the pixels of block (column, row) of the
+ * written window and those up to `reach` beyond it each side, inside the kept window. */
 static void block_mean(const struct sppm_error *e, const double *series, size_t stride,
-                       size_t count, int column, int row, double *mean)
+                       size_t count, int column, int row, int reach, double *mean)
 {
     int u0, v0, u1, v1;
     error_block_window(e->wx0, e->wy0, e->x1 - e->x0, e->y1 - e->y0, column, row, &u0, &v0,
                        &u1, &v1);
+    u0 = u0 + e->x0 > reach ? u0 + e->x0 - reach : 0; /* now in the kept window */
+    v0 = v0 + e->y0 > reach ? v0 + e->y0 - reach : 0;
+    u1 = u1 + e->x0 + reach < e->width ? u1 + e->x0 + reach : e->width;
+    v1 = v1 + e->y0 + reach < e->height ? v1 + e->y0 + reach : e->height;
     double pixels = (double)(u1 - u0) * (v1 - v0);
     memset(mean, 0, count * sizeof *mean);
     for (int v = v0; v < v1; v++)
         for (int u = u0; u < u1; u++) {
-            const double *s = series + stride * ((size_t)(v + e->y0) * (size_t)e->width +
-                                                 (size_t)(u + e->x0));
+            const double *s = series + stride * ((size_t)v * (size_t)e->width + (size_t)u);
             for (size_t j = 0; j < count; j++)
                 mean[j] += s[j] / pixels;
         }
@@ -184,24 +190,37 @@ static double *block_batches(const struct sppm_error *e, int column, int row)
                                                    (size_t)column);
 }
 
+/* The value s of block (column, row)'s mean (sppm_error.h), count doubles (a pass's 3 or
+ * a pixel's batches), into s: the mean over the block of the pixels' y less the mean of
+ * their b~ over the block grown by its reach. */
+static void block_corrected(const struct sppm_error *e, const double *y, const double *smoothed,
+                            size_t count, int column, int row, double *s)
+{
+    double bias[PIXEL_BATCHES];
+    block_mean(e, y, count, count, column, row, 0, s);
+    block_mean(e, smoothed, count, count, column, row, e->block_bias_reach, bias);
+    for (size_t j = 0; j < count; j++)
+        s[j] -= bias[j];
+}
+
 void sppm_error_pass_done(struct sppm_error *e, long pass)
 {
     size_t n = (size_t)e->width * (size_t)e->height;
-    double *b = e->pass_biases, *smoothed = e->pass_biases + 3 * n;
+    double *y = e->pass_biases, *smoothed = e->pass_biases + 3 * n;
     const double *v = e->pass_values; /* e_i, P_i and P'_i, 3 each */
     error_batches_add(e->pass_batches, ERROR_BATCHES, (int)pass, v, 9 * n);
-    for (size_t i = 0; i < n; i++)
+    for (size_t i = 0; i < n; i++) /* b_i first, into y, to smooth */
         for (int c = 0; c < 3; c++)
-            b[3 * i + c] = 2.0 * (v[9 * i + 3 + c] - v[9 * i + 6 + c]);
-    smooth_bias(e, b, smoothed, 3);
-    for (size_t i = 0; i < n; i++) /* s_i = e_i + P_i - b~_i, into b */
+            y[3 * i + c] = 2.0 * (v[9 * i + 3 + c] - v[9 * i + 6 + c]);
+    smooth_bias(e, y, smoothed, 3);
+    for (size_t i = 0; i < n; i++) /* then y_i = e_i + P_i */
         for (int c = 0; c < 3; c++)
-            b[3 * i + c] = v[9 * i + c] + v[9 * i + 3 + c] - smoothed[3 * i + c];
+            y[3 * i + c] = v[9 * i + c] + v[9 * i + 3 + c];
     for (int row = 0; row < e->rows; row++)
         for (int column = 0; column < e->columns; column++) {
-            double mean[3];
-            block_mean(e, b, 3, 3, column, row, mean);
-            error_batches_add(block_batches(e, column, row), BLOCK_BATCHES, (int)pass, mean, 3);
+            double s[3];
+            block_corrected(e, y, smoothed, 3, column, row, s);
+            error_batches_add(block_batches(e, column, row), BLOCK_BATCHES, (int)pass, s, 3);
         }
 }
 
@@ -229,63 +248,79 @@ static void batch_deviations(const double *batches, int k, double deviations[3])
     }
 }
 
-/* The bound on the noise of each block's mean of the written window (sppm_error.h): the
- * spread of the block's k full BLOCK_BATCHES batches of m passes of s, every share 1,
- * times the ratio of the spreads of its means of the pixels' batches of s with the
- * image's shares (corrected) and with every share 1 (unshared), at z_c widened to
- * Student's t for k - 1 degrees of freedom. */
-static struct image *block_noise(const struct sppm_error *e, const double *corrected,
-                                 const double *unshared, long passes, double z)
+/* What each block of the written window states (sppm_error.h), into *noise and *bias.
+ * The noise bound: the spread of the block's k full BLOCK_BATCHES batches of m passes of
+ * s, every share 1, times the ratio of the spreads of its s from the pixels' batches with
+ * the image's shares (shared) and with every share 1 (unshared; PIXEL_BATCHES a block
+ * each, block_corrected()), at z_c widened to Student's t for k - 1 degrees of freedom.
+ * The bias: the mean of the pixels' b~ (smoothed, PIXEL_BATCHES a pixel) over the block
+ * grown by its reach. */
+static void block_statement(const struct sppm_error *e, const double *shared,
+                            const double *unshared, const double *smoothed, long passes,
+                            double z, struct image **noise, struct image **bias)
 {
     int n = (int)passes, m = error_batch_size(BLOCK_BATCHES, n), k = n / m;
     int pixel_k = n / error_batch_size(ERROR_BATCHES, n);
-    struct image *noise = image_create(e->columns, e->rows);
     double t = student_critical(z, k - 1.0);
+    *noise = image_create(e->columns, e->rows);
+    *bias = image_create(e->columns, e->rows);
     for (int row = 0; row < e->rows; row++)
         for (int column = 0; column < e->columns; column++) {
-            double spread[3], shared[PIXEL_BATCHES], whole[PIXEL_BATCHES], with[3], without[3];
+            size_t block = PIXEL_BATCHES * ((size_t)row * (size_t)e->columns + (size_t)column);
+            double spread[3], with[3], without[3], bound[3], mean[PIXEL_BATCHES];
+            double b[3] = {0.0, 0.0, 0.0};
             batch_deviations(block_batches(e, column, row), k, spread);
-            block_mean(e, corrected, PIXEL_BATCHES, PIXEL_BATCHES, column, row, shared);
-            block_mean(e, unshared, PIXEL_BATCHES, PIXEL_BATCHES, column, row, whole);
-            batch_deviations(shared, pixel_k, with);
-            batch_deviations(whole, pixel_k, without);
-            double bound[3];
+            batch_deviations(shared + block, pixel_k, with);
+            batch_deviations(unshared + block, pixel_k, without);
             for (int c = 0; c < 3; c++) {
                 double ratio = without[c] > 0.0 ? with[c] / without[c] : 1.0;
                 bound[c] = t * sqrt(spread[c] * ratio / m / (k - 1.0) / n);
             }
-            image_set(noise, column, row, vec3(bound[0], bound[1], bound[2]));
+            image_set(*noise, column, row, vec3(bound[0], bound[1], bound[2]));
+            block_mean(e, smoothed, PIXEL_BATCHES, PIXEL_BATCHES, column, row,
+                       e->block_bias_reach, mean);
+            for (size_t j = 0; j < PIXEL_BATCHES; j++)
+                b[j % 3] += mean[j] / (double)passes;
+            image_set(*bias, column, row, vec3(b[0], b[1], b[2]));
         }
-    return noise;
 }
 
-/* The batches of each pixel's corrected values s = y - b~ into corrected and of its b~
- * into smoothed (PIXEL_BATCHES a pixel each), with the shares as they stand or, when
- * `shared` is 0, every share 1. */
-static void corrected_batches(const struct sppm_error *e, int shared, double *corrected,
-                              double *smoothed)
+/* The batches of each pixel's values y into values and of its b~ into smoothed
+ * (PIXEL_BATCHES a pixel each), with the shares as they stand or, when `shared` is 0,
+ * every share 1; returns each block's batches of s from them (block_corrected(),
+ * PIXEL_BATCHES a block), owned by the caller. */
+static double *value_batches(const struct sppm_error *e, int shared, double *values,
+                             double *smoothed)
 {
     size_t n = (size_t)e->width * (size_t)e->height;
     double *biases = xmalloc(PIXEL_BATCHES * n, sizeof *biases, "sppm bias batches");
-    pass_value_batches(e, shared, corrected, biases);
+    pass_value_batches(e, shared, values, biases);
     smooth_bias(e, biases, smoothed, PIXEL_BATCHES);
     xfree(biases);
-    for (size_t j = 0; j < PIXEL_BATCHES * n; j++)
-        corrected[j] -= smoothed[j];
+    double *blocks = xmalloc(PIXEL_BATCHES * (size_t)e->columns * (size_t)e->rows,
+                             sizeof *blocks, "sppm block values");
+    for (int row = 0; row < e->rows; row++)
+        for (int column = 0; column < e->columns; column++)
+            block_corrected(e, values, smoothed, PIXEL_BATCHES, column, row,
+                            blocks + PIXEL_BATCHES * ((size_t)row * (size_t)e->columns +
+                                                      (size_t)column));
+    return blocks;
 }
 
 struct image *sppm_error_image(const struct sppm_error *e, long passes, double confidence,
-                               struct image **bias, struct image **block)
+                               struct image **bias, struct image **block,
+                               struct image **block_biases)
 {
     size_t n = (size_t)e->width * (size_t)e->height;
     int x0 = e->x0, y0 = e->y0, x1 = e->x1, y1 = e->y1;
     double *smoothed = xmalloc(PIXEL_BATCHES * n, sizeof *smoothed, "sppm bias batches");
     double *corrected = xmalloc(PIXEL_BATCHES * n, sizeof *corrected, "sppm error batches");
-    double *unshared = xmalloc(PIXEL_BATCHES * n, sizeof *unshared, "sppm error batches");
     double *sum = xcalloc(3 * n, sizeof *sum, "sppm error sums");
     int *count = xmalloc(n, sizeof *count, "sppm error counts");
-    corrected_batches(e, 0, unshared, smoothed);
-    corrected_batches(e, 1, corrected, smoothed);
+    double *unshared = value_batches(e, 0, corrected, smoothed);
+    double *shared = value_batches(e, 1, corrected, smoothed);
+    for (size_t j = 0; j < PIXEL_BATCHES * n; j++) /* s = y - b~ */
+        corrected[j] -= smoothed[j];
     for (size_t i = 0; i < n; i++) { /* the sums of the batches of s */
         count[i] = (int)passes;
         for (size_t k = 0; k < PIXEL_BATCHES; k++)
@@ -307,10 +342,11 @@ struct image *sppm_error_image(const struct sppm_error *e, long passes, double c
             image_set(error, x - x0, y - y0,
                       vec3_add(bound, vec3(fabs(mean.x), fabs(mean.y), fabs(mean.z))));
         }
-    *block = block_noise(e, corrected, unshared, passes,
-                         normal_critical_two_sided(1.0 - confidence));
+    block_statement(e, shared, unshared, smoothed, passes,
+                    normal_critical_two_sided(1.0 - confidence), block, block_biases);
     xfree(count);
     xfree(sum);
+    xfree(shared);
     xfree(unshared);
     xfree(corrected);
     xfree(smoothed);
@@ -321,15 +357,15 @@ void sppm_error_result(const struct sppm_error *e, const struct kept_window *k, 
                        struct render_result *result)
 {
     result->error = sppm_error_image(e, passes, k->grown.error_confidence, &result->bias,
-                                     &result->block_noise);
+                                     &result->block_noise, &result->block_bias);
 }
 
 int sppm_error_target(const struct sppm_error *e, const struct kept_window *k, long passes,
                       const struct image *mean, struct render_counters *counters)
 {
-    struct render_result r = {NULL, NULL, NULL, NULL, NULL, 0.0};
+    struct render_result r = {NULL, NULL, NULL, NULL, NULL, NULL, 0.0};
     sppm_error_result(e, k, passes, &r);
-    struct stated_error stated = {r.error, r.bias, r.block_noise};
+    struct stated_error stated = {r.error, r.bias, r.block_noise, r.block_bias};
     int reached = target_tally(mean, &stated, k->asked, counters);
     render_result_free(&r);
     return reached;
