@@ -86,7 +86,7 @@
  *     2009, Cornell box        0.981 at 4.65 -> 0.973 at 3.74 (0.977 at 3.95)
  *     2009, cardioid-ring      0.980 at 4.19 -> 0.965 at 3.39 (0.975 at 3.62)
  *     2009, mirror-caustic     0.975 at 6.34 -> 0.975 at 4.41 (0.975 at 4.68)
- *     2009, ppm-box            0.949 at 1.68 -> 0.941 at 1.45 (RPPM)
+ *     2009, ppm-box            0.949 at 1.68 -> 0.941 at 1.45 (0.945 at 1.41)
  *     2008, Cornell box        0.996 at 5.31 -> 0.977 at 3.84
  *     2008, cardioid-ring      0.955 at 3.27 -> 0.941 at 3.12 (0.955 at 3.22)
  *     2008, mirror-caustic     0.975 at 3.28 -> 0.900 at 2.95 (0.900 at 3.04)
