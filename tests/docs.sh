@@ -15,8 +15,8 @@
 #     option still wins over it; one with its own --quality keeps it, as an option is
 #     given once), so the whole README runs in well under a minute.
 #  4. The reference suite's table (reference/suite.txt) and its files agree: every line has
-#     reference/NAME.pfm, NAME.png and, but for 2008 and 2009, NAME-var.pfm (for those, the
-#     NAME-error.pfm and NAME-blocks.pfm their row's command names), and a
+#     reference/NAME.pfm, NAME.png and, but for 2008 and 2009, NAME-var.pfm (for those,
+#     NAME-error.pfm and NAME-blocks.pfm, which their row's command names), and a
 #     measured row in reference/suite.md; every PFM in reference/ has its line; every
 #     scene the table names exists, every scenes/analytic/ scene has a reference, and
 #     every option the table gives is one photon's --help all lists. Nothing is rendered.
@@ -171,11 +171,12 @@ sed -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' "$suite" |
         done
         row=$(grep "^| \`$name.pfm\` |" reference/suite.md || :)
         case " $options " in
-        *" --mode 2008 "* | *" --mode 2009 "*) # no variance image; the statement its row names
+        *" --mode 2008 "* | *" --mode 2009 "*) # no variance image: its error statement
             for kept in error blocks; do
-                case $row in *"reference/$name-$kept.pfm"*)
-                    [ -f "reference/$name-$kept.pfm" ] ||
-                        echo "$suite: $name has no reference/$name-$kept.pfm" ;;
+                [ -f "reference/$name-$kept.pfm" ] ||
+                    echo "$suite: $name has no reference/$name-$kept.pfm"
+                case $row in *"reference/$name-$kept.pfm"*) ;;
+                *) echo "reference/suite.md: $name's row does not name reference/$name-$kept.pfm" ;;
                 esac
             done ;;
         *) [ -f "reference/$name-var.pfm" ] || echo "$suite: $name has no reference/$name-var.pfm" ;;
