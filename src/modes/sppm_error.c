@@ -67,7 +67,7 @@ void sppm_error_create(struct sppm_error *e, const struct kept_window *kept,
         e->shares[i] = 1.0;
     e->before = xcalloc(n, sizeof *e->before, "sppm pass values");
     e->pass_values = xcalloc(9 * n, sizeof *e->pass_values, "sppm pass values");
-    e->pass_biases = xcalloc(6 * n, sizeof *e->pass_biases, "sppm pass values");
+    e->pass_scratch = xcalloc(6 * n, sizeof *e->pass_scratch, "sppm pass values");
     e->block_batches = xcalloc(3 * BLOCK_BATCHES * (size_t)e->columns * (size_t)e->rows,
                                sizeof *e->block_batches, "sppm block batches");
 }
@@ -206,7 +206,7 @@ static void block_corrected(const struct sppm_error *e, const double *y, const d
 void sppm_error_pass_done(struct sppm_error *e, long pass)
 {
     size_t n = (size_t)e->width * (size_t)e->height;
-    double *y = e->pass_biases, *smoothed = e->pass_biases + 3 * n;
+    double *y = e->pass_scratch, *smoothed = e->pass_scratch + 3 * n;
     const double *v = e->pass_values; /* e_i, P_i and P'_i, 3 each */
     error_batches_add(e->pass_batches, ERROR_BATCHES, (int)pass, v, 9 * n);
     for (size_t i = 0; i < n; i++) /* b_i first, into y, to smooth */
@@ -377,7 +377,7 @@ void sppm_error_free(struct sppm_error *e)
     xfree(e->shares);
     xfree(e->before);
     xfree(e->pass_values);
-    xfree(e->pass_biases);
+    xfree(e->pass_scratch);
     xfree(e->block_batches);
     memset(e, 0, sizeof *e);
 }

@@ -180,7 +180,7 @@ struct sppm_error {
     struct vec3 *before;    /* owned: per pixel, what its eye paths saw and its direct term
                                summed before this pass                                    */
     double *pass_values;    /* owned: 9 per pixel, this pass's e_i, P_i and P'_i           */
-    double *pass_biases;    /* owned: 6 per pixel, this pass's b_i and b~_i (scratch)      */
+    double *pass_scratch;   /* owned: 6 per pixel, this pass's b_i (then y_i) and b~_i       */
     double *block_batches;  /* owned: 3 BLOCK_BATCHES per block, the batches of the block's
                                mean of s_i with every share 1 (sppm_error_pass_done())   */
 };
