@@ -68,7 +68,7 @@ void sppm_error_create(struct sppm_error *e, const struct kept_window *kept,
     e->before = xcalloc(n, sizeof *e->before, "sppm pass values");
     e->pass_values = xcalloc(9 * n, sizeof *e->pass_values, "sppm pass values");
     e->pass_scratch = xcalloc(6 * n, sizeof *e->pass_scratch, "sppm pass values");
-    e->block_batches = xcalloc(3 * BLOCK_BATCHES * (size_t)e->columns * (size_t)e->rows,
+    e->block_batches = xcalloc(6 * BLOCK_BATCHES * (size_t)e->columns * (size_t)e->rows,
                                sizeof *e->block_batches, "sppm block batches");
 }
 
@@ -183,24 +183,29 @@ static void block_mean(const struct sppm_error *e, const double *series, size_t 
         }
 }
 
-/* Block (column, row)'s 3 BLOCK_BATCHES batch sums. */
+/* Block (column, row)'s BLOCK_BATCHES batch sums, 6 each (block_corrected()'s two s). */
 static double *block_batches(const struct sppm_error *e, int column, int row)
 {
-    return e->block_batches + 3 * BLOCK_BATCHES * ((size_t)row * (size_t)e->columns +
+    return e->block_batches + 6 * BLOCK_BATCHES * ((size_t)row * (size_t)e->columns +
                                                    (size_t)column);
 }
 
-/* The value s of block (column, row)'s mean (sppm_error.h), count doubles (a pass's 3 or
- * a pixel's batches), into s: the mean over the block of the pixels' y less the mean of
- * their b~ over the block grown by its reach. */
+/* The two values s of block (column, row)'s mean (sppm_error.h), count doubles each (a
+ * pass's 3 or a pixel's batches), into s: the mean over the block of the pixels' y less
+ * the mean of their b~ over the block grown by its reach, then less their mean over the
+ * block alone. */
 static void block_corrected(const struct sppm_error *e, const double *y, const double *smoothed,
                             size_t count, int column, int row, double *s)
 {
     double bias[PIXEL_BATCHES];
     block_mean(e, y, count, count, column, row, 0, s);
+    memcpy(s + count, s, count * sizeof *s);
     block_mean(e, smoothed, count, count, column, row, e->block_bias_reach, bias);
     for (size_t j = 0; j < count; j++)
         s[j] -= bias[j];
+    block_mean(e, smoothed, count, count, column, row, 0, bias);
+    for (size_t j = 0; j < count; j++)
+        s[count + j] -= bias[j];
 }
 
 void sppm_error_pass_done(struct sppm_error *e, long pass)
@@ -218,9 +223,9 @@ void sppm_error_pass_done(struct sppm_error *e, long pass)
             y[3 * i + c] = v[9 * i + c] + v[9 * i + 3 + c];
     for (int row = 0; row < e->rows; row++)
         for (int column = 0; column < e->columns; column++) {
-            double s[3];
+            double s[6];
             block_corrected(e, y, smoothed, 3, column, row, s);
-            error_batches_add(block_batches(e, column, row), BLOCK_BATCHES, (int)pass, s, 3);
+            error_batches_add(block_batches(e, column, row), BLOCK_BATCHES, (int)pass, s, 6);
         }
 }
 
@@ -234,27 +239,46 @@ static double student_critical(double z, double freedom)
            (3 * z7 + 19 * z5 + 17 * z3 - 15 * z) / (384 * v * v * v);
 }
 
-/* The squared deviations, per channel, of k batches' sums (3 doubles each) from their
- * mean. */
-static void batch_deviations(const double *batches, int k, double deviations[3])
+/* The squared deviations, per channel, of k batches' sums (the first 3 of every `stride`
+ * doubles) from their mean. */
+static void batch_deviations(const double *batches, size_t stride, int k, double deviations[3])
 {
     for (int c = 0; c < 3; c++) {
         double all = 0.0;
         for (int j = 0; j < k; j++)
-            all += batches[3 * j + c] / k;
+            all += batches[stride * (size_t)j + (size_t)c] / k;
         deviations[c] = 0.0;
-        for (int j = 0; j < k; j++)
-            deviations[c] += (batches[3 * j + c] - all) * (batches[3 * j + c] - all);
+        for (int j = 0; j < k; j++) {
+            double d = batches[stride * (size_t)j + (size_t)c] - all;
+            deviations[c] += d * d;
+        }
     }
 }
 
-/* What each block of the written window states (sppm_error.h), into *noise and *bias.
- * The noise bound: the spread of the block's k full BLOCK_BATCHES batches of m passes of
- * s, every share 1, times the ratio of the spreads of its s from the pixels' batches with
- * the image's shares (shared) and with every share 1 (unshared; PIXEL_BATCHES a block
+/* Whether a block keeps its own bias (sppm_error.h): whether d, the luminance of the mean
+ * of its b~ over the block less that over its reach, is further from 0 than t times its
+ * standard error, from the block's k full batches of m of the n passes (6 doubles each,
+ * block_corrected()'s two s, whose difference d is). */
+static int keeps_own_bias(const double *batches, int k, int m, int n, double t)
+{
+    double d[BLOCK_BATCHES], all = 0.0, spread = 0.0;
+    for (int j = 0; j < k; j++) {
+        const double *s = batches + 6 * j;
+        d[j] = vec3_luminance(vec3(s[0] - s[3], s[1] - s[4], s[2] - s[5]));
+        all += d[j] / k;
+    }
+    for (int j = 0; j < k; j++)
+        spread += (d[j] - all) * (d[j] - all);
+    return fabs(all) / m > t * sqrt(spread / m / (k - 1.0) / n);
+}
+
+/* What each block of the written window states (sppm_error.h), into *noise and *bias,
+ * by its s and b~ over its reach, or its own where it keeps its own bias. The noise
+ * bound: the spread of the block's k full BLOCK_BATCHES batches of m passes of s, every
+ * share 1, times the ratio of the spreads of its s from the pixels' batches with the
+ * image's shares (shared) and with every share 1 (unshared; 2 PIXEL_BATCHES a block
  * each, block_corrected()), at z_c widened to Student's t for k - 1 degrees of freedom.
- * The bias: the mean of the pixels' b~ (smoothed, PIXEL_BATCHES a pixel) over the block
- * grown by its reach. */
+ * The bias: the mean of the pixels' b~ (smoothed, PIXEL_BATCHES a pixel). */
 static void block_statement(const struct sppm_error *e, const double *shared,
                             const double *unshared, const double *smoothed, long passes,
                             double z, struct image **noise, struct image **bias)
@@ -266,19 +290,22 @@ static void block_statement(const struct sppm_error *e, const double *shared,
     *bias = image_create(e->columns, e->rows);
     for (int row = 0; row < e->rows; row++)
         for (int column = 0; column < e->columns; column++) {
-            size_t block = PIXEL_BATCHES * ((size_t)row * (size_t)e->columns + (size_t)column);
+            const double *batches = block_batches(e, column, row);
+            int own = keeps_own_bias(batches, k, m, n, t);
+            size_t block = PIXEL_BATCHES * (2 * ((size_t)row * (size_t)e->columns +
+                                                 (size_t)column) + (size_t)own);
             double spread[3], with[3], without[3], bound[3], mean[PIXEL_BATCHES];
             double b[3] = {0.0, 0.0, 0.0};
-            batch_deviations(block_batches(e, column, row), k, spread);
-            batch_deviations(shared + block, pixel_k, with);
-            batch_deviations(unshared + block, pixel_k, without);
+            batch_deviations(batches + 3 * own, 6, k, spread);
+            batch_deviations(shared + block, 3, pixel_k, with);
+            batch_deviations(unshared + block, 3, pixel_k, without);
             for (int c = 0; c < 3; c++) {
                 double ratio = without[c] > 0.0 ? with[c] / without[c] : 1.0;
                 bound[c] = t * sqrt(spread[c] * ratio / m / (k - 1.0) / n);
             }
             image_set(*noise, column, row, vec3(bound[0], bound[1], bound[2]));
             block_mean(e, smoothed, PIXEL_BATCHES, PIXEL_BATCHES, column, row,
-                       e->block_bias_reach, mean);
+                       own ? 0 : e->block_bias_reach, mean);
             for (size_t j = 0; j < PIXEL_BATCHES; j++)
                 b[j % 3] += mean[j] / (double)passes;
             image_set(*bias, column, row, vec3(b[0], b[1], b[2]));
@@ -287,8 +314,8 @@ static void block_statement(const struct sppm_error *e, const double *shared,
 
 /* The batches of each pixel's values y into values and of its b~ into smoothed
  * (PIXEL_BATCHES a pixel each), with the shares as they stand or, when `shared` is 0,
- * every share 1; returns each block's batches of s from them (block_corrected(),
- * PIXEL_BATCHES a block), owned by the caller. */
+ * every share 1; returns each block's two batches of s from them (block_corrected(),
+ * 2 PIXEL_BATCHES a block), owned by the caller. */
 static double *value_batches(const struct sppm_error *e, int shared, double *values,
                              double *smoothed)
 {
@@ -297,13 +324,13 @@ static double *value_batches(const struct sppm_error *e, int shared, double *val
     pass_value_batches(e, shared, values, biases);
     smooth_bias(e, biases, smoothed, PIXEL_BATCHES);
     xfree(biases);
-    double *blocks = xmalloc(PIXEL_BATCHES * (size_t)e->columns * (size_t)e->rows,
+    double *blocks = xmalloc(2 * PIXEL_BATCHES * (size_t)e->columns * (size_t)e->rows,
                              sizeof *blocks, "sppm block values");
     for (int row = 0; row < e->rows; row++)
         for (int column = 0; column < e->columns; column++)
             block_corrected(e, values, smoothed, PIXEL_BATCHES, column, row,
-                            blocks + PIXEL_BATCHES * ((size_t)row * (size_t)e->columns +
-                                                      (size_t)column));
+                            blocks + 2 * PIXEL_BATCHES * ((size_t)row * (size_t)e->columns +
+                                                          (size_t)column));
     return blocks;
 }
 
