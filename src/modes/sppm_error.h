@@ -68,41 +68,37 @@
  * it: on the Cornell box (2009's defaults, seed 7, against the pt reference) a block's
  * bound was 4.5 times its error at the median, its bias part 0.7 times and its noise
  * part 4.0 times, where the noise of the y_i alone would state 3.2. Over its reach, the
- * block's bias has a ninth of that noise, and it is still the Laplacian of light seen
- * through discs a few pixels wide, which changes slowly over a few blocks. A crop keeps
- * the reach and the smoothing around it (SPPM_ERROR_MARGIN), so that a block it holds
- * whole is stated as in the whole image. `--mode photons` keeps each block's own (a reach
- * of 0): its fixed disc of 100 photons leaves a bias large against its noise, and
- * changing at that disc's scale, where the reach let the truth out of more blocks of
+ * block's bias has a ninth of that noise, and where the light is smooth it is the same
+ * Laplacian seen through discs a few pixels wide. Where it is not (a caustic beside a
+ * quiet block, a sphere flake's small spheres), the reach would carry a neighbour's bias
+ * into the quiet block, or spread the caustic's own over its neighbours: so a block
+ * keeps its own bias and s where d, its own b~'s mean less its reach's, lies further
+ * from 0 than t times d's standard error, from the same 32 batches (keeps_own_bias()).
+ * A crop keeps the reach and the smoothing around it (SPPM_ERROR_MARGIN), so that a block
+ * it holds whole is stated as in the whole image. `--mode photons` keeps each block's own
+ * (a reach of 0): its fixed disc of 100 photons leaves a bias large against its noise
+ * and changing at that disc's scale, where the reach let the truth out of more blocks of
  * ppm-box (0.949 of 256 within the bound, 0.902 with it) and cardioid-ring (0.842,
- * 0.718). 32 batches, not more: a pass's eye paths and
- * light samples are stratified over the passes (pixel_error.h), so batches of fewer
- * passes overstate that noise, which is most of it where the direct light is by light
- * samples: 2008 at its defaults on point-over-plane, 64 passes, states its blocks at 19
- * times their error with 32 batches, 36 with 64 and 14 with a pixel's 8. Measured with
- * seed 7 against the scenes' references (make calibration's cells, at the defaults): the
- * share of blocks within their bound and the median of bound / error, each block's own
- * bias -> its reach's (a reach of 8 pixels in brackets):
- *     2009, Cornell box        0.981 at 4.65 -> 0.973 at 3.74 (0.977 at 3.95)
- *     2009, cardioid-ring      0.980 at 4.19 -> 0.965 at 3.39 (0.975 at 3.62)
- *     2009, mirror-caustic     0.975 at 6.34 -> 0.975 at 4.41 (0.975 at 4.68)
- *     2009, ppm-box            0.949 at 1.68 -> 0.941 at 1.45 (0.945 at 1.41)
- *     2008, Cornell box        0.996 at 5.31 -> 0.977 at 3.84
- *     2008, cardioid-ring      0.955 at 3.27 -> 0.941 at 3.12 (0.955 at 3.22)
- *     2008, mirror-caustic     0.975 at 3.28 -> 0.900 at 2.95 (0.900 at 3.04)
- * (mirror-caustic has 40 blocks; a true 95% bound leaves 4 of them out once in 7).
- * Where a neighbour's bias is far larger than a block's own (a caustic beside a quiet
- * block, a sphere flake's small spheres), the reach carries some of it into the quiet
- * block and widens its bound: at --target-error 0.02, 2008 took 1920 passes on
- * mirror-caustic where it took 1024, and in 120 CPU seconds brought 76 of sphereflake's
- * 256 blocks within it where 87 (2009: 59 where 79); on the boxes it brought 249 of 256
- * where 232 (2009: 252 where 241), and ppm-box's 125 where 68.
- * Keeping a block's own bias where it differs from its reach's by more than its noise
- * (Student's t over the 32 batches) kept it in most of mirror-caustic's blocks (2009 back
- * to 6.34) and let out as many of 2008's (0.925 there, 0.946 on cardioid-ring), so the
- * reach is used throughout. --target-error 0.05 on sky-over-floor at 64 x 48 stops at 88
- * passes, where it took 104 with each block's own bias and 416 with its pixels' noise in
- * quadrature.
+ * 0.718). 32 batches, not more: a pass's eye paths and light samples are stratified
+ * over the passes (pixel_error.h), so batches of fewer passes overstate that noise,
+ * which is most of it where the direct light is by light samples: 2008 at its defaults
+ * on point-over-plane, 64 passes, states its blocks at 19 times their error with 32
+ * batches, 36 with 64 and 14 with a pixel's 8.
+ *
+ * Measured with seed 7 against the scenes' references (make calibration's cells, at
+ * the defaults): the share of blocks within their bound and the median of bound /
+ * error, with each block's own bias, with the reach's everywhere, and as above:
+ *     2009, Cornell box        0.981 at 4.65   0.973 at 3.74   0.977 at 3.98
+ *     2009, mirror-caustic     0.975 at 6.34   0.975 at 4.41   0.975 at 6.34
+ *     2008, Cornell box        0.996 at 5.31   0.977 at 3.84   0.977 at 4.11
+ *     2008, mirror-caustic     0.975 at 3.28   0.900 at 2.95   0.925 at 2.95
+ * (mirror-caustic has 40 blocks; a true 95% bound leaves 4 of them out once in 7). With
+ * the reach everywhere, --target-error 0.02 took 2009 on mirror-caustic to 120 CPU
+ * seconds with 38 of 40 blocks, where each block's own took 37 s and 896 passes (as
+ * above: 34 s, 896 passes), and brought 59 of sphereflake's 256 blocks within it in 120
+ * s where 79 (as above: 59 too); on the Cornell box 252 where 241 (as above: 249).
+ * --target-error 0.05 on sky-over-floor at 64 x 48 stops at 88 passes, where it took
+ * 104 with each block's own bias and 416 with its pixels' noise in quadrature.
  *
  * Measured (tests/test_error_2009.c prints them; 20,000 photons a pass, the direct light
  * from the photons, the paper's way, so that the density estimate carries the light the
